@@ -1,0 +1,81 @@
+// snaxels-cli: every engine feature without a display.
+
+#include <exception>
+#include <iostream>
+#include <new>
+
+#include "app/cli/args.h"
+#include "app/cli/commands.h"
+#include "core/error.h"
+
+namespace snaxels::cli {
+
+const char* const kMeshArgumentHelp =
+    "MESH is a mesh file in any format Assimp reads (OBJ, PLY, STL, OFF, glTF/GLB,\n"
+    "FBX, DAE, 3DS, X, BLEND, ...) or a procedural mesh proc:NAME[:FACES], NAME one\n"
+    "of torus, sphere, bumpy, nose and FACES the approximate face count (default\n"
+    "20000), for example proc:torus:100000.";
+
+const std::vector<Command>& commands() {
+    static const std::vector<Command> all = {
+        {"info", "print a report on a mesh (counts, repairs, bounding box)", run_info},
+    };
+    return all;
+}
+
+namespace {
+
+void print_help() {
+    std::cout << "usage: snaxels-cli COMMAND [OPTIONS]\n\n"
+                 "Turns 3-D meshes into contour line art with snaxels (Karsch and Hart 2011).\n\n"
+                 "commands:\n";
+    for (const auto& c : commands()) {
+        std::string name = "  " + std::string(c.name);
+        name.resize(14, ' ');
+        std::cout << name << c.summary << '\n';
+    }
+    std::cout << "\n'snaxels-cli COMMAND --help' describes a command's options.\n";
+}
+
+} // namespace
+} // namespace snaxels::cli
+
+int main(int argc, char** argv) {
+    using namespace snaxels::cli;
+    std::ios::sync_with_stdio(false);
+    if (argc < 2) {
+        print_help();
+        return 2;
+    }
+    const std::string name = argv[1];
+    if (name == "--help" || name == "-h" || name == "help") {
+        print_help();
+        return 0;
+    }
+    if (name == "--version") {
+        std::cout << "snaxels-cli " << SNAXELS_VERSION << '\n';
+        return 0;
+    }
+    const std::vector<std::string> rest(argv + 2, argv + argc);
+    for (const auto& c : commands()) {
+        if (name != c.name) continue;
+        try {
+            return c.run(rest);
+        } catch (const UsageError& e) {
+            std::cerr << "snaxels-cli " << name << ": " << e.what() << " (see 'snaxels-cli "
+                      << name << " --help')\n";
+            return 2;
+        } catch (const snaxels::Error& e) {
+            std::cerr << "snaxels-cli: " << e.what() << '\n';
+            return 1;
+        } catch (const std::bad_alloc&) {
+            std::cerr << "snaxels-cli: out of memory\n";
+            return 1;
+        } catch (const std::exception& e) {
+            std::cerr << "snaxels-cli: " << e.what() << '\n';
+            return 1;
+        }
+    }
+    std::cerr << "snaxels-cli: unknown command '" << name << "' (see 'snaxels-cli --help')\n";
+    return 2;
+}

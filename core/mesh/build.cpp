@@ -1,0 +1,251 @@
+#include "core/mesh/build.h"
+
+#include <algorithm>
+#include <bit>
+#include <cmath>
+#include <cstdint>
+#include <numeric>
+#include <unordered_map>
+
+#include <OpenMesh/Core/System/omstream.hh>
+#include <glm/glm.hpp>
+
+#include "core/error.h"
+
+namespace snaxels {
+namespace {
+
+struct PositionKey {
+    std::uint64_t x, y, z;
+    bool operator==(const PositionKey&) const = default;
+};
+
+struct PositionKeyHash {
+    std::size_t operator()(const PositionKey& k) const noexcept {
+        std::uint64_t h = k.x * 0x9E3779B97F4A7C15ull;
+        h ^= (k.y + 0x7F4A7C159E3779B9ull + (h << 6) + (h >> 2));
+        h ^= (k.z + 0x94D049BB133111EBull + (h << 6) + (h >> 2));
+        return static_cast<std::size_t>(h ^ (h >> 31));
+    }
+};
+
+// Adding +0.0 turns -0.0 into +0.0, so both weld together.
+PositionKey key_of(const glm::dvec3& p) {
+    return {std::bit_cast<std::uint64_t>(p.x + 0.0), std::bit_cast<std::uint64_t>(p.y + 0.0),
+            std::bit_cast<std::uint64_t>(p.z + 0.0)};
+}
+
+bool is_degenerate(const glm::dvec3& a, const glm::dvec3& b, const glm::dvec3& c) {
+    const glm::dvec3 e0 = b - a, e1 = c - a, e2 = c - b;
+    const glm::dvec3 n{e0.y * e1.z - e0.z * e1.y, e0.z * e1.x - e0.x * e1.z,
+                       e0.x * e1.y - e0.y * e1.x};
+    const double twice_area = std::sqrt(n.x * n.x + n.y * n.y + n.z * n.z);
+    const double longest = std::max({glm::dot(e0, e0), glm::dot(e1, e1), glm::dot(e2, e2)});
+    // Relative test: collinear corners in float input leave a rounding-size area.
+    return !(twice_area > 1e-12 * longest);
+}
+
+struct UnionFind {
+    std::vector<std::uint32_t> parent;
+    explicit UnionFind(std::size_t n) : parent(n) { std::iota(parent.begin(), parent.end(), 0u); }
+    std::uint32_t find(std::uint32_t x) {
+        while (parent[x] != x) x = parent[x] = parent[parent[x]];
+        return x;
+    }
+    void unite(std::uint32_t a, std::uint32_t b) { parent[find(a)] = find(b); }
+};
+
+// Adds triangles, splitting (duplicating) as few vertices as it takes when a
+// face cannot join the manifold halfedge structure as it is: a complex
+// vertex or edge, or a fan with no free gap to link into.
+class RepairingFaceAdder {
+  public:
+    explicit RepairingFaceAdder(Mesh& mesh) : mesh_(mesh) {}
+
+    void add(const std::array<Mesh::VertexHandle, 3>& vh) {
+        if (mesh_.add_face(vh[0], vh[1], vh[2]).is_valid()) return;
+        // Replace subsets of corners, smallest first: by the copy an earlier
+        // repair made of the same vertex (so a second fan around a vertex
+        // becomes one new vertex, not one per face), else by a fresh copy.
+        static constexpr int kSubsets[] = {1, 2, 4, 3, 5, 6, 7};
+        for (const int subset : kSubsets) {
+            auto trial = vh;
+            bool all_copied = true;
+            for (int i = 0; i < 3; ++i)
+                if (subset & (1 << i)) {
+                    const auto it = latest_copy_.find(vh[i].idx());
+                    if (it == latest_copy_.end()) all_copied = false;
+                    else trial[i] = it->second;
+                }
+            if (all_copied && mesh_.add_face(trial[0], trial[1], trial[2]).is_valid()) return;
+        }
+        for (const int subset : kSubsets) {
+            auto trial = vh;
+            std::size_t used = 0;
+            for (int i = 0; i < 3; ++i)
+                if (subset & (1 << i)) trial[i] = spare(used++, vh[i]);
+            if (mesh_.add_face(trial[0], trial[1], trial[2]).is_valid()) {
+                for (int i = 0; i < 3; ++i)
+                    if (subset & (1 << i)) latest_copy_[vh[i].idx()] = trial[i];
+                spares_.erase(spares_.begin(), spares_.begin() + static_cast<long>(used));
+                copies_ += used;
+                return;
+            }
+        }
+    }
+
+    /// Removes unused spare vertices; call once after the last face.
+    std::size_t finish() {
+        if (!spares_.empty()) {
+            for (const auto v : spares_) mesh_.delete_vertex(v, false);
+            mesh_.garbage_collection();
+        }
+        return copies_;
+    }
+
+  private:
+    // An isolated vertex at the position of @p original, reused between attempts.
+    Mesh::VertexHandle spare(std::size_t k, Mesh::VertexHandle original) {
+        while (spares_.size() <= k) spares_.push_back(mesh_.add_vertex(mesh_.point(original)));
+        mesh_.set_point(spares_[k], mesh_.point(original));
+        return spares_[k];
+    }
+
+    Mesh& mesh_;
+    std::vector<Mesh::VertexHandle> spares_;
+    std::unordered_map<int, Mesh::VertexHandle> latest_copy_; ///< input vertex -> its newest copy
+    std::size_t copies_ = 0;
+};
+
+} // namespace
+
+void compute_vertex_normals(Mesh& mesh) {
+    std::vector<OpenMesh::Vec3d> sum(mesh.n_vertices(), OpenMesh::Vec3d(0.0));
+    for (const auto fh : mesh.faces()) {
+        auto it = mesh.cfv_iter(fh);
+        const auto a = *it, b = *++it, c = *++it;
+        const auto& pa = mesh.point(a);
+        // |cross| is twice the area, so summing cross products weights by area.
+        const OpenMesh::Vec3d n = OpenMesh::cross(mesh.point(b) - pa, mesh.point(c) - pa);
+        sum[a.idx()] += n;
+        sum[b.idx()] += n;
+        sum[c.idx()] += n;
+    }
+    for (const auto vh : mesh.vertices()) {
+        OpenMesh::Vec3d n = sum[vh.idx()];
+        const double len = n.norm();
+        mesh.set_normal(vh, len > 0.0 ? n / len : OpenMesh::Vec3d(0.0, 0.0, 1.0));
+    }
+}
+
+LoadedMesh build_mesh(const TriangleSoup& soup, const std::string& source) {
+    LoadedMesh out;
+    MeshReport& report = out.report;
+    report.source = source;
+
+    // 1. Weld by exact position.
+    std::vector<std::uint32_t> welded(soup.positions.size());
+    std::vector<glm::dvec3> unique;
+    unique.reserve(soup.positions.size());
+    {
+        std::unordered_map<PositionKey, std::uint32_t, PositionKeyHash> index;
+        index.reserve(soup.positions.size());
+        for (std::size_t i = 0; i < soup.positions.size(); ++i) {
+            const glm::dvec3& p = soup.positions[i];
+            for (int k = 0; k < 3; ++k)
+                if (!std::isfinite(p[k]))
+                    throw Error(std::string("a vertex has a non-finite coordinate (") +
+                                (std::isnan(p[k]) ? "NaN" : "infinity") + ")");
+            auto [it, inserted] =
+                index.try_emplace(key_of(p), static_cast<std::uint32_t>(unique.size()));
+            if (inserted) unique.push_back(p);
+            welded[i] = it->second;
+        }
+    }
+
+    // 2. Keep the faces with three distinct corners and a non-zero area.
+    std::vector<std::array<std::uint32_t, 3>> faces;
+    faces.reserve(soup.triangles.size());
+    for (std::size_t f = 0; f < soup.triangles.size(); ++f) {
+        std::array<std::uint32_t, 3> t{};
+        for (int k = 0; k < 3; ++k) {
+            const auto i = soup.triangles[f][k];
+            if (i >= soup.positions.size())
+                throw Error("face " + std::to_string(f + 1) + " refers to vertex " +
+                            std::to_string(i + 1) + " but there are only " +
+                            std::to_string(soup.positions.size()) + " vertices");
+            t[k] = welded[i];
+        }
+        if (t[0] == t[1] || t[1] == t[2] || t[2] == t[0] ||
+            is_degenerate(unique[t[0]], unique[t[1]], unique[t[2]])) {
+            ++report.dropped_faces;
+            continue;
+        }
+        faces.push_back(t);
+    }
+    if (faces.empty())
+        throw Error(soup.triangles.empty() ? "the mesh has no faces"
+                                           : "the mesh has no faces with a non-zero area");
+
+    // 3. Edge statistics of the input, before any repair.
+    {
+        std::vector<std::uint64_t> edges;
+        edges.reserve(faces.size() * 3);
+        for (const auto& t : faces)
+            for (int k = 0; k < 3; ++k) {
+                const std::uint64_t a = t[k], b = t[(k + 1) % 3];
+                edges.push_back(a < b ? (a << 32 | b) : (b << 32 | a));
+            }
+        std::sort(edges.begin(), edges.end());
+        for (std::size_t i = 0; i < edges.size();) {
+            std::size_t j = i;
+            while (j < edges.size() && edges[j] == edges[i]) ++j;
+            ++report.edges;
+            if (j - i == 1) ++report.boundary_edges;
+            if (j - i > 2) ++report.nonmanifold_edges;
+            i = j;
+        }
+    }
+
+    // 4. Vertices referenced by a kept face, in first-use order of the input.
+    std::vector<std::int64_t> remap(unique.size(), -1);
+    Mesh& mesh = out.mesh;
+    mesh.reserve(unique.size(), faces.size() * 3 / 2 + 16, faces.size());
+    std::vector<Mesh::VertexHandle> handles;
+    handles.reserve(unique.size());
+    for (const auto& t : faces)
+        for (const auto v : t)
+            if (remap[v] < 0) {
+                remap[v] = static_cast<std::int64_t>(handles.size());
+                handles.push_back(mesh.add_vertex(to_om(unique[v])));
+            }
+
+    // 5. Faces, repairing non-manifold configurations by splitting vertices.
+    omerr().disable(); // failed add_face attempts are expected and handled
+    RepairingFaceAdder adder(mesh);
+    for (const auto& t : faces)
+        adder.add({handles[remap[t[0]]], handles[remap[t[1]]], handles[remap[t[2]]]});
+    report.split_vertices = adder.finish();
+    omerr().enable();
+
+    compute_vertex_normals(mesh);
+
+    // 6. Report on the repaired mesh.
+    report.vertices = handles.size(); // welded input; split copies are counted apart
+    report.faces = mesh.n_faces();
+    UnionFind components(mesh.n_vertices());
+    for (const auto eh : mesh.edges())
+        components.unite(static_cast<std::uint32_t>(mesh.from_vertex_handle(mesh.halfedge_handle(eh, 0)).idx()),
+                         static_cast<std::uint32_t>(mesh.to_vertex_handle(mesh.halfedge_handle(eh, 0)).idx()));
+    for (std::uint32_t v = 0; v < mesh.n_vertices(); ++v)
+        if (components.find(v) == v) ++report.components;
+    report.bbox_min = report.bbox_max = to_glm(mesh.point(Mesh::VertexHandle(0)));
+    for (const auto vh : mesh.vertices()) {
+        const glm::dvec3 p = to_glm(mesh.point(vh));
+        report.bbox_min = glm::min(report.bbox_min, p);
+        report.bbox_max = glm::max(report.bbox_max, p);
+    }
+    return out;
+}
+
+} // namespace snaxels

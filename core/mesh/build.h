@@ -1,0 +1,30 @@
+#pragma once
+/// Turns a triangle soup into the project's Mesh: welds vertices by exact
+/// position, drops unreferenced vertices and zero-area faces, splits vertices
+/// where a face cannot be added to a manifold halfedge mesh, and computes
+/// area-weighted vertex normals.
+
+#include <string>
+
+#include "core/mesh/mesh.h"
+#include "core/mesh/report.h"
+#include "core/mesh/triangle_soup.h"
+
+namespace snaxels {
+
+/// A mesh ready for the engine together with what was done to it.
+struct LoadedMesh {
+    Mesh mesh;
+    MeshReport report;
+};
+
+/// Builds a Mesh from @p soup. @p source names the input in the report.
+/// Throws snaxels::Error (message without the source) when the soup has a
+/// non-finite coordinate, an out-of-range index or no usable face.
+LoadedMesh build_mesh(const TriangleSoup& soup, const std::string& source);
+
+/// Recomputes every vertex normal as the normalized sum of its faces'
+/// area-weighted normals (isolated vertices get +Z).
+void compute_vertex_normals(Mesh& mesh);
+
+} // namespace snaxels

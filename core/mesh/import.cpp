@@ -1,0 +1,192 @@
+#include "core/mesh/import.h"
+
+#include <array>
+#include <cerrno>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <functional>
+#include <sstream>
+
+#include <assimp/Importer.hpp>
+#include <assimp/postprocess.h>
+#include <assimp/scene.h>
+#include <glm/glm.hpp>
+
+#include "core/error.h"
+#include "core/mesh/procedural.h"
+
+namespace snaxels {
+namespace {
+
+namespace fs = std::filesystem;
+
+// Names the kind of a file whose first bytes mark it as something that is
+// certainly not a mesh, so users get "a PNG image" instead of a parser error.
+const char* non_mesh_kind(const std::array<unsigned char, 8>& head, std::size_t n) {
+    auto starts = [&](std::initializer_list<unsigned char> magic) {
+        if (magic.size() > n) return false;
+        return std::equal(magic.begin(), magic.end(), head.begin());
+    };
+    if (starts({0x89, 'P', 'N', 'G'})) return "a PNG image";
+    if (starts({0xFF, 0xD8, 0xFF})) return "a JPEG image";
+    if (starts({'G', 'I', 'F', '8'})) return "a GIF image";
+    if (starts({'%', 'P', 'D', 'F'})) return "a PDF document";
+    if (starts({0x7F, 'E', 'L', 'F'})) return "an executable";
+    if (starts({0x1F, 0x8B})) return "a gzip archive";
+    return nullptr;
+}
+
+// Assimp reads past the end of a truncated binary PLY and reports whatever
+// garbage follows; checking the body's size against its header says plainly
+// what is wrong. Returns an empty string when the file is not binary PLY or
+// is long enough.
+std::string binary_ply_problem(std::ifstream& in, std::uintmax_t file_size) {
+    in.clear();
+    in.seekg(0);
+    std::string line;
+    if (!std::getline(in, line) || line.rfind("ply", 0) != 0) return {};
+    auto type_size = [](const std::string& t) -> std::size_t {
+        if (t == "char" || t == "uchar" || t == "int8" || t == "uint8") return 1;
+        if (t == "short" || t == "ushort" || t == "int16" || t == "uint16") return 2;
+        if (t == "int" || t == "uint" || t == "float" || t == "int32" || t == "uint32" ||
+            t == "float32")
+            return 4;
+        if (t == "double" || t == "float64") return 8;
+        return 0;
+    };
+    bool binary = false;
+    std::uintmax_t minimum = 0, count = 0, element_min = 0;
+    std::string element;
+    auto close_element = [&] { minimum += count * element_min; };
+    while (std::getline(in, line)) {
+        if (!line.empty() && line.back() == '\r') line.pop_back();
+        std::istringstream words(line);
+        std::string word;
+        words >> word;
+        if (word == "format") {
+            std::string fmt;
+            words >> fmt;
+            binary = fmt.rfind("binary", 0) == 0;
+        } else if (word == "element") {
+            close_element();
+            words >> element >> count;
+            element_min = 0;
+        } else if (word == "property") {
+            std::string type;
+            words >> type;
+            if (type == "list") {
+                std::string count_type, item_type;
+                words >> count_type >> item_type;
+                // A face list holds at least three indices.
+                const std::size_t items = element == "face" ? 3 : 0;
+                element_min += type_size(count_type) + items * type_size(item_type);
+            } else {
+                element_min += type_size(type);
+            }
+        } else if (word == "end_header") {
+            close_element();
+            if (!binary) return {};
+            const auto body = file_size - static_cast<std::uintmax_t>(in.tellg());
+            if (body < minimum)
+                return "the binary PLY file is truncated (its header needs at least " +
+                       std::to_string(minimum) + " bytes of data, the file has " +
+                       std::to_string(body) + ")";
+            return {};
+        }
+    }
+    return "the PLY header has no end_header line";
+}
+
+void check_readable(const std::string& path) {
+    std::error_code ec;
+    const auto status = fs::status(path, ec);
+    if (ec || !fs::exists(status)) throw Error(path + ": no such file");
+    if (fs::is_directory(status)) throw Error(path + ": is a directory, not a mesh file");
+    if (!fs::is_regular_file(status)) throw Error(path + ": is not a regular file");
+    std::ifstream in(path, std::ios::binary);
+    if (!in) throw Error(path + ": cannot be read (" + std::strerror(errno) + ")");
+    std::array<unsigned char, 8> head{};
+    in.read(reinterpret_cast<char*>(head.data()), head.size());
+    const auto n = static_cast<std::size_t>(in.gcount());
+    if (n == 0) throw Error(path + ": the file is empty");
+    if (const char* kind = non_mesh_kind(head, n))
+        throw Error(path + ": is " + kind + ", not a mesh file");
+    if (const std::string problem = binary_ply_problem(in, fs::file_size(path, ec));
+        !problem.empty())
+        throw Error(path + ": " + problem);
+}
+
+// Assimp's messages are written for developers; say the common ones plainly.
+std::string plain_assimp_error(std::string why) {
+    while (!why.empty() && (why.back() == '\n' || why.back() == '\r')) why.pop_back();
+    if (why.empty()) return "cannot be read as a mesh";
+    if (why.find("contains no faces") != std::string::npos ||
+        why.find("no meshes") != std::string::npos)
+        return "contains no faces";
+    if (why.find("No suitable reader") != std::string::npos)
+        return "is not in a mesh format Assimp can read";
+    return "cannot be read as a mesh (" + why + ")";
+}
+
+} // namespace
+
+TriangleSoup read_triangle_soup(const std::string& path) {
+    check_readable(path);
+
+    Assimp::Importer importer;
+    // Points and lines carry no surface; drop them rather than fail on them.
+    importer.SetPropertyInteger(AI_CONFIG_PP_SBP_REMOVE,
+                                aiPrimitiveType_POINT | aiPrimitiveType_LINE);
+    const aiScene* scene = importer.ReadFile(
+        path, aiProcess_Triangulate | aiProcess_SortByPType | aiProcess_ValidateDataStructure);
+    if (!scene) throw Error(path + ": " + plain_assimp_error(importer.GetErrorString()));
+    if (scene->mNumMeshes == 0 || !scene->mRootNode)
+        throw Error(path + ": contains no mesh with faces");
+
+    TriangleSoup soup;
+    std::function<void(const aiNode*, const aiMatrix4x4&)> visit =
+        [&](const aiNode* node, const aiMatrix4x4& parent) {
+            const aiMatrix4x4 xf = parent * node->mTransformation;
+            for (unsigned m = 0; m < node->mNumMeshes; ++m) {
+                if (node->mMeshes[m] >= scene->mNumMeshes) continue;
+                const aiMesh* mesh = scene->mMeshes[node->mMeshes[m]];
+                if (!(mesh->mPrimitiveTypes & aiPrimitiveType_TRIANGLE)) continue;
+                const auto base = static_cast<std::uint32_t>(soup.positions.size());
+                for (unsigned v = 0; v < mesh->mNumVertices; ++v) {
+                    const aiVector3D& p = mesh->mVertices[v];
+                    // Transform in double so welding sees exactly repeatable values.
+                    glm::dvec3 q{};
+                    for (int r = 0; r < 3; ++r)
+                        q[r] = double(xf[r][0]) * p.x + double(xf[r][1]) * p.y +
+                               double(xf[r][2]) * p.z + double(xf[r][3]);
+                    soup.positions.push_back(q);
+                }
+                for (unsigned f = 0; f < mesh->mNumFaces; ++f) {
+                    const aiFace& face = mesh->mFaces[f];
+                    if (face.mNumIndices != 3) continue;
+                    soup.triangles.push_back(
+                        {base + face.mIndices[0], base + face.mIndices[1], base + face.mIndices[2]});
+                }
+            }
+            for (unsigned c = 0; c < node->mNumChildren; ++c) visit(node->mChildren[c], xf);
+        };
+    visit(scene->mRootNode, aiMatrix4x4());
+    return soup;
+}
+
+LoadedMesh import_mesh(const std::string& path) {
+    TriangleSoup soup = read_triangle_soup(path);
+    try {
+        return build_mesh(soup, path);
+    } catch (const Error& e) {
+        throw Error(path + ": " + e.what());
+    }
+}
+
+LoadedMesh load_mesh(const std::string& spec) {
+    if (spec.rfind("proc:", 0) == 0) return build_mesh(make_procedural(spec.substr(5)), spec);
+    return import_mesh(spec);
+}
+
+} // namespace snaxels

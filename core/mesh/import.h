@@ -1,0 +1,22 @@
+#pragma once
+/// Reads any mesh file Assimp understands into one welded, repaired Mesh in
+/// the file's own coordinates (every scene node with its transform applied).
+
+#include <string>
+
+#include "core/mesh/build.h"
+
+namespace snaxels {
+
+/// Reads the triangles of every mesh instance in the scene of @p path.
+/// Throws snaxels::Error "PATH: problem" for unreadable or invalid input.
+TriangleSoup read_triangle_soup(const std::string& path);
+
+/// read_triangle_soup followed by build_mesh; errors name @p path.
+LoadedMesh import_mesh(const std::string& path);
+
+/// Either a file path or a procedural description "proc:NAME[:FACES]"
+/// (see procedural.h); the one entry point the CLI and the GUI use.
+LoadedMesh load_mesh(const std::string& spec);
+
+} // namespace snaxels

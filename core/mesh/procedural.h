@@ -1,0 +1,31 @@
+#pragma once
+/// Procedural closed meshes at any resolution, for tests, defaults and
+/// benchmarks. Each generator aims at a face count; the result is within a
+/// few percent of it (grids are whole numbers of cells).
+
+#include <cstddef>
+#include <string>
+#include <vector>
+
+#include "core/mesh/triangle_soup.h"
+
+namespace snaxels {
+
+/// Torus around +Z with major radius 1 and minor radius 0.4.
+TriangleSoup make_torus(std::size_t target_faces);
+/// Unit sphere: a subdivided cube projected onto the sphere (no poles).
+TriangleSoup make_sphere(std::size_t target_faces);
+/// Sphere with radial sine bumps: r = 1 + 0.12 sin(6x) sin(6y) sin(6z).
+TriangleSoup make_bumpy_sphere(std::size_t target_faces);
+/// A head-like closed surface with a long nose and nostril and brow bumps:
+/// many saddles, so the visual contour changes topology often as it turns.
+TriangleSoup make_nose(std::size_t target_faces);
+
+/// The generator names accepted by make_procedural.
+std::vector<std::string> procedural_names();
+
+/// Parses "NAME[:FACES]" (for instance "torus:100000"); FACES defaults to
+/// 20000. Throws snaxels::Error on an unknown name or a bad face count.
+TriangleSoup make_procedural(const std::string& description);
+
+} // namespace snaxels

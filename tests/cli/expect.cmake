@@ -1,0 +1,32 @@
+# Runs one command and checks its exit code and output.
+#   cmake -DCMD=<|-separated command> -DEXPECT_RC=<n> [-DEXPECT_STDERR=<regex>]
+#         [-DEXPECT_STDOUT=<regex>] [-DEXPECT_NO_FILE=<path>] -P expect.cmake
+if(NOT DEFINED CMD OR NOT DEFINED EXPECT_RC)
+  message(FATAL_ERROR "expect.cmake needs CMD and EXPECT_RC")
+endif()
+string(REPLACE "|" ";" CMD "${CMD}")
+if(DEFINED EXPECT_NO_FILE)
+  file(REMOVE "${EXPECT_NO_FILE}")
+endif()
+execute_process(COMMAND ${CMD}
+  RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err TIMEOUT 120)
+message("exit code: ${rc}\nstdout:\n${out}\nstderr:\n${err}")
+if(NOT "${rc}" STREQUAL "${EXPECT_RC}")
+  message(FATAL_ERROR "expected exit code ${EXPECT_RC}, got ${rc}")
+endif()
+if(DEFINED EXPECT_STDERR AND NOT err MATCHES "${EXPECT_STDERR}")
+  message(FATAL_ERROR "stderr does not match: ${EXPECT_STDERR}")
+endif()
+if(DEFINED EXPECT_STDOUT AND NOT out MATCHES "${EXPECT_STDOUT}")
+  message(FATAL_ERROR "stdout does not match: ${EXPECT_STDOUT}")
+endif()
+if(DEFINED EXPECT_STDERR)
+  # A user-facing error is one line.
+  string(STRIP "${err}" stripped)
+  if(stripped MATCHES "\n")
+    message(FATAL_ERROR "the error message is more than one line")
+  endif()
+endif()
+if(DEFINED EXPECT_NO_FILE AND EXISTS "${EXPECT_NO_FILE}")
+  message(FATAL_ERROR "a failed run left ${EXPECT_NO_FILE} behind")
+endif()

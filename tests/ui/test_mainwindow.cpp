@@ -1,0 +1,77 @@
+// The main window under a real X server (xvfb-run): the default scene loads
+// on a worker thread and the 3-D view shows it shaded.
+
+#include <QApplication>
+#include <QDir>
+#include <QSet>
+#include <QSignalSpy>
+#include <QStandardPaths>
+#include <QSurfaceFormat>
+#include <QTest>
+
+#include "ui/mainwindow.h"
+#include "ui/meshview.h"
+#include "ui/resources.h"
+
+using snaxels::ui::MainWindow;
+
+class TestMainWindow : public QObject {
+    Q_OBJECT
+  private slots:
+    void initTestCase() { QStandardPaths::setTestModeEnabled(true); }
+
+    void showsTheDefaultSceneShaded() {
+        MainWindow window;
+        window.resize(900, 700);
+        window.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&window));
+        QSignalSpy loaded(&window, &MainWindow::meshLoaded);
+        window.openMesh(snaxels::ui::defaultScenePath());
+        QVERIFY(loaded.wait(60000));
+        QCOMPARE(window.mesh()->report.vertices, std::size_t(2930));
+        QTest::qWait(200);
+
+        const QImage image = window.meshView()->grabFramebuffer().convertToFormat(QImage::Format_RGB32);
+        QDir().mkpath(SCREENSHOT_DIR);
+        image.save(QString(SCREENSHOT_DIR) + "/mainwindow-default-scene.png");
+        window.grab().save(QString(SCREENSHOT_DIR) + "/mainwindow-whole.png");
+
+        const QRgb background = image.pixel(2, 2);
+        qsizetype covered = 0;
+        QSet<int> shades;
+        for (int y = 0; y < image.height(); ++y)
+            for (int x = 0; x < image.width(); ++x) {
+                const QRgb p = image.pixel(x, y);
+                if (p == background) continue;
+                ++covered;
+                shades.insert(qGray(p));
+            }
+        const double coverage = double(covered) / (image.width() * image.height());
+        // The cow fills a good part of the view, shaded in many tones.
+        QVERIFY2(coverage > 0.08, qPrintable(QString("coverage %1").arg(coverage)));
+        QVERIFY2(shades.size() > 40, qPrintable(QString("%1 shades").arg(shades.size())));
+    }
+
+    void reportsAFileThatFailsToLoad() {
+        MainWindow window;
+        window.show();
+        QSignalSpy failed(&window, &MainWindow::loadFailed);
+        window.openMesh(QString(SNAXELS_TEST_ASSETS) + "/bad/empty.obj");
+        QVERIFY(failed.wait(30000));
+        QVERIFY(failed.first().first().toString().contains("the file is empty"));
+        QVERIFY(window.mesh() == nullptr);
+    }
+};
+
+int main(int argc, char** argv) {
+    QSurfaceFormat format;
+    format.setVersion(3, 3);
+    format.setProfile(QSurfaceFormat::CoreProfile);
+    format.setDepthBufferSize(24);
+    QSurfaceFormat::setDefaultFormat(format);
+    QApplication app(argc, argv);
+    TestMainWindow test;
+    return QTest::qExec(&test, argc, argv);
+}
+
+#include "test_mainwindow.moc"

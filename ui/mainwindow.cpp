@@ -1,0 +1,160 @@
+#include "ui/mainwindow.h"
+
+#include <QAction>
+#include <QApplication>
+#include <QCloseEvent>
+#include <QDragEnterEvent>
+#include <QDropEvent>
+#include <QFileDialog>
+#include <QFileInfo>
+#include <QLabel>
+#include <QMenuBar>
+#include <QMessageBox>
+#include <QMimeData>
+#include <QProgressBar>
+#include <QSettings>
+#include <QStatusBar>
+#include <QtConcurrent/QtConcurrentRun>
+
+#include "core/error.h"
+#include "core/mesh/import.h"
+#include "ui/meshview.h"
+
+namespace snaxels::ui {
+namespace {
+
+constexpr int kMaxRecent = 8;
+
+LoadResult loadInBackground(const QString& spec) {
+    LoadResult result;
+    try {
+        result.mesh = std::make_shared<const LoadedMesh>(load_mesh(spec.toStdString()));
+    } catch (const std::bad_alloc&) {
+        result.error = spec + ": out of memory while loading";
+    } catch (const std::exception& e) {
+        result.error = QString::fromStdString(e.what());
+    }
+    return result;
+}
+
+} // namespace
+
+MainWindow::MainWindow(QWidget* parent)
+    : QMainWindow(parent), view_(new MeshView(this)), meshLabel_(new QLabel(this)),
+      busy_(new QProgressBar(this)) {
+    setWindowTitle("snaxels");
+    setCentralWidget(view_);
+    setAcceptDrops(true);
+    busy_->setRange(0, 0); // indeterminate: importers report no progress
+    busy_->setMaximumWidth(160);
+    busy_->hide();
+    statusBar()->addPermanentWidget(meshLabel_);
+    statusBar()->addPermanentWidget(busy_);
+    createMenus();
+    connect(&watcher_, &QFutureWatcher<LoadResult>::finished, this, &MainWindow::onLoadFinished);
+
+    QSettings settings;
+    restoreGeometry(settings.value("window/geometry").toByteArray());
+    restoreState(settings.value("window/state").toByteArray());
+}
+
+MainWindow::~MainWindow() { watcher_.waitForFinished(); }
+
+void MainWindow::createMenus() {
+    QMenu* file = menuBar()->addMenu(tr("&File"));
+    QAction* open = file->addAction(tr("&Open Mesh…"), this, [this] {
+        const QString path = QFileDialog::getOpenFileName(
+            this, tr("Open Mesh"), QSettings().value("paths/lastDir").toString(),
+            tr("Meshes (*.obj *.ply *.stl *.off *.gltf *.glb *.fbx *.dae *.3ds *.x *.blend);;"
+               "All files (*)"));
+        if (path.isEmpty()) return;
+        QSettings().setValue("paths/lastDir", QFileInfo(path).absolutePath());
+        openMesh(path);
+    });
+    open->setShortcut(QKeySequence::Open);
+    recentMenu_ = file->addMenu(tr("Open &Recent"));
+    rebuildRecentMenu();
+    file->addSeparator();
+    QAction* quit = file->addAction(tr("&Quit"), this, &QWidget::close);
+    quit->setShortcut(QKeySequence::Quit);
+
+    QMenu* viewMenu = menuBar()->addMenu(tr("&View"));
+    QAction* reset = viewMenu->addAction(tr("&Reset Camera"), view_, &MeshView::resetCamera);
+    reset->setShortcut(Qt::Key_Home);
+}
+
+void MainWindow::openMesh(const QString& spec) {
+    if (watcher_.isRunning()) {
+        statusBar()->showMessage(tr("Still loading %1; try again when it is done").arg(loadingSpec_),
+                                 4000);
+        return;
+    }
+    loadingSpec_ = spec;
+    busy_->show();
+    statusBar()->showMessage(tr("Loading %1…").arg(QFileInfo(spec).fileName()));
+    watcher_.setFuture(QtConcurrent::run(loadInBackground, spec));
+}
+
+void MainWindow::onLoadFinished() {
+    busy_->hide();
+    const LoadResult result = watcher_.result();
+    if (!result.mesh) {
+        statusBar()->showMessage(tr("Could not open %1").arg(loadingSpec_), 8000);
+        auto* box = new QMessageBox(QMessageBox::Warning, tr("Could not open mesh"), result.error,
+                                    QMessageBox::Ok, this);
+        box->setAttribute(Qt::WA_DeleteOnClose);
+        box->open();
+        emit loadFailed(result.error);
+        return;
+    }
+    mesh_ = result.mesh;
+    view_->setMesh(mesh_->mesh);
+    const MeshReport& r = mesh_->report;
+    meshLabel_->setText(tr("%1 vertices, %2 faces, %3 boundary edges%4")
+                            .arg(r.vertices)
+                            .arg(r.faces)
+                            .arg(r.boundary_edges)
+                            .arg(r.split_vertices ? tr(", %1 vertices split").arg(r.split_vertices)
+                                                  : QString()));
+    setWindowTitle(tr("%1 — snaxels").arg(QFileInfo(loadingSpec_).fileName()));
+    statusBar()->showMessage(tr("Loaded %1").arg(loadingSpec_), 4000);
+    if (!loadingSpec_.startsWith("proc:")) addRecentFile(QFileInfo(loadingSpec_).absoluteFilePath());
+    emit meshLoaded(loadingSpec_);
+}
+
+void MainWindow::addRecentFile(const QString& path) {
+    QSettings settings;
+    QStringList recent = settings.value("recentFiles").toStringList();
+    recent.removeAll(path);
+    recent.prepend(path);
+    while (recent.size() > kMaxRecent) recent.removeLast();
+    settings.setValue("recentFiles", recent);
+    rebuildRecentMenu();
+}
+
+void MainWindow::rebuildRecentMenu() {
+    recentMenu_->clear();
+    const QStringList recent = QSettings().value("recentFiles").toStringList();
+    for (const QString& path : recent)
+        recentMenu_->addAction(QFileInfo(path).fileName(), this, [this, path] { openMesh(path); })
+            ->setToolTip(path);
+    recentMenu_->setEnabled(!recent.isEmpty());
+}
+
+void MainWindow::closeEvent(QCloseEvent* event) {
+    QSettings settings;
+    settings.setValue("window/geometry", saveGeometry());
+    settings.setValue("window/state", saveState());
+    event->accept();
+}
+
+void MainWindow::dragEnterEvent(QDragEnterEvent* event) {
+    if (event->mimeData()->hasUrls()) event->acceptProposedAction();
+}
+
+void MainWindow::dropEvent(QDropEvent* event) {
+    const auto urls = event->mimeData()->urls();
+    if (!urls.isEmpty() && urls.first().isLocalFile()) openMesh(urls.first().toLocalFile());
+}
+
+} // namespace snaxels::ui

@@ -1,0 +1,63 @@
+#pragma once
+// The main window: the 3-D view, menus, recent files, drag-and-drop and a
+// status bar with the mesh report. Meshes load on a worker thread so the
+// window never freezes.
+
+#include <memory>
+
+#include <QFutureWatcher>
+#include <QMainWindow>
+
+#include "core/mesh/build.h"
+
+class QLabel;
+class QMenu;
+class QProgressBar;
+
+namespace snaxels::ui {
+
+class MeshView;
+
+/// What a background load produces: a mesh or the one-line reason it failed.
+struct LoadResult {
+    std::shared_ptr<const LoadedMesh> mesh;
+    QString error;
+};
+
+class MainWindow : public QMainWindow {
+    Q_OBJECT
+  public:
+    explicit MainWindow(QWidget* parent = nullptr);
+    ~MainWindow() override;
+
+    /// Starts loading @p spec (a file path or proc:NAME[:FACES]) in the background.
+    void openMesh(const QString& spec);
+    const LoadedMesh* mesh() const { return mesh_.get(); }
+    MeshView* meshView() const { return view_; }
+    bool isLoading() const { return watcher_.isRunning(); }
+
+  signals:
+    void meshLoaded(const QString& spec);
+    void loadFailed(const QString& message);
+
+  protected:
+    void closeEvent(QCloseEvent* event) override;
+    void dragEnterEvent(QDragEnterEvent* event) override;
+    void dropEvent(QDropEvent* event) override;
+
+  private:
+    void createMenus();
+    void onLoadFinished();
+    void addRecentFile(const QString& path);
+    void rebuildRecentMenu();
+
+    MeshView* view_;
+    QMenu* recentMenu_ = nullptr;
+    QLabel* meshLabel_;
+    QProgressBar* busy_;
+    QFutureWatcher<LoadResult> watcher_;
+    QString loadingSpec_;
+    std::shared_ptr<const LoadedMesh> mesh_;
+};
+
+} // namespace snaxels::ui

@@ -1,0 +1,174 @@
+#include "ui/meshview.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include <QMouseEvent>
+#include <QWheelEvent>
+#include <glm/gtc/matrix_transform.hpp>
+#include <glm/gtc/type_ptr.hpp>
+
+namespace snaxels::ui {
+namespace {
+
+constexpr double kFovDeg = 35.0;
+
+const char* kVertexShader = R"(#version 330 core
+layout(location = 0) in vec3 position;
+layout(location = 1) in vec3 normal;
+uniform mat4 mvp;
+uniform mat4 modelView;
+out vec3 viewNormal;
+void main() {
+    viewNormal = mat3(modelView) * normal;
+    gl_Position = mvp * vec4(position, 1.0);
+}
+)";
+
+// Two-sided: open meshes show their inside, lit as well as the outside.
+const char* kFragmentShader = R"(#version 330 core
+in vec3 viewNormal;
+out vec4 colour;
+void main() {
+    vec3 n = normalize(viewNormal);
+    if (!gl_FrontFacing) n = -n;
+    vec3 key = normalize(vec3(-0.5, 0.6, 0.65));
+    float diffuse = max(dot(n, key), 0.0);
+    float fill = 0.35 * max(n.z, 0.0);
+    vec3 base = vec3(0.80, 0.78, 0.74);
+    colour = vec4(base * (0.18 + 0.7 * diffuse + fill), 1.0);
+}
+)";
+
+} // namespace
+
+MeshView::MeshView(QWidget* parent) : QOpenGLWidget(parent) {
+    setFocusPolicy(Qt::StrongFocus);
+    setMinimumSize(200, 150);
+}
+
+MeshView::~MeshView() {
+    if (!glReady_) return;
+    makeCurrent();
+    vbo_.destroy();
+    vao_.destroy();
+    doneCurrent();
+}
+
+void MeshView::setMesh(const Mesh& mesh) {
+    vertices_.clear();
+    vertices_.reserve(mesh.n_faces() * 18);
+    glm::dvec3 lo(std::numeric_limits<double>::max()), hi(-std::numeric_limits<double>::max());
+    for (const auto vh : mesh.vertices()) {
+        lo = glm::min(lo, to_glm(mesh.point(vh)));
+        hi = glm::max(hi, to_glm(mesh.point(vh)));
+    }
+    for (const auto fh : mesh.faces())
+        for (const auto vh : mesh.fv_range(fh)) {
+            const auto& p = mesh.point(vh);
+            const auto& n = mesh.normal(vh);
+            vertices_.insert(vertices_.end(), {float(p[0]), float(p[1]), float(p[2]), float(n[0]),
+                                               float(n[1]), float(n[2])});
+        }
+    vertexCount_ = static_cast<int>(vertices_.size() / 6);
+    centre_ = mesh.n_vertices() ? 0.5 * (lo + hi) : glm::dvec3(0.0);
+    radius_ = mesh.n_vertices() ? std::max(0.5 * glm::length(hi - lo), 1e-9) : 1.0;
+    dirty_ = true;
+    resetCamera();
+}
+
+void MeshView::clearMesh() {
+    vertices_.clear();
+    vertexCount_ = 0;
+    dirty_ = true;
+    update();
+}
+
+void MeshView::resetCamera() {
+    // A three-quarter view from slightly above reads shapes best.
+    yaw_ = 3.8;
+    pitch_ = 0.3;
+    pan_ = glm::dvec3(0.0);
+    distance_ = radius_ / std::sin(glm::radians(kFovDeg * 0.5)) * 1.05;
+    update();
+}
+
+void MeshView::initializeGL() {
+    initializeOpenGLFunctions();
+    program_.addShaderFromSourceCode(QOpenGLShader::Vertex, kVertexShader);
+    program_.addShaderFromSourceCode(QOpenGLShader::Fragment, kFragmentShader);
+    program_.link();
+    vao_.create();
+    vbo_.create();
+    glReady_ = true;
+    dirty_ = true;
+}
+
+void MeshView::upload() {
+    QOpenGLVertexArrayObject::Binder bind(&vao_);
+    vbo_.bind();
+    vbo_.allocate(vertices_.data(), static_cast<int>(vertices_.size() * sizeof(float)));
+    glEnableVertexAttribArray(0);
+    glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, 6 * sizeof(float), nullptr);
+    glEnableVertexAttribArray(1);
+    glVertexAttribPointer(1, 3, GL_FLOAT, GL_FALSE, 6 * sizeof(float),
+                          reinterpret_cast<void*>(3 * sizeof(float)));
+    vbo_.release();
+    dirty_ = false;
+}
+
+glm::dmat4 MeshView::viewMatrix() const {
+    glm::dmat4 v = glm::translate(glm::dmat4(1.0), glm::dvec3(0.0, 0.0, -distance_) + pan_);
+    v = glm::rotate(v, pitch_, glm::dvec3(1, 0, 0));
+    v = glm::rotate(v, yaw_, glm::dvec3(0, 1, 0));
+    return glm::translate(v, -centre_);
+}
+
+glm::dmat4 MeshView::projectionMatrix() const {
+    const double aspect = double(std::max(width(), 1)) / std::max(height(), 1);
+    const double near = std::max(distance_ - radius_ * 1.5, distance_ * 1e-3);
+    return glm::perspective(glm::radians(kFovDeg), aspect, near, distance_ + radius_ * 1.5);
+}
+
+void MeshView::paintGL() {
+    glClearColor(0.16f, 0.17f, 0.19f, 1.0f);
+    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+    if (!vertexCount_) return;
+    if (dirty_) upload();
+    glEnable(GL_DEPTH_TEST);
+    const glm::mat4 mv(viewMatrix());
+    const glm::mat4 mvp(projectionMatrix() * viewMatrix());
+    program_.bind();
+    glUniformMatrix4fv(program_.uniformLocation("mvp"), 1, GL_FALSE, glm::value_ptr(mvp));
+    glUniformMatrix4fv(program_.uniformLocation("modelView"), 1, GL_FALSE, glm::value_ptr(mv));
+    QOpenGLVertexArrayObject::Binder bind(&vao_);
+    glDrawArrays(GL_TRIANGLES, 0, vertexCount_);
+    program_.release();
+}
+
+void MeshView::mousePressEvent(QMouseEvent* event) { lastPos_ = event->position().toPoint(); }
+
+void MeshView::mouseMoveEvent(QMouseEvent* event) {
+    const QPoint pos = event->position().toPoint();
+    const QPoint d = pos - lastPos_;
+    lastPos_ = pos;
+    if (event->buttons() & Qt::LeftButton) {
+        yaw_ += d.x() * 0.01;
+        pitch_ = std::clamp(pitch_ + d.y() * 0.01, -1.55, 1.55);
+    } else if (event->buttons() & (Qt::RightButton | Qt::MiddleButton)) {
+        const double perPixel = 2.0 * distance_ * std::tan(glm::radians(kFovDeg * 0.5)) /
+                                std::max(height(), 1);
+        pan_ += glm::dvec3(d.x() * perPixel, -d.y() * perPixel, 0.0);
+    } else {
+        return;
+    }
+    update();
+}
+
+void MeshView::wheelEvent(QWheelEvent* event) {
+    const double steps = event->angleDelta().y() / 120.0;
+    distance_ = std::clamp(distance_ * std::pow(0.85, steps), radius_ * 0.05, radius_ * 100.0);
+    update();
+}
+
+} // namespace snaxels::ui

@@ -1,0 +1,15 @@
+#include "ui/resources.h"
+
+#include <QCoreApplication>
+#include <QDir>
+
+namespace snaxels::ui {
+
+QString dataDirectory() {
+    const QDir bin(QCoreApplication::applicationDirPath());
+    return QDir::cleanPath(bin.absoluteFilePath("../share/snaxels"));
+}
+
+QString defaultScenePath() { return dataDirectory() + "/resources/spot.obj"; }
+
+} // namespace snaxels::ui

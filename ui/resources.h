@@ -1,0 +1,15 @@
+#pragma once
+// Locates the data the application ships (default scene, presets).
+
+#include <QString>
+
+namespace snaxels::ui {
+
+/// The folder holding resources/ and styles/: share/snaxels next to the
+/// executable's bin/ folder, as in the build tree and in an install.
+QString dataDirectory();
+
+/// The bundled default scene (Keenan Crane's Spot, CC0).
+QString defaultScenePath();
+
+} // namespace snaxels::ui
