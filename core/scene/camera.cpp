@@ -1,0 +1,64 @@
+#include "core/scene/camera.h"
+
+#include <cmath>
+
+#include <nlohmann/json.hpp>
+
+namespace snaxels {
+
+void Camera::screen_basis(glm::dvec3& right, glm::dvec3& screen_up) const {
+    const glm::dvec3 f = forward();
+    glm::dvec3 u = glm::normalize(up);
+    // Looking straight along `up`: fall back to another world axis.
+    if (std::abs(glm::dot(f, u)) > 0.999) u = std::abs(f.z) < 0.9 ? glm::dvec3(0, 0, 1) : glm::dvec3(1, 0, 0);
+    right = glm::normalize(glm::cross(f, u));
+    screen_up = glm::cross(right, f);
+}
+
+Light default_light(const Camera& camera) {
+    glm::dvec3 right, up;
+    camera.screen_basis(right, up);
+    Light light;
+    light.dir = glm::normalize(-camera.forward() + up - right);
+    return light;
+}
+
+ImageProjection::ImageProjection(const Camera& camera, const glm::dvec3& centre, double radius,
+                                 int width, int height)
+    : camera_(camera), centre_(centre), width_(width), height_(height) {
+    camera.screen_basis(right_, up_);
+    forward_ = camera.forward();
+    const double half = 0.5 * std::min(width, height);
+    if (camera.orthographic())
+        scale_ = 0.92 * half / std::max(radius, 1e-12);
+    else
+        scale_ = half / std::tan(0.5 * camera.fov_deg * M_PI / 180.0);
+}
+
+glm::dvec2 ImageProjection::project(const glm::dvec3& p) const {
+    if (camera_.orthographic()) {
+        const glm::dvec3 d = p - centre_;
+        return {0.5 * width_ + scale_ * glm::dot(d, right_), 0.5 * height_ - scale_ * glm::dot(d, up_)};
+    }
+    const glm::dvec3 d = p - camera_.eye;
+    const double depth = std::max(glm::dot(d, forward_), 1e-12);
+    return {0.5 * width_ + scale_ * glm::dot(d, right_) / depth,
+            0.5 * height_ - scale_ * glm::dot(d, up_) / depth};
+}
+
+nlohmann::json to_json(const Camera& c) {
+    if (c.orthographic())
+        return {{"projection", "orthographic"}, {"view_dir", {c.view_dir.x, c.view_dir.y, c.view_dir.z}}};
+    return {{"projection", "perspective"},
+            {"eye", {c.eye.x, c.eye.y, c.eye.z}},
+            {"target", {c.target.x, c.target.y, c.target.z}},
+            {"fov_deg", c.fov_deg}};
+}
+
+nlohmann::json to_json(const Light& l) {
+    if (l.point) return {{"pos", {l.pos.x, l.pos.y, l.pos.z}}};
+    const glm::dvec3 d = glm::normalize(l.dir);
+    return {{"dir", {d.x, d.y, d.z}}};
+}
+
+} // namespace snaxels

@@ -1,0 +1,67 @@
+#pragma once
+/// Camera, light and the projection to image (SVG pixel) coordinates.
+
+#include <glm/glm.hpp>
+#include <nlohmann/json_fwd.hpp>
+
+namespace snaxels {
+
+/// Orthographic (a view direction) or perspective (eye, target, field of view).
+struct Camera {
+    enum class Projection { Orthographic, Perspective };
+    Projection projection = Projection::Orthographic;
+    glm::dvec3 view_dir{0.0, 0.0, 1.0}; ///< orthographic: where the camera looks (eye to scene)
+    glm::dvec3 eye{0.0, 0.0, 5.0};      ///< perspective
+    glm::dvec3 target{0.0};             ///< perspective
+    double fov_deg = 35.0;              ///< perspective: vertical field of view
+    glm::dvec3 up{0.0, 1.0, 0.0};       ///< world direction that appears upward
+
+    bool orthographic() const { return projection == Projection::Orthographic; }
+    /// Unit vector from @p p toward the viewer (V of the paper).
+    glm::dvec3 to_viewer(const glm::dvec3& p) const {
+        return orthographic() ? -glm::normalize(view_dir) : glm::normalize(eye - p);
+    }
+    /// The direction the camera looks, unit.
+    glm::dvec3 forward() const {
+        return glm::normalize(orthographic() ? view_dir : target - eye);
+    }
+    /// Screen right and up vectors in world space (unit, orthogonal to forward()).
+    void screen_basis(glm::dvec3& right, glm::dvec3& screen_up) const;
+};
+
+/// Directional (dir points from the surface toward the light) or point light.
+struct Light {
+    bool point = false;
+    glm::dvec3 dir{-1.0, 1.0, -1.0};
+    glm::dvec3 pos{0.0};
+    /// Unit vector from @p p toward the light (L of the paper).
+    glm::dvec3 to_light(const glm::dvec3& p) const {
+        return point ? glm::normalize(pos - p) : glm::normalize(dir);
+    }
+};
+
+/// Light from the viewer's upper left for @p camera: the default light.
+Light default_light(const Camera& camera);
+
+/// Maps world points to image pixels (x right, y down). Orthographic views
+/// fit the given bounding sphere into the image with a margin; perspective
+/// views map the field of view to the image height.
+class ImageProjection {
+  public:
+    ImageProjection(const Camera& camera, const glm::dvec3& centre, double radius, int width,
+                    int height);
+    glm::dvec2 project(const glm::dvec3& p) const;
+    int width() const { return width_; }
+    int height() const { return height_; }
+
+  private:
+    Camera camera_;
+    glm::dvec3 right_{}, up_{}, forward_{}, centre_{};
+    double scale_ = 1.0; ///< pixels per world unit (orthographic) or focal length in pixels
+    int width_, height_;
+};
+
+nlohmann::json to_json(const Camera& camera);
+nlohmann::json to_json(const Light& light);
+
+} // namespace snaxels

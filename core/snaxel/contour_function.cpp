@@ -1,0 +1,84 @@
+#include "core/snaxel/contour_function.h"
+
+#include <algorithm>
+#include <charconv>
+#include <cmath>
+
+#include "core/error.h"
+
+namespace snaxels {
+
+std::string ContourSpec::kind_name() const {
+    switch (kind) {
+    case ContourKind::Visual: return "visual";
+    case ContourKind::Shadow: return "shadow";
+    case ContourKind::Isophote: return "isophote";
+    case ContourKind::Gleam: return "gleam";
+    }
+    return "visual";
+}
+
+std::string ContourSpec::label() const {
+    if (kind == ContourKind::Visual || kind == ContourKind::Shadow) return kind_name();
+    char buf[64];
+    std::snprintf(buf, sizeof buf, "%s:%g", kind_name().c_str(), k);
+    return buf;
+}
+
+ContourSpec ContourSpec::parse(const std::string& text) {
+    const auto colon = text.find(':');
+    const std::string name = text.substr(0, colon);
+    ContourSpec spec;
+    if (name == "visual" || name == "shadow") {
+        if (colon != std::string::npos)
+            throw Error("contour kind '" + text + "': " + name + " takes no value");
+        spec.kind = name == "visual" ? ContourKind::Visual : ContourKind::Shadow;
+        return spec;
+    }
+    if (name != "isophote" && name != "gleam")
+        throw Error("unknown contour kind '" + text +
+                    "' (expected visual, shadow, isophote:K or gleam:K)");
+    spec.kind = name == "isophote" ? ContourKind::Isophote : ContourKind::Gleam;
+    if (colon == std::string::npos)
+        throw Error("contour kind '" + text + "' needs a value, for example " + name +
+                    (name == "gleam" ? ":0.9" : ":0.5"));
+    const std::string value = text.substr(colon + 1);
+    const auto [end, ec] = std::from_chars(value.data(), value.data() + value.size(), spec.k);
+    if (ec != std::errc() || end != value.data() + value.size() || !std::isfinite(spec.k) ||
+        spec.k < -1.0 || spec.k > 1.0)
+        throw Error("contour kind '" + text + "': K must be a number from -1 to 1 (a cosine)");
+    return spec;
+}
+
+double ContourFunction::operator()(const glm::dvec3& p, const glm::dvec3& n) const {
+    const glm::dvec3 v = camera_.to_viewer(p);
+    const double nv = glm::dot(n, v);
+    switch (spec_.kind) {
+    case ContourKind::Visual: return nv;
+    case ContourKind::Shadow: return std::min(glm::dot(n, light_.to_light(p)), nv);
+    case ContourKind::Isophote: return std::min(glm::dot(n, light_.to_light(p)) - spec_.k, nv);
+    case ContourKind::Gleam: {
+        const glm::dvec3 l = light_.to_light(p);
+        const glm::dvec3 r = 2.0 * glm::dot(n, l) * n - l;
+        return std::min(glm::dot(v, r) - spec_.k, nv);
+    }
+    }
+    return nv;
+}
+
+glm::dvec3 slerp_normal(const glm::dvec3& na, const glm::dvec3& nb, double t) {
+    const double c = std::clamp(glm::dot(na, nb), -1.0, 1.0);
+    const double theta = std::acos(c);
+    const double s = std::sin(theta);
+    if (s < 1e-9) {
+        // Aligned: the limit is na. (Opposite normals have no unique arc;
+        // fall back to normalized linear interpolation.)
+        if (c > 0.0) return na;
+        const glm::dvec3 m = (1.0 - t) * na + t * nb;
+        const double len = glm::length(m);
+        return len > 1e-12 ? m / len : na;
+    }
+    return (std::sin((1.0 - t) * theta) * na + std::sin(t * theta) * nb) / s;
+}
+
+} // namespace snaxels

@@ -1,0 +1,112 @@
+#include "core/snaxel/fronts.h"
+
+namespace snaxels {
+
+namespace {
+constexpr std::int32_t kNone = MeshTopology::kNone;
+}
+
+Fronts extract_fronts(const MeshTopology& topo, const std::vector<std::uint8_t>& inside) {
+    Fronts fronts;
+    fronts.edge_snaxel.assign(topo.n_edges(), kNone);
+    for (std::size_t e = 0; e < topo.n_edges(); ++e) {
+        const auto [a, b] = topo.edge_vertices[e];
+        if (inside[a] == inside[b]) continue;
+        Snaxel s;
+        s.edge = static_cast<std::int32_t>(e);
+        s.inside = inside[a] ? a : b;
+        s.outside = inside[a] ? b : a;
+        fronts.edge_snaxel[e] = static_cast<std::int32_t>(fronts.snaxels.size());
+        fronts.snaxels.push_back(s);
+    }
+    // In each face the boundary enters across the edge whose halfedge runs
+    // outside -> inside and leaves across the one running inside -> outside;
+    // linking leave -> enter keeps R on the left of every loop.
+    for (std::size_t f = 0; f < topo.n_faces(); ++f) {
+        const auto& fv = topo.face_vertices[f];
+        std::int32_t leave = kNone, enter = kNone;
+        for (int k = 0; k < 3; ++k) {
+            const bool here = inside[fv[k]], there = inside[fv[(k + 1) % 3]];
+            if (here && !there) leave = fronts.edge_snaxel[topo.face_edges[f][k]];
+            if (!here && there) enter = fronts.edge_snaxel[topo.face_edges[f][k]];
+        }
+        if (leave == kNone) continue;
+        fronts.snaxels[leave].next = enter;
+        fronts.snaxels[enter].prev = leave;
+    }
+    // Loops: open chains from their start, then the remaining cycles.
+    auto trace = [&](std::int32_t start, bool closed) {
+        FrontLoop loop;
+        loop.first = start;
+        loop.closed = closed;
+        const auto id = static_cast<std::int32_t>(fronts.loops.size());
+        std::int32_t s = start;
+        do {
+            fronts.snaxels[s].loop = id;
+            ++loop.size;
+            s = fronts.snaxels[s].next;
+        } while (s != kNone && s != start);
+        fronts.loops.push_back(loop);
+    };
+    for (std::size_t s = 0; s < fronts.snaxels.size(); ++s)
+        if (fronts.snaxels[s].prev == kNone) trace(static_cast<std::int32_t>(s), false);
+    for (std::size_t s = 0; s < fronts.snaxels.size(); ++s)
+        if (fronts.snaxels[s].loop == kNone) trace(static_cast<std::int32_t>(s), true);
+    return fronts;
+}
+
+std::string check_fronts(const MeshTopology& topo, const Fronts& fronts,
+                         const std::vector<std::uint8_t>& inside) {
+    const auto n = static_cast<std::int32_t>(fronts.snaxels.size());
+    std::vector<std::uint8_t> edge_used(topo.n_edges(), 0);
+    for (std::int32_t i = 0; i < n; ++i) {
+        const Snaxel& s = fronts.snaxels[i];
+        const std::string at = "snaxel " + std::to_string(i) + ": ";
+        if (s.edge < 0 || std::size_t(s.edge) >= topo.n_edges()) return at + "not on a live edge";
+        const auto [a, b] = topo.edge_vertices[s.edge];
+        if (!((s.inside == a && s.outside == b) || (s.inside == b && s.outside == a)))
+            return at + "its ends are not its edge's vertices";
+        if (!inside[s.inside] || inside[s.outside]) return at + "does not separate R from the rest";
+        if (!(s.t >= 0.0 && s.t <= 1.0)) return at + "t = " + std::to_string(s.t) + " outside [0,1]";
+        if (edge_used[s.edge]++) return at + "shares its edge with another snaxel";
+        if (fronts.edge_snaxel[s.edge] != i) return at + "the edge lookup does not point back";
+        for (const std::int32_t other : {s.next, s.prev}) {
+            if (other == kNone) {
+                if (!topo.is_boundary_edge(s.edge)) return at + "loop ends on an interior edge";
+                continue;
+            }
+            if (other < 0 || other >= n) return at + "links outside the pool";
+            const auto& f1 = topo.edge_faces[s.edge];
+            const auto& f2 = topo.edge_faces[fronts.snaxels[other].edge];
+            bool common = false;
+            for (const auto x : f1)
+                for (const auto y : f2) common |= x != kNone && x == y;
+            if (!common) return at + "its loop neighbour is not on a common face";
+        }
+        if (s.next != kNone && fronts.snaxels[s.next].prev != i) return at + "next/prev not symmetric";
+        if (s.loop < 0 || std::size_t(s.loop) >= fronts.loops.size()) return at + "belongs to no loop";
+    }
+    for (std::size_t e = 0; e < topo.n_edges(); ++e) {
+        const auto [a, b] = topo.edge_vertices[e];
+        if (inside[a] != inside[b] && !edge_used[e])
+            return "edge " + std::to_string(e) + " crosses the front but holds no snaxel";
+    }
+    std::size_t counted = 0;
+    for (std::size_t l = 0; l < fronts.loops.size(); ++l) {
+        const FrontLoop& loop = fronts.loops[l];
+        std::int32_t s = loop.first;
+        if (!loop.closed && fronts.snaxels[s].prev != kNone) return "open loop " + std::to_string(l) + " does not start at its end";
+        for (std::int32_t k = 0; k < loop.size; ++k) {
+            if (s == kNone) return "loop " + std::to_string(l) + " is shorter than its size";
+            if (fronts.snaxels[s].loop != std::int32_t(l)) return "loop " + std::to_string(l) + " runs into another loop";
+            s = fronts.snaxels[s].next;
+        }
+        if (loop.closed && s != loop.first) return "loop " + std::to_string(l) + " is not closed";
+        if (!loop.closed && s != kNone) return "open loop " + std::to_string(l) + " does not end";
+        counted += std::size_t(loop.size);
+    }
+    if (counted != fronts.snaxels.size()) return "loops do not cover every snaxel";
+    return {};
+}
+
+} // namespace snaxels

@@ -1,0 +1,216 @@
+#include "core/snaxel/snaxel_engine.h"
+
+#include <chrono>
+#include <cmath>
+#include <numeric>
+
+#include "core/error.h"
+
+namespace snaxels {
+namespace {
+
+constexpr std::int32_t kNone = MeshTopology::kNone;
+
+struct RegionUnion {
+    std::vector<std::int32_t> parent;
+    std::int32_t add() {
+        parent.push_back(static_cast<std::int32_t>(parent.size()));
+        return parent.back();
+    }
+    std::int32_t find(std::int32_t x) {
+        while (parent[x] != x) x = parent[x] = parent[parent[x]];
+        return x;
+    }
+};
+
+// Sweeps fronts of one sign from the local extrema (maxima of f for the
+// f >= 0 side, minima for f < 0) until every vertex of that side is labelled.
+class Sweep {
+  public:
+    Sweep(const MeshTopology& topo, const std::vector<double>& f, int sign,
+          std::vector<std::int32_t>& label, RegionUnion& regions, std::vector<Region>& info,
+          ContourStats& stats, const EngineOptions& options)
+        : topo_(topo), f_(f), sign_(sign), label_(label), regions_(regions), info_(info),
+          stats_(stats), options_(options) {}
+
+    void run() {
+        std::vector<std::int32_t> frontier, next;
+        seed(frontier);
+        while (!frontier.empty()) {
+            ++stats_.iterations;
+            next.clear();
+            for (const std::int32_t u : frontier) advance(u, next);
+            frontier.swap(next);
+            if (options_.check_invariants) check();
+        }
+    }
+
+  private:
+    bool on_side(std::int32_t v) const { return (f_[v] >= 0.0) == (sign_ > 0); }
+
+    // A front starts around every unvisited local extremum of this side.
+    void seed(std::vector<std::int32_t>& frontier) {
+        for (std::int32_t v = 0; v < std::int32_t(topo_.n_vertices()); ++v) {
+            if (!on_side(v) || label_[v] != kNone) continue;
+            bool extremum = true;
+            for (std::int32_t k = topo_.ring_start[v]; k < topo_.ring_start[v + 1] && extremum; ++k)
+                extremum = sign_ > 0 ? f_[v] >= f_[topo_.ring[k]] : f_[v] <= f_[topo_.ring[k]];
+            if (!extremum) continue;
+            label_[v] = regions_.add();
+            info_.push_back({sign_, v, 0});
+            frontier.push_back(v);
+            ++stats_.seeds;
+        }
+    }
+
+    // The front of u's region fans out past every neighbour on this side.
+    void advance(std::int32_t u, std::vector<std::int32_t>& next) {
+        const std::int32_t mine = regions_.find(label_[u]);
+        for (std::int32_t k = topo_.ring_start[u]; k < topo_.ring_start[u + 1]; ++k) {
+            const std::int32_t w = topo_.ring[k];
+            if (!on_side(w)) continue; // the front stops on this edge: f changes sign
+            if (label_[w] == kNone) {
+                stats_.splits += self_contacts(w, mine);
+                label_[w] = mine;
+                ++stats_.fanouts;
+                next.push_back(w);
+            } else if (const std::int32_t theirs = regions_.find(label_[w]); theirs != mine) {
+                regions_.parent[theirs] = mine; // two fronts annihilate on edge (u, w)
+                ++stats_.merges;
+            }
+        }
+    }
+
+    // Around w, the runs of neighbours already swept by `region`: a front
+    // that reaches w from two or more sides meets itself there.
+    std::size_t self_contacts(std::int32_t w, std::int32_t region) {
+        const std::int32_t begin = topo_.ring_start[w], end = topo_.ring_start[w + 1];
+        if (end - begin < 2) return 0;
+        auto in = [&](std::int32_t k) {
+            const std::int32_t l = label_[topo_.ring[k]];
+            return l != kNone && regions_.find(l) == region;
+        };
+        std::size_t runs = 0;
+        for (std::int32_t k = begin; k < end; ++k)
+            if (in(k) && !in(k == begin ? end - 1 : k - 1)) ++runs;
+        return runs > 1 ? runs - 1 : 0;
+    }
+
+    void check() const {
+        std::vector<std::uint8_t> swept(topo_.n_vertices());
+        for (std::size_t v = 0; v < swept.size(); ++v)
+            swept[v] = label_[v] != kNone && on_side(static_cast<std::int32_t>(v));
+        const Fronts fronts = extract_fronts(topo_, swept);
+        if (const std::string problem = check_fronts(topo_, fronts, swept); !problem.empty())
+            throw Error("snaxel invariant broken after iteration " +
+                        std::to_string(stats_.iterations) + ": " + problem);
+    }
+
+    const MeshTopology& topo_;
+    const std::vector<double>& f_;
+    int sign_;
+    std::vector<std::int32_t>& label_;
+    RegionUnion& regions_;
+    std::vector<Region>& info_;
+    ContourStats& stats_;
+    const EngineOptions& options_;
+};
+
+} // namespace
+
+double polish_root(const MeshTopology& topo, const ContourFunction& f, std::int32_t inside,
+                   std::int32_t outside, double f_inside, double f_outside, double tolerance,
+                   int scan_samples) {
+    const glm::dvec3 pa = topo.positions[inside], pb = topo.positions[outside];
+    const glm::dvec3 na = topo.normals[inside], nb = topo.normals[outside];
+    auto g = [&](double t) { return f((1.0 - t) * pa + t * pb, slerp_normal(na, nb, t)); };
+    double t0 = 0.0, t1 = 1.0, g0 = f_inside, g1 = f_outside;
+    // f may cross zero more than once on an edge (isophotes and gleams are
+    // minima of sinusoids): bracket the crossing nearest the inside end.
+    for (int i = 1; i < scan_samples; ++i) {
+        const double t = double(i) / scan_samples;
+        const double gt = g(t);
+        if (gt < 0.0) {
+            t1 = t;
+            g1 = gt;
+            break;
+        }
+        t0 = t;
+        g0 = gt;
+    }
+    int stale = 0; // which end stayed put last step (Illinois: halve its value)
+    for (int it = 0; it < 200 && t1 - t0 > tolerance; ++it) {
+        double t = (g0 == g1) ? 0.5 * (t0 + t1) : t0 + (t1 - t0) * g0 / (g0 - g1);
+        if (!(t > t0 && t < t1)) t = 0.5 * (t0 + t1);
+        const double gt = g(t);
+        if (gt == 0.0) return t;
+        if (gt > 0.0) {
+            t0 = t;
+            g0 = gt;
+            if (stale == 1) g1 *= 0.5;
+            stale = 1;
+        } else {
+            t1 = t;
+            g1 = gt;
+            if (stale == -1) g0 *= 0.5;
+            stale = -1;
+        }
+    }
+    return 0.5 * (t0 + t1);
+}
+
+ContourResult SnaxelEngine::compute(const ContourSpec& spec, const Camera& camera,
+                                    const Light& light, const EngineOptions& options) const {
+    const auto start = std::chrono::steady_clock::now();
+    ContourResult result;
+    result.spec = spec;
+    const ContourFunction f(spec, camera, light);
+    const std::size_t nv = topo_.n_vertices();
+
+    result.vertex_f.resize(nv);
+    for (std::size_t v = 0; v < nv; ++v)
+        result.vertex_f[v] = f(topo_.positions[v], topo_.normals[v]);
+
+    std::vector<std::int32_t> label(nv, kNone);
+    RegionUnion regions;
+    std::vector<Region> info;
+    Sweep(topo_, result.vertex_f, +1, label, regions, info, result.stats, options).run();
+    Sweep(topo_, result.vertex_f, -1, label, regions, info, result.stats, options).run();
+
+    // Converged: compact the merged region labels.
+    std::vector<std::int32_t> compact(info.size(), kNone);
+    result.vertex_region.resize(nv);
+    for (std::size_t v = 0; v < nv; ++v) {
+        if (label[v] == kNone)
+            throw Error("snaxel sweep left vertex " + std::to_string(v) + " unlabelled");
+        const std::int32_t root = regions.find(label[v]);
+        if (compact[root] == kNone) {
+            compact[root] = static_cast<std::int32_t>(result.regions.size());
+            result.regions.push_back(info[root]);
+        }
+        result.vertex_region[v] = compact[root];
+        ++result.regions[compact[root]].vertices;
+    }
+
+    std::vector<std::uint8_t> inside(nv);
+    for (std::size_t v = 0; v < nv; ++v) inside[v] = result.regions[result.vertex_region[v]].sign > 0;
+    result.fronts = extract_fronts(topo_, inside);
+    // N.V along a slerp is one sinusoid over less than half a period: a
+    // single crossing, so only the other kinds need the bracketing scan.
+    const int scan = spec.kind == ContourKind::Visual ? 1 : options.polish_scan_samples;
+    for (Snaxel& s : result.fronts.snaxels)
+        s.t = polish_root(topo_, f, s.inside, s.outside, result.vertex_f[s.inside],
+                          result.vertex_f[s.outside], options.polish_tolerance, scan);
+    if (options.check_invariants) {
+        if (const std::string problem = check_fronts(topo_, result.fronts, inside); !problem.empty())
+            throw Error("snaxel invariant broken after convergence: " + problem);
+        for (std::size_t v = 0; v < nv; ++v)
+            if (bool(inside[v]) != (result.vertex_f[v] >= 0.0))
+                throw Error("region label of vertex " + std::to_string(v) + " disagrees with f");
+    }
+    result.stats.ms =
+        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    return result;
+}
+
+} // namespace snaxels

@@ -1,0 +1,45 @@
+#pragma once
+/// Flat, cache-friendly connectivity of a Mesh for the snaxel engine:
+/// edges with their end vertices and faces, faces with their corners and
+/// edges, and every vertex's neighbours in circular order.
+
+#include <array>
+#include <cstdint>
+#include <vector>
+
+#include <glm/vec3.hpp>
+
+#include "core/mesh/mesh.h"
+
+namespace snaxels {
+
+struct MeshTopology {
+    static constexpr std::int32_t kNone = -1;
+
+    std::vector<glm::dvec3> positions;  ///< #V
+    std::vector<glm::dvec3> normals;    ///< #V, unit
+    std::vector<std::array<std::int32_t, 2>> edge_vertices; ///< #E, (from, to) of halfedge 0
+    std::vector<std::array<std::int32_t, 2>> edge_faces;    ///< #E, kNone on a boundary side
+    std::vector<std::array<std::int32_t, 3>> face_vertices; ///< #F, counter-clockwise
+    std::vector<std::array<std::int32_t, 3>> face_edges;    ///< #F, edge k joins corners k, k+1
+    /// CSR: neighbours of v are ring[ring_start[v] .. ring_start[v+1]), with
+    /// the edge to each in ring_edge, in the circulator's circular order.
+    std::vector<std::int32_t> ring_start, ring, ring_edge;
+    double mean_edge_length = 0.0;
+
+    std::size_t n_vertices() const { return positions.size(); }
+    std::size_t n_edges() const { return edge_vertices.size(); }
+    std::size_t n_faces() const { return face_vertices.size(); }
+    bool is_boundary_edge(std::int32_t e) const {
+        return edge_faces[e][0] == kNone || edge_faces[e][1] == kNone;
+    }
+    /// The edge's other end.
+    std::int32_t opposite(std::int32_t e, std::int32_t v) const {
+        return edge_vertices[e][0] == v ? edge_vertices[e][1] : edge_vertices[e][0];
+    }
+};
+
+/// Builds the flat connectivity of @p mesh (normals as stored on the mesh).
+MeshTopology build_topology(const Mesh& mesh);
+
+} // namespace snaxels
