@@ -19,6 +19,7 @@ const char* const kMeshArgumentHelp =
 const std::vector<Command>& commands() {
     static const std::vector<Command> all = {
         {"info", "print a report on a mesh (counts, repairs, bounding box)", run_info},
+        {"contours", "find visual, shadow, isophote and gleam contours; JSON and SVG", run_contours},
     };
     return all;
 }

@@ -102,12 +102,16 @@ TriangleSoup make_bumpy_sphere(std::size_t target_faces) {
 
 TriangleSoup make_nose(std::size_t target_faces) {
     return make_cube_sphere(target_faces, [](const glm::dvec3& d) {
-        return 1.0 + 0.75 * bump(d, {0.0, -0.15, 1.0}, 0.32)   // the nose
-               + 0.22 * bump(d, {0.28, -0.45, 0.85}, 0.17)     // nostrils
-               + 0.22 * bump(d, {-0.28, -0.45, 0.85}, 0.17)
-               + 0.18 * bump(d, {0.35, 0.45, 0.82}, 0.2)       // brows
-               + 0.18 * bump(d, {-0.35, 0.45, 0.82}, 0.2)
-               + 0.12 * bump(d, {0.0, -1.0, 0.4}, 0.3);         // chin
+        return 1.0 + 0.85 * bump(d, {0.0, -0.05, 1.0}, 0.2)    // the nose
+               + 0.25 * bump(d, {0.0, 0.25, 1.0}, 0.14)         // its bridge
+               + 0.2 * bump(d, {0.2, -0.32, 0.93}, 0.1)         // nostrils
+               + 0.2 * bump(d, {-0.2, -0.32, 0.93}, 0.1)
+               - 0.16 * bump(d, {0.38, 0.3, 0.87}, 0.13)        // eye sockets
+               - 0.16 * bump(d, {-0.38, 0.3, 0.87}, 0.13)
+               + 0.14 * bump(d, {0.4, 0.5, 0.77}, 0.12)         // brows
+               + 0.14 * bump(d, {-0.4, 0.5, 0.77}, 0.12)
+               - 0.1 * bump(d, {0.0, -0.6, 0.8}, 0.12)          // mouth
+               + 0.12 * bump(d, {0.0, -0.85, 0.53}, 0.2);       // chin
     });
 }
 

@@ -17,7 +17,8 @@ TriangleSoup make_torus(std::size_t target_faces);
 TriangleSoup make_sphere(std::size_t target_faces);
 /// Sphere with radial sine bumps: r = 1 + 0.12 sin(6x) sin(6y) sin(6z).
 TriangleSoup make_bumpy_sphere(std::size_t target_faces);
-/// A head-like closed surface with a long nose and nostril and brow bumps:
+/// A head-like closed surface facing +Z: nose, nostrils, brows and chin
+/// bumps and hollow eye sockets and mouth:
 /// many saddles, so the visual contour changes topology often as it turns.
 TriangleSoup make_nose(std::size_t target_faces);
 

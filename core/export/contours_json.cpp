@@ -1,0 +1,56 @@
+#include "core/export/contours_json.h"
+
+namespace snaxels {
+namespace {
+
+nlohmann::json stats_json(const ContourStats& s) {
+    return {{"seeds", s.seeds},     {"iterations", s.iterations}, {"fanouts", s.fanouts},
+            {"merges", s.merges},   {"splits", s.splits},         {"ms", s.ms}};
+}
+
+} // namespace
+
+nlohmann::json contours_to_json(const MeshReport& mesh, const Camera& camera, const Light& light,
+                                const Drawing& drawing, const std::vector<ContourResult>& results) {
+    nlohmann::json doc;
+    doc["mesh"] = {{"source", mesh.source},
+                   {"vertices", mesh.vertices},
+                   {"faces", mesh.faces},
+                   {"split_vertices", mesh.split_vertices}};
+    doc["camera"] = to_json(camera);
+    doc["light"] = to_json(light);
+    doc["image"] = {{"width", drawing.width}, {"height", drawing.height}};
+    ContourStats total;
+    nlohmann::json contours = nlohmann::json::array();
+    for (std::size_t i = 0; i < drawing.contours.size(); ++i) {
+        const DrawnContour& c = drawing.contours[i];
+        const ContourResult& r = results[i];
+        nlohmann::json loops = nlohmann::json::array();
+        for (const DrawnLoop& loop : c.loops) {
+            nlohmann::json snaxels = nlohmann::json::array();
+            for (std::size_t k = 0; k < loop.p.size(); ++k)
+                snaxels.push_back({{"p", {loop.p[k].x, loop.p[k].y, loop.p[k].z}},
+                                   {"q", {loop.q[k].x, loop.q[k].y}}});
+            loops.push_back({{"closed", loop.closed}, {"snaxels", std::move(snaxels)}});
+        }
+        std::size_t positive = 0;
+        for (const Region& region : r.regions) positive += region.sign > 0;
+        contours.push_back({{"kind", c.spec.kind_name()},
+                            {"k", c.spec.k},
+                            {"loops", std::move(loops)},
+                            {"regions",
+                             {{"positive", positive}, {"negative", r.regions.size() - positive}}},
+                            {"stats", stats_json(r.stats)}});
+        total.seeds += r.stats.seeds;
+        total.iterations += r.stats.iterations;
+        total.fanouts += r.stats.fanouts;
+        total.merges += r.stats.merges;
+        total.splits += r.stats.splits;
+        total.ms += r.stats.ms;
+    }
+    doc["contours"] = std::move(contours);
+    doc["stats"] = stats_json(total);
+    return doc;
+}
+
+} // namespace snaxels

@@ -1,0 +1,16 @@
+#pragma once
+/// The contour data as JSON (format documented in docs/contours-json.md).
+
+#include <nlohmann/json.hpp>
+
+#include "core/export/drawing.h"
+#include "core/mesh/report.h"
+
+namespace snaxels {
+
+/// One JSON document with the mesh, camera, light, image size, every
+/// contour's loops of snaxels (p in 3-D, q in pixels) and engine statistics.
+nlohmann::json contours_to_json(const MeshReport& mesh, const Camera& camera, const Light& light,
+                                const Drawing& drawing, const std::vector<ContourResult>& results);
+
+} // namespace snaxels
