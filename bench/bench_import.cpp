@@ -45,4 +45,4 @@ static void BM_ProceduralBumpySphere1M(benchmark::State& state) {
 }
 BENCHMARK(BM_ProceduralBumpySphere1M)->Unit(benchmark::kMillisecond);
 
-BENCHMARK_MAIN();
+

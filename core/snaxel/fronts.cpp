@@ -7,13 +7,23 @@ constexpr std::int32_t kNone = MeshTopology::kNone;
 }
 
 Fronts extract_fronts(const MeshTopology& topo, const std::vector<std::uint8_t>& inside) {
-    Fronts fronts;
-    fronts.edge_snaxel.assign(topo.n_edges(), kNone);
+    std::vector<std::int32_t> crossing;
     for (std::size_t e = 0; e < topo.n_edges(); ++e) {
         const auto [a, b] = topo.edge_vertices[e];
-        if (inside[a] == inside[b]) continue;
+        if (inside[a] != inside[b]) crossing.push_back(static_cast<std::int32_t>(e));
+    }
+    return extract_fronts(topo, inside, crossing);
+}
+
+Fronts extract_fronts(const MeshTopology& topo, const std::vector<std::uint8_t>& inside,
+                      const std::vector<std::int32_t>& crossing_edges) {
+    Fronts fronts;
+    fronts.edge_snaxel.assign(topo.n_edges(), kNone);
+    fronts.snaxels.reserve(crossing_edges.size());
+    for (const std::int32_t e : crossing_edges) {
+        const auto [a, b] = topo.edge_vertices[e];
         Snaxel s;
-        s.edge = static_cast<std::int32_t>(e);
+        s.edge = e;
         s.inside = inside[a] ? a : b;
         s.outside = inside[a] ? b : a;
         fronts.edge_snaxel[e] = static_cast<std::int32_t>(fronts.snaxels.size());
@@ -21,18 +31,22 @@ Fronts extract_fronts(const MeshTopology& topo, const std::vector<std::uint8_t>&
     }
     // In each face the boundary enters across the edge whose halfedge runs
     // outside -> inside and leaves across the one running inside -> outside;
-    // linking leave -> enter keeps R on the left of every loop.
-    for (std::size_t f = 0; f < topo.n_faces(); ++f) {
-        const auto& fv = topo.face_vertices[f];
-        std::int32_t leave = kNone, enter = kNone;
-        for (int k = 0; k < 3; ++k) {
-            const bool here = inside[fv[k]], there = inside[fv[(k + 1) % 3]];
-            if (here && !there) leave = fronts.edge_snaxel[topo.face_edges[f][k]];
-            if (!here && there) enter = fronts.edge_snaxel[topo.face_edges[f][k]];
+    // linking leave -> enter keeps R on the left of every loop. Every face
+    // the front crosses is reached from one of its crossing edges.
+    for (std::size_t i = 0; i < fronts.snaxels.size(); ++i) {
+        for (const std::int32_t f : topo.edge_faces[fronts.snaxels[i].edge]) {
+            if (f == kNone) continue;
+            const auto& fv = topo.face_vertices[f];
+            std::int32_t leave = kNone, enter = kNone;
+            for (int k = 0; k < 3; ++k) {
+                const bool here = inside[fv[k]], there = inside[fv[(k + 1) % 3]];
+                if (here && !there) leave = fronts.edge_snaxel[topo.face_edges[f][k]];
+                if (!here && there) enter = fronts.edge_snaxel[topo.face_edges[f][k]];
+            }
+            if (leave == kNone || enter == kNone) continue; // an incomplete edge list; check_fronts says so
+            fronts.snaxels[leave].next = enter;
+            fronts.snaxels[enter].prev = leave;
         }
-        if (leave == kNone) continue;
-        fronts.snaxels[leave].next = enter;
-        fronts.snaxels[enter].prev = leave;
     }
     // Loops: open chains from their start, then the remaining cycles.
     auto trace = [&](std::int32_t start, bool closed) {

@@ -46,6 +46,11 @@ struct Fronts {
 /// face so R lies on the left when seen from the surface's front side.
 Fronts extract_fronts(const MeshTopology& topology, const std::vector<std::uint8_t>& inside);
 
+/// The same, when the caller already knows the edges R crosses (each once):
+/// costs time in proportion to the front, not to the mesh.
+Fronts extract_fronts(const MeshTopology& topology, const std::vector<std::uint8_t>& inside,
+                      const std::vector<std::int32_t>& crossing_edges);
+
 /// The invariants of a front set: each snaxel on a live edge with t in
 /// [0,1] and its inside/outside ends as @p inside says, at most one snaxel
 /// per edge and one on every edge R crosses, loop neighbours on a common

@@ -33,6 +33,9 @@ class Sweep {
         : topo_(topo), f_(f), sign_(sign), label_(label), regions_(regions), info_(info),
           stats_(stats), options_(options) {}
 
+    /// Edges where the fronts stopped (f changes sign), each once.
+    const std::vector<std::int32_t>& stopped_edges() const { return stopped_; }
+
     void run() {
         std::vector<std::int32_t> frontier, next;
         seed(frontier);
@@ -68,7 +71,10 @@ class Sweep {
         const std::int32_t mine = regions_.find(label_[u]);
         for (std::int32_t k = topo_.ring_start[u]; k < topo_.ring_start[u + 1]; ++k) {
             const std::int32_t w = topo_.ring[k];
-            if (!on_side(w)) continue; // the front stops on this edge: f changes sign
+            if (!on_side(w)) { // the front stops on this edge: f changes sign
+                stopped_.push_back(topo_.ring_edge[k]);
+                continue;
+            }
             if (label_[w] == kNone) {
                 stats_.splits += self_contacts(w, mine);
                 label_[w] = mine;
@@ -114,6 +120,7 @@ class Sweep {
     std::vector<Region>& info_;
     ContourStats& stats_;
     const EngineOptions& options_;
+    std::vector<std::int32_t> stopped_;
 };
 
 } // namespace
@@ -174,7 +181,8 @@ ContourResult SnaxelEngine::compute(const ContourSpec& spec, const Camera& camer
     std::vector<std::int32_t> label(nv, kNone);
     RegionUnion regions;
     std::vector<Region> info;
-    Sweep(topo_, result.vertex_f, +1, label, regions, info, result.stats, options).run();
+    Sweep positive(topo_, result.vertex_f, +1, label, regions, info, result.stats, options);
+    positive.run();
     Sweep(topo_, result.vertex_f, -1, label, regions, info, result.stats, options).run();
 
     // Converged: compact the merged region labels.
@@ -194,7 +202,7 @@ ContourResult SnaxelEngine::compute(const ContourSpec& spec, const Camera& camer
 
     std::vector<std::uint8_t> inside(nv);
     for (std::size_t v = 0; v < nv; ++v) inside[v] = result.regions[result.vertex_region[v]].sign > 0;
-    result.fronts = extract_fronts(topo_, inside);
+    result.fronts = extract_fronts(topo_, inside, positive.stopped_edges());
     // N.V along a slerp is one sinusoid over less than half a period: a
     // single crossing, so only the other kinds need the bracketing scan.
     const int scan = spec.kind == ContourKind::Visual ? 1 : options.polish_scan_samples;

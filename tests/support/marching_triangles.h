@@ -2,7 +2,7 @@
 // The engine's oracle: brute-force marching triangles over every edge of the
 // mesh, independent of the snaxel fronts. Every edge whose end values of f
 // differ in sign (f >= 0 counts as positive) holds one crossing, the one
-// nearest the positive end (a 256-step scan, then plain bisection); crossings are joined through the faces they share and
+// nearest the positive end (a fine scan, then plain bisection); crossings are joined through the faces they share and
 // counted into loops with a union-find.
 
 #include <cstdint>
@@ -21,7 +21,8 @@ struct OracleContour {
     std::size_t open_loops = 0;
 };
 
-inline OracleContour marching_triangles(const MeshTopology& topo, const ContourFunction& f) {
+inline OracleContour marching_triangles(const MeshTopology& topo, const ContourFunction& f,
+                                        int scan = 256) {
     OracleContour out;
     std::vector<double> fv(topo.n_vertices());
     for (std::size_t v = 0; v < fv.size(); ++v) fv[v] = f(topo.positions[v], topo.normals[v]);
@@ -36,14 +37,13 @@ inline OracleContour marching_triangles(const MeshTopology& topo, const ContourF
         };
         // f may cross zero several times on an edge: take the crossing
         // nearest the positive end, found by a fine scan, then bisect.
-        constexpr int kScan = 256;
         double lo = 0.0, hi = 1.0;
-        for (int i = 1; i < kScan; ++i) {
-            if (g(double(i) / kScan) < 0.0) {
-                hi = double(i) / kScan;
+        for (int i = 1; i < scan; ++i) {
+            if (g(double(i) / scan) < 0.0) {
+                hi = double(i) / scan;
                 break;
             }
-            lo = double(i) / kScan;
+            lo = double(i) / scan;
         }
         for (int i = 0; i < 100; ++i) {
             const double mid = 0.5 * (lo + hi);

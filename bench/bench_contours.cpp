@@ -1,0 +1,88 @@
+// From-scratch contour extraction: the snaxel engine against brute-force
+// marching triangles over every edge (the tests' oracle), on the same mesh,
+// view and light. Meshes are loaded once per benchmark, outside the timing.
+
+#include <benchmark/benchmark.h>
+
+#include <map>
+#include <memory>
+
+#include "core/mesh/import.h"
+#include "core/snaxel/snaxel_engine.h"
+#include "tests/support/marching_triangles.h"
+
+using namespace snaxels;
+
+namespace {
+
+struct Prepared {
+    LoadedMesh mesh;
+    MeshTopology topology;
+};
+
+const Prepared& prepared(const std::string& spec) {
+    static std::map<std::string, std::unique_ptr<Prepared>> cache;
+    auto& slot = cache[spec];
+    if (!slot) {
+        const std::string path =
+            spec.rfind("proc:", 0) == 0 ? spec : std::string(SNAXELS_TEST_ASSETS) + "/" + spec;
+        slot = std::make_unique<Prepared>(Prepared{load_mesh(path), {}});
+        slot->topology = build_topology(slot->mesh.mesh);
+    }
+    return *slot;
+}
+
+Camera view() {
+    Camera c;
+    c.view_dir = glm::normalize(glm::dvec3(0.4, -0.3, 1.0));
+    return c;
+}
+
+void engine_bench(benchmark::State& state, const std::string& spec, ContourSpec kind) {
+    const Prepared& p = prepared(spec);
+    const SnaxelEngine engine(p.topology);
+    EngineOptions options;
+    options.check_invariants = false;
+    const Camera cam = view();
+    const Light light = default_light(cam);
+    std::size_t snaxels = 0;
+    for (auto _ : state) {
+        ContourResult r = engine.compute(kind, cam, light, options);
+        snaxels = r.fronts.snaxels.size();
+        benchmark::DoNotOptimize(r.fronts.snaxels.data());
+    }
+    state.counters["faces"] = double(p.topology.n_faces());
+    state.counters["snaxels"] = double(snaxels);
+}
+
+void oracle_bench(benchmark::State& state, const std::string& spec, ContourSpec kind) {
+    const Prepared& p = prepared(spec);
+    const Camera cam = view();
+    const ContourFunction f(kind, cam, default_light(cam));
+    for (auto _ : state) {
+        // The same 8-step bracketing scan as the engine uses for non-visual kinds.
+        auto r = test::marching_triangles(p.topology, f, kind.kind == ContourKind::Visual ? 1 : 8);
+        benchmark::DoNotOptimize(r.points.data());
+    }
+    state.counters["faces"] = double(p.topology.n_faces());
+}
+
+void topology_bench(benchmark::State& state, const std::string& spec) {
+    const Prepared& p = prepared(spec);
+    for (auto _ : state) {
+        MeshTopology t = build_topology(p.mesh.mesh);
+        benchmark::DoNotOptimize(t.ring.data());
+    }
+}
+
+} // namespace
+
+BENCHMARK_CAPTURE(engine_bench, horse_visual, "horse.ply", ContourSpec{})->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(oracle_bench, horse_visual, "horse.ply", ContourSpec{})->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(engine_bench, horse_shadow, "horse.ply", ContourSpec{ContourKind::Shadow, 0.0})->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(oracle_bench, horse_shadow, "horse.ply", ContourSpec{ContourKind::Shadow, 0.0})->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(engine_bench, horse_gleam, "horse.ply", ContourSpec{ContourKind::Gleam, 0.9})->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(engine_bench, bumpy1M_visual, "proc:bumpy:1000000", ContourSpec{})->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(oracle_bench, bumpy1M_visual, "proc:bumpy:1000000", ContourSpec{})->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(engine_bench, torus1M_visual, "proc:torus:1000000", ContourSpec{})->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(topology_bench, horse, "horse.ply")->Unit(benchmark::kMillisecond);
