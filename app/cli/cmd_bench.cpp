@@ -1,0 +1,100 @@
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <functional>
+#include <iostream>
+
+#include "app/cli/args.h"
+#include "app/cli/commands.h"
+#include "core/error.h"
+#include "core/mesh/import.h"
+#include "core/snaxel/snaxel_engine.h"
+
+namespace snaxels::cli {
+namespace {
+
+struct Timing {
+    double min_ms, median_ms;
+};
+
+Timing time_it(int repeat, const std::function<void()>& work) {
+    std::vector<double> ms;
+    for (int i = 0; i < repeat; ++i) {
+        const auto t0 = std::chrono::steady_clock::now();
+        work();
+        ms.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count());
+    }
+    std::sort(ms.begin(), ms.end());
+    return {ms.front(), ms[ms.size() / 2]};
+}
+
+void print_row(const std::string& what, const Timing& t, const std::string& note = {}) {
+    std::printf("  %-28s %10.3f ms median %10.3f ms min  %s\n", what.c_str(), t.median_ms, t.min_ms,
+                note.c_str());
+}
+
+} // namespace
+
+int run_bench(const std::vector<std::string>& argv) {
+    Args args("bench", "bench MESH [--kind KIND]... [--repeat N]",
+              std::string("Times the pipeline on MESH: import (weld, repair, normals), engine\n"
+                          "topology, and from-scratch contours of each KIND (default visual)\n"
+                          "under an orthographic view along 0.4,-0.3,1; prints median and minimum.\n\n") +
+                  kMeshArgumentHelp,
+              {{"kind", "KIND", "contour to time (as for 'contours')", true},
+               {"repeat", "N", "runs per measurement (default 10)"}},
+              {"MESH"});
+    if (!args.parse(argv)) {
+        std::cout << args.help();
+        return 0;
+    }
+    int repeat = 10;
+    if (const auto r = args.value("repeat")) {
+        try {
+            std::size_t used = 0;
+            repeat = std::stoi(*r, &used);
+            if (used != r->size()) repeat = 0;
+        } catch (const std::exception&) {
+            repeat = 0;
+        }
+        if (repeat < 1 || repeat > 10000) throw UsageError("--repeat takes a whole number from 1 to 10000");
+    }
+    std::vector<ContourSpec> kinds;
+    for (const auto& k : args.values("kind")) {
+        try {
+            kinds.push_back(ContourSpec::parse(k));
+        } catch (const Error& e) {
+            throw UsageError(e.what());
+        }
+    }
+    if (kinds.empty()) kinds.push_back({});
+
+    const std::string spec = args.positional()[0];
+    LoadedMesh loaded = load_mesh(spec); // fails early, with the usual message, on bad input
+    std::printf("%s: %zu vertices, %zu faces; %d runs each\n", spec.c_str(), loaded.report.vertices,
+                loaded.report.faces, repeat);
+    const int import_runs = std::max(1, std::min(repeat, 5));
+    print_row("import", time_it(import_runs, [&] { loaded = load_mesh(spec); }),
+              "(" + std::to_string(import_runs) + " runs)");
+    MeshTopology topology;
+    print_row("topology", time_it(repeat, [&] { topology = build_topology(loaded.mesh); }));
+    const SnaxelEngine engine(topology);
+    Camera camera;
+    camera.view_dir = glm::normalize(glm::dvec3(0.4, -0.3, 1.0));
+    const Light light = default_light(camera);
+    EngineOptions options;
+    options.check_invariants = false;
+    for (const ContourSpec& kind : kinds) {
+        std::size_t snaxels = 0, loops = 0;
+        const Timing t = time_it(repeat, [&] {
+            const ContourResult r = engine.compute(kind, camera, light, options);
+            snaxels = r.fronts.snaxels.size();
+            loops = r.fronts.loops.size();
+        });
+        print_row("contours " + kind.label(), t,
+                  std::to_string(loops) + " loops, " + std::to_string(snaxels) + " snaxels");
+    }
+    return 0;
+}
+
+} // namespace snaxels::cli
