@@ -1,12 +1,20 @@
 #pragma once
 // Where the test meshes are, and the shared list of them that fixtures run over.
 
+#include <cctype>
 #include <string>
 #include <vector>
 
 namespace snaxels::test {
 
 inline std::string asset(const std::string& name) { return std::string(SNAXELS_TEST_ASSETS) + "/" + name; }
+
+/// A GoogleTest parameter name made of a file name or mesh spec.
+inline std::string test_name(std::string text) {
+    for (auto& c : text)
+        if (!std::isalnum(static_cast<unsigned char>(c))) c = '_';
+    return text;
+}
 
 /// One mesh of tests/assets with the counts of shared/data/README.md.
 struct AssetMesh {

@@ -26,12 +26,7 @@ TEST_P(AssetImport, CountsMatchTheDataReadme) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Data, AssetImport, ::testing::ValuesIn(test::asset_meshes()),
-                         [](const auto& param_info) {
-                             std::string n = param_info.param.file;
-                             for (auto& c : n)
-                                 if (!std::isalnum(static_cast<unsigned char>(c))) c = '_';
-                             return n;
-                         });
+                         [](const auto& p) { return test::test_name(p.param.file); });
 
 TEST(Import, AppliesEveryNodeTransform) {
     // One triangle instanced twice under a parent scaled by 2, one instance

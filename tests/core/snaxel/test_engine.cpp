@@ -124,12 +124,7 @@ INSTANTIATE_TEST_SUITE_P(Meshes, EngineOracle,
                                            MeshCase{"teapot.obj", false},
                                            MeshCase{"suzanne.obj", false},
                                            MeshCase{"stanford-bunny.obj", false}),
-                         [](const auto& param_info) {
-                             std::string n = param_info.param.spec;
-                             for (auto& c : n)
-                                 if (!std::isalnum(static_cast<unsigned char>(c))) c = '_';
-                             return n;
-                         });
+                         [](const auto& p) { return test::test_name(p.param.spec); });
 
 // The invariant checker runs after every sweep iteration (as in debug builds).
 TEST(Engine, InvariantsHoldAfterEveryIteration) {
