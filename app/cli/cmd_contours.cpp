@@ -12,6 +12,7 @@
 #include "core/mesh/import.h"
 #include "core/snaxel/snaxel_engine.h"
 #include "core/util/atomic_file.h"
+#include "core/visibility/visibility.h"
 
 namespace snaxels::cli {
 namespace {
@@ -88,6 +89,7 @@ int run_contours(const std::vector<std::string>& argv) {
          {"json", "OUT", "write the contours as JSON to OUT ('-' for standard output)"},
          {"svg", "OUT", "write the contours as SVG to OUT ('-' for standard output)"},
          {"size", "WxH", "image size in pixels for q and the SVG (default 800x800)"},
+         {"no-visibility", "", "skip hidden-line classification (no qi, no dashed runs)"},
          {"check", "", "check the snaxel invariants after every iteration (slower)"}},
         {"MESH"});
     if (!args.parse(argv)) {
@@ -148,8 +150,15 @@ int run_contours(const std::vector<std::string>& argv) {
     std::vector<ContourResult> results;
     for (const ContourSpec& spec : kinds) results.push_back(engine.compute(spec, camera, light, options));
 
+    std::vector<ContourVisibility> visibility;
+    if (!args.flag("no-visibility")) {
+        const RayScene rays(topology);
+        const VisibilitySampler sampler(rays, camera);
+        for (const ContourResult& r : results) visibility.push_back(sampler.classify(engine, r));
+    }
     const ImageProjection projection(camera, centre, radius, width, height);
-    const Drawing drawing = make_drawing(engine, results, projection);
+    const Drawing drawing =
+        make_drawing(engine, results, projection, visibility.empty() ? nullptr : &visibility);
 
     auto emit = [](const std::string& path, const std::string& text) {
         if (path == "-") std::cout << text;
@@ -161,14 +170,20 @@ int run_contours(const std::vector<std::string>& argv) {
     if (json_out.empty() && svg_out.empty()) {
         std::cout << report.source << ": " << report.vertices << " vertices, " << report.faces
                   << " faces\n";
-        for (const ContourResult& r : results) {
-            std::size_t snaxels = r.fronts.snaxels.size(), open = 0;
+        for (std::size_t i = 0; i < results.size(); ++i) {
+            const ContourResult& r = results[i];
+            std::size_t snaxels = r.fronts.snaxels.size(), open = 0, hidden = 0;
             for (const auto& loop : r.fronts.loops) open += !loop.closed;
+            if (!visibility.empty())
+                for (const auto& lv : visibility[i].loops)
+                    for (const int qi : lv.snaxel_qi) hidden += qi > 0;
             std::cout << "  " << r.spec.label() << ": " << r.fronts.loops.size() << " loops ("
-                      << open << " open), " << snaxels << " snaxels, " << r.regions.size()
-                      << " regions; " << r.stats.seeds << " seeds, " << r.stats.iterations
-                      << " iterations, " << r.stats.fanouts << " fan-outs, " << r.stats.merges
-                      << " merges, " << r.stats.splits << " splits, " << r.stats.ms << " ms\n";
+                      << open << " open), " << snaxels << " snaxels";
+            if (!visibility.empty()) std::cout << " (" << hidden << " hidden)";
+            std::cout << ", " << r.regions.size() << " regions; " << r.stats.seeds << " seeds, "
+                      << r.stats.iterations << " iterations, " << r.stats.fanouts << " fan-outs, "
+                      << r.stats.merges << " merges, " << r.stats.splits << " splits, "
+                      << r.stats.ms << " ms\n";
         }
     }
     return 0;

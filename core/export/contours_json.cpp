@@ -28,9 +28,12 @@ nlohmann::json contours_to_json(const MeshReport& mesh, const Camera& camera, co
         nlohmann::json loops = nlohmann::json::array();
         for (const DrawnLoop& loop : c.loops) {
             nlohmann::json snaxels = nlohmann::json::array();
-            for (std::size_t k = 0; k < loop.p.size(); ++k)
-                snaxels.push_back({{"p", {loop.p[k].x, loop.p[k].y, loop.p[k].z}},
-                                   {"q", {loop.q[k].x, loop.q[k].y}}});
+            for (std::size_t k = 0; k < loop.p.size(); ++k) {
+                nlohmann::json s = {{"p", {loop.p[k].x, loop.p[k].y, loop.p[k].z}},
+                                    {"q", {loop.q[k].x, loop.q[k].y}}};
+                if (!loop.qi.empty()) s["qi"] = loop.qi[k];
+                snaxels.push_back(std::move(s));
+            }
             loops.push_back({{"closed", loop.closed}, {"snaxels", std::move(snaxels)}});
         }
         std::size_t positive = 0;

@@ -3,14 +3,17 @@
 namespace snaxels {
 
 Drawing make_drawing(const SnaxelEngine& engine, const std::vector<ContourResult>& results,
-                     const ImageProjection& projection) {
+                     const ImageProjection& projection,
+                     const std::vector<ContourVisibility>* visibility) {
     Drawing drawing;
     drawing.width = projection.width();
     drawing.height = projection.height();
-    for (const ContourResult& r : results) {
+    for (std::size_t c = 0; c < results.size(); ++c) {
+        const ContourResult& r = results[c];
         DrawnContour contour;
         contour.spec = r.spec;
-        for (const FrontLoop& loop : r.fronts.loops) {
+        for (std::size_t l = 0; l < r.fronts.loops.size(); ++l) {
+            const FrontLoop& loop = r.fronts.loops[l];
             DrawnLoop drawn;
             drawn.closed = loop.closed;
             drawn.p.reserve(std::size_t(loop.size));
@@ -20,6 +23,16 @@ Drawing make_drawing(const SnaxelEngine& engine, const std::vector<ContourResult
                 drawn.p.push_back(p);
                 drawn.q.push_back(projection.project(p));
             });
+            if (visibility) {
+                const LoopVisibility& lv = (*visibility)[c].loops[l];
+                drawn.qi = lv.snaxel_qi;
+                for (const VisibilityRun& run : lv.runs) {
+                    DrawnRun dr{run.qi, run.closed, {}};
+                    dr.q.reserve(run.points.size());
+                    for (const glm::dvec3& p : run.points) dr.q.push_back(projection.project(p));
+                    drawn.runs.push_back(std::move(dr));
+                }
+            }
             contour.loops.push_back(std::move(drawn));
         }
         drawing.contours.push_back(std::move(contour));

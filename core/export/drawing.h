@@ -8,13 +8,23 @@
 
 #include "core/scene/camera.h"
 #include "core/snaxel/snaxel_engine.h"
+#include "core/visibility/visibility.h"
 
 namespace snaxels {
+
+/// A stretch of a loop with one quantitative invisibility, projected.
+struct DrawnRun {
+    int qi = 0;
+    bool closed = false;
+    std::vector<glm::dvec2> q;
+};
 
 struct DrawnLoop {
     bool closed = true;
     std::vector<glm::dvec3> p; ///< snaxel positions in the mesh's coordinates
     std::vector<glm::dvec2> q; ///< their projections in image pixels
+    std::vector<int> qi;       ///< per snaxel; empty when visibility was not computed
+    std::vector<DrawnRun> runs; ///< empty when visibility was not computed
 };
 
 struct DrawnContour {
@@ -27,8 +37,10 @@ struct Drawing {
     std::vector<DrawnContour> contours;
 };
 
-/// Projects every loop of @p results with @p projection.
+/// Projects every loop of @p results with @p projection; with @p visibility
+/// (parallel to @p results) the loops carry their QI and runs too.
 Drawing make_drawing(const SnaxelEngine& engine, const std::vector<ContourResult>& results,
-                     const ImageProjection& projection);
+                     const ImageProjection& projection,
+                     const std::vector<ContourVisibility>* visibility = nullptr);
 
 } // namespace snaxels

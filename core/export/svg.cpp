@@ -28,6 +28,28 @@ const char* default_stroke(ContourKind kind) {
     return "#111111";
 }
 
+namespace {
+
+void append_path(std::string& out, const std::vector<glm::dvec2>& q, bool closed) {
+    if (q.size() < 2) return;
+    out += "<path d=\"M";
+    for (std::size_t i = 0; i < q.size(); ++i) {
+        if (i) out += i == 1 ? " L" : " ";
+        append_number(out, q[i].x);
+        out += ',';
+        append_number(out, q[i].y);
+    }
+    if (closed) out += " Z";
+    out += "\"/>\n";
+}
+
+void open_kind_group(std::string& out, const ContourSpec& spec) {
+    out += "<g class=\"contour\" data-kind=\"" + spec.kind_name() + "\" data-label=\"" +
+           spec.label() + "\" stroke=\"" + default_stroke(spec.kind) + "\">\n";
+}
+
+} // namespace
+
 std::string to_svg(const Drawing& drawing) {
     std::ostringstream head;
     head << "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n"
@@ -36,21 +58,36 @@ std::string to_svg(const Drawing& drawing) {
          << drawing.height << "\">\n"
          << "<rect width=\"100%\" height=\"100%\" fill=\"#ffffff\"/>\n";
     std::string out = head.str();
-    for (const DrawnContour& c : drawing.contours) {
-        out += "<g class=\"contour\" data-kind=\"" + c.spec.kind_name() + "\" data-label=\"" +
-               c.spec.label() + "\" fill=\"none\" stroke=\"" + default_stroke(c.spec.kind) +
-               "\" stroke-width=\"1.5\" stroke-linejoin=\"round\" stroke-linecap=\"round\">\n";
-        for (const DrawnLoop& loop : c.loops) {
-            if (loop.q.size() < 2) continue;
-            out += "<path d=\"M";
-            for (std::size_t i = 0; i < loop.q.size(); ++i) {
-                if (i) out += i == 1 ? " L" : " ";
-                append_number(out, loop.q[i].x);
-                out += ',';
-                append_number(out, loop.q[i].y);
-            }
-            if (loop.closed) out += " Z";
-            out += "\"/>\n";
+    bool with_visibility = false;
+    for (const DrawnContour& c : drawing.contours)
+        for (const DrawnLoop& loop : c.loops) with_visibility |= !loop.runs.empty();
+
+    if (!with_visibility) {
+        out += "<g fill=\"none\" stroke-width=\"1.5\" stroke-linejoin=\"round\" "
+               "stroke-linecap=\"round\">\n";
+        for (const DrawnContour& c : drawing.contours) {
+            open_kind_group(out, c.spec);
+            for (const DrawnLoop& loop : c.loops) append_path(out, loop.q, loop.closed);
+            out += "</g>\n";
+        }
+        out += "</g>\n</svg>\n";
+        return out;
+    }
+    // Hidden lines first, so visible strokes are drawn over them.
+    const char* groups[2][2] = {
+        {"hidden", "fill=\"none\" stroke-width=\"1\" stroke-opacity=\"0.55\" "
+                   "stroke-dasharray=\"5 4\" stroke-linejoin=\"round\""},
+        {"visible", "fill=\"none\" stroke-width=\"1.5\" stroke-linejoin=\"round\" "
+                    "stroke-linecap=\"round\""}};
+    for (int g = 0; g < 2; ++g) {
+        const bool hidden = g == 0;
+        out += std::string("<g id=\"") + groups[g][0] + "\" " + groups[g][1] + ">\n";
+        for (const DrawnContour& c : drawing.contours) {
+            open_kind_group(out, c.spec);
+            for (const DrawnLoop& loop : c.loops)
+                for (const DrawnRun& run : loop.runs)
+                    if ((run.qi > 0) == hidden) append_path(out, run.q, run.closed);
+            out += "</g>\n";
         }
         out += "</g>\n";
     }

@@ -10,7 +10,8 @@ namespace snaxels {
 /// Default stroke colour of a contour kind (until styles say otherwise).
 const char* default_stroke(ContourKind kind);
 
-/// The SVG document text.
+/// The SVG document text. With visibility, hidden runs (QI > 0) are drawn
+/// dashed in <g id="hidden"> under the visible ones in <g id="visible">.
 std::string to_svg(const Drawing& drawing);
 
 } // namespace snaxels

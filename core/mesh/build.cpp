@@ -228,9 +228,9 @@ LoadedMesh build_mesh(const TriangleSoup& soup, const std::string& source) {
     report.split_vertices = adder.finish();
     omerr().enable();
 
-    compute_vertex_normals(mesh);
-
-    // 6. Report on the repaired mesh.
+    // 6. Components; closed ones that enclose negative volume face inward
+    // (some scanners write them so) and are turned outward, because shading
+    // contours (N.L) depend on which side is out.
     report.vertices = handles.size(); // welded input; split copies are counted apart
     report.faces = mesh.n_faces();
     UnionFind components(mesh.n_vertices());
@@ -239,6 +239,43 @@ LoadedMesh build_mesh(const TriangleSoup& soup, const std::string& source) {
                          static_cast<std::uint32_t>(mesh.to_vertex_handle(mesh.halfedge_handle(eh, 0)).idx()));
     for (std::uint32_t v = 0; v < mesh.n_vertices(); ++v)
         if (components.find(v) == v) ++report.components;
+    {
+        std::vector<double> volume(mesh.n_vertices(), 0.0);
+        std::vector<std::uint8_t> open(mesh.n_vertices(), 0);
+        std::vector<glm::dvec3> anchor(mesh.n_vertices());
+        for (const auto vh : mesh.vertices()) anchor[components.find(vh.idx())] = to_glm(mesh.point(vh));
+        for (const auto fh : mesh.faces()) {
+            auto it = mesh.cfv_iter(fh);
+            const auto a = *it, b = *++it, c = *++it;
+            const std::uint32_t root = components.find(a.idx());
+            const glm::dvec3 o = anchor[root];
+            volume[root] += glm::dot(to_glm(mesh.point(a)) - o,
+                                     glm::cross(to_glm(mesh.point(b)) - o, to_glm(mesh.point(c)) - o));
+        }
+        for (const auto heh : mesh.halfedges())
+            if (mesh.is_boundary(heh)) open[components.find(mesh.to_vertex_handle(heh).idx())] = 1;
+        std::vector<std::uint8_t> flip(mesh.n_vertices(), 0);
+        for (std::uint32_t v = 0; v < mesh.n_vertices(); ++v)
+            if (components.find(v) == v && !open[v] && volume[v] < 0.0) {
+                flip[v] = 1;
+                ++report.flipped_components;
+            }
+        if (report.flipped_components) {
+            Mesh turned;
+            turned.reserve(mesh.n_vertices(), mesh.n_edges(), mesh.n_faces());
+            for (const auto vh : mesh.vertices()) turned.add_vertex(mesh.point(vh));
+            for (const auto fh : mesh.faces()) {
+                std::array<Mesh::VertexHandle, 3> c;
+                int k = 0;
+                for (const auto vh : mesh.fv_range(fh)) c[k++] = vh;
+                if (flip[components.find(c[0].idx())]) std::swap(c[1], c[2]);
+                turned.add_face(c[0], c[1], c[2]);
+            }
+            mesh = std::move(turned);
+        }
+    }
+    compute_vertex_normals(mesh);
+
     report.bbox_min = report.bbox_max = to_glm(mesh.point(Mesh::VertexHandle(0)));
     for (const auto vh : mesh.vertices()) {
         const glm::dvec3 p = to_glm(mesh.point(vh));

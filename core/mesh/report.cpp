@@ -18,6 +18,7 @@ nlohmann::json to_json(const MeshReport& r) {
         {"split_vertices", r.split_vertices},
         {"dropped_faces", r.dropped_faces},
         {"components", r.components},
+        {"flipped_components", r.flipped_components},
         {"bbox",
          {{"min", {r.bbox_min.x, r.bbox_min.y, r.bbox_min.z}},
           {"max", {r.bbox_max.x, r.bbox_max.y, r.bbox_max.z}}}},
@@ -38,6 +39,7 @@ std::string to_text(const MeshReport& r) {
         << "split vertices:    " << r.split_vertices << '\n'
         << "dropped faces:     " << r.dropped_faces << '\n'
         << "components:        " << r.components << '\n'
+        << "turned outward:    " << r.flipped_components << '\n'
         << "bounding box:      " << bbox << '\n';
     return out.str();
 }

@@ -20,6 +20,7 @@ struct MeshReport {
     std::size_t split_vertices = 0;  ///< vertex copies made so that every face could be added
     std::size_t dropped_faces = 0;   ///< degenerate (zero-area) faces removed
     std::size_t components = 0;      ///< connected components of the repaired mesh
+    std::size_t flipped_components = 0; ///< closed components turned outward (they faced inward)
     glm::dvec3 bbox_min{0.0};
     glm::dvec3 bbox_max{0.0};
 };

@@ -2,7 +2,9 @@
 // contour, orthographic view) against the mesh itself: the silhouette of the
 // mesh's projection, rasterized here, must be traced by drawn pixels all the
 // way round, and nothing may be drawn off the mesh.
-//   outline_check MESH SCREENSHOT.png VIEW_X,VIEW_Y,VIEW_Z [UP_X,UP_Y,UP_Z]
+//   outline_check MESH SCREENSHOT.png VIEW_X,VIEW_Y,VIEW_Z [UP_X,UP_Y,UP_Z [VISIBLE_ONLY.png]]
+// With VISIBLE_ONLY.png (the same SVG with its hidden group not displayed),
+// the pixels the hidden lines add must exist and lie on the mesh.
 
 #include <cmath>
 #include <cstdio>
@@ -108,6 +110,30 @@ int main(int argc, char** argv) {
     if (stray > 0) {
         std::fprintf(stderr, "FAIL: %ld drawn pixels lie off the mesh\n", stray);
         return 1;
+    }
+    if (argc > 5) {
+        QImage visible(argv[5]);
+        if (visible.size() != shot.size()) {
+            std::fprintf(stderr, "FAIL: cannot read %s at the screenshot's size\n", argv[5]);
+            return 1;
+        }
+        visible = visible.convertToFormat(QImage::Format_RGB32);
+        long hidden_ink = 0, hidden_off_mesh = 0;
+        for (int y = 0; y < shot.height(); ++y)
+            for (int x = 0; x < shot.width(); ++x)
+                if (qGray(visible.pixel(x, y)) - qGray(shot.pixel(x, y)) > 40) {
+                    ++hidden_ink;
+                    hidden_off_mesh += !near(x, y, inside);
+                }
+        std::printf("hidden-line pixels %ld, off-mesh %ld\n", hidden_ink, hidden_off_mesh);
+        if (hidden_ink < 50) {
+            std::fprintf(stderr, "FAIL: no hidden lines drawn\n");
+            return 1;
+        }
+        if (hidden_off_mesh > 0) {
+            std::fprintf(stderr, "FAIL: hidden lines drawn off the mesh\n");
+            return 1;
+        }
     }
     return 0;
 }

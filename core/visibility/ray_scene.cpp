@@ -1,0 +1,144 @@
+#include "core/visibility/ray_scene.h"
+
+#include <algorithm>
+#include <limits>
+
+#include <embree3/rtcore.h>
+
+#include "core/error.h"
+
+namespace snaxels {
+namespace {
+
+// What the filter needs: the context Embree passes through, plus ours.
+struct CountContext {
+    RTCIntersectContext embree;
+    const MeshTopology* topo;
+    const std::vector<glm::dvec3>* face_normals;
+    const VisibilityRay* ray;
+    Crossings crossings;
+    // A primitive can be reported more than once; remember what was counted.
+    std::vector<std::uint32_t> seen;
+};
+
+bool ignored(const CountContext& c, std::uint32_t prim) {
+    for (const std::int32_t v : c.topo->face_vertices[prim])
+        for (const std::int32_t w : c.ray->ignore)
+            if (v == w) return true;
+    return false;
+}
+
+void count_filter(const RTCFilterFunctionNArguments* args) {
+    auto* c = reinterpret_cast<CountContext*>(args->context);
+    for (unsigned i = 0; i < args->N; ++i) {
+        if (args->valid[i] != -1) continue;
+        args->valid[i] = 0; // reject: keep traversing to find every crossing
+        const std::uint32_t prim = RTCHitN_primID(args->hit, args->N, i);
+        if (ignored(*c, prim)) continue;
+        if (std::find(c->seen.begin(), c->seen.end(), prim) != c->seen.end()) continue;
+        c->seen.push_back(prim);
+        if (glm::dot((*c->face_normals)[prim], c->ray->dir) > 0.0) ++c->crossings.front;
+        else ++c->crossings.back;
+    }
+}
+
+void occlusion_filter(const RTCFilterFunctionNArguments* args) {
+    auto* c = reinterpret_cast<CountContext*>(args->context);
+    for (unsigned i = 0; i < args->N; ++i)
+        if (args->valid[i] == -1 && ignored(*c, RTCHitN_primID(args->hit, args->N, i)))
+            args->valid[i] = 0;
+}
+
+RTCRay make_ray(const VisibilityRay& r) {
+    RTCRay ray{};
+    ray.org_x = float(r.origin.x);
+    ray.org_y = float(r.origin.y);
+    ray.org_z = float(r.origin.z);
+    ray.dir_x = float(r.dir.x);
+    ray.dir_y = float(r.dir.y);
+    ray.dir_z = float(r.dir.z);
+    ray.tnear = 0.0f;
+    ray.tfar = std::isinf(r.tfar) ? std::numeric_limits<float>::infinity() : float(r.tfar);
+    ray.mask = 0xFFFFFFFFu;
+    ray.flags = 0;
+    return ray;
+}
+
+} // namespace
+
+RayScene::RayScene(const MeshTopology& topology) : topo_(topology) {
+    RTCDevice device = rtcNewDevice(nullptr);
+    if (!device) throw Error("cannot start the ray tracer (Embree device)");
+    device_ = device;
+    RTCScene scene = rtcNewScene(device);
+    scene_ = scene;
+    rtcSetSceneFlags(scene, RTC_SCENE_FLAG_CONTEXT_FILTER_FUNCTION | RTC_SCENE_FLAG_ROBUST |
+                                RTC_SCENE_FLAG_DYNAMIC);
+    rtcSetSceneBuildQuality(scene, RTC_BUILD_QUALITY_LOW);
+    RTCGeometry geom = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_TRIANGLE);
+    geometry_ = geom;
+    rtcSetGeometryBuildQuality(geom, RTC_BUILD_QUALITY_REFIT);
+    vertices_ = static_cast<float*>(rtcSetNewGeometryBuffer(
+        geom, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, 3 * sizeof(float), topo_.n_vertices()));
+    auto* index = static_cast<std::uint32_t*>(rtcSetNewGeometryBuffer(
+        geom, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, 3 * sizeof(std::uint32_t), topo_.n_faces()));
+    if (!vertices_ || !index) throw Error("out of memory building the ray-tracing scene");
+    for (std::size_t f = 0; f < topo_.n_faces(); ++f)
+        for (int k = 0; k < 3; ++k) index[3 * f + k] = std::uint32_t(topo_.face_vertices[f][k]);
+    upload_positions();
+    rtcCommitGeometry(geom);
+    rtcAttachGeometry(scene, geom);
+    rtcCommitScene(scene);
+}
+
+RayScene::~RayScene() {
+    if (geometry_) rtcReleaseGeometry(static_cast<RTCGeometry>(geometry_));
+    if (scene_) rtcReleaseScene(static_cast<RTCScene>(scene_));
+    if (device_) rtcReleaseDevice(static_cast<RTCDevice>(device_));
+}
+
+void RayScene::upload_positions() {
+    for (std::size_t v = 0; v < topo_.n_vertices(); ++v)
+        for (int k = 0; k < 3; ++k) vertices_[3 * v + k] = float(topo_.positions[v][k]);
+    face_normals_.resize(topo_.n_faces());
+    for (std::size_t f = 0; f < topo_.n_faces(); ++f) {
+        const auto& fv = topo_.face_vertices[f];
+        const glm::dvec3 a = topo_.positions[fv[0]];
+        face_normals_[f] = glm::cross(topo_.positions[fv[1]] - a, topo_.positions[fv[2]] - a);
+    }
+}
+
+void RayScene::refit() {
+    auto geom = static_cast<RTCGeometry>(geometry_);
+    upload_positions();
+    rtcUpdateGeometryBuffer(geom, RTC_BUFFER_TYPE_VERTEX, 0);
+    rtcCommitGeometry(geom);
+    rtcCommitScene(static_cast<RTCScene>(scene_));
+}
+
+Crossings RayScene::count(const VisibilityRay& r) const {
+    CountContext c{};
+    rtcInitIntersectContext(&c.embree);
+    c.embree.filter = count_filter;
+    c.topo = &topo_;
+    c.face_normals = &face_normals_;
+    c.ray = &r;
+    RTCRayHit rayhit{};
+    rayhit.ray = make_ray(r);
+    rayhit.hit.geomID = RTC_INVALID_GEOMETRY_ID;
+    rtcIntersect1(static_cast<RTCScene>(scene_), &c.embree, &rayhit);
+    return c.crossings;
+}
+
+bool RayScene::occluded(const VisibilityRay& r) const {
+    CountContext c{};
+    rtcInitIntersectContext(&c.embree);
+    c.embree.filter = occlusion_filter;
+    c.topo = &topo_;
+    c.ray = &r;
+    RTCRay ray = make_ray(r);
+    rtcOccluded1(static_cast<RTCScene>(scene_), &c.embree, &ray);
+    return ray.tfar < 0.0f; // Embree marks an occluded ray with tfar = -inf
+}
+
+} // namespace snaxels

@@ -1,0 +1,61 @@
+#pragma once
+/// A BVH of a triangle mesh (Embree) that counts every surface crossing of
+/// a ray segment, front- and back-facing apart, ignoring the faces that
+/// touch chosen vertices (the sample's own neighbourhood).
+
+#include <array>
+#include <cstdint>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "core/snaxel/topology.h"
+
+namespace snaxels {
+
+/// A ray segment and the vertices whose incident faces it must not count.
+struct VisibilityRay {
+    glm::dvec3 origin{0.0};
+    glm::dvec3 dir{0.0, 0.0, 1.0}; ///< unit, toward the viewer
+    double tfar = 0.0;              ///< where the viewer is (infinity: orthographic)
+    std::array<std::int32_t, 3> ignore{MeshTopology::kNone, MeshTopology::kNone, MeshTopology::kNone};
+};
+
+/// Crossings of a ray with faces facing along it (front: the face's normal
+/// points toward the viewer) and against it.
+struct Crossings {
+    int front = 0;
+    int back = 0;
+};
+
+class RayScene {
+  public:
+    /// Builds the BVH of @p topology's faces at its current positions.
+    explicit RayScene(const MeshTopology& topology);
+    ~RayScene();
+    RayScene(const RayScene&) = delete;
+    RayScene& operator=(const RayScene&) = delete;
+
+    /// Refits the BVH to @p topology's positions (same connectivity), for
+    /// meshes that move between frames.
+    void refit();
+
+    /// Every crossing of the ray segment, each face once.
+    Crossings count(const VisibilityRay& ray) const;
+    /// Whether anything blocks the ray segment (faster than count()).
+    bool occluded(const VisibilityRay& ray) const;
+
+    const MeshTopology& topology() const { return topo_; }
+
+  private:
+    void upload_positions();
+
+    const MeshTopology& topo_;
+    void* device_ = nullptr; // RTCDevice
+    void* scene_ = nullptr;  // RTCScene
+    void* geometry_ = nullptr; // RTCGeometry
+    float* vertices_ = nullptr; // Embree-owned vertex buffer
+    std::vector<glm::dvec3> face_normals_;
+};
+
+} // namespace snaxels

@@ -1,0 +1,144 @@
+#include "core/visibility/visibility.h"
+
+#include <cmath>
+#include <limits>
+
+#include "core/util/parallel.h"
+
+namespace snaxels {
+
+std::int32_t common_face(const MeshTopology& topo, const Snaxel& a, const Snaxel& b) {
+    for (const std::int32_t f : topo.edge_faces[a.edge])
+        if (f != MeshTopology::kNone &&
+            (f == topo.edge_faces[b.edge][0] || f == topo.edge_faces[b.edge][1]))
+            return f;
+    return MeshTopology::kNone;
+}
+
+VisibilityRay VisibilitySampler::make_ray(const glm::dvec3& p, const glm::dvec3& n,
+                                          double scale) const {
+    VisibilityRay ray;
+    ray.origin = p + options_.normal_offset * scale * n;
+    if (camera_.orthographic()) {
+        ray.dir = -glm::normalize(camera_.view_dir);
+        ray.tfar = std::numeric_limits<double>::infinity();
+    } else {
+        const glm::dvec3 to_eye = camera_.eye - ray.origin;
+        ray.tfar = glm::length(to_eye);
+        ray.dir = ray.tfar > 0.0 ? to_eye / ray.tfar : glm::dvec3(0, 0, 1);
+    }
+    return ray;
+}
+
+VisibilityRay VisibilitySampler::snaxel_ray(const Snaxel& s, const glm::dvec3& p,
+                                            const glm::dvec3& n) const {
+    const MeshTopology& topo = scene_.topology();
+    const double len = glm::length(topo.positions[s.inside] - topo.positions[s.outside]);
+    VisibilityRay ray = make_ray(p, n, len);
+    ray.ignore = {s.inside, s.outside, MeshTopology::kNone};
+    return ray;
+}
+
+VisibilityRay VisibilitySampler::face_ray(std::int32_t face, const glm::dvec3& p,
+                                          const glm::dvec3& n) const {
+    const MeshTopology& topo = scene_.topology();
+    const auto& fv = topo.face_vertices[face];
+    const double len = (glm::length(topo.positions[fv[0]] - topo.positions[fv[1]]) +
+                        glm::length(topo.positions[fv[1]] - topo.positions[fv[2]]) +
+                        glm::length(topo.positions[fv[2]] - topo.positions[fv[0]])) / 3.0;
+    VisibilityRay ray = make_ray(p, n, len);
+    ray.ignore = {fv[0], fv[1], fv[2]};
+    return ray;
+}
+
+int VisibilitySampler::qi(const VisibilityRay& ray) const {
+    if (!scene_.occluded(ray)) return 0; // most samples: an any-hit query suffices
+    const Crossings c = scene_.count(ray);
+    return std::max(c.front, c.back);
+}
+
+ContourVisibility VisibilitySampler::classify(const SnaxelEngine& engine,
+                                              const ContourResult& contour) const {
+    const Fronts& fronts = contour.fronts;
+    const MeshTopology& topo = scene_.topology();
+    std::vector<int> snaxel_qi(fronts.snaxels.size());
+    parallel_for(fronts.snaxels.size(), [&](std::size_t i) {
+        const Snaxel& s = fronts.snaxels[i];
+        snaxel_qi[i] = qi(snaxel_ray(s, engine.position(s), engine.normal(s)));
+    });
+
+    // The point where QI stops being `from` between snaxels a and b.
+    auto change_point = [&](const Snaxel& a, const Snaxel& b, int from) {
+        const glm::dvec3 pa = engine.position(a), pb = engine.position(b);
+        const glm::dvec3 na = engine.normal(a), nb = engine.normal(b);
+        const std::int32_t face = common_face(topo, a, b);
+        double lo = 0.0, hi = 1.0;
+        for (int step = 0; step < options_.bisection_steps && face != MeshTopology::kNone; ++step) {
+            const double mid = 0.5 * (lo + hi);
+            const glm::dvec3 n = glm::normalize((1.0 - mid) * na + mid * nb);
+            if (qi(face_ray(face, (1.0 - mid) * pa + mid * pb, n)) == from) lo = mid;
+            else hi = mid;
+        }
+        const double u = 0.5 * (lo + hi);
+        return (1.0 - u) * pa + u * pb;
+    };
+
+    ContourVisibility out;
+    out.loops.reserve(fronts.loops.size());
+    for (const FrontLoop& loop : fronts.loops) {
+        LoopVisibility lv;
+        std::vector<std::int32_t> order;
+        order.reserve(std::size_t(loop.size));
+        fronts.for_each_in_loop(loop, [&](std::int32_t s) { order.push_back(s); });
+        const std::size_t n = order.size();
+        for (const std::int32_t s : order) lv.snaxel_qi.push_back(snaxel_qi[s]);
+        auto point = [&](std::size_t k) { return engine.position(fronts.snaxels[order[k % n]]); };
+
+        std::size_t start = 0; // where the first run begins
+        bool any_change = false;
+        for (std::size_t k = 1; k < n + (loop.closed ? 1 : 0); ++k)
+            if (lv.snaxel_qi[k % n] != lv.snaxel_qi[k - 1]) {
+                any_change = true;
+                start = k % n;
+                break;
+            }
+        if (!any_change) {
+            VisibilityRun run{lv.snaxel_qi.empty() ? 0 : lv.snaxel_qi[0], loop.closed, {}};
+            for (std::size_t k = 0; k < n; ++k) run.points.push_back(point(k));
+            lv.runs.push_back(std::move(run));
+            out.loops.push_back(std::move(lv));
+            continue;
+        }
+        // Walk the loop once from the first change (closed) or its start (open).
+        const std::size_t first = loop.closed ? start : 0;
+        const std::size_t steps = loop.closed ? n : n - 1;
+        VisibilityRun run{lv.snaxel_qi[first], false, {}};
+        glm::dvec3 first_change{};
+        if (loop.closed) {
+            first_change = change_point(fronts.snaxels[order[(first + n - 1) % n]],
+                                        fronts.snaxels[order[first]], lv.snaxel_qi[(first + n - 1) % n]);
+            run.points.push_back(first_change);
+        }
+        run.points.push_back(point(first));
+        for (std::size_t step = 0; step < steps; ++step) {
+            const std::size_t k = (first + step) % n, next = (first + step + 1) % n;
+            if (loop.closed && next == first) {
+                run.points.push_back(first_change);
+                break;
+            }
+            if (lv.snaxel_qi[next] != lv.snaxel_qi[k]) {
+                const glm::dvec3 c = change_point(fronts.snaxels[order[k]], fronts.snaxels[order[next]],
+                                                  lv.snaxel_qi[k]);
+                run.points.push_back(c);
+                lv.runs.push_back(std::move(run));
+                run = VisibilityRun{lv.snaxel_qi[next], false, {c}};
+            }
+            run.points.push_back(point(next));
+        }
+        lv.runs.push_back(std::move(run));
+        out.loops.push_back(std::move(lv));
+    }
+    return out;
+}
+
+} // namespace snaxels

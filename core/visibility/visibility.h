@@ -1,0 +1,67 @@
+#pragma once
+/// Hidden lines: the quantitative invisibility (QI, the number of surface
+/// layers between a point and the viewer) of every contour sample, and each
+/// loop cut into runs of equal QI at change points found by bisection.
+
+#include <vector>
+
+#include "core/scene/camera.h"
+#include "core/snaxel/snaxel_engine.h"
+#include "core/visibility/ray_scene.h"
+
+namespace snaxels {
+
+struct VisibilityOptions {
+    /// A sample's ray starts this many local edge lengths off the surface,
+    /// along its smooth normal: on the visual contour the ray grazes the
+    /// surface, and the mesh's facets must not hide their own silhouette.
+    double normal_offset = 0.2;
+    /// Bisection steps that locate a QI change between two samples
+    /// (12 steps: 1/4096 of the segment).
+    int bisection_steps = 12;
+};
+
+/// A stretch of a loop with one QI. Points are 3-D, in the mesh's coordinates.
+struct VisibilityRun {
+    int qi = 0;
+    bool closed = false; ///< the whole loop, closed, at one QI
+    std::vector<glm::dvec3> points;
+};
+
+struct LoopVisibility {
+    std::vector<int> snaxel_qi; ///< per snaxel, in loop order
+    std::vector<VisibilityRun> runs;
+};
+
+struct ContourVisibility {
+    std::vector<LoopVisibility> loops; ///< parallel to the contour's loops
+};
+
+class VisibilitySampler {
+  public:
+    VisibilitySampler(const RayScene& scene, const Camera& camera, VisibilityOptions options = {})
+        : scene_(scene), camera_(camera), options_(options) {}
+
+    /// The ray from a snaxel: its edge's end vertices' faces are ignored.
+    VisibilityRay snaxel_ray(const Snaxel& s, const glm::dvec3& p, const glm::dvec3& n) const;
+    /// The ray from a point inside face @p face: the faces around its corners are ignored.
+    VisibilityRay face_ray(std::int32_t face, const glm::dvec3& p, const glm::dvec3& n) const;
+    /// QI along a ray: crossings of front- and back-facing layers (the larger
+    /// count, so open sheets seen from behind count too).
+    int qi(const VisibilityRay& ray) const;
+
+    /// QI of every snaxel of @p contour and its loops cut into runs.
+    ContourVisibility classify(const SnaxelEngine& engine, const ContourResult& contour) const;
+
+  private:
+    VisibilityRay make_ray(const glm::dvec3& p, const glm::dvec3& n, double scale) const;
+
+    const RayScene& scene_;
+    Camera camera_;
+    VisibilityOptions options_;
+};
+
+/// The face two snaxels on edges of one face share (kNone if none).
+std::int32_t common_face(const MeshTopology& topology, const Snaxel& a, const Snaxel& b);
+
+} // namespace snaxels
