@@ -102,3 +102,28 @@ TEST(BuildMesh, AreaWeightedNormals) {
     // Face normals are -Z (area 2) and -X (area 0.125): weights 16 : 1.
     EXPECT_NEAR(n.z / n.x, 16.0, 1e-9);
 }
+
+TEST(BuildMesh, TurnsInwardFacingClosedComponentsOutward) {
+    // Two tetrahedra: one wound outward, one inward; and an open triangle,
+    // which has no inside and is left as it is.
+    TriangleSoup s;
+    s.positions = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1},
+                   {5, 0, 0}, {6, 0, 0}, {5, 1, 0}, {5, 0, 1},
+                   {9, 0, 0}, {10, 0, 0}, {9, 1, 0}};
+    s.triangles = {{0, 2, 1}, {0, 1, 3}, {0, 3, 2}, {1, 2, 3},  // outward
+                   {4, 5, 6}, {4, 7, 5}, {4, 6, 7}, {5, 7, 6},  // inward
+                   {8, 10, 9}};
+    const auto m = build_mesh(s, "tetrahedra");
+    EXPECT_EQ(m.report.flipped_components, 1u);
+    EXPECT_EQ(m.report.components, 3u);
+    // Every closed tetrahedron's vertex normals now point away from its centroid.
+    for (const auto vh : m.mesh.vertices()) {
+        const glm::dvec3 p = to_glm(m.mesh.point(vh));
+        if (p.x > 8) {
+            EXPECT_LT(to_glm(m.mesh.normal(vh)).z, 0.0); // the open triangle keeps its winding
+            continue;
+        }
+        const glm::dvec3 centre = p.x >= 5 ? glm::dvec3(5.25, 0.25, 0.25) : glm::dvec3(0.25);
+        EXPECT_GT(glm::dot(to_glm(m.mesh.normal(vh)), p - centre), 0.0);
+    }
+}

@@ -60,3 +60,17 @@ TEST(Import, ErrorsNameTheFile) {
             << e.what();
     }
 }
+
+TEST(Import, HorseFacesAreTurnedOutward) {
+    // horse.ply is wound inward; the engine needs outward normals.
+    const auto m = import_mesh(asset("horse.ply"));
+    EXPECT_EQ(m.report.flipped_components, 1u);
+    double volume = 0.0;
+    for (const auto fh : m.mesh.faces()) {
+        auto it = m.mesh.cfv_iter(fh);
+        const auto a = m.mesh.point(*it), b = m.mesh.point(*++it), c = m.mesh.point(*++it);
+        volume += OpenMesh::dot(a, OpenMesh::cross(b, c)) / 6.0;
+    }
+    EXPECT_GT(volume, 0.0);
+    EXPECT_EQ(import_mesh(asset("spot.obj")).report.flipped_components, 0u);
+}
