@@ -8,7 +8,6 @@
 #include "core/error.h"
 
 namespace snaxels {
-namespace {
 
 // What the filter needs: the context Embree passes through, plus ours.
 struct CountContext {
@@ -20,6 +19,8 @@ struct CountContext {
     // A primitive can be reported more than once; remember what was counted.
     std::vector<std::uint32_t> seen;
 };
+
+namespace {
 
 bool ignored(const CountContext& c, std::uint32_t prim) {
     for (const std::int32_t v : c.topo->face_vertices[prim])
@@ -116,13 +117,17 @@ void RayScene::refit() {
     rtcCommitScene(static_cast<RTCScene>(scene_));
 }
 
-Crossings RayScene::count(const VisibilityRay& r) const {
-    CountContext c{};
+void RayScene::init_context(CountContext& c, const VisibilityRay& r, bool counting) const {
     rtcInitIntersectContext(&c.embree);
-    c.embree.filter = count_filter;
+    c.embree.filter = counting ? count_filter : occlusion_filter;
     c.topo = &topo_;
     c.face_normals = &face_normals_;
     c.ray = &r;
+}
+
+Crossings RayScene::count(const VisibilityRay& r) const {
+    CountContext c{};
+    init_context(c, r, true);
     RTCRayHit rayhit{};
     rayhit.ray = make_ray(r);
     rayhit.hit.geomID = RTC_INVALID_GEOMETRY_ID;
@@ -132,10 +137,7 @@ Crossings RayScene::count(const VisibilityRay& r) const {
 
 bool RayScene::occluded(const VisibilityRay& r) const {
     CountContext c{};
-    rtcInitIntersectContext(&c.embree);
-    c.embree.filter = occlusion_filter;
-    c.topo = &topo_;
-    c.ray = &r;
+    init_context(c, r, false);
     RTCRay ray = make_ray(r);
     rtcOccluded1(static_cast<RTCScene>(scene_), &c.embree, &ray);
     return ray.tfar < 0.0f; // Embree marks an occluded ray with tfar = -inf

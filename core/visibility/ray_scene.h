@@ -28,6 +28,8 @@ struct Crossings {
     int back = 0;
 };
 
+struct CountContext;
+
 class RayScene {
   public:
     /// Builds the BVH of @p topology's faces at its current positions.
@@ -49,6 +51,7 @@ class RayScene {
 
   private:
     void upload_positions();
+    void init_context(CountContext& context, const VisibilityRay& ray, bool counting) const;
 
     const MeshTopology& topo_;
     void* device_ = nullptr; // RTCDevice
