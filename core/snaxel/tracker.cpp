@@ -1,0 +1,250 @@
+#include "core/snaxel/tracker.h"
+
+#include <algorithm>
+#include <chrono>
+#include <limits>
+#include <map>
+#include <set>
+
+#include "core/error.h"
+
+namespace snaxels {
+namespace {
+
+constexpr std::int32_t kNone = MeshTopology::kNone;
+
+glm::dvec3 loop_centroid(const Fronts& fronts, const FrontLoop& loop,
+                         const std::vector<glm::dvec3>& positions) {
+    glm::dvec3 sum(0.0);
+    fronts.for_each_in_loop(loop, [&](std::int32_t s) { sum += positions[s]; });
+    return loop.size ? sum / double(loop.size) : sum;
+}
+
+// Midpoint of the closest pair of points of two loops (subsampled for long loops).
+glm::dvec3 closest_between(const std::vector<glm::dvec3>& a, const std::vector<glm::dvec3>& b) {
+    const std::size_t sa = std::max<std::size_t>(1, a.size() / 200), sb = std::max<std::size_t>(1, b.size() / 200);
+    double best = std::numeric_limits<double>::max();
+    glm::dvec3 where(0.0);
+    for (std::size_t i = 0; i < a.size(); i += sa)
+        for (std::size_t j = 0; j < b.size(); j += sb) {
+            const double d = glm::length(a[i] - b[j]);
+            if (d < best) {
+                best = d;
+                where = 0.5 * (a[i] + b[j]);
+            }
+        }
+    return where;
+}
+
+} // namespace
+
+const char* event_name(EventKind kind) {
+    switch (kind) {
+    case EventKind::Creation: return "creation";
+    case EventKind::Annihilation: return "annihilation";
+    case EventKind::Split: return "split";
+    case EventKind::Merge: return "merge";
+    }
+    return "creation";
+}
+
+ContourTracker::ContourTracker(const MeshTopology& topology, const ContourSpec& spec,
+                               const EngineOptions& options)
+    : topo_(topology), spec_(spec), options_(options) {}
+
+const TrackedFrame& ContourTracker::step(const Camera& camera, const Light& light) {
+    ++frame_number_;
+    if (frame_number_ == 0) start(camera, light);
+    else track(camera, light);
+    return frame_;
+}
+
+void ContourTracker::start(const Camera& camera, const Light& light) {
+    const SnaxelEngine engine(topo_);
+    frame_ = TrackedFrame{};
+    frame_.frame = frame_number_;
+    frame_.contour = engine.compute(spec_, camera, light, options_);
+    const Fronts& fronts = frame_.contour.fronts;
+    inside_.assign(topo_.n_vertices(), 0);
+    for (std::size_t v = 0; v < inside_.size(); ++v) inside_[v] = frame_.contour.vertex_f[v] >= 0.0;
+    frame_.snaxel_id.resize(fronts.snaxels.size());
+    frame_.born_from.assign(fronts.snaxels.size(), 0);
+    snaxel_position_.resize(fronts.snaxels.size());
+    for (std::size_t s = 0; s < fronts.snaxels.size(); ++s) {
+        frame_.snaxel_id[s] = next_id_++;
+        snaxel_position_[s] = engine.position(fronts.snaxels[s]);
+    }
+    for (std::size_t l = 0; l < fronts.loops.size(); ++l) frame_.loop_sequence.push_back(next_sequence_++);
+}
+
+void ContourTracker::track(const Camera& camera, const Light& light) {
+    const auto t0 = std::chrono::steady_clock::now();
+    const SnaxelEngine engine(topo_);
+    const ContourFunction f(spec_, camera, light);
+    TrackedFrame prev = std::move(frame_);
+    const Fronts& old = prev.contour.fronts;
+    const std::vector<glm::dvec3> old_position = std::move(snaxel_position_);
+    frame_ = TrackedFrame{};
+    frame_.frame = frame_number_;
+    ContourResult& result = frame_.contour;
+    result.spec = spec_;
+
+    // 1. f everywhere (new regions may appear anywhere) and what changed side.
+    const std::size_t nv = topo_.n_vertices();
+    result.vertex_f.resize(nv);
+    std::vector<std::int32_t> changed;
+    for (std::size_t v = 0; v < nv; ++v) {
+        result.vertex_f[v] = f(topo_.positions[v], topo_.normals[v]);
+        if (std::uint8_t(result.vertex_f[v] >= 0.0) != inside_[v]) changed.push_back(std::int32_t(v));
+    }
+    for (const std::int32_t v : changed) inside_[v] ^= 1;
+
+    // 2. Fronts move on: every changed vertex next to an old snaxel's edge
+    // is passed by that snaxel (fan-out when it joins R, retreat when it
+    // leaves), and the sweep carries the same parent on across connected
+    // changed vertices of the same kind.
+    vertex_parent_.assign(nv, kNone);
+    std::vector<std::int32_t> queue;
+    for (std::size_t s = 0; s < old.snaxels.size(); ++s) {
+        for (const std::int32_t v : {old.snaxels[s].outside, old.snaxels[s].inside}) {
+            const bool joined = v == old.snaxels[s].outside && inside_[v];
+            const bool left = v == old.snaxels[s].inside && !inside_[v];
+            if ((joined || left) && vertex_parent_[v] == kNone) {
+                vertex_parent_[v] = std::int32_t(s);
+                queue.push_back(v);
+            }
+        }
+    }
+    for (std::size_t q = 0; q < queue.size(); ++q) {
+        const std::int32_t v = queue[q];
+        (inside_[v] ? frame_.fanouts : frame_.retreats) += 1;
+        for (std::int32_t k = topo_.ring_start[v]; k < topo_.ring_start[v + 1]; ++k) {
+            const std::int32_t w = topo_.ring[k];
+            if (vertex_parent_[w] != kNone || inside_[w] != inside_[v]) continue;
+            if (std::binary_search(changed.begin(), changed.end(), w)) { // changed the same way
+                vertex_parent_[w] = vertex_parent_[v];
+                queue.push_back(w);
+            }
+        }
+    }
+
+    // 3. The edges the fronts now cross: old front edges that still cross,
+    // and the edges around every vertex that changed side.
+    edge_mark_.resize(topo_.n_edges(), 0);
+    std::vector<std::int32_t> crossing;
+    auto consider = [&](std::int32_t e) {
+        if (edge_mark_[e]) return;
+        edge_mark_[e] = 1;
+        const auto [a, b] = topo_.edge_vertices[e];
+        if (inside_[a] != inside_[b]) crossing.push_back(e);
+    };
+    for (const Snaxel& s : old.snaxels) consider(s.edge);
+    for (const std::int32_t v : changed)
+        for (std::int32_t k = topo_.ring_start[v]; k < topo_.ring_start[v + 1]; ++k) consider(topo_.ring_edge[k]);
+    for (const Snaxel& s : old.snaxels) edge_mark_[s.edge] = 0;
+    for (const std::int32_t v : changed)
+        for (std::int32_t k = topo_.ring_start[v]; k < topo_.ring_start[v + 1]; ++k) edge_mark_[topo_.ring_edge[k]] = 0;
+    std::sort(crossing.begin(), crossing.end()); // deterministic order, as a scan would give
+
+    result.fronts = extract_fronts(topo_, inside_, crossing);
+    Fronts& fronts = result.fronts;
+    const int scan = spec_.kind == ContourKind::Visual ? 1 : options_.polish_scan_samples;
+    snaxel_position_.resize(fronts.snaxels.size());
+    for (std::size_t s = 0; s < fronts.snaxels.size(); ++s) {
+        Snaxel& sn = fronts.snaxels[s];
+        sn.t = polish_root(topo_, f, sn.inside, sn.outside, result.vertex_f[sn.inside],
+                           result.vertex_f[sn.outside], options_.polish_tolerance, scan);
+        snaxel_position_[s] = engine.position(sn);
+    }
+    if (options_.check_invariants) {
+        if (const std::string problem = check_fronts(topo_, fronts, inside_); !problem.empty())
+            throw Error("tracked fronts broken at frame " + std::to_string(frame_number_) + ": " + problem);
+    }
+
+    // 4. Identities. `source[s]` is the old snaxel this one continues or was born from.
+    const std::size_t n = fronts.snaxels.size();
+    frame_.snaxel_id.assign(n, 0);
+    frame_.born_from.assign(n, 0);
+    std::vector<std::int32_t> source(n, kNone);
+    std::vector<std::int32_t> best_child(old.snaxels.size(), kNone);
+    for (std::size_t s = 0; s < n; ++s) {
+        const Snaxel& sn = fronts.snaxels[s];
+        const std::int32_t o = old.edge_snaxel[sn.edge];
+        if (o != kNone && old.snaxels[o].inside == sn.inside) {
+            frame_.snaxel_id[s] = prev.snaxel_id[o]; // moved along its edge
+            source[s] = o;
+            continue;
+        }
+        std::int32_t parent = vertex_parent_[sn.inside];
+        if (parent == kNone) parent = vertex_parent_[sn.outside];
+        source[s] = parent;
+        if (parent == kNone) continue; // born in a region that appeared from nothing
+        std::int32_t& best = best_child[parent];
+        if (best == kNone || glm::length(snaxel_position_[s] - old_position[parent]) <
+                                 glm::length(snaxel_position_[best] - old_position[parent]))
+            best = std::int32_t(s);
+    }
+    for (std::size_t s = 0; s < n; ++s) {
+        if (frame_.snaxel_id[s]) continue;
+        const std::int32_t parent = source[s];
+        if (parent != kNone && best_child[parent] == std::int32_t(s)) {
+            frame_.snaxel_id[s] = prev.snaxel_id[parent]; // the fan's nearest child goes on
+        } else {
+            frame_.snaxel_id[s] = next_id_++;
+            if (parent != kNone) frame_.born_from[s] = prev.snaxel_id[parent];
+        }
+    }
+
+    // 5. Loops matched through their snaxels' sources: events and sequences.
+    const std::size_t old_loops = old.loops.size(), new_loops = fronts.loops.size();
+    std::vector<std::set<std::int32_t>> pred(new_loops), succ(old_loops);
+    for (std::size_t s = 0; s < n; ++s)
+        if (source[s] != kNone) {
+            const std::int32_t ol = old.snaxels[source[s]].loop, nl = fronts.snaxels[s].loop;
+            pred[nl].insert(ol);
+            succ[ol].insert(nl);
+        }
+    auto loop_points = [](const Fronts& fr, const FrontLoop& loop, const std::vector<glm::dvec3>& pos) {
+        std::vector<glm::dvec3> pts;
+        fr.for_each_in_loop(loop, [&](std::int32_t s) { pts.push_back(pos[s]); });
+        return pts;
+    };
+    frame_.loop_sequence.assign(new_loops, 0);
+    for (std::size_t l = 0; l < new_loops; ++l) {
+        if (pred[l].empty()) {
+            frame_.events.push_back({EventKind::Creation, frame_number_,
+                                     loop_centroid(fronts, fronts.loops[l], snaxel_position_)});
+        } else if (pred[l].size() > 1) {
+            const auto first = loop_points(old, old.loops[*pred[l].begin()], old_position);
+            for (auto it = std::next(pred[l].begin()); it != pred[l].end(); ++it)
+                frame_.events.push_back({EventKind::Merge, frame_number_,
+                                         closest_between(first, loop_points(old, old.loops[*it], old_position))});
+        }
+        if (pred[l].size() == 1 && succ[*pred[l].begin()].size() == 1)
+            frame_.loop_sequence[l] = prev.loop_sequence[*pred[l].begin()];
+        else
+            frame_.loop_sequence[l] = next_sequence_++;
+    }
+    for (std::size_t l = 0; l < old_loops; ++l) {
+        if (succ[l].empty()) {
+            frame_.events.push_back({EventKind::Annihilation, frame_number_,
+                                     loop_centroid(old, old.loops[l], old_position)});
+        } else if (succ[l].size() > 1) {
+            const auto first = loop_points(fronts, fronts.loops[*succ[l].begin()], snaxel_position_);
+            for (auto it = std::next(succ[l].begin()); it != succ[l].end(); ++it)
+                frame_.events.push_back({EventKind::Split, frame_number_,
+                                         closest_between(first, loop_points(fronts, fronts.loops[*it], snaxel_position_))});
+        }
+    }
+    result.stats.fanouts = frame_.fanouts;
+    result.stats.iterations = 1;
+    for (const VisualEvent& e : frame_.events) {
+        if (e.kind == EventKind::Merge) ++result.stats.merges;
+        if (e.kind == EventKind::Split) ++result.stats.splits;
+        if (e.kind == EventKind::Creation) ++result.stats.seeds;
+    }
+    result.stats.ms =
+        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+}
+
+} // namespace snaxels

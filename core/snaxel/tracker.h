@@ -1,0 +1,69 @@
+#pragma once
+/// Tracking one contour through an animation (the paper's "Animation"
+/// section): each frame the fronts move on from where they were. Snaxels
+/// that stay on their edge keep their identity; where a front passes a
+/// vertex its snaxel fans out and one child (the nearest) keeps the identity,
+/// the others are born from it; where a front retreats past a vertex the
+/// snaxels it leaves behind are born from the one that retreated. Regions
+/// that appear away from every live front are seeded fresh (creations).
+/// Loops are matched across frames through these identities, which yields
+/// the visual events: creation, annihilation, split and merge.
+
+#include <cstdint>
+#include <vector>
+
+#include "core/snaxel/snaxel_engine.h"
+
+namespace snaxels {
+
+enum class EventKind { Creation, Annihilation, Split, Merge };
+
+const char* event_name(EventKind kind);
+
+struct VisualEvent {
+    EventKind kind = EventKind::Creation;
+    int frame = 0;
+    glm::dvec3 where{0.0}; ///< mesh coordinates
+};
+
+/// One frame of a tracked contour.
+struct TrackedFrame {
+    int frame = 0;
+    ContourResult contour;                 ///< fronts (polished); regions are not tracked
+    std::vector<std::uint64_t> snaxel_id;  ///< per snaxel: identity, stable while it lives
+    std::vector<std::uint64_t> born_from;  ///< per snaxel born this frame: its parent's id; else 0
+    std::vector<std::uint64_t> loop_sequence; ///< per loop: id of its contour sequence
+    std::vector<VisualEvent> events;
+    std::size_t fanouts = 0, retreats = 0;
+};
+
+class ContourTracker {
+  public:
+    /// @p topology's positions and normals may change between steps (a
+    /// moving mesh); its connectivity may not.
+    ContourTracker(const MeshTopology& topology, const ContourSpec& spec,
+                   const EngineOptions& options = {});
+
+    /// Advances to the next frame: from scratch on the first call, tracked after.
+    const TrackedFrame& step(const Camera& camera, const Light& light);
+
+    const TrackedFrame& current() const { return frame_; }
+
+  private:
+    void start(const Camera& camera, const Light& light);
+    void track(const Camera& camera, const Light& light);
+
+    const MeshTopology& topo_;
+    ContourSpec spec_;
+    EngineOptions options_;
+    TrackedFrame frame_;
+    int frame_number_ = -1;
+    std::uint64_t next_id_ = 1, next_sequence_ = 1;
+    std::vector<std::uint8_t> inside_;
+    std::vector<glm::dvec3> snaxel_position_; ///< of the current frame's snaxels
+    // Scratch, kept between frames to avoid reallocation.
+    std::vector<std::int32_t> vertex_parent_;
+    std::vector<std::uint8_t> edge_mark_;
+};
+
+} // namespace snaxels
