@@ -18,8 +18,11 @@ const OptionSpec* Args::find(const std::string& name) const {
 
 bool Args::parse(const std::vector<std::string>& argv) {
     for (std::size_t i = 0; i < argv.size(); ++i) {
-        const std::string& a = argv[i];
+        std::string a = argv[i];
         if (a == "--help" || a == "-h") return false;
+        if (a.size() == 2 && a[0] == '-' && a[1] != '-')
+            for (const auto& o : options_)
+                if (o.short_name == a[1]) a = "--" + o.name;
         if (a.size() > 2 && a.compare(0, 2, "--") == 0) {
             std::string name = a.substr(2), inline_value;
             bool has_inline = false;
@@ -71,7 +74,8 @@ std::string Args::help() const {
     if (!options_.empty()) {
         out << "\noptions:\n";
         for (const auto& o : options_) {
-            std::string head = "  --" + o.name + (o.value.empty() ? "" : " " + o.value);
+            std::string head = std::string("  ") + (o.short_name ? std::string("-") + o.short_name + ", " : "") +
+                               "--" + o.name + (o.value.empty() ? "" : " " + o.value);
             if (head.size() < 28) head.resize(28, ' ');
             else head += "\n" + std::string(28, ' ');
             out << head << o.help << (o.repeatable ? " (repeatable)" : "") << "\n";

@@ -20,6 +20,7 @@ struct OptionSpec {
     std::string value;    ///< value placeholder for help; empty for a flag
     std::string help;
     bool repeatable = false;
+    char short_name = 0; ///< also accepted as -X
 };
 
 class Args {

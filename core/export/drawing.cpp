@@ -26,6 +26,9 @@ Drawing make_drawing(const SnaxelEngine& engine, const std::vector<ContourResult
             if (visibility) {
                 const LoopVisibility& lv = (*visibility)[c].loops[l];
                 drawn.qi = lv.snaxel_qi;
+                drawn.change_before.reserve(lv.change_before.size());
+                for (const glm::dvec3& point : lv.change_before)
+                    drawn.change_before.push_back(projection.project(point));
                 for (const VisibilityRun& run : lv.runs) {
                     DrawnRun dr{run.qi, run.closed, {}};
                     dr.q.reserve(run.points.size());

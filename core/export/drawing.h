@@ -24,6 +24,7 @@ struct DrawnLoop {
     std::vector<glm::dvec3> p; ///< snaxel positions in the mesh's coordinates
     std::vector<glm::dvec2> q; ///< their projections in image pixels
     std::vector<int> qi;       ///< per snaxel; empty when visibility was not computed
+    std::vector<glm::dvec2> change_before; ///< per snaxel, where qi changes before it (see LoopVisibility)
     std::vector<DrawnRun> runs; ///< empty when visibility was not computed
 };
 

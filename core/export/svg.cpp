@@ -1,22 +1,60 @@
 #include "core/export/svg.h"
 
 #include <cstdio>
-#include <sstream>
+
+#include "core/export/svg_writer.h"
 
 namespace snaxels {
-namespace {
+namespace svg {
 
 void append_number(std::string& out, double v) {
     char buf[32];
-    // Two decimals are a hundredth of a pixel: below what any display shows.
     int n = std::snprintf(buf, sizeof buf, "%.2f", v);
     while (n > 0 && buf[n - 1] == '0') --n;
     if (n > 0 && buf[n - 1] == '.') --n;
-    if (n == 2 && buf[0] == '-' && buf[1] == '0') { buf[0] = '0'; n = 1; }
+    if (n == 2 && buf[0] == '-' && buf[1] == '0') {
+        buf[0] = '0';
+        n = 1;
+    }
     out.append(buf, std::size_t(n));
 }
 
-} // namespace
+void append_path_data(std::string& out, const std::vector<glm::dvec2>& q, bool closed) {
+    out += 'M';
+    for (std::size_t i = 0; i < q.size(); ++i) {
+        if (i) out += i == 1 ? " L" : " ";
+        append_number(out, q[i].x);
+        out += ',';
+        append_number(out, q[i].y);
+    }
+    if (closed) out += " Z";
+}
+
+std::string document_start(int width, int height) {
+    const std::string w = std::to_string(width), h = std::to_string(height);
+    return "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n"
+           "<svg xmlns=\"http://www.w3.org/2000/svg\" version=\"1.1\" width=\"" + w + "\" height=\"" + h +
+           "\" viewBox=\"0 0 " + w + " " + h + "\">\n"
+           "<rect width=\"100%\" height=\"100%\" fill=\"#ffffff\"/>\n";
+}
+
+std::string kind_group(const ContourSpec& spec) {
+    return "<g class=\"contour\" data-kind=\"" + spec.kind_name() + "\" data-label=\"" + spec.label() +
+           "\" stroke=\"" + default_stroke(spec.kind) + "\">\n";
+}
+
+std::string visibility_group(bool hidden) {
+    return hidden ? "<g id=\"hidden\" fill=\"none\" stroke-width=\"1\" stroke-opacity=\"0.55\" "
+                    "stroke-dasharray=\"5 4\" stroke-linejoin=\"round\">\n"
+                  : "<g id=\"visible\" fill=\"none\" stroke-width=\"1.5\" stroke-linejoin=\"round\" "
+                    "stroke-linecap=\"round\">\n";
+}
+
+std::string plain_group() {
+    return "<g fill=\"none\" stroke-width=\"1.5\" stroke-linejoin=\"round\" stroke-linecap=\"round\">\n";
+}
+
+} // namespace svg
 
 const char* default_stroke(ContourKind kind) {
     switch (kind) {
@@ -32,41 +70,23 @@ namespace {
 
 void append_path(std::string& out, const std::vector<glm::dvec2>& q, bool closed) {
     if (q.size() < 2) return;
-    out += "<path d=\"M";
-    for (std::size_t i = 0; i < q.size(); ++i) {
-        if (i) out += i == 1 ? " L" : " ";
-        append_number(out, q[i].x);
-        out += ',';
-        append_number(out, q[i].y);
-    }
-    if (closed) out += " Z";
+    out += "<path d=\"";
+    svg::append_path_data(out, q, closed);
     out += "\"/>\n";
-}
-
-void open_kind_group(std::string& out, const ContourSpec& spec) {
-    out += "<g class=\"contour\" data-kind=\"" + spec.kind_name() + "\" data-label=\"" +
-           spec.label() + "\" stroke=\"" + default_stroke(spec.kind) + "\">\n";
 }
 
 } // namespace
 
 std::string to_svg(const Drawing& drawing) {
-    std::ostringstream head;
-    head << "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n"
-         << "<svg xmlns=\"http://www.w3.org/2000/svg\" version=\"1.1\" width=\"" << drawing.width
-         << "\" height=\"" << drawing.height << "\" viewBox=\"0 0 " << drawing.width << ' '
-         << drawing.height << "\">\n"
-         << "<rect width=\"100%\" height=\"100%\" fill=\"#ffffff\"/>\n";
-    std::string out = head.str();
+    std::string out = svg::document_start(drawing.width, drawing.height);
     bool with_visibility = false;
     for (const DrawnContour& c : drawing.contours)
         for (const DrawnLoop& loop : c.loops) with_visibility |= !loop.runs.empty();
 
     if (!with_visibility) {
-        out += "<g fill=\"none\" stroke-width=\"1.5\" stroke-linejoin=\"round\" "
-               "stroke-linecap=\"round\">\n";
+        out += svg::plain_group();
         for (const DrawnContour& c : drawing.contours) {
-            open_kind_group(out, c.spec);
+            out += svg::kind_group(c.spec);
             for (const DrawnLoop& loop : c.loops) append_path(out, loop.q, loop.closed);
             out += "</g>\n";
         }
@@ -74,16 +94,10 @@ std::string to_svg(const Drawing& drawing) {
         return out;
     }
     // Hidden lines first, so visible strokes are drawn over them.
-    const char* groups[2][2] = {
-        {"hidden", "fill=\"none\" stroke-width=\"1\" stroke-opacity=\"0.55\" "
-                   "stroke-dasharray=\"5 4\" stroke-linejoin=\"round\""},
-        {"visible", "fill=\"none\" stroke-width=\"1.5\" stroke-linejoin=\"round\" "
-                    "stroke-linecap=\"round\""}};
-    for (int g = 0; g < 2; ++g) {
-        const bool hidden = g == 0;
-        out += std::string("<g id=\"") + groups[g][0] + "\" " + groups[g][1] + ">\n";
+    for (const bool hidden : {true, false}) {
+        out += svg::visibility_group(hidden);
         for (const DrawnContour& c : drawing.contours) {
-            open_kind_group(out, c.spec);
+            out += svg::kind_group(c.spec);
             for (const DrawnLoop& loop : c.loops)
                 for (const DrawnRun& run : loop.runs)
                     if ((run.qi > 0) == hidden) append_path(out, run.q, run.closed);

@@ -60,7 +60,9 @@ struct UnionFind {
 // vertex or edge, or a fan with no free gap to link into.
 class RepairingFaceAdder {
   public:
-    explicit RepairingFaceAdder(Mesh& mesh) : mesh_(mesh) {}
+    /// @p source: per vertex, the input vertex it stands for (copies inherit it).
+    RepairingFaceAdder(Mesh& mesh, OpenMesh::VPropHandleT<std::uint32_t> source)
+        : mesh_(mesh), source_(source) {}
 
     void add(const std::array<Mesh::VertexHandle, 3>& vh) {
         if (mesh_.add_face(vh[0], vh[1], vh[2]).is_valid()) return;
@@ -108,10 +110,12 @@ class RepairingFaceAdder {
     Mesh::VertexHandle spare(std::size_t k, Mesh::VertexHandle original) {
         while (spares_.size() <= k) spares_.push_back(mesh_.add_vertex(mesh_.point(original)));
         mesh_.set_point(spares_[k], mesh_.point(original));
+        mesh_.property(source_, spares_[k]) = mesh_.property(source_, original);
         return spares_[k];
     }
 
     Mesh& mesh_;
+    OpenMesh::VPropHandleT<std::uint32_t> source_;
     std::vector<Mesh::VertexHandle> spares_;
     std::unordered_map<int, Mesh::VertexHandle> latest_copy_; ///< input vertex -> its newest copy
     std::size_t copies_ = 0;
@@ -213,20 +217,28 @@ LoadedMesh build_mesh(const TriangleSoup& soup, const std::string& source) {
     mesh.reserve(unique.size(), faces.size() * 3 / 2 + 16, faces.size());
     std::vector<Mesh::VertexHandle> handles;
     handles.reserve(unique.size());
+    std::vector<std::uint32_t> unique_source(unique.size());
+    for (std::size_t i = soup.positions.size(); i-- > 0;) unique_source[welded[i]] = std::uint32_t(i);
+    OpenMesh::VPropHandleT<std::uint32_t> soup_vertex;
+    mesh.add_property(soup_vertex);
     for (const auto& t : faces)
         for (const auto v : t)
             if (remap[v] < 0) {
                 remap[v] = static_cast<std::int64_t>(handles.size());
                 handles.push_back(mesh.add_vertex(to_om(unique[v])));
+                mesh.property(soup_vertex, handles.back()) = unique_source[v];
             }
 
     // 5. Faces, repairing non-manifold configurations by splitting vertices.
     omerr().disable(); // failed add_face attempts are expected and handled
-    RepairingFaceAdder adder(mesh);
+    RepairingFaceAdder adder(mesh, soup_vertex);
     for (const auto& t : faces)
         adder.add({handles[remap[t[0]]], handles[remap[t[1]]], handles[remap[t[2]]]});
     report.split_vertices = adder.finish();
     omerr().enable();
+    out.vertex_source.resize(mesh.n_vertices());
+    for (const auto vh : mesh.vertices()) out.vertex_source[vh.idx()] = mesh.property(soup_vertex, vh);
+    mesh.remove_property(soup_vertex);
 
     // 6. Components; closed ones that enclose negative volume face inward
     // (some scanners write them so) and are turned outward, because shading

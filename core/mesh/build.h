@@ -16,6 +16,9 @@ namespace snaxels {
 struct LoadedMesh {
     Mesh mesh;
     MeshReport report;
+    /// Per mesh vertex: an input (soup) vertex at its place. Posing the soup
+    /// (animation) and reading these gives the mesh's posed positions.
+    std::vector<std::uint32_t> vertex_source;
 };
 
 /// Builds a Mesh from @p soup. @p source names the input in the report.

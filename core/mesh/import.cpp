@@ -14,6 +14,7 @@
 #include <glm/glm.hpp>
 
 #include "core/error.h"
+#include "core/mesh/assimp_scene.h"
 #include "core/mesh/procedural.h"
 
 namespace snaxels {
@@ -131,10 +132,10 @@ std::string plain_assimp_error(std::string why) {
 
 } // namespace
 
-TriangleSoup read_triangle_soup(const std::string& path) {
-    check_readable(path);
+namespace detail {
 
-    Assimp::Importer importer;
+const aiScene* read_assimp_scene(Assimp::Importer& importer, const std::string& path) {
+    check_readable(path);
     // Points and lines carry no surface; drop them rather than fail on them.
     importer.SetPropertyInteger(AI_CONFIG_PP_SBP_REMOVE,
                                 aiPrimitiveType_POINT | aiPrimitiveType_LINE);
@@ -143,35 +144,48 @@ TriangleSoup read_triangle_soup(const std::string& path) {
     if (!scene) throw Error(path + ": " + plain_assimp_error(importer.GetErrorString()));
     if (scene->mNumMeshes == 0 || !scene->mRootNode)
         throw Error(path + ": contains no mesh with faces");
+    return scene;
+}
 
-    TriangleSoup soup;
-    std::function<void(const aiNode*, const aiMatrix4x4&)> visit =
-        [&](const aiNode* node, const aiMatrix4x4& parent) {
-            const aiMatrix4x4 xf = parent * node->mTransformation;
-            for (unsigned m = 0; m < node->mNumMeshes; ++m) {
-                if (node->mMeshes[m] >= scene->mNumMeshes) continue;
-                const aiMesh* mesh = scene->mMeshes[node->mMeshes[m]];
-                if (!(mesh->mPrimitiveTypes & aiPrimitiveType_TRIANGLE)) continue;
-                const auto base = static_cast<std::uint32_t>(soup.positions.size());
-                for (unsigned v = 0; v < mesh->mNumVertices; ++v) {
-                    const aiVector3D& p = mesh->mVertices[v];
-                    // Transform in double so welding sees exactly repeatable values.
-                    glm::dvec3 q{};
-                    for (int r = 0; r < 3; ++r)
-                        q[r] = double(xf[r][0]) * p.x + double(xf[r][1]) * p.y +
-                               double(xf[r][2]) * p.z + double(xf[r][3]);
-                    soup.positions.push_back(q);
-                }
-                for (unsigned f = 0; f < mesh->mNumFaces; ++f) {
-                    const aiFace& face = mesh->mFaces[f];
-                    if (face.mNumIndices != 3) continue;
-                    soup.triangles.push_back(
-                        {base + face.mIndices[0], base + face.mIndices[1], base + face.mIndices[2]});
-                }
-            }
-            for (unsigned c = 0; c < node->mNumChildren; ++c) visit(node->mChildren[c], xf);
-        };
+void for_each_mesh_instance(const aiScene* scene,
+                            const std::function<void(const aiNode*, const aiMesh*, const aiMatrix4x4&)>& fn) {
+    std::function<void(const aiNode*, const aiMatrix4x4&)> visit = [&](const aiNode* node,
+                                                                       const aiMatrix4x4& parent) {
+        const aiMatrix4x4 xf = parent * node->mTransformation;
+        for (unsigned m = 0; m < node->mNumMeshes; ++m) {
+            if (node->mMeshes[m] >= scene->mNumMeshes) continue;
+            const aiMesh* mesh = scene->mMeshes[node->mMeshes[m]];
+            if (mesh->mPrimitiveTypes & aiPrimitiveType_TRIANGLE) fn(node, mesh, xf);
+        }
+        for (unsigned c = 0; c < node->mNumChildren; ++c) visit(node->mChildren[c], xf);
+    };
     visit(scene->mRootNode, aiMatrix4x4());
+}
+
+} // namespace detail
+
+TriangleSoup read_triangle_soup(const std::string& path) {
+    Assimp::Importer importer;
+    const aiScene* scene = detail::read_assimp_scene(importer, path);
+    TriangleSoup soup;
+    detail::for_each_mesh_instance(scene, [&](const aiNode*, const aiMesh* mesh, const aiMatrix4x4& xf) {
+        const auto base = static_cast<std::uint32_t>(soup.positions.size());
+        for (unsigned v = 0; v < mesh->mNumVertices; ++v) {
+            const aiVector3D& p = mesh->mVertices[v];
+            // Transform in double so welding sees exactly repeatable values.
+            glm::dvec3 q{};
+            for (int r = 0; r < 3; ++r)
+                q[r] = double(xf[r][0]) * p.x + double(xf[r][1]) * p.y + double(xf[r][2]) * p.z +
+                       double(xf[r][3]);
+            soup.positions.push_back(q);
+        }
+        for (unsigned f = 0; f < mesh->mNumFaces; ++f) {
+            const aiFace& face = mesh->mFaces[f];
+            if (face.mNumIndices != 3) continue;
+            soup.triangles.push_back(
+                {base + face.mIndices[0], base + face.mIndices[1], base + face.mIndices[2]});
+        }
+    });
     return soup;
 }
 

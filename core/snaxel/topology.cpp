@@ -49,3 +49,20 @@ MeshTopology build_topology(const Mesh& mesh) {
 }
 
 } // namespace snaxels
+
+namespace snaxels {
+
+void recompute_normals(MeshTopology& t) {
+    std::fill(t.normals.begin(), t.normals.end(), glm::dvec3(0.0));
+    for (const auto& f : t.face_vertices) {
+        const glm::dvec3 a = t.positions[f[0]];
+        const glm::dvec3 n = glm::cross(t.positions[f[1]] - a, t.positions[f[2]] - a);
+        for (const auto v : f) t.normals[v] += n;
+    }
+    for (auto& n : t.normals) {
+        const double len = glm::length(n);
+        n = len > 0.0 ? n / len : glm::dvec3(0.0, 0.0, 1.0);
+    }
+}
+
+} // namespace snaxels

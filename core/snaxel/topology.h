@@ -43,3 +43,11 @@ struct MeshTopology {
 MeshTopology build_topology(const Mesh& mesh);
 
 } // namespace snaxels
+
+namespace snaxels {
+
+/// Recomputes every vertex normal of @p topology from its current positions
+/// (area-weighted face normals, as on import), after the mesh moved.
+void recompute_normals(MeshTopology& topology);
+
+} // namespace snaxels

@@ -198,12 +198,23 @@ void ContourTracker::track(const Camera& camera, const Light& light) {
     // 5. Loops matched through their snaxels' sources: events and sequences.
     const std::size_t old_loops = old.loops.size(), new_loops = fronts.loops.size();
     std::vector<std::set<std::int32_t>> pred(new_loops), succ(old_loops);
+    std::map<std::pair<std::int32_t, std::int32_t>, std::size_t> shared; // (old, new) -> snaxels linking them
     for (std::size_t s = 0; s < n; ++s)
         if (source[s] != kNone) {
             const std::int32_t ol = old.snaxels[source[s]].loop, nl = fronts.snaxels[s].loop;
             pred[nl].insert(ol);
             succ[ol].insert(nl);
+            ++shared[{ol, nl}];
         }
+    // Through a split or merge the sequence goes on along the branch that
+    // shares the most snaxels both ways; the other branches start anew.
+    std::vector<std::int32_t> best_succ(old_loops, kNone), best_pred(new_loops, kNone);
+    std::vector<std::size_t> best_succ_n(old_loops, 0), best_pred_n(new_loops, 0);
+    for (const auto& [link, count] : shared) {
+        const auto [ol, nl] = link;
+        if (count > best_succ_n[ol]) best_succ_n[ol] = count, best_succ[ol] = nl;
+        if (count > best_pred_n[nl]) best_pred_n[nl] = count, best_pred[nl] = ol;
+    }
     auto loop_points = [](const Fronts& fr, const FrontLoop& loop, const std::vector<glm::dvec3>& pos) {
         std::vector<glm::dvec3> pts;
         fr.for_each_in_loop(loop, [&](std::int32_t s) { pts.push_back(pos[s]); });
@@ -220,8 +231,9 @@ void ContourTracker::track(const Camera& camera, const Light& light) {
                 frame_.events.push_back({EventKind::Merge, frame_number_,
                                          closest_between(first, loop_points(old, old.loops[*it], old_position))});
         }
-        if (pred[l].size() == 1 && succ[*pred[l].begin()].size() == 1)
-            frame_.loop_sequence[l] = prev.loop_sequence[*pred[l].begin()];
+        const std::int32_t p = best_pred[l];
+        if (p != kNone && best_succ[p] == std::int32_t(l))
+            frame_.loop_sequence[l] = prev.loop_sequence[p];
         else
             frame_.loop_sequence[l] = next_sequence_++;
     }

@@ -32,7 +32,10 @@ struct TrackedFrame {
     ContourResult contour;                 ///< fronts (polished); regions are not tracked
     std::vector<std::uint64_t> snaxel_id;  ///< per snaxel: identity, stable while it lives
     std::vector<std::uint64_t> born_from;  ///< per snaxel born this frame: its parent's id; else 0
-    std::vector<std::uint64_t> loop_sequence; ///< per loop: id of its contour sequence
+    /// Per loop: its contour sequence. A loop continues its predecessor's
+    /// sequence when each is the other's main branch (most shared snaxels),
+    /// so a silhouette that absorbs or sheds a small loop goes on.
+    std::vector<std::uint64_t> loop_sequence;
     std::vector<VisualEvent> events;
     std::size_t fanouts = 0, retreats = 0;
 };

@@ -92,6 +92,7 @@ ContourVisibility VisibilitySampler::classify(const SnaxelEngine& engine,
         fronts.for_each_in_loop(loop, [&](std::int32_t s) { order.push_back(s); });
         const std::size_t n = order.size();
         for (const std::int32_t s : order) lv.snaxel_qi.push_back(snaxel_qi[s]);
+        lv.change_before.assign(n, glm::dvec3(0.0));
         auto point = [&](std::size_t k) { return engine.position(fronts.snaxels[order[k % n]]); };
 
         std::size_t start = 0; // where the first run begins
@@ -117,6 +118,7 @@ ContourVisibility VisibilitySampler::classify(const SnaxelEngine& engine,
         if (loop.closed) {
             first_change = change_point(fronts.snaxels[order[(first + n - 1) % n]],
                                         fronts.snaxels[order[first]], lv.snaxel_qi[(first + n - 1) % n]);
+            lv.change_before[first] = first_change;
             run.points.push_back(first_change);
         }
         run.points.push_back(point(first));
@@ -129,6 +131,7 @@ ContourVisibility VisibilitySampler::classify(const SnaxelEngine& engine,
             if (lv.snaxel_qi[next] != lv.snaxel_qi[k]) {
                 const glm::dvec3 c = change_point(fronts.snaxels[order[k]], fronts.snaxels[order[next]],
                                                   lv.snaxel_qi[k]);
+                lv.change_before[next] = c;
                 run.points.push_back(c);
                 lv.runs.push_back(std::move(run));
                 run = VisibilityRun{lv.snaxel_qi[next], false, {c}};

@@ -30,6 +30,9 @@ struct VisibilityRun {
 
 struct LoopVisibility {
     std::vector<int> snaxel_qi; ///< per snaxel, in loop order
+    /// Per snaxel whose QI differs from the one before it in the loop: where
+    /// the change happens on the segment between them (else unused).
+    std::vector<glm::dvec3> change_before;
     std::vector<VisibilityRun> runs;
 };
 

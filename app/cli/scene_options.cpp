@@ -1,0 +1,134 @@
+#include "app/cli/scene_options.h"
+
+#include <cmath>
+#include <sstream>
+
+#include "core/error.h"
+
+namespace snaxels::cli {
+
+glm::dvec3 parse_vec3(const std::string& option, const std::string& text, bool direction) {
+    glm::dvec3 v{};
+    std::istringstream in(text);
+    char comma = 0;
+    in >> v.x >> comma;
+    bool ok = bool(in) && comma == ',';
+    in >> v.y >> comma;
+    ok = ok && bool(in) && comma == ',';
+    in >> v.z;
+    ok = ok && !in.fail() && (in >> std::ws).eof();
+    if (!ok || !std::isfinite(v.x) || !std::isfinite(v.y) || !std::isfinite(v.z))
+        throw UsageError("--" + option + " takes three numbers X,Y,Z, not '" + text + "'");
+    if (direction && glm::length(v) < 1e-12)
+        throw UsageError("--" + option + " must not be the zero vector");
+    return v;
+}
+
+double parse_number(const std::string& option, const std::string& text, double lo, double hi) {
+    std::size_t used = 0;
+    double v = 0.0;
+    try {
+        v = std::stod(text, &used);
+    } catch (const std::exception&) {
+        used = 0;
+    }
+    if (used == 0 || used != text.size() || !(v > lo && v < hi)) {
+        std::ostringstream msg;
+        msg << "--" << option << " takes a number between " << lo << " and " << hi << ", not '" << text << "'";
+        throw UsageError(msg.str());
+    }
+    return v;
+}
+
+int parse_int(const std::string& option, const std::string& text, int lo, int hi) {
+    std::size_t used = 0;
+    long v = 0;
+    try {
+        v = std::stol(text, &used);
+    } catch (const std::exception&) {
+        used = 0;
+    }
+    if (used == 0 || used != text.size() || v < lo || v > hi)
+        throw UsageError("--" + option + " takes a whole number from " + std::to_string(lo) + " to " +
+                         std::to_string(hi) + ", not '" + text + "'");
+    return int(v);
+}
+
+std::vector<OptionSpec> scene_option_specs() {
+    return {{"view-dir", "X,Y,Z", "orthographic view: the direction the camera looks (default 0,0,1)"},
+            {"eye", "X,Y,Z", "perspective view from this point"},
+            {"target", "X,Y,Z", "perspective: the point looked at (default: the mesh's centre)"},
+            {"fov", "DEG", "perspective: vertical field of view in degrees (default 35)"},
+            {"up", "X,Y,Z", "the world direction shown upward (default 0,1,0)"},
+            {"light-dir", "X,Y,Z", "directional light: the direction toward the light"},
+            {"light-pos", "X,Y,Z", "point light at this position"},
+            {"kind", "KIND", "contour to find: visual, shadow, isophote:K, gleam:K (default visual)", true},
+            {"size", "WxH", "image size in pixels (default 800x800)"},
+            {"no-visibility", "", "skip hidden-line classification (no qi, no dashed runs)"},
+            {"check", "", "check the snaxel invariants after every iteration (slower)"}};
+}
+
+SceneOptions parse_scene_options(const Args& args) {
+    SceneOptions o;
+    if (args.flag("view-dir") && args.flag("eye"))
+        throw UsageError("--view-dir (orthographic) and --eye (perspective) exclude each other");
+    if (!args.flag("eye") && (args.flag("target") || args.flag("fov")))
+        throw UsageError("--target and --fov need --eye (a perspective view)");
+    if (args.flag("light-dir") && args.flag("light-pos"))
+        throw UsageError("--light-dir and --light-pos exclude each other");
+    for (const std::string& k : args.values("kind")) {
+        try {
+            o.kinds.push_back(ContourSpec::parse(k));
+        } catch (const Error& e) {
+            throw UsageError(e.what());
+        }
+    }
+    if (o.kinds.empty()) o.kinds.push_back({});
+    if (const auto size = args.value("size")) {
+        const auto x = size->find('x');
+        bool ok = x != std::string::npos;
+        try {
+            if (ok) {
+                o.width = parse_int("size", size->substr(0, x), 16, 20000);
+                o.height = parse_int("size", size->substr(x + 1), 16, 20000);
+            }
+        } catch (const UsageError&) {
+            ok = false;
+        }
+        if (!ok) throw UsageError("--size takes WIDTHxHEIGHT in pixels (16 to 20000), not '" + *size + "'");
+    }
+    if (const auto up = args.value("up")) o.camera.up = parse_vec3("up", *up, true);
+    if (const auto v = args.value("view-dir")) o.camera.view_dir = glm::normalize(parse_vec3("view-dir", *v, true));
+    if (const auto eye = args.value("eye")) {
+        o.camera.projection = Camera::Projection::Perspective;
+        o.camera.eye = parse_vec3("eye", *eye, false);
+        if (const auto t = args.value("target")) o.target = parse_vec3("target", *t, false);
+        if (const auto fov = args.value("fov")) o.camera.fov_deg = parse_number("fov", *fov, 0.0, 180.0);
+    }
+    if (const auto d = args.value("light-dir")) {
+        Light l;
+        l.dir = glm::normalize(parse_vec3("light-dir", *d, true));
+        o.light = l;
+    }
+    if (const auto p = args.value("light-pos")) {
+        Light l;
+        l.point = true;
+        l.pos = parse_vec3("light-pos", *p, false);
+        o.light = l;
+    }
+    o.visibility = !args.flag("no-visibility");
+    o.check = args.flag("check");
+    return o;
+}
+
+void complete_scene(SceneOptions& o, const MeshReport& report) {
+    const glm::dvec3 centre = 0.5 * (report.bbox_min + report.bbox_max);
+    if (!o.camera.orthographic()) {
+        o.camera.target = o.target.value_or(centre);
+        if (glm::length(o.camera.target - o.camera.eye) < 1e-12)
+            throw UsageError("--eye and --target are the same point");
+    }
+    if (!o.light) o.light = default_light(o.camera);
+}
+
+} // namespace snaxels::cli

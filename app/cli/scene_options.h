@@ -1,0 +1,36 @@
+#pragma once
+// The view, light, contour-kind and image options that 'contours' and
+// 'animate' share: their help entries and their parsing, done before any
+// mesh is loaded so mistakes are reported at once.
+
+#include <optional>
+#include <vector>
+
+#include "app/cli/args.h"
+#include "core/mesh/report.h"
+#include "core/scene/camera.h"
+#include "core/snaxel/contour_function.h"
+
+namespace snaxels::cli {
+
+struct SceneOptions {
+    Camera camera;
+    std::optional<glm::dvec3> target; ///< perspective target, if given
+    std::optional<Light> light;       ///< if given; else the default light
+    std::vector<ContourSpec> kinds;
+    int width = 800, height = 800;
+    bool visibility = true;
+    bool check = false;
+};
+
+std::vector<OptionSpec> scene_option_specs();
+SceneOptions parse_scene_options(const Args& args);
+/// Fills what depends on the mesh: the perspective target (its centre by
+/// default) and the default light.
+void complete_scene(SceneOptions& options, const MeshReport& report);
+
+glm::dvec3 parse_vec3(const std::string& option, const std::string& text, bool direction);
+double parse_number(const std::string& option, const std::string& text, double lo, double hi);
+int parse_int(const std::string& option, const std::string& text, int lo, int hi);
+
+} // namespace snaxels::cli

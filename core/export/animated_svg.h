@@ -1,0 +1,46 @@
+#pragma once
+/// Animated SVG whose paths move (the paper's "3-D SVG Animation"): one
+/// <path> per contour sequence and visibility run, its vertex list fixed for
+/// the sequence and its geometry animated with SMIL <animate> (values,
+/// keyTimes, calcMode="linear"), shown only while its sequence lives.
+/// Snaxel identities give the correspondence: a snaxel not yet born or
+/// already gone sits on its predecessor along the loop, so every keyframe
+/// has the same commands and browsers interpolate between them.
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "core/export/drawing.h"
+
+namespace snaxels {
+
+/// Per loop of a frame's DrawnContour: its contour sequence and snaxel ids.
+struct AnimatedLoop {
+    std::uint64_t sequence = 0;
+    std::vector<std::uint64_t> ids; ///< parallel to the DrawnLoop's snaxels
+};
+
+struct AnimationFrame {
+    Drawing drawing;
+    std::vector<std::vector<AnimatedLoop>> loops; ///< [contour][loop], parallel to drawing.contours
+};
+
+struct AnimatedSvgOptions {
+    /// Pixels: path vertices, and keyframes, that linear interpolation
+    /// reproduces within this distance in every frame are dropped.
+    double tolerance_px = 0.25;
+};
+
+struct AnimatedSvgStats {
+    std::size_t paths = 0;
+    std::size_t keyframes = 0;        ///< kept, over all paths
+    std::size_t frames_spanned = 0;   ///< frames the paths are shown in, summed
+    std::size_t vertices = 0;         ///< path vertices, summed over paths
+};
+
+/// The animated SVG of @p frames played at @p fps, looping.
+std::string to_animated_svg(const std::vector<AnimationFrame>& frames, double fps,
+                            const AnimatedSvgOptions& options = {}, AnimatedSvgStats* stats = nullptr);
+
+} // namespace snaxels

@@ -1,0 +1,93 @@
+#include "core/scene/animation.h"
+
+#include <cstdio>
+#include <filesystem>
+
+#include <glm/gtx/rotate_vector.hpp>
+
+#include "core/error.h"
+#include "core/mesh/import.h"
+
+namespace snaxels {
+
+FrameDriver::FrameDriver(const AnimationSpec& spec, const LoadedMesh& mesh, MeshTopology& topology,
+                         const Camera& camera, const Light& light, const glm::dvec3& centre,
+                         const std::string& mesh_path)
+    : spec_(spec), mesh_(mesh), topo_(topology), camera_(camera), light_(light), centre_(centre) {
+    if (spec_.kind == AnimationSpec::Kind::Clip) clip_ = std::make_unique<MeshAnimation>(mesh_path, spec_.clip);
+    if (spec_.kind == AnimationSpec::Kind::Sequence) {
+        if (spec_.first_file < 0) {
+            spec_.first_file = 0;
+            std::error_code ec;
+            if (!std::filesystem::exists(sequence_path(0), ec)) spec_.first_file = 1;
+        }
+        soup_size_ = read_triangle_soup(sequence_path(0)).positions.size();
+    }
+}
+
+FrameDriver::~FrameDriver() = default;
+
+bool FrameDriver::mesh_moves() const {
+    return spec_.kind == AnimationSpec::Kind::Clip || spec_.kind == AnimationSpec::Kind::Sequence;
+}
+
+std::string FrameDriver::sequence_path(int k) const {
+    const int number = std::max(spec_.first_file, 0) + k;
+    std::string path = spec_.pattern;
+    if (const auto pct = path.find('%'); pct != std::string::npos) {
+        char buf[4096];
+        std::snprintf(buf, sizeof buf, path.c_str(), number);
+        return buf;
+    }
+    const auto first = path.find('#');
+    if (first == std::string::npos) return path;
+    auto last = first;
+    while (last < path.size() && path[last] == '#') ++last;
+    std::string digits = std::to_string(number);
+    if (digits.size() < last - first) digits.insert(0, last - first - digits.size(), '0');
+    return path.substr(0, first) + digits + path.substr(last);
+}
+
+void FrameDriver::apply(int k, Camera& camera, Light& light) {
+    camera = camera_;
+    light = light_;
+    const double angle = glm::radians(spec_.degrees_per_frame * k);
+    const glm::dvec3 axis = glm::normalize(camera_.up);
+    switch (spec_.kind) {
+    case AnimationSpec::Kind::Turntable:
+        // The camera orbits the target about the up axis, as on a turntable.
+        if (camera.orthographic()) {
+            camera.view_dir = glm::rotate(camera_.view_dir, angle, axis);
+        } else {
+            camera.eye = camera_.target + glm::rotate(camera_.eye - camera_.target, angle, axis);
+        }
+        if (!light.point) light.dir = glm::rotate(light_.dir, angle, axis); // lit from the same side
+        break;
+    case AnimationSpec::Kind::LightOrbit:
+        if (light.point) light.pos = centre_ + glm::rotate(light_.pos - centre_, angle, axis);
+        else light.dir = glm::rotate(light_.dir, angle, axis);
+        break;
+    case AnimationSpec::Kind::Clip:
+        clip_->pose(double(k) / spec_.fps, soup_);
+        for (std::size_t v = 0; v < topo_.n_vertices(); ++v) topo_.positions[v] = soup_[mesh_.vertex_source[v]];
+        recompute_normals(topo_);
+        break;
+    case AnimationSpec::Kind::Sequence: {
+        const std::string path = sequence_path(k);
+        const TriangleSoup soup = read_triangle_soup(path);
+        if (soup.positions.size() != soup_size_)
+            throw Error(path + ": has " + std::to_string(soup.positions.size()) +
+                        " vertices where the sequence's first file has " + std::to_string(soup_size_) +
+                        " (every file must share one connectivity)");
+        for (std::size_t v = 0; v < topo_.n_vertices(); ++v) topo_.positions[v] = soup.positions[mesh_.vertex_source[v]];
+        for (const auto& p : topo_.positions)
+            if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z))
+                throw Error(path + ": a vertex has a non-finite coordinate");
+        recompute_normals(topo_);
+        break;
+    }
+    case AnimationSpec::Kind::Still: break;
+    }
+}
+
+} // namespace snaxels

@@ -1,0 +1,59 @@
+#pragma once
+/// What changes from frame to frame: the camera orbiting (turntable), the
+/// light orbiting, the mesh's own clip (skinning, morph targets) or a
+/// numbered sequence of mesh files with the same connectivity.
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "core/mesh/build.h"
+#include "core/mesh/mesh_animation.h"
+#include "core/scene/camera.h"
+#include "core/snaxel/topology.h"
+
+namespace snaxels {
+
+struct AnimationSpec {
+    enum class Kind { Still, Turntable, LightOrbit, Clip, Sequence };
+    Kind kind = Kind::Still;
+    double degrees_per_frame = 1.0; ///< turntable and light orbit
+    std::string clip;               ///< Clip: name or index; empty for the first
+    std::string pattern;            ///< Sequence: path with #### or %d for the frame number
+    int first_file = -1;            ///< Sequence: number of the first file (-1: 0 or 1, whichever exists)
+    int frames = 1;
+    double fps = 24.0;
+};
+
+/// Poses the scene for each frame: camera, light, and (for clips and
+/// sequences) the mesh's positions and normals in @p topology.
+class FrameDriver {
+  public:
+    /// @p mesh is the loaded first frame (or bind pose); @p centre the point
+    /// the camera and light orbit (the mesh's bounding-box centre).
+    FrameDriver(const AnimationSpec& spec, const LoadedMesh& mesh, MeshTopology& topology,
+                const Camera& camera, const Light& light, const glm::dvec3& centre,
+                const std::string& mesh_path);
+    ~FrameDriver();
+
+    bool mesh_moves() const;
+    /// Poses frame @p k (0-based); throws snaxels::Error if a sequence file
+    /// is missing or does not match the first frame's connectivity.
+    void apply(int k, Camera& camera, Light& light);
+
+    /// The file of sequence frame @p k.
+    std::string sequence_path(int k) const;
+
+  private:
+    AnimationSpec spec_;
+    const LoadedMesh& mesh_;
+    MeshTopology& topo_;
+    Camera camera_;
+    Light light_;
+    glm::dvec3 centre_;
+    std::unique_ptr<MeshAnimation> clip_;
+    std::size_t soup_size_ = 0;
+    std::vector<glm::dvec3> soup_;
+};
+
+} // namespace snaxels
