@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <list>
 #include <map>
 #include <unordered_map>
 
@@ -12,30 +11,58 @@
 namespace snaxels {
 namespace {
 
-constexpr std::int64_t kNoGap = -1;
+constexpr double kTwoPi = 6.283185307179586;
 
-/// One loop of one frame, in the sequence's master vertex order.
-struct MasterFrame {
+double wrap01(double u) { return u - std::floor(u); }
+
+/// One loop of one frame, parameterized by arc length: u in [0, 1) runs
+/// round the loop from an anchor that follows the snaxels' identities.
+struct ParamLoop {
     int frame = 0;
-    std::vector<glm::dvec2> pos;   ///< per master vertex
-    std::vector<int> qi;           ///< per master vertex
-    std::map<std::int64_t, glm::dvec2> change; ///< gap g (before master vertex g) -> change point
+    bool closed = true;
+    std::vector<glm::dvec2> pts;
+    std::vector<double> cum; ///< arc length at each point from point 0
+    double length = 0.0;
+    double anchor = 0.0;     ///< arc length where u = 0 (closed loops)
+    std::vector<std::uint64_t> ids;
+    /// QI changes: (u, qi after it), sorted by u; `qi0` holds at u = 0.
+    std::vector<std::pair<double, int>> changes;
+    int qi0 = 0;
+
+    double arc_of_u(double u) const {
+        return closed ? std::fmod(anchor + wrap01(u) * length, length) : std::clamp(u, 0.0, 1.0) * length;
+    }
+    double u_of_arc(double arc) const {
+        if (length <= 0.0) return 0.0;
+        return closed ? wrap01((arc - anchor) / length) : std::clamp(arc / length, 0.0, 1.0);
+    }
+    glm::dvec2 at_arc(double arc) const {
+        if (pts.size() == 1 || length <= 0.0) return pts[0];
+        const std::size_t n = pts.size();
+        const std::size_t segs = closed ? n : n - 1;
+        // First cumulative length beyond arc.
+        std::size_t k = std::size_t(std::upper_bound(cum.begin(), cum.end(), arc) - cum.begin());
+        k = std::clamp<std::size_t>(k, 1, segs);
+        const std::size_t i = k - 1, j = k % n;
+        const double seg = (k < n ? cum[k] : length) - cum[i];
+        const double t = seg > 0.0 ? std::clamp((arc - cum[i]) / seg, 0.0, 1.0) : 0.0;
+        return (1.0 - t) * pts[i] + t * pts[j];
+    }
+    glm::dvec2 at(double u) const { return at_arc(arc_of_u(u)); }
 };
 
-/// A stretch of equal QI in master space at one frame: vertices [a, b)
-/// (unwrapped: indices taken modulo the master size), or the whole loop.
-struct RunSpan {
+/// A stretch of equal QI of one frame's loop: u in [u0, u1] (u1 may pass 1
+/// on closed loops), or the whole loop.
+struct Span {
     int qi = 0;
     bool whole = false;
-    std::int64_t a = 0, b = 0;
-    glm::dvec2 start{0.0}, end{0.0};
+    double u0 = 0.0, u1 = 1.0;
 };
 
 struct RunSequence {
     int qi = 0;
     bool whole = false, closed = false;
-    std::int64_t a = 0, b = 0; ///< union of the spans
-    std::vector<std::pair<const MasterFrame*, RunSpan>> frames;
+    std::vector<std::pair<const ParamLoop*, Span>> frames;
 };
 
 double point_segment(const glm::dvec2& p, const glm::dvec2& a, const glm::dvec2& b) {
@@ -55,10 +82,7 @@ void simplify_joint(const std::vector<std::vector<glm::dvec2>>& frames, std::siz
     for (std::size_t k = i + 1; k < j; ++k) {
         double d = 0.0;
         for (const auto& f : frames) d = std::max(d, point_segment(f[k], f[i], f[j]));
-        if (d > worst) {
-            worst = d;
-            at = k;
-        }
+        if (d > worst) worst = d, at = k;
     }
     if (worst <= tol) return;
     keep[at] = 1;
@@ -66,27 +90,54 @@ void simplify_joint(const std::vector<std::vector<glm::dvec2>>& frames, std::siz
     simplify_joint(frames, at, j, tol, keep);
 }
 
+// Largest distance from a vertex of one polyline to the other, both ways.
+// Vertex i of each corresponds roughly to vertex i of the other (same
+// count, same parameterization), so only a window of segments around i is
+// searched.
+double shape_distance(const std::vector<glm::dvec2>& a, const std::vector<glm::dvec2>& b, bool closed) {
+    const std::int64_t n = std::int64_t(a.size());
+    constexpr std::int64_t kWindow = 6;
+    auto one_way = [&](const std::vector<glm::dvec2>& from, const std::vector<glm::dvec2>& to) {
+        double worst = 0.0;
+        for (std::int64_t i = 0; i < n; ++i) {
+            double best = 1e300;
+            for (std::int64_t k = i - kWindow; k < i + kWindow && best > 0.0; ++k) {
+                std::int64_t s0 = k, s1 = k + 1;
+                if (closed) {
+                    s0 = ((s0 % n) + n) % n;
+                    s1 = ((s1 % n) + n) % n;
+                } else if (s0 < 0 || s1 >= n) {
+                    continue;
+                }
+                best = std::min(best, point_segment(from[std::size_t(i)], to[std::size_t(s0)], to[std::size_t(s1)]));
+            }
+            if (n == 1) best = glm::length(from[0] - to[0]);
+            worst = std::max(worst, best);
+        }
+        return worst;
+    };
+    return std::max(one_way(a, b), one_way(b, a));
+}
+
 // Keyframes to keep so that linear interpolation between them reproduces
-// every frame within `tol` (Douglas-Peucker over time).
+// the shape of every in-between frame within `tol` (Douglas-Peucker over
+// time; vertices may slide along the curve, the drawn line may not move).
 void simplify_time(const std::vector<std::vector<glm::dvec2>>& frames, std::size_t i, std::size_t j,
-                   double tol, std::vector<std::uint8_t>& keep) {
+                   double tol, bool closed, std::vector<std::uint8_t>& keep) {
     if (j <= i + 1) return;
     double worst = -1.0;
     std::size_t at = i;
+    std::vector<glm::dvec2> interp(frames[i].size());
     for (std::size_t k = i + 1; k < j; ++k) {
         const double u = double(k - i) / double(j - i);
-        double d = 0.0;
-        for (std::size_t v = 0; v < frames[k].size(); ++v)
-            d = std::max(d, glm::length(frames[k][v] - ((1.0 - u) * frames[i][v] + u * frames[j][v])));
-        if (d > worst) {
-            worst = d;
-            at = k;
-        }
+        for (std::size_t v = 0; v < interp.size(); ++v) interp[v] = (1.0 - u) * frames[i][v] + u * frames[j][v];
+        const double d = shape_distance(interp, frames[k], closed);
+        if (d > worst) worst = d, at = k;
     }
     if (worst <= tol) return;
     keep[at] = 1;
-    simplify_time(frames, i, at, tol, keep);
-    simplify_time(frames, at, j, tol, keep);
+    simplify_time(frames, i, at, tol, closed, keep);
+    simplify_time(frames, at, j, tol, closed, keep);
 }
 
 std::string key_time(double t) {
@@ -95,259 +146,342 @@ std::string key_time(double t) {
     return buf;
 }
 
+ParamLoop parameterize(int frame, const DrawnLoop& dl, const AnimatedLoop& al) {
+    ParamLoop p;
+    p.frame = frame;
+    p.closed = dl.closed;
+    p.pts = dl.q;
+    p.ids = al.ids;
+    const std::size_t n = p.pts.size();
+    p.cum.assign(n, 0.0);
+    for (std::size_t k = 1; k < n; ++k) p.cum[k] = p.cum[k - 1] + glm::length(p.pts[k] - p.pts[k - 1]);
+    p.length = n ? p.cum[n - 1] + (p.closed ? glm::length(p.pts[0] - p.pts[n - 1]) : 0.0) : 0.0;
+    return p;
+}
+
+// QI changes in u, once the anchor is known: on the segment before each
+// snaxel whose QI differs from its predecessor's, at the change point.
+void locate_changes(ParamLoop& p, const DrawnLoop& dl) {
+    if (dl.qi.empty()) return;
+    const std::size_t n = p.pts.size();
+    p.qi0 = dl.qi[0];
+    for (std::size_t k = 0; k < n; ++k) {
+        if (!p.closed && k == 0) continue;
+        const std::size_t prev = (k + n - 1) % n;
+        if (dl.qi[prev] == dl.qi[k]) continue;
+        const glm::dvec2 a = p.pts[prev], b = p.pts[k], c = dl.change_before[k];
+        const double seg = glm::length(b - a);
+        const double t = seg > 0.0 ? std::clamp(glm::dot(c - a, b - a) / (seg * seg), 0.0, 1.0) : 0.0;
+        const double arc = (k == 0 ? p.length - seg : p.cum[prev]) + t * seg;
+        p.changes.push_back({p.u_of_arc(arc), dl.qi[k]});
+    }
+    std::sort(p.changes.begin(), p.changes.end());
+    if (!p.changes.empty()) {
+        // QI at u = 0 is the one after the last change before it (cyclically).
+        if (p.closed) p.qi0 = p.changes.back().second;
+        else p.qi0 = dl.qi[0];
+    }
+}
+
+std::vector<Span> spans_of(const ParamLoop& p, double min_run_px) {
+    std::vector<Span> spans;
+    if (p.changes.empty()) {
+        spans.push_back({p.qi0, p.closed, 0.0, 1.0});
+        return spans;
+    }
+    if (p.closed) {
+        for (std::size_t k = 0; k < p.changes.size(); ++k) {
+            const double u0 = p.changes[k].first;
+            const double u1 = k + 1 < p.changes.size() ? p.changes[k + 1].first : p.changes[0].first + 1.0;
+            spans.push_back({p.changes[k].second, false, u0, u1});
+        }
+    } else {
+        double u0 = 0.0;
+        int qi = p.qi0;
+        for (const auto& [u, after] : p.changes) {
+            spans.push_back({qi, false, u0, u});
+            u0 = u;
+            qi = after;
+        }
+        spans.push_back({qi, false, u0, 1.0});
+    }
+    // Runs shorter than min_run_px are QI flicker (a grazing ray at a
+    // T-junction) rather than lines a reader could see: they take the QI of
+    // their longer neighbour, and equal neighbours join.
+    const double min_u = p.length > 0.0 ? min_run_px / p.length : 0.0;
+    for (;;) {
+        if (spans.size() < 2) break;
+        std::size_t shortest = 0;
+        for (std::size_t k = 1; k < spans.size(); ++k)
+            if (spans[k].u1 - spans[k].u0 < spans[shortest].u1 - spans[shortest].u0) shortest = k;
+        if (spans[shortest].u1 - spans[shortest].u0 >= min_u) break;
+        const std::size_t n = spans.size();
+        const bool has_prev = p.closed || shortest > 0, has_next = p.closed || shortest + 1 < n;
+        const std::size_t prev = (shortest + n - 1) % n, next = (shortest + 1) % n;
+        const double lp = has_prev ? spans[prev].u1 - spans[prev].u0 : -1.0;
+        const double ln = has_next ? spans[next].u1 - spans[next].u0 : -1.0;
+        spans[shortest].qi = lp >= ln ? spans[prev].qi : spans[next].qi;
+        // Coalesce equal neighbours (cyclically on closed loops).
+        std::vector<Span> merged;
+        for (const Span& sp : spans) {
+            if (!merged.empty() && merged.back().qi == sp.qi) merged.back().u1 = sp.u1;
+            else merged.push_back(sp);
+        }
+        if (p.closed && merged.size() > 1 && merged.front().qi == merged.back().qi) {
+            merged.back().u1 = merged.front().u1 + 1.0;
+            merged.erase(merged.begin());
+        }
+        if (merged.size() == 1 && p.closed) merged[0] = {merged[0].qi, true, 0.0, 1.0};
+        spans = std::move(merged);
+    }
+    return spans;
+}
+
+// How much of span `s` overlaps the last span of a run (circular in u for
+// closed loops); 0 when QI or kind differ.
+double overlap(const RunSequence& rs, const Span& s) {
+    if (rs.qi != s.qi || rs.whole != s.whole) return 0.0;
+    if (s.whole) return 1.0;
+    const Span& last = rs.frames.back().second;
+    double best = 0.0;
+    for (const double shift : {-1.0, 0.0, 1.0})
+        best = std::max(best, std::min(last.u1, s.u1 + shift) - std::max(last.u0, s.u0 + shift));
+    return best;
+}
+
+void align(const RunSequence& rs, Span& s) {
+    if (s.whole) return;
+    const Span& last = rs.frames.back().second;
+    double best = -1e9, shift_best = 0.0;
+    for (const double shift : {-1.0, 0.0, 1.0}) {
+        const double o = std::min(last.u1, s.u1 + shift) - std::max(last.u0, s.u0 + shift);
+        if (o > best) best = o, shift_best = shift;
+    }
+    s.u0 += shift_best;
+    s.u1 += shift_best;
+}
+
 class Writer {
   public:
     Writer(const std::vector<AnimationFrame>& frames, double fps, const AnimatedSvgOptions& options,
            AnimatedSvgStats& stats)
         : frames_(frames), fps_(fps), options_(options), stats_(stats) {}
 
-    /// Paths of contour kind `c`, split by visibility into the two outputs.
     void contour(std::size_t c, std::string& hidden_out, std::string& visible_out) {
-        // Loops by sequence, and sequences cut where a loop opens or closes.
         std::map<std::uint64_t, std::vector<std::pair<int, std::size_t>>> by_sequence;
         for (std::size_t f = 0; f < frames_.size(); ++f)
             for (std::size_t l = 0; l < frames_[f].loops[c].size(); ++l)
                 by_sequence[frames_[f].loops[c][l].sequence].push_back({int(f), l});
         for (auto& [seq, members] : by_sequence) {
+            // A sequence is cut where its loop opens or closes (the path's
+            // commands would change) or skips a frame.
             std::size_t start = 0;
             for (std::size_t k = 1; k <= members.size(); ++k) {
-                const bool cut = k == members.size() ||
-                                 loop(c, members[k]).closed != loop(c, members[start]).closed ||
+                const bool cut = k == members.size() || loop(c, members[k]).closed != loop(c, members[start]).closed ||
                                  members[k].first != members[k - 1].first + 1;
                 if (!cut) continue;
-                bounded(c, std::vector(members.begin() + long(start), members.begin() + long(k)),
-                        hidden_out, visible_out);
+                sequence(c, std::vector(members.begin() + long(start), members.begin() + long(k)),
+                         hidden_out, visible_out);
                 start = k;
             }
         }
     }
 
   private:
-    // Snaxels slide and are replaced as a contour travels, so the identities
-    // a long sequence collects outgrow any one frame; its path then carries
-    // vertices that are mostly folded away. Cut it into segments whose
-    // identities stay within a margin of the largest frame's count; a cut
-    // is seamless (the next segment starts from the same geometry).
-    void bounded(std::size_t c, const std::vector<std::pair<int, std::size_t>>& members,
-                 std::string& hidden_out, std::string& visible_out) {
-        constexpr double kGrowth = 1.3;
-        std::size_t start = 0, largest = 0;
-        std::unordered_map<std::uint64_t, char> seen;
-        for (std::size_t k = 0; k < members.size(); ++k) {
-            const auto& id = ids(c, members[k]).ids;
-            std::size_t fresh = 0;
-            for (const auto i : id) fresh += !seen.count(i);
-            const std::size_t grown = seen.size() + fresh, biggest = std::max(largest, id.size());
-            if (k > start && double(grown) > kGrowth * double(biggest) + 8) {
-                sequence(c, std::vector(members.begin() + long(start), members.begin() + long(k)),
-                         hidden_out, visible_out);
-                start = k;
-                seen.clear();
-                largest = 0;
-            }
-            for (const auto i : id) seen[i] = 1;
-            largest = std::max(largest, id.size());
-        }
-        sequence(c, std::vector(members.begin() + long(start), members.end()), hidden_out, visible_out);
-    }
-
     const DrawnLoop& loop(std::size_t c, const std::pair<int, std::size_t>& m) const {
         return frames_[m.first].drawing.contours[c].loops[m.second];
-    }
-    const AnimatedLoop& ids(std::size_t c, const std::pair<int, std::size_t>& m) const {
-        return frames_[m.first].loops[c][m.second];
     }
 
     void sequence(std::size_t c, const std::vector<std::pair<int, std::size_t>>& members,
                   std::string& hidden_out, std::string& visible_out) {
-        const bool closed = loop(c, members[0]).closed;
-        // 1. Master order: every identity the sequence ever has, each new one
-        // placed after its predecessor along the loop in the frame it appears.
-        std::list<std::uint64_t> order;
-        std::unordered_map<std::uint64_t, std::list<std::uint64_t>::iterator> where;
+        // 1. Each frame's loop by arc length, u = 0 carried along by the
+        // identities the frame shares with the one before.
+        std::vector<ParamLoop> pl;
+        pl.reserve(members.size());
         for (const auto& m : members) {
-            const auto& id = ids(c, m).ids;
-            const std::size_t n = id.size();
-            for (std::size_t k = 0; k < n; ++k) {
-                if (where.count(id[k])) continue;
-                auto at = order.begin();
-                bool placed = false;
-                for (std::size_t back = 1; back <= n && (closed || back <= k); ++back) {
-                    const auto it = where.find(id[(k + n - back) % n]);
-                    if (it != where.end()) {
-                        at = std::next(it->second);
-                        placed = true;
-                        break;
-                    }
-                }
-                if (!placed) at = order.begin();
-                where[id[k]] = order.insert(at, id[k]);
-            }
+            ParamLoop p = parameterize(m.first, loop(c, m), frames_[m.first].loops[c][m.second]);
+            if (p.pts.empty()) return;
+            if (!pl.empty() && p.closed && p.length > 0.0) p.anchor = follow_anchor(pl.back(), p);
+            locate_changes(p, loop(c, m));
+            pl.push_back(std::move(p));
         }
-        const std::vector<std::uint64_t> master(order.begin(), order.end());
-        const std::int64_t m = std::int64_t(master.size());
-        if (m < 2) return;
-        std::unordered_map<std::uint64_t, std::int64_t> index;
-        for (std::int64_t i = 0; i < m; ++i) index[master[i]] = i;
-
-        // 2. Every frame in master order; the absent sit on their predecessor.
-        std::vector<MasterFrame> mf(members.size());
-        for (std::size_t f = 0; f < members.size(); ++f) {
-            const DrawnLoop& dl = loop(c, members[f]);
-            const auto& id = ids(c, members[f]).ids;
-            MasterFrame& out = mf[f];
-            out.frame = members[f].first;
-            out.pos.assign(m, glm::dvec2(0.0));
-            out.qi.assign(m, 0);
-            std::vector<std::uint8_t> alive(m, 0);
-            for (std::size_t k = 0; k < id.size(); ++k) {
-                const std::int64_t i = index[id[k]];
-                alive[i] = 1;
-                out.pos[i] = dl.q[k];
-                if (!dl.qi.empty()) {
-                    out.qi[i] = dl.qi[k];
-                    const int prev = dl.qi[(k + id.size() - 1) % id.size()];
-                    if ((closed || k > 0) && prev != dl.qi[k]) out.change[i] = dl.change_before[k];
-                }
+        // 2. Abrupt changes (a loop absorbing or shedding a large piece, most
+        // of its snaxels replaced) are hard cuts: interpolating across them
+        // would sweep the line through places it never is.
+        std::size_t start = 0;
+        for (std::size_t k = 1; k <= pl.size(); ++k)
+            if (k == pl.size() || abrupt(pl[k - 1], pl[k])) {
+                stretch(pl, start, k, hidden_out, visible_out);
+                start = k;
             }
-            std::int64_t first = 0;
-            while (first < m && !alive[first]) ++first;
-            for (std::int64_t i = 0; i < first; ++i) out.pos[i] = out.pos[first], out.qi[i] = out.qi[first];
-            for (std::int64_t s = 1; s < m; ++s) {
-                const std::int64_t i = (first + s) % m, p = (i + m - 1) % m;
-                if (!closed && i < first) break;
-                if (!alive[i]) out.pos[i] = out.pos[p], out.qi[i] = out.qi[p];
-            }
-        }
+    }
 
-        // 3. Runs of equal QI per frame, followed from frame to frame.
+    // A run whose end moves along a bend of the curve is cut rather than
+    // interpolated: its path would fold the stretch it lost (or gained)
+    // along a straight line between frames, sweeping across places the
+    // contour never is. Along straight stretches the fold is harmless.
+    bool ends_glide(const RunSequence& rs, Span span, const ParamLoop& p) const {
+        if (span.whole) return true;
+        align(rs, span);
+        const Span& last = rs.frames.back().second;
+        const ParamLoop& q = *rs.frames.back().first;
+        auto bend = [](const ParamLoop& loop, double ua, double ub) {
+            const glm::dvec2 a = loop.at(ua), b = loop.at(ub);
+            double worst = 0.0;
+            for (int k = 1; k < 16; ++k) worst = std::max(worst, point_segment(loop.at(ua + (ub - ua) * k / 16.0), a, b));
+            return worst;
+        };
+        double worst = 0.0;
+        for (const auto& [from, to] : {std::pair{last.u0, span.u0}, std::pair{last.u1, span.u1}})
+            worst = std::max({worst, bend(q, from, to), bend(p, from, to)});
+        return worst <= options_.max_sweep_px;
+    }
+
+    static bool abrupt(const ParamLoop& a, const ParamLoop& b) {
+        const double dl = std::abs(b.length - a.length);
+        if (dl > 0.1 * std::max(a.length, b.length) && dl > 10.0) return true;
+        std::unordered_map<std::uint64_t, char> ids;
+        for (const auto id : a.ids) ids[id] = 1;
+        std::size_t shared = 0;
+        for (const auto id : b.ids) shared += ids.count(id);
+        return 2 * shared < std::min(a.ids.size(), b.ids.size());
+    }
+
+    void stretch(const std::vector<ParamLoop>& pl, std::size_t from, std::size_t to, std::string& hidden_out,
+                 std::string& visible_out) {
+        // Runs of equal QI, followed from frame to frame by their overlap in u.
         std::vector<RunSequence> runs;
-        std::vector<std::size_t> live; // run sequences continued by the previous frame's spans
-        for (std::size_t f = 0; f < mf.size(); ++f) {
-            const std::vector<RunSpan> spans = frame_spans(mf[f], closed);
-            // Each span continues the live run it overlaps most, when that run
-            // overlaps no other span more; the rest start new runs.
-            std::vector<std::size_t> next_live;
-            std::vector<std::int64_t> best_run(spans.size(), -1), best_overlap(spans.size(), 0);
-            std::map<std::size_t, std::pair<std::int64_t, std::size_t>> run_best; // run -> (overlap, span)
+        std::vector<std::size_t> live;
+        for (std::size_t i = from; i < to; ++i) {
+            const ParamLoop& p = pl[i];
+            const std::vector<Span> spans = spans_of(p, options_.min_run_px);
+            std::vector<std::int64_t> best_run(spans.size(), -1);
+            std::vector<double> best_overlap(spans.size(), 0.0);
+            std::map<std::size_t, std::pair<double, std::size_t>> run_best;
             for (std::size_t s = 0; s < spans.size(); ++s)
                 for (const std::size_t r : live) {
-                    const std::int64_t o = overlap(runs[r], spans[s], m);
-                    if (o <= 0) continue;
+                    const double o = overlap(runs[r], spans[s]);
+                    if (o <= 0.0) continue;
                     if (o > best_overlap[s]) best_overlap[s] = o, best_run[s] = std::int64_t(r);
                     auto& rb = run_best[r];
                     if (o > rb.first) rb = {o, s};
                 }
+            std::vector<std::size_t> next_live;
             for (std::size_t s = 0; s < spans.size(); ++s) {
-                RunSpan span = spans[s];
-                if (best_run[s] >= 0 && run_best[std::size_t(best_run[s])].second == s) {
+                Span span = spans[s];
+                if (best_run[s] >= 0 && run_best[std::size_t(best_run[s])].second == s &&
+                    ends_glide(runs[std::size_t(best_run[s])], span, p)) {
                     RunSequence& rs = runs[std::size_t(best_run[s])];
-                    align(rs, span, m);
-                    rs.a = std::min(rs.a, span.a);
-                    rs.b = std::max(rs.b, span.b);
-                    if (rs.b - rs.a > m) rs.b = rs.a + m;
-                    rs.frames.push_back({&mf[f], span});
+                    align(rs, span);
+                    rs.frames.push_back({&p, span});
                     next_live.push_back(std::size_t(best_run[s]));
                 } else {
-                    runs.push_back({span.qi, span.whole, closed, span.a, span.b, {{&mf[f], span}}});
+                    runs.push_back({span.qi, span.whole, p.closed, {{&p, span}}});
                     next_live.push_back(runs.size() - 1);
                 }
             }
             live = std::move(next_live);
         }
-        for (const RunSequence& rs : runs) emit(rs, m, rs.qi > 0 ? hidden_out : visible_out);
-    }
-
-    static std::vector<RunSpan> frame_spans(const MasterFrame& f, bool closed) {
-        const std::int64_t m = std::int64_t(f.pos.size());
-        std::vector<std::int64_t> gaps;
-        for (std::int64_t i = closed ? 0 : 1; i < m; ++i)
-            if (f.qi[i] != f.qi[(i + m - 1) % m]) gaps.push_back(i);
-        auto change_at = [&](std::int64_t g) {
-            const auto it = f.change.find(((g % m) + m) % m);
-            return it != f.change.end() ? it->second : f.pos[((g % m) + m) % m];
-        };
-        std::vector<RunSpan> spans;
-        if (gaps.empty()) {
-            RunSpan s{f.qi[0], closed, 0, m, f.pos[0], f.pos[m - 1]};
-            spans.push_back(s);
-            return spans;
-        }
-        if (closed) {
-            for (std::size_t k = 0; k < gaps.size(); ++k) {
-                const std::int64_t a = gaps[k], b = k + 1 < gaps.size() ? gaps[k + 1] : gaps[0] + m;
-                spans.push_back({f.qi[a], false, a, b, change_at(a), change_at(b)});
+        // Long runs go out in chunks: a path's vertices must serve every frame
+        // it spans, so a shorter span needs fewer. Each chunk also holds the
+        // next chunk's first frame, which it animates toward but does not
+        // show, so motion stays interpolated across the handover.
+        for (const RunSequence& rs : runs) {
+            std::string& out = rs.qi > 0 ? hidden_out : visible_out;
+            const std::size_t chunk = std::max<std::size_t>(2, options_.max_chunk_frames);
+            for (std::size_t a = 0;; a += chunk) {
+                RunSequence part = rs;
+                const std::size_t b = std::min(rs.frames.size(), a + chunk + 1);
+                part.frames.assign(rs.frames.begin() + long(a), rs.frames.begin() + long(b));
+                emit(part, out, b < rs.frames.size());
+                if (b >= rs.frames.size()) break;
             }
-            return spans;
         }
-        std::int64_t a = 0;
-        glm::dvec2 start = f.pos[0];
-        for (const std::int64_t g : gaps) {
-            spans.push_back({f.qi[a], false, a, g, start, change_at(g)});
-            a = g;
-            start = change_at(g);
+    }
+
+    // Where u = 0 goes in `cur`: every shared identity votes for an anchor
+    // that keeps its u from the previous frame; the votes are averaged on the
+    // circle. Without shared identities, the nearest point to the old anchor.
+    static double follow_anchor(const ParamLoop& prev, const ParamLoop& cur) {
+        std::unordered_map<std::uint64_t, std::size_t> prev_index;
+        for (std::size_t k = 0; k < prev.ids.size(); ++k) prev_index[prev.ids[k]] = k;
+        double sx = 0.0, sy = 0.0;
+        std::size_t votes = 0;
+        for (std::size_t k = 0; k < cur.ids.size(); ++k) {
+            const auto it = prev_index.find(cur.ids[k]);
+            if (it == prev_index.end()) continue;
+            const double u_prev = prev.u_of_arc(prev.cum[it->second]);
+            const double anchor = cur.cum[k] - u_prev * cur.length;
+            const double angle = kTwoPi * anchor / cur.length;
+            sx += std::cos(angle);
+            sy += std::sin(angle);
+            ++votes;
         }
-        spans.push_back({f.qi[a], false, a, m, start, f.pos[m - 1]});
-        return spans;
+        if (votes && std::hypot(sx, sy) > 1e-9 * double(votes)) {
+            const double a = std::atan2(sy, sx) / kTwoPi * cur.length;
+            return a < 0.0 ? a + cur.length : a;
+        }
+        const glm::dvec2 target = prev.at(0.0);
+        double best = 1e300, arc = 0.0;
+        for (std::size_t k = 0; k < cur.pts.size(); ++k) {
+            const double d = glm::length(cur.pts[k] - target);
+            if (d < best) best = d, arc = cur.cum[k];
+        }
+        return arc;
     }
 
-    // How many master vertices a span shares with a run's last span (modulo
-    // m); 0 when their QI or kind differ.
-    static std::int64_t overlap(const RunSequence& rs, const RunSpan& s, std::int64_t m) {
-        if (rs.qi != s.qi || rs.whole != s.whole) return 0;
-        if (s.whole) return m;
-        const RunSpan& last = rs.frames.back().second;
-        std::int64_t best = 0;
-        for (const std::int64_t shift : {-m, std::int64_t(0), m})
-            best = std::max(best, std::min(last.b, s.b + shift) - std::max(last.a, s.a + shift));
-        return best;
-    }
-
-    static void align(const RunSequence& rs, RunSpan& s, std::int64_t m) {
-        if (s.whole) return;
-        const RunSpan& last = rs.frames.back().second;
-        for (const std::int64_t shift : {std::int64_t(0), -m, m})
-            if (std::max(last.a, s.a + shift) < std::min(last.b, s.b + shift)) {
-                s.a += shift;
-                s.b += shift;
-                return;
-            }
-    }
-
-    void emit(const RunSequence& rs, std::int64_t m, std::string& out) {
-        // Geometry per frame: start point, the run's vertices (those outside
-        // this frame's span folded onto its ends), end point.
+    /// @p handover: the last frame belongs to the next chunk (animate toward
+    /// it, but stop showing this path when it begins).
+    void emit(const RunSequence& rs, std::string& out, bool handover) {
+        // Vertices sit on a grid fixed in u for the whole run, at the loops'
+        // own sampling density (their snaxel spacing), so they glide with the
+        // curve from frame to frame; grid points outside a frame's span fold
+        // onto its ends, so only the ends move when the run grows or shrinks.
+        double total_length = 0.0, longest = 0.0;
+        std::size_t segments = 0;
+        double lo = 1e300, hi = -1e300;
+        for (const auto& [p, span] : rs.frames) {
+            total_length += p->length;
+            longest = std::max(longest, p->length);
+            segments += p->closed ? p->pts.size() : p->pts.size() - 1;
+            lo = std::min(lo, span.u0);
+            hi = std::max(hi, span.u1);
+        }
+        const double spacing = std::max(segments ? total_length / double(segments) : 1.0, 0.5);
+        const std::size_t grid = std::clamp<std::size_t>(std::size_t(std::ceil(longest / spacing)), 3, 200000);
+        const bool closed_path = rs.whole && rs.closed;
+        std::vector<double> grid_u; // the u of every path vertex but the two ends
+        if (closed_path) {
+            for (std::size_t k = 0; k < grid; ++k) grid_u.push_back(double(k) / double(grid));
+        } else {
+            for (auto k = std::int64_t(std::ceil(lo * double(grid))); double(k) < hi * double(grid); ++k)
+                grid_u.push_back(double(k) / double(grid));
+        }
+        const std::size_t n = closed_path ? grid_u.size() : grid_u.size() + 2;
         std::vector<std::vector<glm::dvec2>> geom;
         geom.reserve(rs.frames.size());
-        for (const auto& [frame, span] : rs.frames) {
+        for (const auto& [p, span] : rs.frames) {
             std::vector<glm::dvec2> g;
-            if (rs.whole) {
-                g = frame->pos;
+            g.reserve(n);
+            if (closed_path) {
+                for (const double u : grid_u) g.push_back(p->at(u));
             } else {
-                g.reserve(std::size_t(rs.b - rs.a + 2));
-                g.push_back(span.start);
-                for (std::int64_t u = rs.a; u < rs.b; ++u)
-                    g.push_back(u < span.a ? span.start : u >= span.b ? span.end : frame->pos[((u % m) + m) % m]);
-                g.push_back(span.end);
+                const glm::dvec2 start = p->at(span.u0), end = p->at(span.u1);
+                g.push_back(start);
+                for (const double u : grid_u) g.push_back(u <= span.u0 ? start : u >= span.u1 ? end : p->at(u));
+                g.push_back(end);
             }
             geom.push_back(std::move(g));
         }
-        const bool closed_path = rs.whole && rs.closed;
-        const std::size_t n = geom[0].size();
-        if (n < 2) return;
         std::vector<std::uint8_t> keep(n, 0);
         if (closed_path) {
-            // A ring: simplify it as two chains, from vertex 0 to the vertex
-            // farthest from it and on round back to vertex 0.
-            std::size_t far = 0;
-            for (std::size_t k = 1; k < n; ++k)
-                if (glm::length(geom[0][k] - geom[0][0]) > glm::length(geom[0][far] - geom[0][0])) far = k;
             std::vector<std::vector<glm::dvec2>> ring = geom;
             for (auto& r : ring) r.push_back(r[0]);
             std::vector<std::uint8_t> ring_keep(n + 1, 0);
-            ring_keep[0] = ring_keep[far] = ring_keep[n] = 1;
-            simplify_joint(ring, 0, far, options_.tolerance_px, ring_keep);
-            simplify_joint(ring, far, n, options_.tolerance_px, ring_keep);
+            const std::size_t half = n / 2;
+            ring_keep[0] = ring_keep[half] = ring_keep[n] = 1;
+            simplify_joint(ring, 0, half, options_.tolerance_px, ring_keep);
+            simplify_joint(ring, half, n, options_.tolerance_px, ring_keep);
             keep.assign(ring_keep.begin(), ring_keep.begin() + long(n));
         } else {
             keep[0] = keep[n - 1] = 1;
@@ -357,39 +491,32 @@ class Writer {
         for (std::size_t f = 0; f < geom.size(); ++f)
             for (std::size_t k = 0; k < n; ++k)
                 if (keep[k]) reduced[f].push_back(geom[f][k]);
-        if (reduced[0].size() < 2) return;
 
         std::vector<std::uint8_t> key(reduced.size(), 0);
         key.front() = key.back() = 1;
-        simplify_time(reduced, 0, reduced.size() - 1, options_.tolerance_px, key);
+        simplify_time(reduced, 0, reduced.size() - 1, options_.tolerance_px, closed_path, key);
 
         const std::size_t total = frames_.size();
-        const int first = rs.frames.front().first->frame, last = rs.frames.back().first->frame;
-        const double dur = double(total) / fps_;
-        char dur_text[32];
-        std::snprintf(dur_text, sizeof dur_text, "%.6gs", dur);
+        const int first = rs.frames.front().first->frame;
+        const int last = rs.frames.back().first->frame - (handover ? 1 : 0); // the last frame shown
+        char dur[32];
+        std::snprintf(dur, sizeof dur, "%.6gs", double(total) / fps_);
 
-        std::string d0;
-        svg::append_path_data(d0, reduced[0], closed_path);
-        out += "<path d=\"" + d0 + "\"";
+        out += "<path d=\"";
+        svg::append_compact_path_data(out, reduced[0], closed_path);
+        out += "\"";
         const bool always = first == 0 && last + 1 == int(total);
         if (!always) out += " display=\"none\"";
         out += ">";
         if (!always) {
-            // Shown from its first frame's start to its last frame's end.
-            std::string times, values;
-            if (first > 0) {
-                times = "0;" + key_time(double(first) / total);
-                values = "none;inline";
-            } else {
-                times = "0";
-                values = "inline";
-            }
+            // Shown from the start of its first frame to the end of its last.
+            std::string times = first > 0 ? "0;" + key_time(double(first) / double(total)) : "0";
+            std::string values = first > 0 ? "none;inline" : "inline";
             if (last + 1 < int(total)) {
-                times += ";" + key_time(double(last + 1) / total);
+                times += ";" + key_time(double(last + 1) / double(total));
                 values += ";none";
             }
-            out += "<animate attributeName=\"display\" dur=\"" + std::string(dur_text) +
+            out += "<animate attributeName=\"display\" dur=\"" + std::string(dur) +
                    "\" repeatCount=\"indefinite\" calcMode=\"discrete\" keyTimes=\"" + times +
                    "\" values=\"" + values + "\"/>";
         }
@@ -398,25 +525,22 @@ class Writer {
         if (kept > 1) {
             std::string times, values;
             auto add = [&](double t, const std::vector<glm::dvec2>& g) {
-                if (!times.empty()) {
-                    times += ';';
-                    values += ';';
-                }
+                if (!times.empty()) times += ';', values += ';';
                 times += key_time(t);
-                svg::append_path_data(values, g, closed_path);
+                svg::append_compact_path_data(values, g, closed_path);
             };
             if (first > 0) add(0.0, reduced.front());
             for (std::size_t f = 0; f < reduced.size(); ++f)
-                if (key[f]) add(double(rs.frames[f].first->frame) / total, reduced[f]);
-            if (last + 1 < int(total) || double(last) / total < 1.0) add(1.0, reduced.back());
-            out += "<animate attributeName=\"d\" dur=\"" + std::string(dur_text) +
+                if (key[f]) add(double(rs.frames[f].first->frame) / double(total), reduced[f]);
+            add(1.0, reduced.back());
+            out += "<animate attributeName=\"d\" dur=\"" + std::string(dur) +
                    "\" repeatCount=\"indefinite\" calcMode=\"linear\" keyTimes=\"" + times +
                    "\" values=\"" + values + "\"/>";
         }
         out += "</path>\n";
         ++stats_.paths;
         stats_.keyframes += kept;
-        stats_.frames_spanned += rs.frames.size();
+        stats_.frames_spanned += rs.frames.size() - (handover ? 1 : 0);
         stats_.vertices += reduced[0].size();
     }
 

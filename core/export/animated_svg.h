@@ -30,6 +30,16 @@ struct AnimatedSvgOptions {
     /// Pixels: path vertices, and keyframes, that linear interpolation
     /// reproduces within this distance in every frame are dropped.
     double tolerance_px = 0.25;
+    /// A path serves at most this many frames; longer sequences are handed
+    /// from path to path without a visible seam.
+    std::size_t max_chunk_frames = 12;
+    /// Visible or hidden stretches shorter than this (pixels) take their
+    /// neighbour's visibility: flicker at T-junctions, not lines.
+    double min_run_px = 3.0;
+    /// Where a visible or hidden stretch's end moves along a bend of the
+    /// curve deeper than this (pixels) in one frame, the stretch is cut there
+    /// instead of interpolated (interpolation would sweep across the bend).
+    double max_sweep_px = 1.0;
 };
 
 struct AnimatedSvgStats {

@@ -1,5 +1,6 @@
 #include "core/export/svg.h"
 
+#include <cmath>
 #include <cstdio>
 
 #include "core/export/svg_writer.h"
@@ -30,6 +31,60 @@ void append_path_data(std::string& out, const std::vector<glm::dvec2>& q, bool c
     if (closed) out += " Z";
 }
 
+namespace {
+
+// Tenths of a pixel as text: "12.3", "-0.4" -> "-.4", "5" (no ".0").
+void append_tenths(std::string& out, long tenths) {
+    if (tenths < 0) {
+        out += '-';
+        tenths = -tenths;
+    }
+    const long whole = tenths / 10, frac = tenths % 10;
+    if (whole) out += std::to_string(whole);
+    if (frac) {
+        out += '.';
+        out += char('0' + frac);
+    } else if (!whole) {
+        out += '0';
+    }
+}
+
+// Appends a number, with a separator only where the grammar needs one.
+void append_joined(std::string& out, long tenths) {
+    std::string text;
+    append_tenths(text, tenths);
+    const char last = out.empty() ? ' ' : out.back();
+    const bool last_is_digit = last >= '0' && last <= '9';
+    const bool prev_has_point = [&] {
+        for (auto it = out.rbegin(); it != out.rend(); ++it) {
+            if (*it == '.') return true;
+            if (!(*it >= '0' && *it <= '9')) return false;
+        }
+        return false;
+    }();
+    const bool needs_space = (last_is_digit || last == '.') &&
+                             (text[0] != '-' && !(text[0] == '.' && prev_has_point));
+    if (needs_space) out += ' ';
+    out += text;
+}
+
+} // namespace
+
+void append_compact_path_data(std::string& out, const std::vector<glm::dvec2>& q, bool closed) {
+    std::string d = "m";
+    long px = 0, py = 0;
+    for (std::size_t i = 0; i < q.size(); ++i) {
+        const long x = std::lround(q[i].x * 10.0), y = std::lround(q[i].y * 10.0);
+        if (i == 1) d += 'l';
+        append_joined(d, x - px);
+        append_joined(d, y - py);
+        px = x;
+        py = y;
+    }
+    if (closed) d += 'z';
+    out += d;
+}
+
 std::string document_start(int width, int height) {
     const std::string w = std::to_string(width), h = std::to_string(height);
     return "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n"
@@ -45,7 +100,7 @@ std::string kind_group(const ContourSpec& spec) {
 
 std::string visibility_group(bool hidden) {
     return hidden ? "<g id=\"hidden\" fill=\"none\" stroke-width=\"1\" stroke-opacity=\"0.55\" "
-                    "stroke-dasharray=\"5 4\" stroke-linejoin=\"round\">\n"
+                    "stroke-dasharray=\"4 3\" stroke-linejoin=\"round\">\n"
                   : "<g id=\"visible\" fill=\"none\" stroke-width=\"1.5\" stroke-linejoin=\"round\" "
                     "stroke-linecap=\"round\">\n";
 }

@@ -15,6 +15,12 @@ namespace snaxels::svg {
 void append_number(std::string& out, double v);
 /// Path data "M x,y L x,y x,y ... [Z]".
 void append_path_data(std::string& out, const std::vector<glm::dvec2>& q, bool closed);
+/// Compact path data for animation: "m x,y l dx,dy ..." with positions
+/// rounded to 0.1 px first (so rounding never accumulates) and numbers
+/// joined as tightly as the SVG path grammar allows. Every keyframe of a
+/// path has the same commands, so browsers interpolate it.
+void append_compact_path_data(std::string& out, const std::vector<glm::dvec2>& q, bool closed);
+
 /// XML declaration, <svg> start tag and white background.
 std::string document_start(int width, int height);
 /// Start tag of the group of one contour kind.

@@ -1,0 +1,35 @@
+#!/usr/bin/env bash
+# The animated SVG, seeked in Chromium (pauseAnimations, setCurrentTime) to
+# 12 frame times, against the same frames' static SVGs.
+#   animation_test.sh CLI COMPARE OUTDIR NAME MESH FRAMES FPS -- ANIMATE-OPTIONS...
+set -euo pipefail
+cli=$1; compare=$2; outdir=$3; name=$4; mesh=$5; frames=$6; fps=$7; shift 8
+here=$(dirname "$0")
+dir="$outdir/$name"
+rm -rf "$dir"; mkdir -p "$dir"
+cell=400; cols=4; rows=3; shots=$((cols * rows))
+"$cli" animate "$mesh" --frames "$frames" --fps "$fps" --size ${cell}x${cell} -o "$dir/anim.svg" \
+  --frames-dir "$dir/frames" "$@"
+
+# Frame numbers spread over the animation, including the first and the last.
+picks=()
+for ((i = 0; i < shots; i++)); do picks+=($(( i * (frames - 1) / (shots - 1) ))); done
+
+# One page with the animated SVG inlined once per cell, each seeked to its frame.
+{
+  echo '<!DOCTYPE html><html><head><style>body{margin:0;background:#fff}div{display:grid;grid-template-columns:repeat('$cols','${cell}'px);}svg{display:block}</style></head><body><div>'
+  for f in "${picks[@]}"; do sed '1d' "$dir/anim.svg" | sed "s/<svg /<svg data-frame=\"$f\" /"; done
+  echo '</div><script>'
+  echo "for (const s of document.querySelectorAll('svg[data-frame]')) { s.pauseAnimations(); s.setCurrentTime((Number(s.dataset.frame) + 0.02) / $fps); }"
+  echo '</script></body></html>'
+} > "$dir/animated.html"
+{
+  echo '<!DOCTYPE html><html><head><style>body{margin:0;background:#fff}div{display:grid;grid-template-columns:repeat('$cols','${cell}'px);}img{display:block}</style></head><body><div>'
+  for f in "${picks[@]}"; do printf '<img src="frames/frame_%05d.svg" width="%d" height="%d">\n' "$f" $cell $cell; done
+  echo '</div></body></html>'
+} > "$dir/static.html"
+
+bash "$here/render_svg.sh" "$dir/animated.html" "$dir/animated.png" $((cols * cell)) $((rows * cell))
+bash "$here/render_svg.sh" "$dir/static.html" "$dir/static.png" $((cols * cell)) $((rows * cell))
+echo "frames compared: ${picks[*]}"
+QT_QPA_PLATFORM=offscreen "$compare" "$dir/animated.png" "$dir/static.png" $cols $rows $cell 2 0.97

@@ -1,0 +1,71 @@
+// Compares two screenshots cell by cell: each a grid of COLS x ROWS images
+// of CELL pixels. In every cell, at least MIN of the stroke pixels of each
+// image must lie within TOL pixels of a stroke pixel of the other.
+//   compare_grid A.png B.png COLS ROWS CELL [TOL=2] [MIN=0.97]
+
+#include <cstdio>
+#include <cstdlib>
+#include <vector>
+
+#include <QGuiApplication>
+#include <QImage>
+
+namespace {
+
+std::vector<std::uint8_t> strokes(const QImage& img, int x0, int y0, int cell) {
+    std::vector<std::uint8_t> s(std::size_t(cell) * cell, 0);
+    for (int y = 0; y < cell; ++y)
+        for (int x = 0; x < cell; ++x) s[std::size_t(y) * cell + x] = qGray(img.pixel(x0 + x, y0 + y)) < 200;
+    return s;
+}
+
+// Fraction of `a`'s stroke pixels with a stroke pixel of `b` within `tol`.
+double covered(const std::vector<std::uint8_t>& a, const std::vector<std::uint8_t>& b, int cell, int tol, long& count) {
+    long hit = 0;
+    count = 0;
+    for (int y = 0; y < cell; ++y)
+        for (int x = 0; x < cell; ++x) {
+            if (!a[std::size_t(y) * cell + x]) continue;
+            ++count;
+            bool found = false;
+            for (int dy = -tol; dy <= tol && !found; ++dy)
+                for (int dx = -tol; dx <= tol && !found; ++dx) {
+                    const int u = x + dx, v = y + dy;
+                    found = u >= 0 && v >= 0 && u < cell && v < cell && b[std::size_t(v) * cell + u];
+                }
+            hit += found;
+        }
+    return count ? double(hit) / double(count) : 1.0;
+}
+
+} // namespace
+
+int main(int argc, char** argv) {
+    if (argc < 6) {
+        std::fprintf(stderr, "usage: compare_grid A.png B.png COLS ROWS CELL [TOL] [MIN]\n");
+        return 2;
+    }
+    QGuiApplication app(argc, argv);
+    const QImage a = QImage(argv[1]).convertToFormat(QImage::Format_RGB32);
+    const QImage b = QImage(argv[2]).convertToFormat(QImage::Format_RGB32);
+    const int cols = std::atoi(argv[3]), rows = std::atoi(argv[4]), cell = std::atoi(argv[5]);
+    const int tol = argc > 6 ? std::atoi(argv[6]) : 2;
+    const double min = argc > 7 ? std::atof(argv[7]) : 0.97;
+    if (a.isNull() || b.isNull() || a.width() < cols * cell || a.height() < rows * cell ||
+        b.width() < cols * cell || b.height() < rows * cell) {
+        std::fprintf(stderr, "FAIL: screenshots missing or too small\n");
+        return 1;
+    }
+    int failures = 0;
+    for (int r = 0; r < rows; ++r)
+        for (int c = 0; c < cols; ++c) {
+            const auto sa = strokes(a, c * cell, r * cell, cell), sb = strokes(b, c * cell, r * cell, cell);
+            long na = 0, nb = 0;
+            const double ab = covered(sa, sb, cell, tol, na), ba = covered(sb, sa, cell, tol, nb);
+            const bool ok = na > 50 && nb > 50 && ab >= min && ba >= min;
+            std::printf("cell %d: %ld / %ld stroke pixels, %.4f / %.4f within %d px%s\n", r * cols + c, na, nb, ab,
+                        ba, tol, ok ? "" : "  FAIL");
+            failures += !ok;
+        }
+    return failures ? 1 : 0;
+}
