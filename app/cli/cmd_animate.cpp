@@ -12,13 +12,9 @@
 #include "app/cli/commands.h"
 #include "app/cli/scene_options.h"
 #include "core/error.h"
-#include "core/export/animated_svg.h"
-#include "core/export/svg.h"
 #include "core/mesh/import.h"
-#include "core/scene/animation.h"
-#include "core/snaxel/tracker.h"
+#include "core/animation/pipeline.h"
 #include "core/util/atomic_file.h"
-#include "core/visibility/visibility.h"
 
 namespace snaxels::cli {
 namespace {
@@ -26,6 +22,7 @@ namespace {
 class Progress {
   public:
     Progress(int total, bool enabled) : total_(total), enabled_(enabled) {}
+    void set_total(int total) { total_ = total; }
     void update(int done) {
         if (!enabled_) return;
         const int width = 40, filled = total_ ? width * done / total_ : width;
@@ -111,110 +108,47 @@ int run_animate(const std::vector<std::string>& argv) {
 
     std::string mesh_path = args.positional()[0];
     if (anim.kind == AnimationSpec::Kind::Sequence && mesh_path == "-") mesh_path.clear();
+    anim.frames = frames;
     const auto t_start = std::chrono::steady_clock::now();
     const LoadedMesh loaded = [&] {
         if (!mesh_path.empty()) return load_mesh(mesh_path);
-        AnimationSpec probe = anim;
-        const LoadedMesh dummy;
-        MeshTopology none;
-        const FrameDriver driver(probe, dummy, none, Camera{}, Light{}, glm::dvec3(0.0), "");
-        return import_mesh(driver.sequence_path(0));
+        const LoadedMesh none;
+        MeshTopology empty;
+        const FrameDriver probe(anim, none, empty, Camera{}, Light{}, glm::dvec3(0.0), "");
+        return import_mesh(probe.sequence_path(0));
     }();
     if (mesh_path.empty()) mesh_path = loaded.report.source;
     complete_scene(scene, loaded.report);
 
-    MeshTopology topology = build_topology(loaded.mesh);
-    FrameDriver driver(anim, loaded, topology, scene.camera, *scene.light,
-                       0.5 * (loaded.report.bbox_min + loaded.report.bbox_max), mesh_path);
-    if (anim.kind == AnimationSpec::Kind::Clip && frames == 0) {
-        const MeshAnimation clip(mesh_path, anim.clip);
-        frames = std::max(1, int(std::lround(clip.duration() * anim.fps)) + 1);
-    }
-
-    // The image frame: the mesh's bounding sphere over every frame.
-    glm::dvec3 lo = loaded.report.bbox_min, hi = loaded.report.bbox_max;
-    if (driver.mesh_moves()) {
-        Camera c;
-        Light l;
-        for (int k = 0; k < frames; ++k) {
-            driver.apply(k, c, l);
-            for (const auto& p : topology.positions) lo = glm::min(lo, p), hi = glm::max(hi, p);
-        }
-    }
-    const glm::dvec3 centre = 0.5 * (lo + hi);
-    const double radius = std::max(0.5 * glm::length(hi - lo), 1e-12);
-
-    if (!frames_dir.empty()) {
-        std::error_code ec;
-        std::filesystem::create_directories(frames_dir, ec);
-        if (ec) throw Error("cannot create " + frames_dir + ": " + ec.message());
-    }
-    EngineOptions engine_options;
-    if (scene.check) engine_options.check_invariants = true;
-    std::vector<ContourTracker> trackers;
-    for (const ContourSpec& spec : scene.kinds) trackers.emplace_back(topology, spec, engine_options);
-    std::unique_ptr<RayScene> rays;
-    std::vector<AnimationFrame> recorded;
-    recorded.reserve(std::size_t(frames));
-    nlohmann::json events = nlohmann::json::array();
-    Progress progress(frames, ::isatty(2));
-    double tracking_ms = 0.0;
-    const SnaxelEngine engine(topology);
-    for (int k = 0; k < frames; ++k) {
-        Camera camera;
-        Light light;
-        driver.apply(k, camera, light);
-        if (scene.visibility) {
-            if (!rays) rays = std::make_unique<RayScene>(topology);
-            else if (driver.mesh_moves()) rays->refit();
-        }
-        std::vector<ContourResult> results;
-        std::vector<ContourVisibility> visibility;
-        AnimationFrame frame;
-        for (std::size_t c = 0; c < trackers.size(); ++c) {
-            const TrackedFrame& tf = trackers[c].step(camera, light);
-            tracking_ms += tf.contour.stats.ms;
-            results.push_back(tf.contour);
-            std::vector<AnimatedLoop> loops;
-            for (std::size_t l = 0; l < tf.contour.fronts.loops.size(); ++l) {
-                AnimatedLoop al;
-                al.sequence = tf.loop_sequence[l];
-                tf.contour.fronts.for_each_in_loop(tf.contour.fronts.loops[l],
-                                                   [&](std::int32_t s) { al.ids.push_back(tf.snaxel_id[s]); });
-                loops.push_back(std::move(al));
-            }
-            frame.loops.push_back(std::move(loops));
-            for (const VisualEvent& e : tf.events)
-                events.push_back({{"frame", e.frame},
-                                  {"kind", event_name(e.kind)},
-                                  {"contour", scene.kinds[c].label()},
-                                  {"where", {e.where.x, e.where.y, e.where.z}}});
-            if (scene.visibility) visibility.push_back(VisibilitySampler(*rays, camera).classify(engine, tf.contour));
-        }
-        const ImageProjection projection(camera, centre, radius, scene.width, scene.height);
-        frame.drawing = make_drawing(engine, results, projection, scene.visibility ? &visibility : nullptr);
-        for (auto& contour : frame.drawing.contours)
-            for (auto& loop : contour.loops) loop.p.clear(); // 3-D positions are not exported
-        if (!frames_dir.empty()) {
-            char name[64];
-            std::snprintf(name, sizeof name, "frame_%05d.svg", k);
-            write_file_atomically((std::filesystem::path(frames_dir) / name).string(), to_svg(frame.drawing));
-        }
-        recorded.push_back(std::move(frame));
-        progress.update(k + 1);
-    }
+    AnimationJob job;
+    job.animation = anim;
+    job.camera = scene.camera;
+    job.light = *scene.light;
+    job.kinds = scene.kinds;
+    job.width = scene.width;
+    job.height = scene.height;
+    job.visibility = scene.visibility;
+    if (scene.check) job.engine.check_invariants = true;
+    job.svg = svg_options;
+    job.frames_dir = frames_dir;
+    Progress progress(0, ::isatty(2));
+    job.progress = [&](int done, int total) {
+        progress.set_total(total);
+        progress.update(done);
+    };
+    const AnimationOutput result = run_animation(loaded, mesh_path, job);
     progress.finish();
-
-    AnimatedSvgStats stats;
-    const std::string svg = to_animated_svg(recorded, anim.fps, svg_options, &stats);
-    write_file_atomically(*output, svg);
-    if (!events_out.empty()) write_file_atomically(events_out, events.dump(1) + "\n");
+    write_file_atomically(*output, result.svg);
+    if (!events_out.empty()) write_file_atomically(events_out, result.events.dump(1) + "\n");
     const double total_ms =
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t_start).count();
+    double tracking = 0.0;
+    for (const double ms : result.tracking_ms) tracking += ms;
+    const AnimatedSvgStats& stats = result.stats;
     std::printf("%s: %d frames at %g fps, %zu paths, %zu keyframes (of %zu path-frames), %zu bytes; "
                 "tracking %.2f ms per frame, %.0f ms in all; %zu events\n",
-                output->c_str(), frames, anim.fps, stats.paths, stats.keyframes, stats.frames_spanned,
-                svg.size(), tracking_ms / std::max(1, frames), total_ms, events.size());
+                output->c_str(), result.frames, anim.fps, stats.paths, stats.keyframes, stats.frames_spanned,
+                result.svg.size(), tracking / std::max(1, result.frames), total_ms, result.events.size());
     return 0;
 }
 

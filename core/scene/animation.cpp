@@ -17,9 +17,16 @@ FrameDriver::FrameDriver(const AnimationSpec& spec, const LoadedMesh& mesh, Mesh
     if (spec_.kind == AnimationSpec::Kind::Clip) clip_ = std::make_unique<MeshAnimation>(mesh_path, spec_.clip);
     if (spec_.kind == AnimationSpec::Kind::Sequence) {
         if (spec_.first_file < 0) {
-            spec_.first_file = 0;
+            // Numbering starts at 0 or 1, whichever file exists.
             std::error_code ec;
-            if (!std::filesystem::exists(sequence_path(0), ec)) spec_.first_file = 1;
+            spec_.first_file = 0;
+            const std::string zero = sequence_path(0);
+            if (!std::filesystem::exists(zero, ec)) {
+                spec_.first_file = 1;
+                if (!std::filesystem::exists(sequence_path(0), ec))
+                    throw Error(spec_.pattern + ": no file of the sequence (neither " + zero + " nor " +
+                                sequence_path(0) + " exists)");
+            }
         }
         soup_size_ = read_triangle_soup(sequence_path(0)).positions.size();
     }

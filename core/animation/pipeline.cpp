@@ -1,0 +1,101 @@
+#include "core/animation/pipeline.h"
+
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <memory>
+
+#include "core/error.h"
+#include "core/export/svg.h"
+#include "core/util/atomic_file.h"
+#include "core/visibility/visibility.h"
+
+namespace snaxels {
+
+AnimationOutput run_animation(const LoadedMesh& mesh, const std::string& mesh_path, const AnimationJob& job) {
+    AnimationOutput out;
+    MeshTopology topology = build_topology(mesh.mesh);
+    const glm::dvec3 mesh_centre = 0.5 * (mesh.report.bbox_min + mesh.report.bbox_max);
+    FrameDriver driver(job.animation, mesh, topology, job.camera, job.light, mesh_centre, mesh_path);
+    int frames = job.animation.frames;
+    if (job.animation.kind == AnimationSpec::Kind::Clip && frames <= 0) {
+        const MeshAnimation clip(mesh_path, job.animation.clip);
+        frames = std::max(1, int(std::lround(clip.duration() * job.animation.fps)) + 1);
+    }
+    frames = std::max(frames, 1);
+    out.frames = frames;
+
+    // The image frame: the mesh's bounding sphere over every frame.
+    glm::dvec3 lo = mesh.report.bbox_min, hi = mesh.report.bbox_max;
+    if (driver.mesh_moves()) {
+        Camera c;
+        Light l;
+        for (int k = 0; k < frames; ++k) {
+            driver.apply(k, c, l);
+            for (const auto& p : topology.positions) lo = glm::min(lo, p), hi = glm::max(hi, p);
+        }
+    }
+    const glm::dvec3 centre = 0.5 * (lo + hi);
+    const double radius = std::max(0.5 * glm::length(hi - lo), 1e-12);
+
+    if (!job.frames_dir.empty()) {
+        std::error_code ec;
+        std::filesystem::create_directories(job.frames_dir, ec);
+        if (ec) throw Error("cannot create " + job.frames_dir + ": " + ec.message());
+    }
+    std::vector<ContourTracker> trackers;
+    for (const ContourSpec& spec : job.kinds) trackers.emplace_back(topology, spec, job.engine);
+    std::unique_ptr<RayScene> rays;
+    const SnaxelEngine engine(topology);
+    std::vector<AnimationFrame> recorded;
+    recorded.reserve(std::size_t(frames));
+    for (int k = 0; k < frames; ++k) {
+        Camera camera;
+        Light light;
+        driver.apply(k, camera, light);
+        if (job.visibility) {
+            if (!rays) rays = std::make_unique<RayScene>(topology);
+            else if (driver.mesh_moves()) rays->refit();
+        }
+        std::vector<ContourResult> results;
+        std::vector<ContourVisibility> visibility;
+        AnimationFrame frame;
+        double ms = 0.0;
+        for (std::size_t c = 0; c < trackers.size(); ++c) {
+            const TrackedFrame& tf = trackers[c].step(camera, light);
+            ms += tf.contour.stats.ms;
+            results.push_back(tf.contour);
+            std::vector<AnimatedLoop> loops;
+            for (std::size_t l = 0; l < tf.contour.fronts.loops.size(); ++l) {
+                AnimatedLoop al;
+                al.sequence = tf.loop_sequence[l];
+                tf.contour.fronts.for_each_in_loop(tf.contour.fronts.loops[l],
+                                                   [&](std::int32_t s) { al.ids.push_back(tf.snaxel_id[s]); });
+                loops.push_back(std::move(al));
+            }
+            frame.loops.push_back(std::move(loops));
+            for (const VisualEvent& e : tf.events)
+                out.events.push_back({{"frame", e.frame},
+                                      {"kind", event_name(e.kind)},
+                                      {"contour", job.kinds[c].label()},
+                                      {"where", {e.where.x, e.where.y, e.where.z}}});
+            if (job.visibility) visibility.push_back(VisibilitySampler(*rays, camera).classify(engine, tf.contour));
+        }
+        out.tracking_ms.push_back(ms);
+        const ImageProjection projection(camera, centre, radius, job.width, job.height);
+        frame.drawing = make_drawing(engine, results, projection, job.visibility ? &visibility : nullptr);
+        for (auto& contour : frame.drawing.contours)
+            for (auto& loop : contour.loops) loop.p.clear(); // 3-D positions are not exported
+        if (!job.frames_dir.empty()) {
+            char name[64];
+            std::snprintf(name, sizeof name, "frame_%05d.svg", k);
+            write_file_atomically((std::filesystem::path(job.frames_dir) / name).string(), to_svg(frame.drawing));
+        }
+        recorded.push_back(std::move(frame));
+        if (job.progress) job.progress(k + 1, frames);
+    }
+    out.svg = to_animated_svg(recorded, job.animation.fps, job.svg, &out.stats);
+    return out;
+}
+
+} // namespace snaxels

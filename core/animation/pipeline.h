@@ -1,0 +1,44 @@
+#pragma once
+/// The whole animation pipeline, shared by the CLI and the application:
+/// pose each frame, track every contour kind, classify hidden lines, draw,
+/// and write the animated SVG (and, on request, each frame as static SVG).
+
+#include <functional>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "core/export/animated_svg.h"
+#include "core/scene/animation.h"
+#include "core/snaxel/tracker.h"
+
+namespace snaxels {
+
+struct AnimationJob {
+    AnimationSpec animation;
+    Camera camera;
+    Light light;
+    std::vector<ContourSpec> kinds{ContourSpec{}};
+    int width = 800, height = 800;
+    bool visibility = true;
+    EngineOptions engine;
+    AnimatedSvgOptions svg;
+    std::string frames_dir; ///< when set, every frame is also written there as static SVG
+    /// Called after each frame with (frames done, frames in all).
+    std::function<void(int, int)> progress;
+};
+
+struct AnimationOutput {
+    std::string svg;
+    nlohmann::json events = nlohmann::json::array(); ///< [{frame, kind, contour, where}]
+    AnimatedSvgStats stats;
+    std::vector<double> tracking_ms; ///< per frame, all kinds
+    int frames = 0;
+};
+
+/// Runs @p job on @p mesh (read from @p mesh_path, which clips need).
+/// Throws snaxels::Error on bad input (a missing sequence file, an unknown clip).
+AnimationOutput run_animation(const LoadedMesh& mesh, const std::string& mesh_path, const AnimationJob& job);
+
+} // namespace snaxels

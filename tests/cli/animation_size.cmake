@@ -1,0 +1,30 @@
+# Done-when: the animated SVG of a 360-frame horse turntable is at most a
+# third of the size of its 360 static frame SVGs. Prints both figures.
+#   cmake -DCLI=... -DMESH=... -DOUT=<dir> -P animation_size.cmake
+file(REMOVE_RECURSE "${OUT}")
+file(MAKE_DIRECTORY "${OUT}")
+execute_process(COMMAND ${CLI} animate ${MESH} --turntable 1 --frames 360 --fps 24
+    --view-dir 1,0.2,0.3 --up 0,0,1 -o ${OUT}/horse.svg --frames-dir ${OUT}/frames
+  RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err TIMEOUT 600)
+message("${out}")
+if(NOT rc EQUAL 0)
+  message(FATAL_ERROR "animate failed (${rc}): ${err}")
+endif()
+file(SIZE ${OUT}/horse.svg animated)
+file(GLOB frames ${OUT}/frames/frame_*.svg)
+list(LENGTH frames count)
+if(NOT count EQUAL 360)
+  message(FATAL_ERROR "expected 360 static frames, found ${count}")
+endif()
+set(total 0)
+foreach(f IN LISTS frames)
+  file(SIZE ${f} s)
+  math(EXPR total "${total} + ${s}")
+endforeach()
+math(EXPR ratio_pct "100 * ${animated} / ${total}")
+message("animated SVG ${animated} bytes; 360 static SVGs ${total} bytes; ratio ${ratio_pct}%")
+math(EXPR limit "${total} / 3")
+if(animated GREATER limit)
+  message(FATAL_ERROR "the animated SVG is more than a third of the static frames")
+endif()
+file(REMOVE_RECURSE "${OUT}/frames")

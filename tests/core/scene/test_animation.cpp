@@ -1,0 +1,154 @@
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+
+#include "core/error.h"
+#include "core/mesh/import.h"
+#include "core/mesh/mesh_animation.h"
+#include "core/mesh/procedural.h"
+#include "core/scene/animation.h"
+#include "core/snaxel/tracker.h"
+#include "tests/support/assets.h"
+#include "tests/support/marching_triangles.h"
+
+using namespace snaxels;
+
+namespace {
+
+// Tracks the visual contour of a mesh animation and checks every frame
+// against the oracle on the posed mesh; returns how far the mesh moved.
+double track_clip(const std::string& path, const std::string& clip, int frames, double fps) {
+    const LoadedMesh mesh = import_mesh(path);
+    MeshTopology topo = build_topology(mesh.mesh);
+    const std::vector<glm::dvec3> rest = topo.positions;
+    AnimationSpec spec;
+    spec.kind = AnimationSpec::Kind::Clip;
+    spec.clip = clip;
+    spec.frames = frames;
+    spec.fps = fps;
+    Camera camera;
+    camera.view_dir = glm::normalize(glm::dvec3(0.2, -0.1, -1.0));
+    FrameDriver driver(spec, mesh, topo, camera, default_light(camera), glm::dvec3(0.0), path);
+    EXPECT_TRUE(driver.mesh_moves());
+    ContourTracker tracker(topo, ContourSpec{});
+    double moved = 0.0;
+    for (int k = 0; k < frames; ++k) {
+        Camera cam;
+        Light light;
+        driver.apply(k, cam, light);
+        for (std::size_t v = 0; v < topo.n_vertices(); ++v) moved = std::max(moved, glm::length(topo.positions[v] - rest[v]));
+        const TrackedFrame& tf = tracker.step(cam, light);
+        const auto oracle = test::marching_triangles(topo, ContourFunction({}, cam, light), 1);
+        EXPECT_EQ(tf.contour.fronts.snaxels.size(), oracle.points.size()) << path << " frame " << k;
+        EXPECT_EQ(tf.contour.fronts.loops.size(), oracle.loops) << path << " frame " << k;
+        for (const auto& loop : tf.contour.fronts.loops) EXPECT_TRUE(loop.closed);
+    }
+    return moved;
+}
+
+} // namespace
+
+// Done-when 4: a skinned mesh animates (its upper half bends 60 degrees)
+// and its contours track.
+TEST(MeshAnimation, SkinnedBarBendsAndTracks) {
+    const std::string path = test::asset("anim/skinned-bar.gltf");
+    const MeshAnimation anim(path, "bend");
+    EXPECT_NEAR(anim.duration(), 1.0, 1e-9);
+    std::vector<glm::dvec3> pose;
+    anim.pose(1.0 - 1e-9, pose);
+    // The top corner (0.2, 2, 0.2) turns 60 degrees about Z around (0, 1, 0).
+    double best = 1e9;
+    const double c = std::cos(M_PI / 3), s = std::sin(M_PI / 3);
+    const glm::dvec3 expected(0.2 * c - 1.0 * s, 1.0 + 0.2 * s + 1.0 * c, 0.2);
+    for (const auto& p : pose) best = std::min(best, glm::length(p - expected));
+    EXPECT_LT(best, 1e-3);
+    EXPECT_GT(track_clip(path, "bend", 25, 24.0), 0.5);
+}
+
+// Done-when 4: a morph-target mesh animates (stretched 1.6 times along X).
+TEST(MeshAnimation, MorphBallStretchesAndTracks) {
+    const std::string path = test::asset("anim/morph-ball.gltf");
+    const MeshAnimation anim(path, "");
+    EXPECT_EQ(anim.clip(), "stretch");
+    std::vector<glm::dvec3> pose;
+    anim.pose(1.0 - 1e-9, pose);
+    double max_x = 0.0;
+    for (const auto& p : pose) max_x = std::max(max_x, p.x);
+    EXPECT_NEAR(max_x, 1.6, 1e-3);
+    EXPECT_GT(track_clip(path, "stretch", 25, 24.0), 0.5);
+}
+
+TEST(MeshAnimation, NamesTheClipsWhenOneIsMissing) {
+    try {
+        MeshAnimation(test::asset("anim/skinned-bar.gltf"), "walk");
+        FAIL();
+    } catch (const Error& e) {
+        EXPECT_NE(std::string(e.what()).find("no animation clip 'walk' (it has: bend)"), std::string::npos) << e.what();
+    }
+    EXPECT_THROW(MeshAnimation(test::asset("spot.obj"), ""), Error);
+}
+
+// A numbered sequence of files with one connectivity drives the mesh.
+TEST(FrameDriver, FileSequence) {
+    const auto dir = std::filesystem::temp_directory_path() / "snaxels-sequence-test";
+    std::filesystem::remove_all(dir);
+    std::filesystem::create_directories(dir);
+    const TriangleSoup base = make_procedural("sphere:2000");
+    for (int k = 1; k <= 4; ++k) {
+        std::ofstream out(dir / ("blob_" + std::string(k < 10 ? "000" : "00") + std::to_string(k) + ".obj"));
+        for (const auto& p : base.positions)
+            out << "v " << p.x * (1.0 + 0.2 * k) << ' ' << p.y << ' ' << p.z << '\n';
+        for (const auto& t : base.triangles) out << "f " << t[0] + 1 << ' ' << t[1] + 1 << ' ' << t[2] + 1 << '\n';
+    }
+    AnimationSpec spec;
+    spec.kind = AnimationSpec::Kind::Sequence;
+    spec.pattern = (dir / "blob_####.obj").string();
+    spec.frames = 4;
+    const LoadedMesh mesh = import_mesh((dir / "blob_0001.obj").string());
+    MeshTopology topo = build_topology(mesh.mesh);
+    Camera cam;
+    Light light;
+    FrameDriver driver(spec, mesh, topo, cam, light, glm::dvec3(0.0), "");
+    EXPECT_EQ(driver.sequence_path(2), (dir / "blob_0003.obj").string());
+    double base_x = 0.0;
+    for (const auto& p : base.positions) base_x = std::max(base_x, p.x);
+    for (int k = 0; k < 4; ++k) {
+        driver.apply(k, cam, light);
+        double max_x = 0.0;
+        for (const auto& p : topo.positions) max_x = std::max(max_x, p.x);
+        EXPECT_NEAR(max_x, base_x * (1.0 + 0.2 * (k + 1)), 1e-5); // files hold 6 significant digits
+    }
+    // A file with other connectivity is refused by name.
+    std::ofstream(dir / "blob_0003.obj") << "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n";
+    try {
+        driver.apply(2, cam, light);
+        FAIL();
+    } catch (const Error& e) {
+        EXPECT_NE(std::string(e.what()).find("blob_0003.obj: has 3 vertices"), std::string::npos) << e.what();
+    }
+    std::filesystem::remove_all(dir);
+}
+
+TEST(FrameDriver, TurntableAndLightOrbit) {
+    const LoadedMesh mesh = load_mesh("proc:sphere:500");
+    MeshTopology topo = build_topology(mesh.mesh);
+    Camera base;
+    base.view_dir = {0, 0, 1};
+    Light light0;
+    light0.dir = {1, 0, 0};
+    AnimationSpec spec;
+    spec.kind = AnimationSpec::Kind::Turntable;
+    spec.degrees_per_frame = 90.0;
+    FrameDriver turn(spec, mesh, topo, base, light0, glm::dvec3(0.0), "");
+    Camera cam;
+    Light light;
+    turn.apply(1, cam, light);
+    EXPECT_NEAR(cam.view_dir.x, 1.0, 1e-12); // +Z turned 90 degrees about +Y
+    spec.kind = AnimationSpec::Kind::LightOrbit;
+    FrameDriver orbit(spec, mesh, topo, base, light0, glm::dvec3(0.0), "");
+    orbit.apply(2, cam, light);
+    EXPECT_NEAR(light.dir.x, -1.0, 1e-12);
+    EXPECT_NEAR(cam.view_dir.z, 1.0, 1e-12);
+}
