@@ -6,6 +6,7 @@
 
 #include "app/cli/args.h"
 #include "app/cli/commands.h"
+#include "app/cli/scene_options.h"
 #include "core/error.h"
 #include "core/mesh/import.h"
 #include "core/snaxel/snaxel_engine.h"
@@ -49,16 +50,7 @@ int run_bench(const std::vector<std::string>& argv) {
         return 0;
     }
     int repeat = 10;
-    if (const auto r = args.value("repeat")) {
-        try {
-            std::size_t used = 0;
-            repeat = std::stoi(*r, &used);
-            if (used != r->size()) repeat = 0;
-        } catch (const std::exception&) {
-            repeat = 0;
-        }
-        if (repeat < 1 || repeat > 10000) throw UsageError("--repeat takes a whole number from 1 to 10000");
-    }
+    if (const auto r = args.value("repeat")) repeat = parse_int("repeat", *r, 1, 10000);
     std::vector<ContourSpec> kinds;
     for (const auto& k : args.values("kind")) {
         try {
