@@ -13,7 +13,6 @@ namespace snaxels {
 struct CountContext {
     RTCIntersectContext embree;
     const MeshTopology* topo;
-    const std::vector<glm::dvec3>* face_normals;
     const VisibilityRay* ray;
     Crossings crossings;
     // A primitive can be reported more than once; remember what was counted.
@@ -38,7 +37,10 @@ void count_filter(const RTCFilterFunctionNArguments* args) {
         if (ignored(*c, prim)) continue;
         if (std::find(c->seen.begin(), c->seen.end(), prim) != c->seen.end()) continue;
         c->seen.push_back(prim);
-        if (glm::dot((*c->face_normals)[prim], c->ray->dir) > 0.0) ++c->crossings.front;
+        const auto& fv = c->topo->face_vertices[prim];
+        const glm::dvec3 a = c->topo->positions[fv[0]];
+        const glm::dvec3 normal = glm::cross(c->topo->positions[fv[1]] - a, c->topo->positions[fv[2]] - a);
+        if (glm::dot(normal, c->ray->dir) > 0.0) ++c->crossings.front;
         else ++c->crossings.back;
     }
 }
@@ -67,10 +69,19 @@ RTCRay make_ray(const VisibilityRay& r) {
 
 } // namespace
 
-RayScene::RayScene(const MeshTopology& topology) : topo_(topology) {
-    RTCDevice device = rtcNewDevice(nullptr);
+namespace {
+
+// One Embree device for the process: creating one starts a thread pool.
+RTCDevice shared_device() {
+    static const RTCDevice device = rtcNewDevice(nullptr);
     if (!device) throw Error("cannot start the ray tracer (Embree device)");
-    device_ = device;
+    return device;
+}
+
+} // namespace
+
+RayScene::RayScene(const MeshTopology& topology) : topo_(topology) {
+    RTCDevice device = shared_device();
     RTCScene scene = rtcNewScene(device);
     scene_ = scene;
     rtcSetSceneFlags(scene, RTC_SCENE_FLAG_CONTEXT_FILTER_FUNCTION | RTC_SCENE_FLAG_ROBUST |
@@ -78,7 +89,8 @@ RayScene::RayScene(const MeshTopology& topology) : topo_(topology) {
     rtcSetSceneBuildQuality(scene, RTC_BUILD_QUALITY_LOW);
     RTCGeometry geom = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_TRIANGLE);
     geometry_ = geom;
-    rtcSetGeometryBuildQuality(geom, RTC_BUILD_QUALITY_REFIT);
+    // The first build is the fast (Morton) one; refit() switches to refitting.
+    rtcSetGeometryBuildQuality(geom, RTC_BUILD_QUALITY_LOW);
     vertices_ = static_cast<float*>(rtcSetNewGeometryBuffer(
         geom, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, 3 * sizeof(float), topo_.n_vertices()));
     auto* index = static_cast<std::uint32_t*>(rtcSetNewGeometryBuffer(
@@ -95,22 +107,16 @@ RayScene::RayScene(const MeshTopology& topology) : topo_(topology) {
 RayScene::~RayScene() {
     if (geometry_) rtcReleaseGeometry(static_cast<RTCGeometry>(geometry_));
     if (scene_) rtcReleaseScene(static_cast<RTCScene>(scene_));
-    if (device_) rtcReleaseDevice(static_cast<RTCDevice>(device_));
 }
 
 void RayScene::upload_positions() {
     for (std::size_t v = 0; v < topo_.n_vertices(); ++v)
         for (int k = 0; k < 3; ++k) vertices_[3 * v + k] = float(topo_.positions[v][k]);
-    face_normals_.resize(topo_.n_faces());
-    for (std::size_t f = 0; f < topo_.n_faces(); ++f) {
-        const auto& fv = topo_.face_vertices[f];
-        const glm::dvec3 a = topo_.positions[fv[0]];
-        face_normals_[f] = glm::cross(topo_.positions[fv[1]] - a, topo_.positions[fv[2]] - a);
-    }
 }
 
 void RayScene::refit() {
     auto geom = static_cast<RTCGeometry>(geometry_);
+    rtcSetGeometryBuildQuality(geom, RTC_BUILD_QUALITY_REFIT);
     upload_positions();
     rtcUpdateGeometryBuffer(geom, RTC_BUFFER_TYPE_VERTEX, 0);
     rtcCommitGeometry(geom);
@@ -121,7 +127,6 @@ void RayScene::init_context(CountContext& c, const VisibilityRay& r, bool counti
     rtcInitIntersectContext(&c.embree);
     c.embree.filter = counting ? count_filter : occlusion_filter;
     c.topo = &topo_;
-    c.face_normals = &face_normals_;
     c.ray = &r;
 }
 

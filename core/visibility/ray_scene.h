@@ -54,11 +54,9 @@ class RayScene {
     void init_context(CountContext& context, const VisibilityRay& ray, bool counting) const;
 
     const MeshTopology& topo_;
-    void* device_ = nullptr; // RTCDevice
     void* scene_ = nullptr;  // RTCScene
     void* geometry_ = nullptr; // RTCGeometry
     float* vertices_ = nullptr; // Embree-owned vertex buffer
-    std::vector<glm::dvec3> face_normals_;
 };
 
 } // namespace snaxels

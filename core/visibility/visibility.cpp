@@ -84,9 +84,11 @@ ContourVisibility VisibilitySampler::classify(const SnaxelEngine& engine,
     };
 
     ContourVisibility out;
-    out.loops.reserve(fronts.loops.size());
-    for (const FrontLoop& loop : fronts.loops) {
-        LoopVisibility lv;
+    out.loops.resize(fronts.loops.size());
+    // Loops are independent: their change points are bisected in parallel.
+    parallel_for(fronts.loops.size(), [&](std::size_t loop_index) {
+        const FrontLoop& loop = fronts.loops[loop_index];
+        LoopVisibility& lv = out.loops[loop_index];
         std::vector<std::int32_t> order;
         order.reserve(std::size_t(loop.size));
         fronts.for_each_in_loop(loop, [&](std::int32_t s) { order.push_back(s); });
@@ -107,8 +109,7 @@ ContourVisibility VisibilitySampler::classify(const SnaxelEngine& engine,
             VisibilityRun run{lv.snaxel_qi.empty() ? 0 : lv.snaxel_qi[0], loop.closed, {}};
             for (std::size_t k = 0; k < n; ++k) run.points.push_back(point(k));
             lv.runs.push_back(std::move(run));
-            out.loops.push_back(std::move(lv));
-            continue;
+            return;
         }
         // Walk the loop once from the first change (closed) or its start (open).
         const std::size_t first = loop.closed ? start : 0;
@@ -139,8 +140,7 @@ ContourVisibility VisibilitySampler::classify(const SnaxelEngine& engine,
             run.points.push_back(point(next));
         }
         lv.runs.push_back(std::move(run));
-        out.loops.push_back(std::move(lv));
-    }
+    }, 1);
     return out;
 }
 

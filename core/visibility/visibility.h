@@ -17,8 +17,8 @@ struct VisibilityOptions {
     /// surface, and the mesh's facets must not hide their own silhouette.
     double normal_offset = 0.2;
     /// Bisection steps that locate a QI change between two samples
-    /// (12 steps: 1/4096 of the segment).
-    int bisection_steps = 12;
+    /// (10 steps: 1/1024 of the segment, far below a pixel).
+    int bisection_steps = 10;
 };
 
 /// A stretch of a loop with one QI. Points are 3-D, in the mesh's coordinates.
