@@ -125,8 +125,7 @@ int run_animate(const std::vector<std::string>& argv) {
     job.camera = scene.camera;
     job.light = *scene.light;
     job.kinds = scene.kinds;
-    job.width = scene.width;
-    job.height = scene.height;
+    job.style = scene.style;
     job.visibility = scene.visibility;
     if (scene.check) job.engine.check_invariants = true;
     job.svg = svg_options;

@@ -55,7 +55,7 @@ int run_contours(const std::vector<std::string>& argv) {
     const std::vector<ContourSpec>& kinds = scene.kinds;
     const glm::dvec3 centre = 0.5 * (report.bbox_min + report.bbox_max);
     const double radius = std::max(0.5 * glm::length(report.bbox_max - report.bbox_min), 1e-12);
-    const int width = scene.width, height = scene.height;
+    const int width = scene.style.width, height = scene.style.height;
 
     const MeshTopology topology = build_topology(loaded.mesh);
     const SnaxelEngine engine(topology);
@@ -70,7 +70,7 @@ int run_contours(const std::vector<std::string>& argv) {
         const VisibilitySampler sampler(rays, camera);
         for (const ContourResult& r : results) visibility.push_back(sampler.classify(engine, r));
     }
-    const ImageProjection projection(camera, centre, radius, width, height);
+    const ImageProjection projection(camera, centre, radius, width, height, scene.style.margin);
     const Drawing drawing =
         make_drawing(engine, results, projection, visibility.empty() ? nullptr : &visibility);
 
@@ -78,7 +78,7 @@ int run_contours(const std::vector<std::string>& argv) {
         if (path == "-") std::cout << text;
         else write_file_atomically(path, text);
     };
-    if (!svg_out.empty()) emit(svg_out, to_svg(drawing));
+    if (!svg_out.empty()) emit(svg_out, to_svg(drawing, scene.style));
     if (!json_out.empty())
         emit(json_out, contours_to_json(report, camera, light, drawing, results).dump() + "\n");
     if (json_out.empty() && svg_out.empty()) {

@@ -1,6 +1,7 @@
 #include "app/cli/scene_options.h"
 
 #include <cmath>
+#include <iostream>
 #include <sstream>
 
 #include "core/error.h"
@@ -63,7 +64,8 @@ std::vector<OptionSpec> scene_option_specs() {
             {"light-dir", "X,Y,Z", "directional light: the direction toward the light"},
             {"light-pos", "X,Y,Z", "point light at this position"},
             {"kind", "KIND", "contour to find: visual, shadow, isophote:K, gleam:K (default visual)", true},
-            {"size", "WxH", "image size in pixels (default 800x800)"},
+            {"style", "FILE.xml", "how to draw: strokes per contour kind, canvas, light (docs/styles.md)"},
+            {"size", "WxH", "image size in pixels (default: the style's canvas, 800x800)"},
             {"no-visibility", "", "skip hidden-line classification (no qi, no dashed runs)"},
             {"check", "", "check the snaxel invariants after every iteration (slower)"}};
 }
@@ -83,14 +85,23 @@ SceneOptions parse_scene_options(const Args& args) {
             throw UsageError(e.what());
         }
     }
+    if (const auto path = args.value("style")) {
+        std::vector<StyleDiagnostic> warnings;
+        o.style = load_style(*path, &warnings);
+        for (const StyleDiagnostic& w : warnings)
+            std::cerr << "snaxels-cli: " << *path << ":" << w.line << ":" << w.column << ": warning: " << w.message << '\n';
+    }
+    if (o.kinds.empty())
+        for (const ContourStyle& cs : o.style.contours) o.kinds.push_back(cs.spec);
     if (o.kinds.empty()) o.kinds.push_back({});
     if (const auto size = args.value("size")) {
         const auto x = size->find('x');
         bool ok = x != std::string::npos;
         try {
             if (ok) {
-                o.width = parse_int("size", size->substr(0, x), 16, 20000);
-                o.height = parse_int("size", size->substr(x + 1), 16, 20000);
+                o.style.width = parse_int("size", size->substr(0, x), 16, 20000);
+                o.style.height = parse_int("size", size->substr(x + 1), 16, 20000);
+                o.style.margin = std::min(o.style.margin, 0.25 * std::min(o.style.width, o.style.height));
             }
         } catch (const UsageError&) {
             ok = false;
@@ -128,7 +139,7 @@ void complete_scene(SceneOptions& o, const MeshReport& report) {
         if (glm::length(o.camera.target - o.camera.eye) < 1e-12)
             throw UsageError("--eye and --target are the same point");
     }
-    if (!o.light) o.light = default_light(o.camera);
+    if (!o.light) o.light = o.style.light ? *o.style.light : default_light(o.camera);
 }
 
 } // namespace snaxels::cli

@@ -10,20 +10,22 @@
 #include "core/mesh/report.h"
 #include "core/scene/camera.h"
 #include "core/snaxel/contour_function.h"
+#include "core/style/style.h"
 
 namespace snaxels::cli {
 
 struct SceneOptions {
     Camera camera;
     std::optional<glm::dvec3> target; ///< perspective target, if given
-    std::optional<Light> light;       ///< if given; else the default light
-    std::vector<ContourSpec> kinds;
-    int width = 800, height = 800;
+    std::optional<Light> light;       ///< --light-*, else the style's, else the default light
+    std::vector<ContourSpec> kinds;   ///< --kind, else the style's contours, else visual
+    Style style = default_style();    ///< --style, with --size applied to its canvas
     bool visibility = true;
     bool check = false;
 };
 
 std::vector<OptionSpec> scene_option_specs();
+/// Parses the options and reads --style (its warnings go to standard error).
 SceneOptions parse_scene_options(const Args& args);
 /// Fills what depends on the mesh: the perspective target (its centre by
 /// default) and the default light.

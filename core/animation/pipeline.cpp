@@ -82,19 +82,19 @@ AnimationOutput run_animation(const LoadedMesh& mesh, const std::string& mesh_pa
             if (job.visibility) visibility.push_back(VisibilitySampler(*rays, camera).classify(engine, tf.contour));
         }
         out.tracking_ms.push_back(ms);
-        const ImageProjection projection(camera, centre, radius, job.width, job.height);
+        const ImageProjection projection(camera, centre, radius, job.style.width, job.style.height, job.style.margin);
         frame.drawing = make_drawing(engine, results, projection, job.visibility ? &visibility : nullptr);
         for (auto& contour : frame.drawing.contours)
             for (auto& loop : contour.loops) loop.p.clear(); // 3-D positions are not exported
         if (!job.frames_dir.empty()) {
             char name[64];
             std::snprintf(name, sizeof name, "frame_%05d.svg", k);
-            write_file_atomically((std::filesystem::path(job.frames_dir) / name).string(), to_svg(frame.drawing));
+            write_file_atomically((std::filesystem::path(job.frames_dir) / name).string(), to_svg(frame.drawing, job.style));
         }
         recorded.push_back(std::move(frame));
         if (job.progress) job.progress(k + 1, frames);
     }
-    out.svg = to_animated_svg(recorded, job.animation.fps, job.svg, &out.stats);
+    out.svg = to_animated_svg(recorded, job.animation.fps, job.svg, job.style, &out.stats);
     return out;
 }
 

@@ -12,6 +12,7 @@
 #include "core/export/animated_svg.h"
 #include "core/scene/animation.h"
 #include "core/snaxel/tracker.h"
+#include "core/style/style.h"
 
 namespace snaxels {
 
@@ -20,7 +21,7 @@ struct AnimationJob {
     Camera camera;
     Light light;
     std::vector<ContourSpec> kinds{ContourSpec{}};
-    int width = 800, height = 800;
+    Style style = default_style(); ///< strokes, canvas (size, margin, background)
     bool visibility = true;
     EngineOptions engine;
     AnimatedSvgOptions svg;

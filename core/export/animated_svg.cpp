@@ -264,10 +264,13 @@ void align(const RunSequence& rs, Span& s) {
 class Writer {
   public:
     Writer(const std::vector<AnimationFrame>& frames, double fps, const AnimatedSvgOptions& options,
-           AnimatedSvgStats& stats)
-        : frames_(frames), fps_(fps), options_(options), stats_(stats) {}
+           const Style& style, AnimatedSvgStats& stats)
+        : frames_(frames), fps_(fps), options_(options), style_(style), stats_(stats) {}
 
     void contour(std::size_t c, std::string& hidden_out, std::string& visible_out) {
+        const ContourStyle cs = style_.contour(frames_[0].drawing.contours[c].spec);
+        visible_stroke_ = cs.visible;
+        hidden_stroke_ = cs.hidden;
         std::map<std::uint64_t, std::vector<std::pair<int, std::size_t>>> by_sequence;
         for (std::size_t f = 0; f < frames_.size(); ++f)
             for (std::size_t l = 0; l < frames_[f].loops[c].size(); ++l)
@@ -388,12 +391,14 @@ class Writer {
         // show, so motion stays interpolated across the handover.
         for (const RunSequence& rs : runs) {
             std::string& out = rs.qi > 0 ? hidden_out : visible_out;
+            const StrokeStyle& stroke = rs.qi > 0 ? hidden_stroke_ : visible_stroke_;
+            if (!stroke.draw) continue;
             const std::size_t chunk = std::max<std::size_t>(2, options_.max_chunk_frames);
             for (std::size_t a = 0;; a += chunk) {
                 RunSequence part = rs;
                 const std::size_t b = std::min(rs.frames.size(), a + chunk + 1);
                 part.frames.assign(rs.frames.begin() + long(a), rs.frames.begin() + long(b));
-                emit(part, out, b < rs.frames.size());
+                emit(part, out, b < rs.frames.size(), stroke.smoothing);
                 if (b >= rs.frames.size()) break;
             }
         }
@@ -432,7 +437,7 @@ class Writer {
 
     /// @p handover: the last frame belongs to the next chunk (animate toward
     /// it, but stop showing this path when it begins).
-    void emit(const RunSequence& rs, std::string& out, bool handover) {
+    void emit(const RunSequence& rs, std::string& out, bool handover, double smoothing) {
         // Vertices sit on a grid fixed in u for the whole run, at the loops'
         // own sampling density (their snaxel spacing), so they glide with the
         // curve from frame to frame; grid points outside a frame's span fold
@@ -473,8 +478,12 @@ class Writer {
             }
             geom.push_back(std::move(g));
         }
+        // Vertices kept for every frame: Bézier knots when the stroke is
+        // smoothed, else the joint Douglas-Peucker of the polyline.
         std::vector<std::uint8_t> keep(n, 0);
-        if (closed_path) {
+        if (smoothing > 0.0) {
+            for (const std::size_t k : fit_knots(geom, closed_path, std::max(smoothing, options_.tolerance_px))) keep[k] = 1;
+        } else if (closed_path) {
             std::vector<std::vector<glm::dvec2>> ring = geom;
             for (auto& r : ring) r.push_back(r[0]);
             std::vector<std::uint8_t> ring_keep(n + 1, 0);
@@ -487,10 +496,17 @@ class Writer {
             keep[0] = keep[n - 1] = 1;
             simplify_joint(geom, 0, n - 1, options_.tolerance_px, keep);
         }
+        std::vector<std::size_t> knots;
+        for (std::size_t k = 0; k < n; ++k)
+            if (keep[k]) knots.push_back(k);
         std::vector<std::vector<glm::dvec2>> reduced(geom.size());
         for (std::size_t f = 0; f < geom.size(); ++f)
-            for (std::size_t k = 0; k < n; ++k)
-                if (keep[k]) reduced[f].push_back(geom[f][k]);
+            for (const std::size_t k : knots) reduced[f].push_back(geom[f][k]);
+        if (reduced[0].size() < 2) return;
+        auto path_data = [&](std::string& to, std::size_t f) {
+            if (smoothing > 0.0) svg::append_compact_chain_data(to, bezier_chain(geom[f], knots, closed_path));
+            else svg::append_compact_path_data(to, reduced[f], closed_path);
+        };
 
         std::vector<std::uint8_t> key(reduced.size(), 0);
         key.front() = key.back() = 1;
@@ -503,7 +519,7 @@ class Writer {
         std::snprintf(dur, sizeof dur, "%.6gs", double(total) / fps_);
 
         out += "<path d=\"";
-        svg::append_compact_path_data(out, reduced[0], closed_path);
+        path_data(out, 0);
         out += "\"";
         const bool always = first == 0 && last + 1 == int(total);
         if (!always) out += " display=\"none\"";
@@ -524,15 +540,15 @@ class Writer {
         for (const auto k : key) kept += k;
         if (kept > 1) {
             std::string times, values;
-            auto add = [&](double t, const std::vector<glm::dvec2>& g) {
+            auto add = [&](double t, std::size_t f) {
                 if (!times.empty()) times += ';', values += ';';
                 times += key_time(t);
-                svg::append_compact_path_data(values, g, closed_path);
+                path_data(values, f);
             };
-            if (first > 0) add(0.0, reduced.front());
+            if (first > 0) add(0.0, 0);
             for (std::size_t f = 0; f < reduced.size(); ++f)
-                if (key[f]) add(double(rs.frames[f].first->frame) / double(total), reduced[f]);
-            add(1.0, reduced.back());
+                if (key[f]) add(double(rs.frames[f].first->frame) / double(total), f);
+            add(1.0, reduced.size() - 1);
             out += "<animate attributeName=\"d\" dur=\"" + std::string(dur) +
                    "\" repeatCount=\"indefinite\" calcMode=\"linear\" keyTimes=\"" + times +
                    "\" values=\"" + values + "\"/>";
@@ -547,31 +563,37 @@ class Writer {
     const std::vector<AnimationFrame>& frames_;
     double fps_;
     AnimatedSvgOptions options_;
+    const Style& style_;
+    StrokeStyle visible_stroke_, hidden_stroke_;
     AnimatedSvgStats& stats_;
 };
 
 } // namespace
 
-std::string to_animated_svg(const std::vector<AnimationFrame>& frames, double fps,
-                            const AnimatedSvgOptions& options, AnimatedSvgStats* stats) {
+std::string to_animated_svg(const std::vector<AnimationFrame>& frames, double fps, const AnimatedSvgOptions& options,
+                            const Style& style, AnimatedSvgStats* stats) {
     AnimatedSvgStats local;
     AnimatedSvgStats& st = stats ? *stats : local;
     st = {};
-    if (frames.empty()) return svg::document_start(16, 16) + "</svg>\n";
+    if (frames.empty()) return svg::document_start(16, 16, style.background) + "</svg>\n";
     const Drawing& d0 = frames[0].drawing;
-    std::string out = svg::document_start(d0.width, d0.height);
+    std::string out = svg::document_start(d0.width, d0.height, style.background);
     bool with_visibility = false;
     for (const AnimationFrame& f : frames)
         for (const DrawnContour& c : f.drawing.contours)
             for (const DrawnLoop& loop : c.loops) with_visibility |= !loop.qi.empty();
-    Writer writer(frames, fps, options, st);
+    Writer writer(frames, fps, options, style, st);
     std::vector<std::string> hidden(d0.contours.size()), visible(d0.contours.size());
     for (std::size_t c = 0; c < d0.contours.size(); ++c) writer.contour(c, hidden[c], visible[c]);
     for (const bool is_hidden : {true, false}) {
         if (is_hidden && !with_visibility) continue;
-        out += with_visibility ? svg::visibility_group(is_hidden) : svg::plain_group();
-        for (std::size_t c = 0; c < d0.contours.size(); ++c)
-            out += svg::kind_group(d0.contours[c].spec) + (is_hidden ? hidden[c] : visible[c]) + "</g>\n";
+        out += is_hidden ? "<g id=\"hidden\">\n" : "<g id=\"visible\">\n";
+        for (std::size_t c = 0; c < d0.contours.size(); ++c) {
+            const ContourStyle cs = style.contour(d0.contours[c].spec);
+            const StrokeStyle& stroke = is_hidden ? cs.hidden : cs.visible;
+            if (!stroke.draw) continue;
+            out += svg::kind_group(d0.contours[c].spec, stroke) + (is_hidden ? hidden[c] : visible[c]) + "</g>\n";
+        }
         out += "</g>\n";
     }
     out += "</svg>\n";

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "core/export/drawing.h"
+#include "core/style/style.h"
 
 namespace snaxels {
 
@@ -49,8 +50,9 @@ struct AnimatedSvgStats {
     std::size_t vertices = 0;         ///< path vertices, summed over paths
 };
 
-/// The animated SVG of @p frames played at @p fps, looping.
+/// The animated SVG of @p frames played at @p fps, looping, drawn as @p style says.
 std::string to_animated_svg(const std::vector<AnimationFrame>& frames, double fps,
-                            const AnimatedSvgOptions& options = {}, AnimatedSvgStats* stats = nullptr);
+                            const AnimatedSvgOptions& options = {}, const Style& style = default_style(),
+                            AnimatedSvgStats* stats = nullptr);
 
 } // namespace snaxels

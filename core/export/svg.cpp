@@ -85,28 +85,76 @@ void append_compact_path_data(std::string& out, const std::vector<glm::dvec2>& q
     out += d;
 }
 
-std::string document_start(int width, int height) {
+std::string document_start(int width, int height, const std::string& background) {
     const std::string w = std::to_string(width), h = std::to_string(height);
-    return "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n"
-           "<svg xmlns=\"http://www.w3.org/2000/svg\" version=\"1.1\" width=\"" + w + "\" height=\"" + h +
-           "\" viewBox=\"0 0 " + w + " " + h + "\">\n"
-           "<rect width=\"100%\" height=\"100%\" fill=\"#ffffff\"/>\n";
+    std::string out = "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n"
+                      "<svg xmlns=\"http://www.w3.org/2000/svg\" version=\"1.1\" width=\"" + w + "\" height=\"" + h +
+                      "\" viewBox=\"0 0 " + w + " " + h + "\">\n";
+    if (background != "none") out += "<rect width=\"100%\" height=\"100%\" fill=\"" + background + "\"/>\n";
+    return out;
 }
 
-std::string kind_group(const ContourSpec& spec) {
-    return "<g class=\"contour\" data-kind=\"" + spec.kind_name() + "\" data-label=\"" + spec.label() +
-           "\" stroke=\"" + default_stroke(spec.kind) + "\">\n";
+std::string kind_group(const ContourSpec& spec, const StrokeStyle& stroke) {
+    std::string out = "<g class=\"contour\" data-kind=\"" + spec.kind_name() + "\" data-label=\"" + spec.label() +
+                      "\" fill=\"none\" stroke=\"" + stroke.colour + "\" stroke-width=\"";
+    append_number(out, stroke.width);
+    out += "\"";
+    if (stroke.opacity < 1.0) {
+        out += " stroke-opacity=\"";
+        append_number(out, stroke.opacity);
+        out += "\"";
+    }
+    if (!stroke.dash.empty()) {
+        out += " stroke-dasharray=\"";
+        for (std::size_t i = 0; i < stroke.dash.size(); ++i) {
+            if (i) out += ' ';
+            append_number(out, stroke.dash[i]);
+        }
+        out += "\"";
+    }
+    out += " stroke-linecap=\"" + stroke.cap + "\" stroke-linejoin=\"" + stroke.join + "\">\n";
+    return out;
 }
 
-std::string visibility_group(bool hidden) {
-    return hidden ? "<g id=\"hidden\" fill=\"none\" stroke-width=\"1\" stroke-opacity=\"0.55\" "
-                    "stroke-dasharray=\"4 3\" stroke-linejoin=\"round\">\n"
-                  : "<g id=\"visible\" fill=\"none\" stroke-width=\"1.5\" stroke-linejoin=\"round\" "
-                    "stroke-linecap=\"round\">\n";
+void append_chain_data(std::string& out, const BezierChain& chain) {
+    if (chain.knots.empty()) return;
+    out += 'M';
+    append_number(out, chain.knots[0].x);
+    out += ',';
+    append_number(out, chain.knots[0].y);
+    const std::size_t m = chain.knots.size();
+    for (std::size_t s = 0; s < chain.c1.size(); ++s) {
+        out += s == 0 ? " C" : " ";
+        for (const glm::dvec2& p : {chain.c1[s], chain.c2[s], chain.knots[(s + 1) % m]}) {
+            if (&p != &chain.c1[s]) out += ' ';
+            append_number(out, p.x);
+            out += ',';
+            append_number(out, p.y);
+        }
+    }
+    if (chain.closed) out += " Z";
 }
 
-std::string plain_group() {
-    return "<g fill=\"none\" stroke-width=\"1.5\" stroke-linejoin=\"round\" stroke-linecap=\"round\">\n";
+void append_compact_chain_data(std::string& out, const BezierChain& chain) {
+    if (chain.knots.empty()) return;
+    std::string d = "m";
+    auto tenths = [](const glm::dvec2& p) { return std::pair{std::lround(p.x * 10.0), std::lround(p.y * 10.0)}; };
+    auto [px, py] = tenths(chain.knots[0]);
+    append_joined(d, px);
+    append_joined(d, py);
+    const std::size_t m = chain.knots.size();
+    for (std::size_t s = 0; s < chain.c1.size(); ++s) {
+        if (s == 0) d += 'c';
+        // Control points and end relative to the segment's start.
+        const auto [ax, ay] = tenths(chain.c1[s]);
+        const auto [bx, by] = tenths(chain.c2[s]);
+        const auto [ex, ey] = tenths(chain.knots[(s + 1) % m]);
+        for (const long v : {ax - px, ay - py, bx - px, by - py, ex - px, ey - py}) append_joined(d, v);
+        px = ex;
+        py = ey;
+    }
+    if (chain.closed) d += 'z';
+    out += d;
 }
 
 } // namespace svg
@@ -123,39 +171,38 @@ const char* default_stroke(ContourKind kind) {
 
 namespace {
 
-void append_path(std::string& out, const std::vector<glm::dvec2>& q, bool closed) {
+void append_path(std::string& out, const std::vector<glm::dvec2>& q, bool closed, const StrokeStyle& stroke) {
     if (q.size() < 2) return;
     out += "<path d=\"";
-    svg::append_path_data(out, q, closed);
+    if (stroke.smoothing > 0.0) svg::append_chain_data(out, smooth_polyline(q, closed, stroke.smoothing));
+    else svg::append_path_data(out, q, closed);
     out += "\"/>\n";
 }
 
 } // namespace
 
-std::string to_svg(const Drawing& drawing) {
-    std::string out = svg::document_start(drawing.width, drawing.height);
+std::string to_svg(const Drawing& drawing, const Style& style) {
+    std::string out = svg::document_start(drawing.width, drawing.height, style.background);
     bool with_visibility = false;
     for (const DrawnContour& c : drawing.contours)
         for (const DrawnLoop& loop : c.loops) with_visibility |= !loop.runs.empty();
-
-    if (!with_visibility) {
-        out += svg::plain_group();
-        for (const DrawnContour& c : drawing.contours) {
-            out += svg::kind_group(c.spec);
-            for (const DrawnLoop& loop : c.loops) append_path(out, loop.q, loop.closed);
-            out += "</g>\n";
-        }
-        out += "</g>\n</svg>\n";
-        return out;
-    }
     // Hidden lines first, so visible strokes are drawn over them.
     for (const bool hidden : {true, false}) {
-        out += svg::visibility_group(hidden);
+        if (hidden && !with_visibility) continue;
+        out += hidden ? "<g id=\"hidden\">\n" : "<g id=\"visible\">\n";
         for (const DrawnContour& c : drawing.contours) {
-            out += svg::kind_group(c.spec);
-            for (const DrawnLoop& loop : c.loops)
+            const ContourStyle cs = style.contour(c.spec);
+            const StrokeStyle& stroke = hidden ? cs.hidden : cs.visible;
+            if (!stroke.draw) continue;
+            out += svg::kind_group(c.spec, stroke);
+            for (const DrawnLoop& loop : c.loops) {
+                if (!with_visibility) {
+                    append_path(out, loop.q, loop.closed, stroke);
+                    continue;
+                }
                 for (const DrawnRun& run : loop.runs)
-                    if ((run.qi > 0) == hidden) append_path(out, run.q, run.closed);
+                    if ((run.qi > 0) == hidden) append_path(out, run.q, run.closed, stroke);
+            }
             out += "</g>\n";
         }
         out += "</g>\n";

@@ -4,14 +4,16 @@
 #include <string>
 
 #include "core/export/drawing.h"
+#include "core/style/style.h"
 
 namespace snaxels {
 
 /// Default stroke colour of a contour kind (until styles say otherwise).
 const char* default_stroke(ContourKind kind);
 
-/// The SVG document text. With visibility, hidden runs (QI > 0) are drawn
-/// dashed in <g id="hidden"> under the visible ones in <g id="visible">.
-std::string to_svg(const Drawing& drawing);
+/// The SVG document text, drawn as @p style says. Hidden runs (QI > 0) go in
+/// <g id="hidden"> under the visible ones in <g id="visible">; without
+/// visibility every line is drawn with its visible stroke.
+std::string to_svg(const Drawing& drawing, const Style& style = default_style());
 
 } // namespace snaxels

@@ -7,7 +7,9 @@
 
 #include <glm/glm.hpp>
 
+#include "core/export/bezier.h"
 #include "core/snaxel/contour_function.h"
+#include "core/style/style.h"
 
 namespace snaxels::svg {
 
@@ -21,13 +23,14 @@ void append_path_data(std::string& out, const std::vector<glm::dvec2>& q, bool c
 /// path has the same commands, so browsers interpolate it.
 void append_compact_path_data(std::string& out, const std::vector<glm::dvec2>& q, bool closed);
 
-/// XML declaration, <svg> start tag and white background.
-std::string document_start(int width, int height);
-/// Start tag of the group of one contour kind.
-std::string kind_group(const ContourSpec& spec);
-/// Start tag of the group of visible (hidden = false) or hidden lines.
-std::string visibility_group(bool hidden);
-/// Start tag of the group used when visibility was not computed.
-std::string plain_group();
+/// A Bézier chain as absolute path data "M x,y C x,y x,y x,y ... [Z]".
+void append_chain_data(std::string& out, const BezierChain& chain);
+/// The compact, relative form of a Bézier chain (see append_compact_path_data).
+void append_compact_chain_data(std::string& out, const BezierChain& chain);
+
+/// XML declaration, <svg> start tag and the background (unless "none").
+std::string document_start(int width, int height, const std::string& background);
+/// Start tag of the group of one contour kind, drawn with @p stroke.
+std::string kind_group(const ContourSpec& spec, const StrokeStyle& stroke);
 
 } // namespace snaxels::svg

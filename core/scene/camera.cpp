@@ -24,13 +24,13 @@ Light default_light(const Camera& camera) {
 }
 
 ImageProjection::ImageProjection(const Camera& camera, const glm::dvec3& centre, double radius,
-                                 int width, int height)
+                                 int width, int height, double margin)
     : camera_(camera), centre_(centre), width_(width), height_(height) {
     camera.screen_basis(right_, up_);
     forward_ = camera.forward();
     const double half = 0.5 * std::min(width, height);
     if (camera.orthographic())
-        scale_ = 0.92 * half / std::max(radius, 1e-12);
+        scale_ = std::max(half - margin, 1.0) / std::max(radius, 1e-12);
     else
         scale_ = half / std::tan(0.5 * camera.fov_deg * M_PI / 180.0);
 }

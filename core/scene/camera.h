@@ -44,12 +44,14 @@ struct Light {
 Light default_light(const Camera& camera);
 
 /// Maps world points to image pixels (x right, y down). Orthographic views
-/// fit the given bounding sphere into the image with a margin; perspective
+/// fit the given bounding sphere into the image within a margin; perspective
 /// views map the field of view to the image height.
 class ImageProjection {
   public:
+    /// @p margin: pixels between the bounding circle and the image edge
+    /// (orthographic views).
     ImageProjection(const Camera& camera, const glm::dvec3& centre, double radius, int width,
-                    int height);
+                    int height, double margin = 32.0);
     glm::dvec2 project(const glm::dvec3& p) const;
     int width() const { return width_; }
     int height() const { return height_; }

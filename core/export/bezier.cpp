@@ -1,0 +1,163 @@
+#include "core/export/bezier.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace snaxels {
+namespace {
+
+double point_segment(const glm::dvec2& p, const glm::dvec2& a, const glm::dvec2& b) {
+    const glm::dvec2 ab = b - a;
+    const double len2 = glm::dot(ab, ab);
+    const double t = len2 > 0.0 ? std::clamp(glm::dot(p - a, ab) / len2, 0.0, 1.0) : 0.0;
+    return glm::length(p - (a + t * ab));
+}
+
+glm::dvec2 cubic(const glm::dvec2& p0, const glm::dvec2& c1, const glm::dvec2& c2, const glm::dvec2& p1, double t) {
+    const double s = 1.0 - t;
+    return s * s * s * p0 + 3.0 * s * s * t * c1 + 3.0 * s * t * t * c2 + t * t * t * p1;
+}
+
+double distance_to_polyline(const glm::dvec2& p, const std::vector<glm::dvec2>& line) {
+    double best = 1e300;
+    for (std::size_t i = 0; i + 1 < line.size(); ++i) best = std::min(best, point_segment(p, line[i], line[i + 1]));
+    return line.size() == 1 ? glm::length(p - line[0]) : best;
+}
+
+void douglas_peucker(const std::vector<std::vector<glm::dvec2>>& frames, std::size_t i, std::size_t j, double tol,
+                     std::vector<std::uint8_t>& keep) {
+    if (j <= i + 1) return;
+    double worst = -1.0;
+    std::size_t at = i;
+    const std::size_t n = frames[0].size();
+    for (std::size_t k = i + 1; k < j; ++k) {
+        double d = 0.0;
+        for (const auto& f : frames) d = std::max(d, point_segment(f[k % n], f[i % n], f[j % n]));
+        if (d > worst) worst = d, at = k;
+    }
+    if (worst <= tol) return;
+    keep[at % n] = 1;
+    douglas_peucker(frames, i, at, tol, keep);
+    douglas_peucker(frames, at, j, tol, keep);
+}
+
+} // namespace
+
+BezierChain bezier_chain(const std::vector<glm::dvec2>& points, const std::vector<std::size_t>& knots, bool closed) {
+    BezierChain chain;
+    chain.closed = closed;
+    const std::size_t m = knots.size(), n = points.size();
+    for (const std::size_t k : knots) chain.knots.push_back(points[k]);
+    if (m < 2) return chain;
+    const std::size_t segments = closed ? m : m - 1;
+    // Unit tangent at each knot from its neighbouring knots; none at open
+    // ends and at sharp corners (more than 60 degrees), which stay corners.
+    std::vector<glm::dvec2> tangent(m, glm::dvec2(0.0));
+    for (std::size_t k = 0; k < m; ++k) {
+        if (!closed && (k == 0 || k + 1 == m)) continue;
+        const glm::dvec2 prev = chain.knots[(k + m - 1) % m], next = chain.knots[(k + 1) % m], here = chain.knots[k];
+        const glm::dvec2 in = here - prev, out = next - here;
+        const double li = glm::length(in), lo = glm::length(out);
+        if (li <= 0.0 || lo <= 0.0) continue;
+        if (glm::dot(in, out) < 0.5 * li * lo) continue;
+        const glm::dvec2 t = in / li + out / lo;
+        const double lt = glm::length(t);
+        if (lt > 0.0) tangent[k] = t / lt;
+    }
+    for (std::size_t s = 0; s < segments; ++s) {
+        const std::size_t a = s, b = (s + 1) % m;
+        const glm::dvec2 p0 = chain.knots[a], p1 = chain.knots[b];
+        const double chord = glm::length(p1 - p0);
+        // Knots that were neighbouring points: the polyline is straight there.
+        const std::size_t span = closed ? (knots[b] + n - knots[a]) % n : knots[b] - knots[a];
+        if (span <= 1) {
+            chain.c1.push_back(p0 + (p1 - p0) / 3.0);
+            chain.c2.push_back(p1 - (p1 - p0) / 3.0);
+            continue;
+        }
+        const glm::dvec2 d = chord > 0.0 ? (p1 - p0) / chord : glm::dvec2(0.0);
+        const glm::dvec2 t0 = tangent[a] != glm::dvec2(0.0) ? tangent[a] : d;
+        const glm::dvec2 t1 = tangent[b] != glm::dvec2(0.0) ? tangent[b] : d;
+        chain.c1.push_back(p0 + t0 * (chord / 3.0));
+        chain.c2.push_back(p1 - t1 * (chord / 3.0));
+    }
+    return chain;
+}
+
+std::vector<glm::dvec2> sample_chain(const BezierChain& chain, int per_segment) {
+    std::vector<glm::dvec2> out;
+    const std::size_t m = chain.knots.size();
+    if (m == 0) return out;
+    out.push_back(chain.knots[0]);
+    for (std::size_t s = 0; s < chain.c1.size(); ++s)
+        for (int i = 1; i <= per_segment; ++i)
+            out.push_back(cubic(chain.knots[s], chain.c1[s], chain.c2[s], chain.knots[(s + 1) % m], double(i) / per_segment));
+    return out;
+}
+
+std::vector<std::size_t> fit_knots(const std::vector<std::vector<glm::dvec2>>& frames, bool closed, double tolerance) {
+    const std::size_t n = frames.empty() ? 0 : frames[0].size();
+    if (n <= 2) {
+        std::vector<std::size_t> all(n);
+        for (std::size_t i = 0; i < n; ++i) all[i] = i;
+        return all;
+    }
+    std::vector<std::uint8_t> keep(n, 0);
+    keep[0] = 1;
+    if (closed) {
+        std::size_t far = 0;
+        for (std::size_t k = 1; k < n; ++k)
+            if (glm::length(frames[0][k] - frames[0][0]) > glm::length(frames[0][far] - frames[0][0])) far = k;
+        keep[far] = 1;
+        douglas_peucker(frames, 0, far, tolerance, keep);
+        douglas_peucker(frames, far, n, tolerance, keep);
+    } else {
+        keep[n - 1] = 1;
+        douglas_peucker(frames, 0, n - 1, tolerance, keep);
+    }
+    // The curve bends away from the chords where the polyline turns: add the
+    // worst point of each segment that strays until none does.
+    for (;;) {
+        std::vector<std::size_t> knots;
+        for (std::size_t i = 0; i < n; ++i)
+            if (keep[i]) knots.push_back(i);
+        bool added = false;
+        const std::size_t segments = closed ? knots.size() : knots.size() - 1;
+        std::vector<std::size_t> worst_point(segments, n);
+        std::vector<double> worst(segments, tolerance);
+        for (const auto& f : frames) {
+            const BezierChain chain = bezier_chain(f, knots, closed);
+            for (std::size_t s = 0; s < segments; ++s) {
+                const std::size_t a = knots[s], b = knots[(s + 1) % knots.size()];
+                const std::size_t count = closed ? (b + n - a) % n : b - a;
+                if (count <= 1) continue;
+                std::vector<glm::dvec2> curve;
+                for (int i = 0; i <= 16; ++i)
+                    curve.push_back(cubic(chain.knots[s], chain.c1[s], chain.c2[s], chain.knots[(s + 1) % knots.size()], i / 16.0));
+                std::vector<glm::dvec2> poly;
+                for (std::size_t k = 0; k <= count; ++k) poly.push_back(f[(a + k) % n]);
+                for (std::size_t k = 1; k < count; ++k) {
+                    const double d = distance_to_polyline(poly[k], curve);
+                    if (d > worst[s]) worst[s] = d, worst_point[s] = (a + k) % n;
+                }
+                // The curve's own bulge away from the polyline.
+                for (const glm::dvec2& c : curve) {
+                    const double d = distance_to_polyline(c, poly);
+                    if (d > worst[s]) {
+                        worst[s] = d;
+                        worst_point[s] = (a + count / 2) % n;
+                    }
+                }
+            }
+        }
+        for (std::size_t s = 0; s < segments; ++s)
+            if (worst_point[s] < n && !keep[worst_point[s]]) keep[worst_point[s]] = 1, added = true;
+        if (!added) return knots;
+    }
+}
+
+BezierChain smooth_polyline(const std::vector<glm::dvec2>& points, bool closed, double tolerance) {
+    return bezier_chain(points, fit_knots({points}, closed, tolerance), closed);
+}
+
+} // namespace snaxels

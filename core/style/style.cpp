@@ -1,0 +1,287 @@
+#include "core/style/style.h"
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <fstream>
+#include <set>
+#include <sstream>
+
+#include <pugixml.hpp>
+
+#include "core/error.h"
+#include "core/export/svg.h"
+
+namespace snaxels {
+namespace {
+
+// CSS colour keywords accepted besides #rgb and #rrggbb.
+const std::set<std::string>& colour_names() {
+    static const std::set<std::string> names = {
+        "black", "white", "gray", "grey", "silver", "red", "maroon", "orange", "gold", "yellow", "olive",
+        "lime", "green", "teal", "aqua", "cyan", "blue", "navy", "purple", "fuchsia", "magenta", "pink",
+        "brown", "tan", "beige", "ivory", "khaki", "coral", "salmon", "crimson", "indigo", "violet",
+        "turquoise", "skyblue", "steelblue", "slategray", "slategrey", "darkgray", "darkgrey", "lightgray",
+        "lightgrey", "dimgray", "dimgrey", "whitesmoke", "gainsboro", "wheat", "linen", "seashell"};
+    return names;
+}
+
+struct Parser {
+    const std::string& text;
+    const std::string& source;
+    std::vector<StyleDiagnostic>* warnings;
+
+    StyleDiagnostic where(std::ptrdiff_t offset, std::string message) const {
+        StyleDiagnostic d;
+        d.line = 1;
+        d.column = 1;
+        for (std::ptrdiff_t i = 0; i < offset && i < std::ptrdiff_t(text.size()); ++i) {
+            if (text[std::size_t(i)] == '\n') {
+                ++d.line;
+                d.column = 1;
+            } else {
+                ++d.column;
+            }
+        }
+        d.message = std::move(message);
+        return d;
+    }
+    [[noreturn]] void fail(const pugi::xml_node& node, const std::string& message) const {
+        throw StyleError(source, where(node.offset_debug(), message));
+    }
+    void warn(const pugi::xml_node& node, const std::string& message) const {
+        if (warnings) warnings->push_back(where(node.offset_debug(), message));
+    }
+    // Warns about every attribute of `node` not in `known`.
+    void check_attributes(const pugi::xml_node& node, std::initializer_list<const char*> known) const {
+        for (const pugi::xml_attribute a : node.attributes()) {
+            const bool ok = std::any_of(known.begin(), known.end(), [&](const char* k) { return std::string(k) == a.name(); });
+            if (!ok) warn(node, "unknown attribute '" + std::string(a.name()) + "' on <" + node.name() + ">");
+        }
+    }
+
+    double number(const pugi::xml_node& node, const char* name, double fallback, double lo, double hi) const {
+        const pugi::xml_attribute a = node.attribute(name);
+        if (!a) return fallback;
+        const std::string v = a.value();
+        std::size_t used = 0;
+        double x = 0.0;
+        try {
+            x = std::stod(v, &used);
+        } catch (const std::exception&) {
+            used = 0;
+        }
+        while (used < v.size() && std::isspace(static_cast<unsigned char>(v[used]))) ++used;
+        if (used == 0 || used != v.size() || !std::isfinite(x))
+            fail(node, std::string(name) + "=\"" + v + "\" is not a number");
+        if (x < lo || x > hi) {
+            std::ostringstream msg;
+            msg << name << "=\"" << v << "\" is outside " << lo << " .. " << hi;
+            fail(node, msg.str());
+        }
+        return x;
+    }
+    bool boolean(const pugi::xml_node& node, const char* name, bool fallback) const {
+        const pugi::xml_attribute a = node.attribute(name);
+        if (!a) return fallback;
+        const std::string v = a.value();
+        if (v == "true" || v == "yes" || v == "1") return true;
+        if (v == "false" || v == "no" || v == "0") return false;
+        fail(node, std::string(name) + "=\"" + v + "\" must be true or false");
+    }
+    std::string choice(const pugi::xml_node& node, const char* name, const std::string& fallback,
+                       std::initializer_list<const char*> allowed) const {
+        const pugi::xml_attribute a = node.attribute(name);
+        if (!a) return fallback;
+        const std::string v = a.value();
+        std::string list;
+        for (const char* c : allowed) {
+            if (v == c) return v;
+            list += (list.empty() ? "" : ", ") + std::string(c);
+        }
+        fail(node, std::string(name) + "=\"" + v + "\" must be one of " + list);
+    }
+    std::string colour(const pugi::xml_node& node, const char* name, const std::string& fallback, bool allow_none) const {
+        const pugi::xml_attribute a = node.attribute(name);
+        if (!a) return fallback;
+        std::string v = a.value();
+        std::string lower = v;
+        std::transform(lower.begin(), lower.end(), lower.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+        if (allow_none && lower == "none") return lower;
+        if (!lower.empty() && lower[0] == '#' && (lower.size() == 4 || lower.size() == 7) &&
+            std::all_of(lower.begin() + 1, lower.end(), [](unsigned char c) { return std::isxdigit(c); }))
+            return lower;
+        if (colour_names().count(lower)) return lower;
+        fail(node, std::string(name) + "=\"" + v + "\" is not a colour (use #rrggbb, #rgb or a CSS colour name" +
+                       (allow_none ? ", or none)" : ")"));
+    }
+    glm::dvec3 vector(const pugi::xml_node& node, const char* name) const {
+        const std::string v = node.attribute(name).value();
+        glm::dvec3 out{};
+        char c1 = 0, c2 = 0;
+        std::istringstream in(v);
+        in >> out.x >> c1 >> out.y >> c2 >> out.z;
+        if (in.fail() || c1 != ',' || c2 != ',' || !(in >> std::ws).eof() || !std::isfinite(out.x) ||
+            !std::isfinite(out.y) || !std::isfinite(out.z))
+            fail(node, std::string(name) + "=\"" + v + "\" must be three numbers x,y,z");
+        return out;
+    }
+
+    StrokeStyle stroke(const pugi::xml_node& node, StrokeStyle s) const {
+        check_attributes(node, {"draw", "stroke", "width", "opacity", "dash", "dash-space", "cap", "join", "smoothing"});
+        s.draw = boolean(node, "draw", s.draw);
+        s.colour = colour(node, "stroke", s.colour, false);
+        s.width = number(node, "width", s.width, 0.0, 1000.0);
+        s.opacity = number(node, "opacity", s.opacity, 0.0, 1.0);
+        if (const pugi::xml_attribute a = node.attribute("dash")) {
+            s.dash.clear();
+            std::string v = a.value();
+            std::replace(v.begin(), v.end(), ',', ' ');
+            std::istringstream in(v);
+            std::string word;
+            while (in >> word) {
+                std::size_t used = 0;
+                double x = -1.0;
+                try {
+                    x = std::stod(word, &used);
+                } catch (const std::exception&) {
+                    used = 0;
+                }
+                if (used != word.size() || !(x >= 0.0) || !std::isfinite(x))
+                    fail(node, "dash=\"" + std::string(a.value()) + "\" must be lengths in pixels, like \"4 3\"");
+                s.dash.push_back(x);
+            }
+            if (!s.dash.empty() && std::all_of(s.dash.begin(), s.dash.end(), [](double x) { return x == 0.0; }))
+                fail(node, "dash=\"" + std::string(a.value()) + "\" has no length");
+            if (s.dash.size() % 2) { // SVG repeats an odd list; make it explicit
+                const auto copy = s.dash;
+                s.dash.insert(s.dash.end(), copy.begin(), copy.end());
+            }
+        }
+        s.dash_on_surface = choice(node, "dash-space", s.dash_on_surface ? "surface" : "screen", {"screen", "surface"}) == "surface";
+        if (s.dash_on_surface) {
+            warn(node, "dash-space=\"surface\" is not supported yet; the dashes are fastened to the screen");
+            s.dash_on_surface = false;
+        }
+        s.cap = choice(node, "cap", s.cap, {"butt", "round", "square"});
+        s.join = choice(node, "join", s.join, {"miter", "round", "bevel"});
+        s.smoothing = number(node, "smoothing", s.smoothing, 0.0, 100.0);
+        return s;
+    }
+
+    Style parse() const {
+        pugi::xml_document doc;
+        const pugi::xml_parse_result result = doc.load_buffer(text.data(), text.size());
+        if (!result) throw StyleError(source, where(result.offset, std::string("malformed XML: ") + result.description()));
+        const pugi::xml_node root = doc.document_element();
+        if (std::string(root.name()) != "style")
+            fail(root, "the root element must be <style>, not <" + std::string(root.name()) + ">");
+        check_attributes(root, {"version"});
+        if (root.attribute("version") && std::string(root.attribute("version").value()) != "1")
+            fail(root, "version=\"" + std::string(root.attribute("version").value()) + "\" is not supported (only 1)");
+        Style style;
+        for (const pugi::xml_node child : root.children()) {
+            if (child.type() != pugi::node_element) continue;
+            const std::string name = child.name();
+            if (name == "canvas") {
+                check_attributes(child, {"width", "height", "margin", "background"});
+                style.width = int(number(child, "width", style.width, 16, 20000));
+                style.height = int(number(child, "height", style.height, 16, 20000));
+                style.margin = number(child, "margin", style.margin, 0.0, 10000.0);
+                style.background = colour(child, "background", style.background, true);
+            } else if (name == "light") {
+                check_attributes(child, {"dir", "pos"});
+                const bool dir = bool(child.attribute("dir")), pos = bool(child.attribute("pos"));
+                if (dir == pos) fail(child, "<light> takes either dir=\"x,y,z\" or pos=\"x,y,z\"");
+                Light light;
+                if (dir) {
+                    light.dir = vector(child, "dir");
+                    if (glm::length(light.dir) < 1e-12) fail(child, "dir must not be the zero vector");
+                    light.dir = glm::normalize(light.dir);
+                } else {
+                    light.point = true;
+                    light.pos = vector(child, "pos");
+                }
+                style.light = light;
+            } else if (name == "contour") {
+                check_attributes(child, {"kind", "k"});
+                const std::string kind = child.attribute("kind").value();
+                ContourSpec spec;
+                if (kind == "visual" || kind == "shadow") {
+                    if (child.attribute("k")) fail(child, "a " + kind + " contour takes no k");
+                    spec.kind = kind == "visual" ? ContourKind::Visual : ContourKind::Shadow;
+                } else if (kind == "isophote" || kind == "gleam") {
+                    if (!child.attribute("k")) fail(child, "an " + kind + " contour needs k (a cosine in -1 .. 1)");
+                    spec.kind = kind == "isophote" ? ContourKind::Isophote : ContourKind::Gleam;
+                    spec.k = number(child, "k", 0.0, -1.0, 1.0);
+                } else if (kind == "parabolic") {
+                    warn(child, "parabolic contours are not drawn yet; <contour kind=\"parabolic\"> is ignored");
+                    continue;
+                } else {
+                    fail(child, "kind=\"" + kind + "\" must be visual, shadow, isophote, gleam or parabolic");
+                }
+                for (const ContourStyle& existing : style.contours)
+                    if (existing.spec.label() == spec.label()) fail(child, "a second <contour> for " + spec.label());
+                ContourStyle cs = default_contour_style(spec);
+                for (const pugi::xml_node part : child.children()) {
+                    if (part.type() != pugi::node_element) continue;
+                    const std::string part_name = part.name();
+                    if (part_name == "visible") cs.visible = stroke(part, cs.visible);
+                    else if (part_name == "hidden") cs.hidden = stroke(part, cs.hidden);
+                    else warn(part, "unknown element <" + part_name + "> in <contour> (expected <visible> or <hidden>)");
+                }
+                style.contours.push_back(cs);
+            } else {
+                warn(child, "unknown element <" + name + "> (expected <canvas>, <light> or <contour>)");
+            }
+        }
+        if (2.0 * style.margin >= std::min(style.width, style.height))
+            fail(root, "the canvas margin leaves no room for the drawing");
+        return style;
+    }
+};
+
+} // namespace
+
+StyleError::StyleError(const std::string& source, StyleDiagnostic diagnostic)
+    : std::runtime_error(source + ":" + std::to_string(diagnostic.line) + ":" + std::to_string(diagnostic.column) +
+                         ": " + diagnostic.message),
+      diagnostic_(std::move(diagnostic)) {}
+
+ContourStyle default_contour_style(const ContourSpec& spec) {
+    ContourStyle cs;
+    cs.spec = spec;
+    cs.visible.colour = default_stroke(spec.kind);
+    cs.hidden = cs.visible;
+    cs.hidden.width = 1.0;
+    cs.hidden.opacity = 0.55;
+    cs.hidden.dash = {4.0, 3.0};
+    cs.hidden.cap = "butt";
+    return cs;
+}
+
+Style default_style() {
+    Style s;
+    s.contours.push_back(default_contour_style(ContourSpec{}));
+    return s;
+}
+
+ContourStyle Style::contour(const ContourSpec& spec) const {
+    for (const ContourStyle& c : contours)
+        if (c.spec.kind == spec.kind && std::abs(c.spec.k - spec.k) < 1e-9) return c;
+    return default_contour_style(spec);
+}
+
+Style parse_style(const std::string& text, const std::string& source, std::vector<StyleDiagnostic>* warnings) {
+    return Parser{text, source, warnings}.parse();
+}
+
+Style load_style(const std::string& path, std::vector<StyleDiagnostic>* warnings) {
+    std::ifstream in(path, std::ios::binary);
+    if (!in) throw Error(path + ": cannot be read");
+    std::ostringstream text;
+    text << in.rdbuf();
+    return parse_style(text.str(), path, warnings);
+}
+
+} // namespace snaxels

@@ -1,0 +1,74 @@
+#pragma once
+/// The XML style language (reference: docs/styles.md): what to draw of each
+/// contour kind, visible and hidden, and how; the canvas; the light.
+
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "core/scene/camera.h"
+#include "core/snaxel/contour_function.h"
+
+namespace snaxels {
+
+struct StrokeStyle {
+    bool draw = true;
+    std::string colour = "#111111";
+    double width = 1.5;
+    double opacity = 1.0;
+    std::vector<double> dash;           ///< on, off, ... in pixels; empty: solid
+    bool dash_on_surface = false;       ///< dashes fastened to the surface, not the screen
+    std::string cap = "round";          ///< butt | round | square
+    std::string join = "round";         ///< miter | round | bevel
+    double smoothing = 0.0;             ///< Bézier fit tolerance in pixels; 0: polyline
+};
+
+struct ContourStyle {
+    ContourSpec spec;
+    StrokeStyle visible, hidden;
+};
+
+struct Style {
+    int width = 800, height = 800;
+    double margin = 32.0;               ///< pixels between the mesh's bounding circle and the edge
+    std::string background = "#ffffff"; ///< or "none"
+    std::optional<Light> light;
+    std::vector<ContourStyle> contours;
+
+    /// The style of @p spec: the matching <contour>, or the defaults for its kind.
+    ContourStyle contour(const ContourSpec& spec) const;
+};
+
+/// Default strokes of a kind: the colour of its kind, solid when visible,
+/// thinner, faded and dashed when hidden.
+ContourStyle default_contour_style(const ContourSpec& spec);
+
+/// The built-in style: the visual contour in ink, hidden lines dashed.
+Style default_style();
+
+/// A problem in a style document at a line and column (1-based).
+struct StyleDiagnostic {
+    int line = 0, column = 0;
+    std::string message;
+};
+
+/// A style that cannot be used; what() is "SOURCE:LINE:COL: message".
+class StyleError : public std::runtime_error {
+  public:
+    StyleError(const std::string& source, StyleDiagnostic diagnostic);
+    const StyleDiagnostic& diagnostic() const { return diagnostic_; }
+
+  private:
+    StyleDiagnostic diagnostic_;
+};
+
+/// Parses style XML. Errors throw StyleError; unknown elements and
+/// attributes are added to @p warnings (named, with their position) and
+/// otherwise ignored. @p source names the document in messages.
+Style parse_style(const std::string& text, const std::string& source, std::vector<StyleDiagnostic>* warnings);
+
+/// Reads and parses a style file; an unreadable file throws snaxels::Error.
+Style load_style(const std::string& path, std::vector<StyleDiagnostic>* warnings);
+
+} // namespace snaxels
