@@ -2,7 +2,10 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cerrno>
 #include <cmath>
+#include <cstring>
+#include <filesystem>
 #include <fstream>
 #include <set>
 #include <sstream>
@@ -32,6 +35,8 @@ struct Parser {
     std::vector<StyleDiagnostic>* warnings;
 
     StyleDiagnostic where(std::ptrdiff_t offset, std::string message) const {
+        // Node offsets point at the element name: report its '<'.
+        if (offset > 0 && offset <= std::ptrdiff_t(text.size()) && text[std::size_t(offset - 1)] == '<') --offset;
         StyleDiagnostic d;
         d.line = 1;
         d.column = 1;
@@ -277,8 +282,10 @@ Style parse_style(const std::string& text, const std::string& source, std::vecto
 }
 
 Style load_style(const std::string& path, std::vector<StyleDiagnostic>* warnings) {
+    std::error_code ec;
+    if (std::filesystem::is_directory(path, ec)) throw Error(path + ": is a directory, not a style file");
     std::ifstream in(path, std::ios::binary);
-    if (!in) throw Error(path + ": cannot be read");
+    if (!in) throw Error(path + ": cannot be read (" + std::strerror(errno) + ")");
     std::ostringstream text;
     text << in.rdbuf();
     return parse_style(text.str(), path, warnings);

@@ -1,0 +1,10 @@
+#!/usr/bin/env bash
+# A style preset rendered through the CLI and Chromium shows its colours.
+#   preset_test.sh CLI CHECKER PRESET.xml MESH OUTDIR NAME VIEW UP -- BACKGROUND COLOUR:MIN...
+set -euo pipefail
+cli=$1; checker=$2; preset=$3; mesh=$4; outdir=$5; name=$6; view=$7; up=$8; shift 9
+here=$(dirname "$0")
+mkdir -p "$outdir"
+"$cli" contours "$mesh" --style "$preset" --view-dir "$view" --up "$up" --svg "$outdir/$name.svg"
+bash "$here/render_svg.sh" "$outdir/$name.svg" "$outdir/$name.png" 800 800
+QT_QPA_PLATFORM=offscreen "$checker" "$outdir/$name.png" "$@"

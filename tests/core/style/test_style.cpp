@@ -1,0 +1,147 @@
+#include <gtest/gtest.h>
+
+#include <filesystem>
+
+#include "core/export/bezier.h"
+#include "core/export/drawing.h"
+#include "core/mesh/import.h"
+#include "core/style/style.h"
+#include "tests/support/assets.h"
+
+using namespace snaxels;
+
+namespace {
+
+StyleDiagnostic error_of(const std::string& xml) {
+    try {
+        parse_style(xml, "test.xml", nullptr);
+    } catch (const StyleError& e) {
+        return e.diagnostic();
+    }
+    ADD_FAILURE() << "no error for " << xml;
+    return {};
+}
+
+} // namespace
+
+TEST(Style, ParsesEveryElementAndAttribute) {
+    std::vector<StyleDiagnostic> warnings;
+    const Style s = parse_style(R"(<style version="1">
+  <canvas width="640" height="480" margin="10" background="none"/>
+  <light pos="1,2,3"/>
+  <contour kind="visual">
+    <visible stroke="#abc" width="2.5" opacity="0.8" dash="3" cap="square" join="bevel" smoothing="0.5"/>
+    <hidden draw="false"/>
+  </contour>
+  <contour kind="gleam" k="0.9"><visible stroke="orange"/></contour>
+</style>)", "t.xml", &warnings);
+    EXPECT_TRUE(warnings.empty());
+    EXPECT_EQ(s.width, 640);
+    EXPECT_EQ(s.height, 480);
+    EXPECT_EQ(s.margin, 10.0);
+    EXPECT_EQ(s.background, "none");
+    ASSERT_TRUE(s.light && s.light->point);
+    EXPECT_EQ(s.light->pos, glm::dvec3(1, 2, 3));
+    ASSERT_EQ(s.contours.size(), 2u);
+    const ContourStyle v = s.contour(ContourSpec{});
+    EXPECT_EQ(v.visible.colour, "#abc");
+    EXPECT_EQ(v.visible.width, 2.5);
+    EXPECT_EQ(v.visible.opacity, 0.8);
+    EXPECT_EQ(v.visible.dash, (std::vector<double>{3, 3}));
+    EXPECT_EQ(v.visible.cap, "square");
+    EXPECT_EQ(v.visible.join, "bevel");
+    EXPECT_EQ(v.visible.smoothing, 0.5);
+    EXPECT_FALSE(v.hidden.draw);
+    EXPECT_EQ(s.contour(ContourSpec{ContourKind::Gleam, 0.9}).visible.colour, "orange");
+    // A kind the style does not name gets its defaults.
+    EXPECT_EQ(s.contour(ContourSpec{ContourKind::Shadow, 0.0}).hidden.dash, (std::vector<double>{4, 3}));
+}
+
+TEST(Style, ErrorsNameLineAndColumn) {
+    auto d = error_of("<style>\n  <canvas width=\"abc\"/>\n</style>");
+    EXPECT_EQ(d.line, 2);
+    EXPECT_EQ(d.column, 3);
+    EXPECT_NE(d.message.find("width=\"abc\" is not a number"), std::string::npos);
+    d = error_of("<style>\n<contour kind=\"isophote\"/>\n</style>");
+    EXPECT_EQ(d.line, 2);
+    EXPECT_NE(d.message.find("needs k"), std::string::npos);
+    d = error_of("<style>\n  <contour kind=\"visual\">\n    <visible stroke=\"blu\"/>\n</contour></style>");
+    EXPECT_EQ(d.line, 3);
+    EXPECT_EQ(d.column, 5);
+    EXPECT_NE(d.message.find("not a colour"), std::string::npos);
+    d = error_of("<style><contour kind=\"visual\"/><contour kind=\"visual\"/></style>");
+    EXPECT_NE(d.message.find("a second <contour> for visual"), std::string::npos);
+    EXPECT_NE(error_of("<style><light dir=\"1,2\"/></style>").message.find("three numbers"), std::string::npos);
+    EXPECT_NE(error_of("<style><contour kind=\"outline\"/></style>").message.find("must be visual"), std::string::npos);
+    EXPECT_NE(error_of("<styles/>").message.find("root element must be <style>"), std::string::npos);
+    EXPECT_NE(error_of("<style><canvas margin=\"500\"/></style>").message.find("no room"), std::string::npos);
+    d = error_of("<style>\n<canvas");
+    EXPECT_EQ(d.line, 2);
+    EXPECT_NE(d.message.find("malformed XML"), std::string::npos);
+    try {
+        parse_style("<style><canvas width=\"x\"/></style>", "my.xml", nullptr);
+    } catch (const StyleError& e) {
+        EXPECT_STREQ(e.what(), "my.xml:1:8: width=\"x\" is not a number");
+    }
+}
+
+TEST(Style, UnknownNamesAreWarnings) {
+    std::vector<StyleDiagnostic> warnings;
+    const Style s = parse_style("<style>\n<contour kind=\"visual\" colour=\"red\"><visible/><outline/></contour>\n<fills/>\n</style>",
+                                "w.xml", &warnings);
+    ASSERT_EQ(warnings.size(), 3u);
+    EXPECT_NE(warnings[0].message.find("unknown attribute 'colour' on <contour>"), std::string::npos);
+    EXPECT_NE(warnings[1].message.find("unknown element <outline>"), std::string::npos);
+    EXPECT_EQ(warnings[2].line, 3);
+    EXPECT_EQ(s.contours.size(), 1u);
+}
+
+TEST(Style, PresetsParseWithoutWarnings) {
+    int count = 0;
+    for (const auto& entry : std::filesystem::directory_iterator(SNAXELS_STYLES_DIR)) {
+        if (entry.path().extension() != ".xml") continue;
+        std::vector<StyleDiagnostic> warnings;
+        EXPECT_NO_THROW(load_style(entry.path().string(), &warnings)) << entry.path();
+        EXPECT_TRUE(warnings.empty()) << entry.path() << ": " << (warnings.empty() ? "" : warnings[0].message);
+        ++count;
+    }
+    EXPECT_GE(count, 3);
+}
+
+// Done-when 4: smoothed horse outline within tolerance of the polyline, with
+// at least three times fewer path commands.
+TEST(Bezier, HorseOutlineSmoothedWithinToleranceWithFewerCommands) {
+    const LoadedMesh m = import_mesh(test::asset("horse.ply"));
+    const MeshTopology topo = build_topology(m.mesh);
+    const SnaxelEngine engine(topo);
+    Camera cam;
+    cam.view_dir = glm::normalize(glm::dvec3(1.0, 0.2, 0.3));
+    cam.up = {0, 0, 1};
+    const ContourResult r = engine.compute({}, cam, default_light(cam));
+    const glm::dvec3 centre = 0.5 * (m.report.bbox_min + m.report.bbox_max);
+    const ImageProjection proj(cam, centre, 0.5 * glm::length(m.report.bbox_max - m.report.bbox_min), 800, 800);
+    const Drawing d = make_drawing(engine, {r}, proj);
+    const double tol = 0.5;
+    std::size_t points = 0, commands = 0;
+    for (const DrawnLoop& loop : d.contours[0].loops) {
+        const BezierChain chain = smooth_polyline(loop.q, loop.closed, tol);
+        points += loop.q.size();
+        commands += chain.c1.size();
+        const std::vector<glm::dvec2> curve = sample_chain(chain, 24);
+        auto dist = [](const glm::dvec2& p, const std::vector<glm::dvec2>& line, bool closed) {
+            double best = 1e300;
+            const std::size_t n = line.size();
+            for (std::size_t i = 0; i + (closed ? 0 : 1) < n; ++i) {
+                const glm::dvec2 a = line[i], b = line[(i + 1) % n], ab = b - a;
+                const double l2 = glm::dot(ab, ab);
+                const double t = l2 > 0 ? std::clamp(glm::dot(p - a, ab) / l2, 0.0, 1.0) : 0.0;
+                best = std::min(best, glm::length(p - (a + t * ab)));
+            }
+            return best;
+        };
+        for (const glm::dvec2& p : loop.q) ASSERT_LE(dist(p, curve, false), tol + 1e-6);
+        for (const glm::dvec2& c : curve) ASSERT_LE(dist(c, loop.q, loop.closed), tol + 1e-6);
+    }
+    std::printf("horse outline: %zu polyline points, %zu Bezier segments\n", points, commands);
+    EXPECT_LE(3 * commands, points);
+}
