@@ -6,6 +6,7 @@
 #include <memory>
 
 #include "core/error.h"
+#include "core/export/dash_phase.h"
 #include "core/export/svg.h"
 #include "core/util/atomic_file.h"
 #include "core/visibility/visibility.h"
@@ -44,7 +45,19 @@ AnimationOutput run_animation(const LoadedMesh& mesh, const std::string& mesh_pa
         if (ec) throw Error("cannot create " + job.frames_dir + ": " + ec.message());
     }
     std::vector<ContourTracker> trackers;
-    for (const ContourSpec& spec : job.kinds) trackers.emplace_back(topology, spec, job.engine);
+    // Surface-fastened dashes: a phase carried by the surface, per kind.
+    std::vector<std::unique_ptr<SurfaceDashPhase>> dash_phases;
+    for (const ContourSpec& spec : job.kinds) {
+        trackers.emplace_back(topology, spec, job.engine);
+        const ContourStyle cs = job.style.contour(spec);
+        const StrokeStyle* surface = cs.visible.dash_on_surface && !cs.visible.dash.empty() ? &cs.visible
+                                     : cs.hidden.dash_on_surface && !cs.hidden.dash.empty() ? &cs.hidden
+                                                                                             : nullptr;
+        double period = 0.0;
+        if (surface)
+            for (const double d : surface->dash) period += d;
+        dash_phases.push_back(period > 0.0 ? std::make_unique<SurfaceDashPhase>(period) : nullptr);
+    }
     std::unique_ptr<RayScene> rays;
     const SnaxelEngine engine(topology);
     std::vector<AnimationFrame> recorded;
@@ -84,6 +97,25 @@ AnimationOutput run_animation(const LoadedMesh& mesh, const std::string& mesh_pa
         out.tracking_ms.push_back(ms);
         const ImageProjection projection(camera, centre, radius, job.style.width, job.style.height, job.style.margin);
         frame.drawing = make_drawing(engine, results, projection, job.visibility ? &visibility : nullptr);
+        for (std::size_t c = 0; c < trackers.size(); ++c) {
+            if (!dash_phases[c]) continue;
+            const Fronts& fronts = results[c].fronts;
+            std::vector<PhaseLoop> loops;
+            for (std::size_t l = 0; l < fronts.loops.size(); ++l) {
+                PhaseLoop pl;
+                pl.q = frame.drawing.contours[c].loops[l].q;
+                pl.closed = fronts.loops[l].closed;
+                fronts.for_each_in_loop(fronts.loops[l], [&](std::int32_t s) {
+                    const Snaxel& sn = fronts.snaxels[s];
+                    pl.surface.push_back({sn.inside, sn.outside, sn.t});
+                });
+                loops.push_back(std::move(pl));
+            }
+            const std::vector<double> phases = dash_phases[c]->step(loops, [&](const SurfacePoint& sp) {
+                return projection.project((1.0 - sp.t) * topology.positions[sp.a] + sp.t * topology.positions[sp.b]);
+            });
+            for (std::size_t l = 0; l < phases.size(); ++l) frame.drawing.contours[c].loops[l].dash_phase = phases[l];
+        }
         for (auto& contour : frame.drawing.contours)
             for (auto& loop : contour.loops) loop.p.clear(); // 3-D positions are not exported
         if (!job.frames_dir.empty()) {

@@ -24,6 +24,7 @@ struct ParamLoop {
     std::vector<double> cum; ///< arc length at each point from point 0
     double length = 0.0;
     double anchor = 0.0;     ///< arc length where u = 0 (closed loops)
+    double dash_phase = 0.0; ///< surface-fastened dash phase at point 0
     std::vector<std::uint64_t> ids;
     /// QI changes: (u, qi after it), sorted by u; `qi0` holds at u = 0.
     std::vector<std::pair<double, int>> changes;
@@ -150,6 +151,7 @@ ParamLoop parameterize(int frame, const DrawnLoop& dl, const AnimatedLoop& al) {
     ParamLoop p;
     p.frame = frame;
     p.closed = dl.closed;
+    p.dash_phase = dl.dash_phase;
     p.pts = dl.q;
     p.ids = al.ids;
     const std::size_t n = p.pts.size();
@@ -340,6 +342,41 @@ class Writer {
         return worst <= options_.max_sweep_px;
     }
 
+    // Surface-fastened dashes: the dash phase where the path starts, per
+    // frame (unwrapped so it interpolates), animated on stroke-dashoffset.
+    std::string dash_offset_animation(const RunSequence& rs, const StrokeStyle& stroke, bool closed_path, int first,
+                                      const char* dur) const {
+        double period = 0.0;
+        for (const double d : stroke.dash) period += d;
+        if (period <= 0.0) return {};
+        std::vector<std::vector<glm::dvec2>> offsets; // 1-D values as points, for simplify_time
+        double previous = 0.0;
+        for (std::size_t f = 0; f < rs.frames.size(); ++f) {
+            const ParamLoop& p = *rs.frames[f].first;
+            const double start = p.arc_of_u(closed_path ? 0.0 : rs.frames[f].second.u0);
+            double o = std::fmod(p.dash_phase + start, period);
+            if (f > 0) o += period * std::round((previous - o) / period);
+            previous = o;
+            offsets.push_back({glm::dvec2(o, 0.0)});
+        }
+        std::vector<std::uint8_t> key(offsets.size(), 0);
+        key.front() = key.back() = 1;
+        simplify_time(offsets, 0, offsets.size() - 1, options_.tolerance_px, false, key);
+        const std::size_t total = frames_.size();
+        std::string times, values;
+        auto add = [&](double t, double v) {
+            if (!times.empty()) times += ';', values += ';';
+            times += key_time(t);
+            svg::append_number(values, v);
+        };
+        if (first > 0) add(0.0, offsets.front()[0].x);
+        for (std::size_t f = 0; f < offsets.size(); ++f)
+            if (key[f]) add(double(rs.frames[f].first->frame) / double(total), offsets[f][0].x);
+        add(1.0, offsets.back()[0].x);
+        return "<animate attributeName=\"stroke-dashoffset\" dur=\"" + std::string(dur) +
+               "\" repeatCount=\"indefinite\" calcMode=\"linear\" keyTimes=\"" + times + "\" values=\"" + values + "\"/>";
+    }
+
     static bool abrupt(const ParamLoop& a, const ParamLoop& b) {
         const double dl = std::abs(b.length - a.length);
         if (dl > 0.1 * std::max(a.length, b.length) && dl > 10.0) return true;
@@ -398,7 +435,7 @@ class Writer {
                 RunSequence part = rs;
                 const std::size_t b = std::min(rs.frames.size(), a + chunk + 1);
                 part.frames.assign(rs.frames.begin() + long(a), rs.frames.begin() + long(b));
-                emit(part, out, b < rs.frames.size(), stroke.smoothing);
+                emit(part, out, b < rs.frames.size(), stroke);
                 if (b >= rs.frames.size()) break;
             }
         }
@@ -437,7 +474,8 @@ class Writer {
 
     /// @p handover: the last frame belongs to the next chunk (animate toward
     /// it, but stop showing this path when it begins).
-    void emit(const RunSequence& rs, std::string& out, bool handover, double smoothing) {
+    void emit(const RunSequence& rs, std::string& out, bool handover, const StrokeStyle& stroke) {
+        const double smoothing = stroke.smoothing;
         // Vertices sit on a grid fixed in u for the whole run, at the loops'
         // own sampling density (their snaxel spacing), so they glide with the
         // curve from frame to frame; grid points outside a frame's span fold
@@ -553,6 +591,7 @@ class Writer {
                    "\" repeatCount=\"indefinite\" calcMode=\"linear\" keyTimes=\"" + times +
                    "\" values=\"" + values + "\"/>";
         }
+        if (stroke.dash_on_surface) out += dash_offset_animation(rs, stroke, closed_path, first, dur);
         out += "</path>\n";
         ++stats_.paths;
         stats_.keyframes += kept;

@@ -26,6 +26,8 @@ struct DrawnLoop {
     std::vector<int> qi;       ///< per snaxel; empty when visibility was not computed
     std::vector<glm::dvec2> change_before; ///< per snaxel, where qi changes before it (see LoopVisibility)
     std::vector<DrawnRun> runs; ///< empty when visibility was not computed
+    /// Phase (pixels into the dash pattern) at q[0] for surface-fastened dashes.
+    double dash_phase = 0.0;
 };
 
 struct DrawnContour {

@@ -1,5 +1,6 @@
 #include "core/export/svg.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 
@@ -171,12 +172,43 @@ const char* default_stroke(ContourKind kind) {
 
 namespace {
 
-void append_path(std::string& out, const std::vector<glm::dvec2>& q, bool closed, const StrokeStyle& stroke) {
+double dash_period(const StrokeStyle& stroke) {
+    double period = 0.0;
+    for (const double d : stroke.dash) period += d;
+    return period;
+}
+
+// @p phase: where in the dash pattern the path starts, for surface-fastened
+// dashes (ignored otherwise).
+void append_path(std::string& out, const std::vector<glm::dvec2>& q, bool closed, const StrokeStyle& stroke,
+                 double phase) {
     if (q.size() < 2) return;
     out += "<path d=\"";
     if (stroke.smoothing > 0.0) svg::append_chain_data(out, smooth_polyline(q, closed, stroke.smoothing));
     else svg::append_path_data(out, q, closed);
-    out += "\"/>\n";
+    out += "\"";
+    const double period = dash_period(stroke);
+    if (stroke.dash_on_surface && period > 0.0) {
+        out += " stroke-dashoffset=\"";
+        svg::append_number(out, std::fmod(phase, period));
+        out += "\"";
+    }
+    out += "/>\n";
+}
+
+// Arc length along the loop from its first point to the point nearest @p p.
+double arc_to(const std::vector<glm::dvec2>& loop, bool closed, const glm::dvec2& p) {
+    double best = 1e300, at = 0.0, arc = 0.0;
+    const std::size_t n = loop.size(), segments = closed ? n : n - 1;
+    for (std::size_t s = 0; s < segments; ++s) {
+        const glm::dvec2 a = loop[s], b = loop[(s + 1) % n], ab = b - a;
+        const double l2 = glm::dot(ab, ab);
+        const double t = l2 > 0.0 ? std::clamp(glm::dot(p - a, ab) / l2, 0.0, 1.0) : 0.0;
+        const double d = glm::length(p - (a + t * ab));
+        if (d < best) best = d, at = arc + t * std::sqrt(l2);
+        arc += std::sqrt(l2);
+    }
+    return at;
 }
 
 } // namespace
@@ -197,11 +229,16 @@ std::string to_svg(const Drawing& drawing, const Style& style) {
             out += svg::kind_group(c.spec, stroke);
             for (const DrawnLoop& loop : c.loops) {
                 if (!with_visibility) {
-                    append_path(out, loop.q, loop.closed, stroke);
+                    append_path(out, loop.q, loop.closed, stroke, loop.dash_phase);
                     continue;
                 }
-                for (const DrawnRun& run : loop.runs)
-                    if ((run.qi > 0) == hidden) append_path(out, run.q, run.closed, stroke);
+                for (const DrawnRun& run : loop.runs) {
+                    if ((run.qi > 0) != hidden || run.q.empty()) continue;
+                    const double phase = stroke.dash_on_surface && !run.closed
+                                             ? loop.dash_phase + arc_to(loop.q, loop.closed, run.q.front())
+                                             : loop.dash_phase;
+                    append_path(out, run.q, run.closed, stroke, phase);
+                }
             }
             out += "</g>\n";
         }

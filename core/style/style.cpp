@@ -164,10 +164,6 @@ struct Parser {
             }
         }
         s.dash_on_surface = choice(node, "dash-space", s.dash_on_surface ? "surface" : "screen", {"screen", "surface"}) == "surface";
-        if (s.dash_on_surface) {
-            warn(node, "dash-space=\"surface\" is not supported yet; the dashes are fastened to the screen");
-            s.dash_on_surface = false;
-        }
         s.cap = choice(node, "cap", s.cap, {"butt", "round", "square"});
         s.join = choice(node, "join", s.join, {"miter", "round", "bevel"});
         s.smoothing = number(node, "smoothing", s.smoothing, 0.0, 100.0);
