@@ -51,6 +51,13 @@ ContourSpec ContourSpec::parse(const std::string& text) {
 }
 
 double ContourFunction::operator()(const glm::dvec3& p, const glm::dvec3& n) const {
+    const double f = evaluate(p, n);
+    // At the eye or a point light itself V or L is undefined: such a point
+    // is taken to lie on the contour.
+    return std::isfinite(f) ? f : 0.0;
+}
+
+double ContourFunction::evaluate(const glm::dvec3& p, const glm::dvec3& n) const {
     const glm::dvec3 v = camera_.to_viewer(p);
     const double nv = glm::dot(n, v);
     switch (spec_.kind) {

@@ -35,6 +35,8 @@ class ContourFunction {
     double operator()(const glm::dvec3& p, const glm::dvec3& n) const;
 
   private:
+    double evaluate(const glm::dvec3& p, const glm::dvec3& n) const;
+
     ContourSpec spec_;
     Camera camera_;
     Light light_;

@@ -207,3 +207,22 @@ TEST(ContourSpec, ParsesAndRejects) {
     EXPECT_THROW(ContourSpec::parse("visual:1"), Error);
     EXPECT_THROW(ContourSpec::parse("outline"), Error);
 }
+
+// An eye or a point light exactly at a vertex leaves V or L undefined there;
+// the engine must still label every vertex and keep its invariants.
+TEST(Engine, EyeOrLightAtAVertex) {
+    const LoadedMesh m = load_mesh("proc:sphere:2000");
+    const MeshTopology topo = build_topology(m.mesh);
+    const SnaxelEngine engine(topo);
+    EngineOptions options;
+    options.check_invariants = true;
+    Camera cam;
+    cam.projection = Camera::Projection::Perspective;
+    cam.eye = topo.positions[7];
+    cam.target = glm::dvec3(0.0);
+    Light light;
+    light.point = true;
+    light.pos = topo.positions[11];
+    for (const ContourSpec kind : {ContourSpec{}, ContourSpec{ContourKind::Shadow, 0.0}, ContourSpec{ContourKind::Gleam, 0.8}})
+        EXPECT_NO_THROW(engine.compute(kind, cam, light, options)) << kind.label();
+}
