@@ -1,6 +1,8 @@
 #include "core/mesh/import.h"
 
+#include <algorithm>
 #include <array>
+#include <cctype>
 #include <cerrno>
 #include <cstring>
 #include <filesystem>
@@ -57,7 +59,7 @@ std::string binary_ply_problem(std::ifstream& in, std::uintmax_t file_size) {
         return 0;
     };
     bool binary = false;
-    std::uintmax_t minimum = 0, count = 0, element_min = 0;
+    std::uintmax_t minimum = 0, count = 0, element_min = 0, elements = 0;
     std::string element;
     auto close_element = [&] { minimum += count * element_min; };
     while (std::getline(in, line)) {
@@ -71,8 +73,10 @@ std::string binary_ply_problem(std::ifstream& in, std::uintmax_t file_size) {
             binary = fmt.rfind("binary", 0) == 0;
         } else if (word == "element") {
             close_element();
-            words >> element >> count;
+            count = 0;
+            if (!(words >> element >> count)) return "the PLY header has a malformed element line: " + line;
             element_min = 0;
+            elements += count;
         } else if (word == "property") {
             std::string type;
             words >> type;
@@ -87,7 +91,17 @@ std::string binary_ply_problem(std::ifstream& in, std::uintmax_t file_size) {
             }
         } else if (word == "end_header") {
             close_element();
-            if (!binary) return {};
+            if (!binary) {
+                // One element per line: a body with fewer lines is truncated
+                // (and Assimp would read past it).
+                std::uintmax_t lines = 0;
+                while (lines < elements && std::getline(in, line))
+                    if (line.find_first_not_of(" \t\r") != std::string::npos) ++lines;
+                if (lines < elements)
+                    return "the ASCII PLY file is truncated (its header declares " + std::to_string(elements) +
+                           " elements, the file has " + std::to_string(lines) + " data lines)";
+                return {};
+            }
             const auto body = file_size - static_cast<std::uintmax_t>(in.tellg());
             if (body < minimum)
                 return "the binary PLY file is truncated (its header needs at least " +
@@ -97,6 +111,62 @@ std::string binary_ply_problem(std::ifstream& in, std::uintmax_t file_size) {
         }
     }
     return "the PLY header has no end_header line";
+}
+
+// OFF: the counts line must not promise more vertex and face lines than
+// the file has (Assimp would allocate and loop for them).
+std::string off_problem(std::ifstream& in) {
+    in.clear();
+    in.seekg(0);
+    std::string line, first;
+    if (!std::getline(in, first)) return {};
+    std::istringstream head(first);
+    std::string magic;
+    head >> magic;
+    if (magic != "OFF" && magic != "COFF" && magic != "NOFF" && magic != "CNOFF") return {};
+    long long nv = -1, nf = -1;
+    if (!(head >> nv >> nf)) {
+        while (std::getline(in, line)) {
+            const auto at = line.find_first_not_of(" \t\r");
+            if (at == std::string::npos || line[at] == '#') continue;
+            std::istringstream counts(line);
+            if (!(counts >> nv >> nf)) return "the OFF file's counts line is malformed: " + line;
+            break;
+        }
+    }
+    if (nv < 0 || nf < 0) return "the OFF file has no valid vertex and face counts";
+    long long lines = 0;
+    while (lines < nv + nf && std::getline(in, line)) {
+        const auto at = line.find_first_not_of(" \t\r");
+        if (at != std::string::npos && line[at] != '#') ++lines;
+    }
+    if (lines < nv + nf)
+        return "the OFF file is truncated (it declares " + std::to_string(nv) + " vertices and " + std::to_string(nf) +
+               " faces, the file has " + std::to_string(lines) + " data lines)";
+    return {};
+}
+
+// Binary STL: 80-byte header, a triangle count, 50 bytes per triangle.
+std::string binary_stl_problem(std::ifstream& in, std::uintmax_t file_size, const std::string& path) {
+    std::string ext = fs::path(path).extension().string();
+    std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+    if (ext != ".stl" || file_size < 84) return {};
+    in.clear();
+    in.seekg(0);
+    char head[84];
+    in.read(head, 84);
+    if (std::string(head, 5) == "solid") {
+        // ASCII, unless the size matches the binary layout (some binary files start with "solid").
+        std::uint32_t n = 0;
+        std::memcpy(&n, head + 80, 4);
+        if (84 + 50 * std::uintmax_t(n) != file_size) return {};
+    }
+    std::uint32_t n = 0;
+    std::memcpy(&n, head + 80, 4);
+    if (84 + 50 * std::uintmax_t(n) > file_size)
+        return "the binary STL file is truncated (it declares " + std::to_string(n) + " triangles, room for " +
+               std::to_string((file_size - 84) / 50) + ")";
+    return {};
 }
 
 void check_readable(const std::string& path) {
@@ -113,9 +183,9 @@ void check_readable(const std::string& path) {
     if (n == 0) throw Error(path + ": the file is empty");
     if (const char* kind = non_mesh_kind(head, n))
         throw Error(path + ": is " + kind + ", not a mesh file");
-    if (const std::string problem = binary_ply_problem(in, fs::file_size(path, ec));
-        !problem.empty())
-        throw Error(path + ": " + problem);
+    const std::uintmax_t size = fs::file_size(path, ec);
+    for (const std::string& problem : {binary_ply_problem(in, size), off_problem(in), binary_stl_problem(in, size, path)})
+        if (!problem.empty()) throw Error(path + ": " + problem);
 }
 
 // Assimp's messages are written for developers; say the common ones plainly.
