@@ -1,6 +1,9 @@
 // snaxels-cli: every engine feature without a display.
 
+#include <csignal>
 #include <exception>
+
+#include <unistd.h>
 #include <iostream>
 #include <new>
 
@@ -43,9 +46,25 @@ void print_help() {
 } // namespace
 } // namespace snaxels::cli
 
+namespace {
+
+// A fault inside a third-party reader (or a bug of ours) still ends with a
+// one-line message and a distinct exit code rather than a core dump.
+extern "C" void on_fatal_signal(int sig) {
+    static const char message[] = "snaxels-cli: internal error (a fatal signal while processing the input); "
+                                  "please report it with the input file\n";
+    const ssize_t ignored = ::write(2, message, sizeof message - 1);
+    (void)ignored;
+    (void)sig;
+    ::_exit(3);
+}
+
+} // namespace
+
 int main(int argc, char** argv) {
     using namespace snaxels::cli;
     std::ios::sync_with_stdio(false);
+    for (const int sig : {SIGABRT, SIGSEGV, SIGBUS, SIGFPE, SIGILL}) std::signal(sig, on_fatal_signal);
     if (argc < 2) {
         print_help();
         return 2;
