@@ -14,6 +14,7 @@
 #include <QProgressBar>
 #include <QSettings>
 #include <QStatusBar>
+#include <QTimer>
 #include <QtConcurrent/QtConcurrentRun>
 
 #include "core/error.h"
@@ -28,7 +29,9 @@ constexpr int kMaxRecent = 8;
 LoadResult loadInBackground(const QString& spec) {
     LoadResult result;
     try {
-        result.mesh = std::make_shared<const LoadedMesh>(load_mesh(spec.toStdString()));
+        auto mesh = std::make_shared<const LoadedMesh>(load_mesh(spec.toStdString()));
+        result.scene = make_contour_scene(*mesh);
+        result.mesh = std::move(mesh);
     } catch (const std::bad_alloc&) {
         result.error = spec + ": out of memory while loading";
     } catch (const std::exception& e) {
@@ -41,14 +44,22 @@ LoadResult loadInBackground(const QString& spec) {
 
 MainWindow::MainWindow(QWidget* parent)
     : QMainWindow(parent), view_(new MeshView(this)), meshLabel_(new QLabel(this)),
-      busy_(new QProgressBar(this)) {
+      busy_(new QProgressBar(this)), contourLabel_(new QLabel(this)), contourTimer_(new QTimer(this)) {
     setWindowTitle("snaxels");
     setCentralWidget(view_);
     setAcceptDrops(true);
     busy_->setRange(0, 0); // indeterminate: importers report no progress
     busy_->setMaximumWidth(160);
     busy_->hide();
+    statusBar()->addPermanentWidget(contourLabel_);
     statusBar()->addPermanentWidget(meshLabel_);
+    // Contours follow the camera: recomputed off the GUI thread shortly
+    // after it stops moving, the newest request winning.
+    contourTimer_->setSingleShot(true);
+    contourTimer_->setInterval(30);
+    connect(contourTimer_, &QTimer::timeout, this, &MainWindow::startContours);
+    connect(view_, &MeshView::cameraChanged, this, &MainWindow::scheduleContours);
+    connect(&contourWatcher_, &QFutureWatcher<OverlayResult>::finished, this, &MainWindow::onContoursFinished);
     statusBar()->addPermanentWidget(busy_);
     createMenus();
     connect(&watcher_, &QFutureWatcher<LoadResult>::finished, this, &MainWindow::onLoadFinished);
@@ -58,7 +69,40 @@ MainWindow::MainWindow(QWidget* parent)
     restoreState(settings.value("window/state").toByteArray());
 }
 
-MainWindow::~MainWindow() { watcher_.waitForFinished(); }
+MainWindow::~MainWindow() {
+    watcher_.waitForFinished();
+    contourWatcher_.waitForFinished();
+}
+
+void MainWindow::scheduleContours() {
+    if (scene_) contourTimer_->start();
+}
+
+void MainWindow::startContours() {
+    if (!scene_) return;
+    if (contourWatcher_.isRunning()) {
+        contoursPending_ = true;
+        return;
+    }
+    contoursPending_ = false;
+    const std::shared_ptr<ContourScene> scene = scene_;
+    const Camera camera = view_->camera();
+    contourWatcher_.setFuture(QtConcurrent::run([scene, camera] {
+        return compute_overlay(*scene, camera, {ContourSpec{}, ContourSpec{ContourKind::Shadow, 0.0}});
+    }));
+}
+
+void MainWindow::onContoursFinished() {
+    OverlayResult result = contourWatcher_.result();
+    if (contoursPending_) { // the camera moved meanwhile: this result is stale
+        startContours();
+        return;
+    }
+    contourLoops_ = result.loops;
+    contourLabel_->setText(tr("%1 loops, %2 snaxels, %3 ms").arg(result.loops).arg(result.snaxels).arg(result.ms, 0, 'f', 1));
+    view_->setContours(std::move(result.strips));
+    emit contoursUpdated();
+}
 
 void MainWindow::createMenus() {
     QMenu* file = menuBar()->addMenu(tr("&File"));
@@ -107,8 +151,11 @@ void MainWindow::onLoadFinished() {
         emit loadFailed(result.error);
         return;
     }
+    if (contourWatcher_.isRunning()) contoursPending_ = true; // its contours are of the old mesh
     mesh_ = result.mesh;
-    view_->setMesh(mesh_->mesh);
+    scene_ = result.scene;
+    view_->setContours({});
+    view_->setMesh(mesh_->mesh); // frames the camera, which schedules contours
     const MeshReport& r = mesh_->report;
     meshLabel_->setText(tr("%1 vertices, %2 faces, %3 boundary edges%4")
                             .arg(r.vertices)

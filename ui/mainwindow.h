@@ -9,8 +9,10 @@
 #include <QMainWindow>
 
 #include "core/mesh/build.h"
+#include "ui/contour_overlay.h"
 
 class QLabel;
+class QTimer;
 class QMenu;
 class QProgressBar;
 
@@ -21,6 +23,7 @@ class MeshView;
 /// What a background load produces: a mesh or the one-line reason it failed.
 struct LoadResult {
     std::shared_ptr<const LoadedMesh> mesh;
+    std::shared_ptr<ContourScene> scene;
     QString error;
 };
 
@@ -36,9 +39,14 @@ class MainWindow : public QMainWindow {
     MeshView* meshView() const { return view_; }
     bool isLoading() const { return watcher_.isRunning(); }
 
+    /// The contours currently drawn (for tests): loops and snaxels.
+    std::size_t contourLoops() const { return contourLoops_; }
+
   signals:
     void meshLoaded(const QString& spec);
     void loadFailed(const QString& message);
+    /// New contours are on the 3-D view.
+    void contoursUpdated();
 
   protected:
     void closeEvent(QCloseEvent* event) override;
@@ -48,6 +56,9 @@ class MainWindow : public QMainWindow {
   private:
     void createMenus();
     void onLoadFinished();
+    void scheduleContours();
+    void startContours();
+    void onContoursFinished();
     void addRecentFile(const QString& path);
     void rebuildRecentMenu();
 
@@ -58,6 +69,12 @@ class MainWindow : public QMainWindow {
     QFutureWatcher<LoadResult> watcher_;
     QString loadingSpec_;
     std::shared_ptr<const LoadedMesh> mesh_;
+    std::shared_ptr<ContourScene> scene_;
+    QLabel* contourLabel_;
+    QTimer* contourTimer_;
+    QFutureWatcher<OverlayResult> contourWatcher_;
+    bool contoursPending_ = false;
+    std::size_t contourLoops_ = 0;
 };
 
 } // namespace snaxels::ui

@@ -40,6 +40,36 @@ void main() {
 }
 )";
 
+// Contours over the surface: hidden ones dashed by their arc length.
+const char* kLineVertexShader = R"(#version 330 core
+layout(location = 0) in vec3 position;
+layout(location = 1) in vec3 colour;
+layout(location = 2) in float hidden;
+layout(location = 3) in float arc;
+uniform mat4 mvp;
+out vec3 lineColour;
+out float lineHidden;
+out float lineArc;
+void main() {
+    lineColour = colour;
+    lineHidden = hidden;
+    lineArc = arc;
+    gl_Position = mvp * vec4(position, 1.0);
+}
+)";
+
+const char* kLineFragmentShader = R"(#version 330 core
+in vec3 lineColour;
+in float lineHidden;
+in float lineArc;
+uniform float dashLength;
+out vec4 colour;
+void main() {
+    if (lineHidden > 0.5 && mod(lineArc, 2.0 * dashLength) > dashLength) discard;
+    colour = vec4(lineColour, lineHidden > 0.5 ? 0.55 : 1.0);
+}
+)";
+
 } // namespace
 
 MeshView::MeshView(QWidget* parent) : QOpenGLWidget(parent) {
@@ -52,6 +82,8 @@ MeshView::~MeshView() {
     makeCurrent();
     vbo_.destroy();
     vao_.destroy();
+    lineVbo_.destroy();
+    lineVao_.destroy();
     doneCurrent();
 }
 
@@ -81,7 +113,58 @@ void MeshView::clearMesh() {
     vertices_.clear();
     vertexCount_ = 0;
     dirty_ = true;
+    setContours({});
+}
+
+void MeshView::setContours(std::vector<ContourStrip> strips) {
+    strips_ = std::move(strips);
+    linesDirty_ = true;
     update();
+}
+
+Camera MeshView::camera() const {
+    // The inverse view matrix gives the eye and its axes in world space.
+    const glm::dmat4 inv = glm::inverse(viewMatrix());
+    Camera c;
+    c.projection = Camera::Projection::Perspective;
+    c.eye = glm::dvec3(inv * glm::dvec4(0, 0, 0, 1));
+    const glm::dvec3 forward = glm::normalize(glm::dvec3(inv * glm::dvec4(0, 0, -1, 0)));
+    c.target = c.eye + forward * distance_;
+    c.up = glm::normalize(glm::dvec3(inv * glm::dvec4(0, 1, 0, 0)));
+    c.fov_deg = kFovDeg;
+    return c;
+}
+
+void MeshView::uploadContours() {
+    lineVertices_.clear();
+    lineRanges_.clear();
+    for (const ContourStrip& s : strips_) {
+        if (s.points.size() < 2) continue;
+        const int first = static_cast<int>(lineVertices_.size() / 8);
+        float arc = 0.0f;
+        const std::size_t n = s.points.size() + (s.closed ? 1 : 0);
+        for (std::size_t i = 0; i < n; ++i) {
+            const glm::vec3 p = s.points[i % s.points.size()];
+            if (i) arc += glm::length(p - s.points[(i - 1) % s.points.size()]);
+            lineVertices_.insert(lineVertices_.end(), {p.x, p.y, p.z, s.colour.x, s.colour.y, s.colour.z,
+                                                       s.hidden ? 1.0f : 0.0f, arc});
+        }
+        lineRanges_.push_back({first, static_cast<int>(n)});
+    }
+    QOpenGLVertexArrayObject::Binder bind(&lineVao_);
+    lineVbo_.bind();
+    lineVbo_.allocate(lineVertices_.data(), static_cast<int>(lineVertices_.size() * sizeof(float)));
+    const int stride = 8 * sizeof(float);
+    glEnableVertexAttribArray(0);
+    glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, stride, nullptr);
+    glEnableVertexAttribArray(1);
+    glVertexAttribPointer(1, 3, GL_FLOAT, GL_FALSE, stride, reinterpret_cast<void*>(3 * sizeof(float)));
+    glEnableVertexAttribArray(2);
+    glVertexAttribPointer(2, 1, GL_FLOAT, GL_FALSE, stride, reinterpret_cast<void*>(6 * sizeof(float)));
+    glEnableVertexAttribArray(3);
+    glVertexAttribPointer(3, 1, GL_FLOAT, GL_FALSE, stride, reinterpret_cast<void*>(7 * sizeof(float)));
+    lineVbo_.release();
+    linesDirty_ = false;
 }
 
 void MeshView::resetCamera() {
@@ -91,6 +174,7 @@ void MeshView::resetCamera() {
     pan_ = glm::dvec3(0.0);
     distance_ = radius_ / std::sin(glm::radians(kFovDeg * 0.5)) * 1.05;
     update();
+    emit cameraChanged();
 }
 
 void MeshView::initializeGL() {
@@ -98,8 +182,13 @@ void MeshView::initializeGL() {
     program_.addShaderFromSourceCode(QOpenGLShader::Vertex, kVertexShader);
     program_.addShaderFromSourceCode(QOpenGLShader::Fragment, kFragmentShader);
     program_.link();
+    lineProgram_.addShaderFromSourceCode(QOpenGLShader::Vertex, kLineVertexShader);
+    lineProgram_.addShaderFromSourceCode(QOpenGLShader::Fragment, kLineFragmentShader);
+    lineProgram_.link();
     vao_.create();
     vbo_.create();
+    lineVao_.create();
+    lineVbo_.create();
     glReady_ = true;
     dirty_ = true;
 }
@@ -141,9 +230,34 @@ void MeshView::paintGL() {
     program_.bind();
     glUniformMatrix4fv(program_.uniformLocation("mvp"), 1, GL_FALSE, glm::value_ptr(mvp));
     glUniformMatrix4fv(program_.uniformLocation("modelView"), 1, GL_FALSE, glm::value_ptr(mv));
-    QOpenGLVertexArrayObject::Binder bind(&vao_);
-    glDrawArrays(GL_TRIANGLES, 0, vertexCount_);
+    {
+        QOpenGLVertexArrayObject::Binder bind(&vao_);
+        glDrawArrays(GL_TRIANGLES, 0, vertexCount_);
+    }
     program_.release();
+
+    // Contours: visibility is already known, so no depth test; hidden first.
+    if (linesDirty_) uploadContours();
+    if (lineRanges_.empty()) return;
+    glDisable(GL_DEPTH_TEST);
+    glEnable(GL_BLEND);
+    // Blend colour only: the widget composites its framebuffer as
+    // premultiplied, so its alpha must stay opaque.
+    glBlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ZERO, GL_ONE);
+    lineProgram_.bind();
+    glUniformMatrix4fv(lineProgram_.uniformLocation("mvp"), 1, GL_FALSE, glm::value_ptr(mvp));
+    // Dashes of about 6 pixels at the mesh's distance.
+    const double worldPerPixel = 2.0 * distance_ * std::tan(glm::radians(kFovDeg * 0.5)) / std::max(height(), 1);
+    lineProgram_.setUniformValue("dashLength", float(6.0 * worldPerPixel));
+    QOpenGLVertexArrayObject::Binder bind(&lineVao_);
+    for (const bool hiddenPass : {true, false})
+        for (std::size_t i = 0, r = 0; i < strips_.size(); ++i) {
+            if (strips_[i].points.size() < 2) continue;
+            if (strips_[i].hidden == hiddenPass) glDrawArrays(GL_LINE_STRIP, lineRanges_[r].first, lineRanges_[r].second);
+            ++r;
+        }
+    lineProgram_.release();
+    glDisable(GL_BLEND);
 }
 
 void MeshView::mousePressEvent(QMouseEvent* event) { lastPos_ = event->position().toPoint(); }
@@ -163,12 +277,14 @@ void MeshView::mouseMoveEvent(QMouseEvent* event) {
         return;
     }
     update();
+    emit cameraChanged();
 }
 
 void MeshView::wheelEvent(QWheelEvent* event) {
     const double steps = event->angleDelta().y() / 120.0;
     distance_ = std::clamp(distance_ * std::pow(0.85, steps), radius_ * 0.05, radius_ * 100.0);
     update();
+    emit cameraChanged();
 }
 
 } // namespace snaxels::ui

@@ -1,7 +1,8 @@
 #pragma once
-// The 3-D view: the mesh shaded with two lights, orbit (left drag), pan
-// (right or middle drag) and zoom (wheel). It draws what it is given and
-// forwards nothing else.
+// The 3-D view: the mesh shaded with two lights and the contours drawn on
+// it (per-kind colours, hidden parts dashed), orbit (left drag), pan (right
+// or middle drag) and zoom (wheel). It draws what it is given and reports
+// camera changes; it computes nothing itself.
 
 #include <vector>
 
@@ -14,8 +15,17 @@
 #include <glm/glm.hpp>
 
 #include "core/mesh/mesh.h"
+#include "core/scene/camera.h"
 
 namespace snaxels::ui {
+
+/// A contour polyline to draw on the surface.
+struct ContourStrip {
+    std::vector<glm::vec3> points;
+    glm::vec3 colour{0.0f};
+    bool hidden = false;
+    bool closed = false;
+};
 
 class MeshView : public QOpenGLWidget, protected QOpenGLFunctions_3_3_Core {
     Q_OBJECT
@@ -28,6 +38,16 @@ class MeshView : public QOpenGLWidget, protected QOpenGLFunctions_3_3_Core {
     void clearMesh();
     /// Frames the whole mesh in a three-quarter view.
     void resetCamera();
+    /// Replaces the contours drawn over the mesh.
+    void setContours(std::vector<ContourStrip> strips);
+    /// The view's camera, as the engine sees it (a perspective camera).
+    Camera camera() const;
+
+  signals:
+    /// The camera moved (orbit, pan, zoom, reset or a new mesh).
+    void cameraChanged();
+
+  public:
 
     QSize sizeHint() const override { return {900, 700}; }
 
@@ -40,6 +60,7 @@ class MeshView : public QOpenGLWidget, protected QOpenGLFunctions_3_3_Core {
 
   private:
     void upload();
+    void uploadContours();
     glm::dmat4 viewMatrix() const;
     glm::dmat4 projectionMatrix() const;
 
@@ -52,6 +73,14 @@ class MeshView : public QOpenGLWidget, protected QOpenGLFunctions_3_3_Core {
     double yaw_ = 0.0, pitch_ = 0.0, distance_ = 3.0;
     glm::dvec3 pan_{0.0};
     QPoint lastPos_;
+
+    std::vector<ContourStrip> strips_;
+    std::vector<float> lineVertices_; // position, colour, hidden flag, arc length
+    std::vector<std::pair<int, int>> lineRanges_; // first vertex, count per strip
+    bool linesDirty_ = false;
+    QOpenGLShaderProgram lineProgram_;
+    QOpenGLVertexArrayObject lineVao_;
+    QOpenGLBuffer lineVbo_{QOpenGLBuffer::VertexBuffer};
 
     QOpenGLShaderProgram program_;
     QOpenGLVertexArrayObject vao_;

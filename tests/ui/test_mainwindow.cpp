@@ -26,9 +26,13 @@ class TestMainWindow : public QObject {
         window.show();
         QVERIFY(QTest::qWaitForWindowExposed(&window));
         QSignalSpy loaded(&window, &MainWindow::meshLoaded);
+        QSignalSpy contours(&window, &MainWindow::contoursUpdated);
         window.openMesh(snaxels::ui::defaultScenePath());
         QVERIFY(loaded.wait(60000));
         QCOMPARE(window.mesh()->report.vertices, std::size_t(2930));
+        // The contours follow: computed off the GUI thread, then drawn.
+        QVERIFY(contours.wait(30000));
+        QVERIFY(window.contourLoops() > 0);
         QTest::qWait(200);
 
         const QImage image = window.meshView()->grabFramebuffer().convertToFormat(QImage::Format_RGB32);
@@ -50,6 +54,21 @@ class TestMainWindow : public QObject {
         // The cow fills a good part of the view, shaded in many tones.
         QVERIFY2(coverage > 0.08, qPrintable(QString("coverage %1").arg(coverage)));
         QVERIFY2(shades.size() > 40, qPrintable(QString("%1 shades").arg(shades.size())));
+        // Contour lines: the visual contour in red-orange over the mesh.
+        qsizetype ink = 0;
+        for (int y = 0; y < image.height(); ++y)
+            for (int x = 0; x < image.width(); ++x) {
+                const QRgb p = image.pixel(x, y);
+                ink += qRed(p) > 170 && qGreen(p) < 120 && qBlue(p) < 110;
+            }
+        QVERIFY2(ink > 300, qPrintable(QString("%1 contour pixels").arg(ink)));
+
+        // Orbiting the camera brings new contours.
+        contours.clear();
+        QTest::mousePress(window.meshView(), Qt::LeftButton, {}, QPoint(300, 300));
+        QTest::mouseMove(window.meshView(), QPoint(380, 320));
+        QTest::mouseRelease(window.meshView(), Qt::LeftButton, {}, QPoint(380, 320));
+        QVERIFY(contours.wait(30000));
     }
 
     void reportsAFileThatFailsToLoad() {
