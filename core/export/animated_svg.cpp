@@ -6,6 +6,7 @@
 #include <map>
 #include <unordered_map>
 
+#include "core/export/polyline.h"
 #include "core/export/svg_writer.h"
 
 namespace snaxels {
@@ -65,31 +66,6 @@ struct RunSequence {
     bool whole = false, closed = false;
     std::vector<std::pair<const ParamLoop*, Span>> frames;
 };
-
-double point_segment(const glm::dvec2& p, const glm::dvec2& a, const glm::dvec2& b) {
-    const glm::dvec2 ab = b - a;
-    const double len2 = glm::dot(ab, ab);
-    const double t = len2 > 0.0 ? std::clamp(glm::dot(p - a, ab) / len2, 0.0, 1.0) : 0.0;
-    return glm::length(p - (a + t * ab));
-}
-
-// Vertices to keep so that, in every frame, the polyline through them stays
-// within `tol` of the full one (Douglas-Peucker over all frames at once).
-void simplify_joint(const std::vector<std::vector<glm::dvec2>>& frames, std::size_t i, std::size_t j,
-                    double tol, std::vector<std::uint8_t>& keep) {
-    if (j <= i + 1) return;
-    double worst = -1.0;
-    std::size_t at = i;
-    for (std::size_t k = i + 1; k < j; ++k) {
-        double d = 0.0;
-        for (const auto& f : frames) d = std::max(d, point_segment(f[k], f[i], f[j]));
-        if (d > worst) worst = d, at = k;
-    }
-    if (worst <= tol) return;
-    keep[at] = 1;
-    simplify_joint(frames, i, at, tol, keep);
-    simplify_joint(frames, at, j, tol, keep);
-}
 
 // Largest distance from a vertex of one polyline to the other, both ways.
 // Vertex i of each corresponds roughly to vertex i of the other (same
@@ -522,17 +498,14 @@ class Writer {
         if (smoothing > 0.0) {
             for (const std::size_t k : fit_knots(geom, closed_path, std::max(smoothing, options_.tolerance_px))) keep[k] = 1;
         } else if (closed_path) {
-            std::vector<std::vector<glm::dvec2>> ring = geom;
-            for (auto& r : ring) r.push_back(r[0]);
-            std::vector<std::uint8_t> ring_keep(n + 1, 0);
+            // A ring: two chains, from vertex 0 half way round and back to 0.
             const std::size_t half = n / 2;
-            ring_keep[0] = ring_keep[half] = ring_keep[n] = 1;
-            simplify_joint(ring, 0, half, options_.tolerance_px, ring_keep);
-            simplify_joint(ring, half, n, options_.tolerance_px, ring_keep);
-            keep.assign(ring_keep.begin(), ring_keep.begin() + long(n));
+            keep[0] = keep[half] = 1;
+            douglas_peucker_joint(geom, 0, half, options_.tolerance_px, keep);
+            douglas_peucker_joint(geom, half, n, options_.tolerance_px, keep);
         } else {
             keep[0] = keep[n - 1] = 1;
-            simplify_joint(geom, 0, n - 1, options_.tolerance_px, keep);
+            douglas_peucker_joint(geom, 0, n - 1, options_.tolerance_px, keep);
         }
         std::vector<std::size_t> knots;
         for (std::size_t k = 0; k < n; ++k)

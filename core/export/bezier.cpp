@@ -1,17 +1,11 @@
 #include "core/export/bezier.h"
+#include "core/export/polyline.h"
 
 #include <algorithm>
 #include <cmath>
 
 namespace snaxels {
 namespace {
-
-double point_segment(const glm::dvec2& p, const glm::dvec2& a, const glm::dvec2& b) {
-    const glm::dvec2 ab = b - a;
-    const double len2 = glm::dot(ab, ab);
-    const double t = len2 > 0.0 ? std::clamp(glm::dot(p - a, ab) / len2, 0.0, 1.0) : 0.0;
-    return glm::length(p - (a + t * ab));
-}
 
 glm::dvec2 cubic(const glm::dvec2& p0, const glm::dvec2& c1, const glm::dvec2& c2, const glm::dvec2& p1, double t) {
     const double s = 1.0 - t;
@@ -22,23 +16,6 @@ double distance_to_polyline(const glm::dvec2& p, const std::vector<glm::dvec2>& 
     double best = 1e300;
     for (std::size_t i = 0; i + 1 < line.size(); ++i) best = std::min(best, point_segment(p, line[i], line[i + 1]));
     return line.size() == 1 ? glm::length(p - line[0]) : best;
-}
-
-void douglas_peucker(const std::vector<std::vector<glm::dvec2>>& frames, std::size_t i, std::size_t j, double tol,
-                     std::vector<std::uint8_t>& keep) {
-    if (j <= i + 1) return;
-    double worst = -1.0;
-    std::size_t at = i;
-    const std::size_t n = frames[0].size();
-    for (std::size_t k = i + 1; k < j; ++k) {
-        double d = 0.0;
-        for (const auto& f : frames) d = std::max(d, point_segment(f[k % n], f[i % n], f[j % n]));
-        if (d > worst) worst = d, at = k;
-    }
-    if (worst <= tol) return;
-    keep[at % n] = 1;
-    douglas_peucker(frames, i, at, tol, keep);
-    douglas_peucker(frames, at, j, tol, keep);
 }
 
 } // namespace
@@ -109,11 +86,11 @@ std::vector<std::size_t> fit_knots(const std::vector<std::vector<glm::dvec2>>& f
         for (std::size_t k = 1; k < n; ++k)
             if (glm::length(frames[0][k] - frames[0][0]) > glm::length(frames[0][far] - frames[0][0])) far = k;
         keep[far] = 1;
-        douglas_peucker(frames, 0, far, tolerance, keep);
-        douglas_peucker(frames, far, n, tolerance, keep);
+        douglas_peucker_joint(frames, 0, far, tolerance, keep);
+        douglas_peucker_joint(frames, far, n, tolerance, keep);
     } else {
         keep[n - 1] = 1;
-        douglas_peucker(frames, 0, n - 1, tolerance, keep);
+        douglas_peucker_joint(frames, 0, n - 1, tolerance, keep);
     }
     // The curve bends away from the chords where the polyline turns: add the
     // worst point of each segment that strays until none does.
