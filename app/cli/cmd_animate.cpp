@@ -120,6 +120,9 @@ int run_animate(const std::vector<std::string>& argv) {
     if (mesh_path.empty()) mesh_path = loaded.report.source;
     complete_scene(scene, loaded.report);
 
+    if (!scene.style.regions.empty())
+        std::cerr << "snaxels-cli: warning: the style's region fills are drawn in still frames (contours) only; "
+                     "the animated SVG has the strokes\n";
     AnimationJob job;
     job.animation = anim;
     job.camera = scene.camera;

@@ -1,3 +1,4 @@
+#include <algorithm>
 #include <cmath>
 #include <iostream>
 #include <sstream>
@@ -78,7 +79,35 @@ int run_contours(const std::vector<std::string>& argv) {
         if (path == "-") std::cout << text;
         else write_file_atomically(path, text);
     };
-    if (!svg_out.empty()) emit(svg_out, to_svg(drawing, scene.style));
+    // Fills: the post-processed planar map of the contours the style's
+    // region classes need (computed here if they are not drawn).
+    std::vector<MapRegion> regions;
+    if (!scene.style.regions.empty()) {
+        std::vector<ContourResult> fill_results;
+        auto result_of = [&](const ContourSpec& spec) -> const ContourResult* {
+            for (const ContourResult& r : results)
+                if (r.spec.kind == spec.kind && std::abs(r.spec.k - spec.k) < 1e-9) return &r;
+            for (const ContourResult& r : fill_results)
+                if (r.spec.kind == spec.kind && std::abs(r.spec.k - spec.k) < 1e-9) return &r;
+            return nullptr;
+        };
+        const std::vector<ContourSpec> needed = scene.style.fill_contours();
+        fill_results.reserve(needed.size());
+        for (const ContourSpec& spec : needed)
+            if (!result_of(spec)) fill_results.push_back(engine.compute(spec, camera, light, options));
+        PostMapInput input;
+        for (const ContourSpec& spec : needed) {
+            const ContourResult* r = result_of(spec);
+            if (spec.kind == ContourKind::Visual) input.visual = r;
+            if (spec.kind == ContourKind::Shadow) input.shadow = r;
+            if (spec.kind == ContourKind::Isophote) input.isophotes.push_back(r);
+            if (spec.kind == ContourKind::Gleam) input.gleam = r;
+        }
+        std::sort(input.isophotes.begin(), input.isophotes.end(),
+                  [](const ContourResult* a, const ContourResult* b) { return a->spec.k < b->spec.k; });
+        regions = build_post_map(engine, input, projection, camera);
+    }
+    if (!svg_out.empty()) emit(svg_out, to_svg(drawing, scene.style, regions.empty() ? nullptr : &regions));
     if (!json_out.empty())
         emit(json_out, contours_to_json(report, camera, light, drawing, results).dump() + "\n");
     if (json_out.empty() && svg_out.empty()) {

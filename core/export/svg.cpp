@@ -213,8 +213,31 @@ double arc_to(const std::vector<glm::dvec2>& loop, bool closed, const glm::dvec2
 
 } // namespace
 
-std::string to_svg(const Drawing& drawing, const Style& style) {
+std::string to_svg(const Drawing& drawing, const Style& style, const std::vector<MapRegion>* regions) {
     std::string out = svg::document_start(drawing.width, drawing.height, style.background);
+    if (regions && !style.regions.empty()) {
+        out += "<g id=\"fills\" stroke=\"none\" fill-rule=\"evenodd\">\n";
+        for (const MapRegion& region : *regions) {
+            const RegionStyle* rs = style.region(region_class_name(region.cls), region.k);
+            if (!rs) continue;
+            const auto polygons = erode(region.polygons, rs->erosion);
+            if (polygons.empty()) continue;
+            out += "<path class=\"region\" data-class=\"" + std::string(region_class_name(region.cls)) + "\" fill=\"" +
+                   rs->fill + "\"";
+            if (rs->opacity < 1.0) {
+                out += " fill-opacity=\"";
+                svg::append_number(out, rs->opacity);
+                out += "\"";
+            }
+            out += " d=\"";
+            for (std::size_t i = 0; i < polygons.size(); ++i) {
+                if (i) out += ' ';
+                svg::append_path_data(out, polygons[i], true);
+            }
+            out += "\"/>\n";
+        }
+        out += "</g>\n";
+    }
     bool with_visibility = false;
     for (const DrawnContour& c : drawing.contours)
         for (const DrawnLoop& loop : c.loops) with_visibility |= !loop.runs.empty();

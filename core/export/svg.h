@@ -4,6 +4,7 @@
 #include <string>
 
 #include "core/export/drawing.h"
+#include "core/planarmap/post_map.h"
 #include "core/style/style.h"
 
 namespace snaxels {
@@ -14,6 +15,9 @@ const char* default_stroke(ContourKind kind);
 /// The SVG document text, drawn as @p style says. Hidden runs (QI > 0) go in
 /// <g id="hidden"> under the visible ones in <g id="visible">; without
 /// visibility every line is drawn with its visible stroke.
-std::string to_svg(const Drawing& drawing, const Style& style = default_style());
+/// With @p regions (the planar map), the regions the style fills are drawn
+/// first, in <g id="fills">.
+std::string to_svg(const Drawing& drawing, const Style& style = default_style(),
+                   const std::vector<MapRegion>* regions = nullptr);
 
 } // namespace snaxels

@@ -232,8 +232,25 @@ struct Parser {
                     else warn(part, "unknown element <" + part_name + "> in <contour> (expected <visible> or <hidden>)");
                 }
                 style.contours.push_back(cs);
+            } else if (name == "region") {
+                check_attributes(child, {"class", "k", "fill", "opacity", "erosion"});
+                RegionStyle rs;
+                rs.cls = choice(child, "class", "", {"shadow", "lit", "band", "highlight"});
+                if (rs.cls.empty()) fail(child, "<region> needs class=\"shadow|lit|band|highlight\"");
+                const bool needs_k = rs.cls == "band" || rs.cls == "highlight";
+                if (needs_k && !child.attribute("k"))
+                    fail(child, "a " + rs.cls + " region needs k (" +
+                                    (rs.cls == "band" ? "the isophote level it starts at" : "the gleam threshold") + ")");
+                if (!needs_k && child.attribute("k")) fail(child, "a " + rs.cls + " region takes no k");
+                rs.k = number(child, "k", 0.0, -1.0, 1.0);
+                rs.fill = colour(child, "fill", rs.fill, false);
+                rs.opacity = number(child, "opacity", rs.opacity, 0.0, 1.0);
+                rs.erosion = number(child, "erosion", rs.erosion, 0.0, 100.0);
+                for (const RegionStyle& other : style.regions)
+                    if (other.cls == rs.cls && std::abs(other.k - rs.k) < 1e-9) fail(child, "a second <region> for " + rs.cls);
+                style.regions.push_back(rs);
             } else {
-                warn(child, "unknown element <" + name + "> (expected <canvas>, <light> or <contour>)");
+                warn(child, "unknown element <" + name + "> (expected <canvas>, <light>, <contour> or <region>)");
             }
         }
         if (2.0 * style.margin >= std::min(style.width, style.height))
@@ -265,6 +282,29 @@ Style default_style() {
     Style s;
     s.contours.push_back(default_contour_style(ContourSpec{}));
     return s;
+}
+
+std::vector<ContourSpec> Style::fill_contours() const {
+    std::vector<ContourSpec> out;
+    auto add = [&](ContourSpec spec) {
+        for (const ContourSpec& s : out)
+            if (s.kind == spec.kind && std::abs(s.k - spec.k) < 1e-9) return;
+        out.push_back(spec);
+    };
+    if (regions.empty()) return out;
+    add({ContourKind::Visual, 0.0});
+    for (const RegionStyle& r : regions) {
+        if (r.cls == "shadow" || r.cls == "lit" || r.cls == "band") add({ContourKind::Shadow, 0.0});
+        if (r.cls == "band") add({ContourKind::Isophote, r.k});
+        if (r.cls == "highlight") add({ContourKind::Gleam, r.k});
+    }
+    return out;
+}
+
+const RegionStyle* Style::region(const std::string& cls, double k) const {
+    for (const RegionStyle& r : regions)
+        if (r.cls == cls && (cls == "shadow" || cls == "lit" || std::abs(r.k - k) < 1e-9)) return &r;
+    return nullptr;
 }
 
 ContourStyle Style::contour(const ContourSpec& spec) const {

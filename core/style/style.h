@@ -29,12 +29,28 @@ struct ContourStyle {
     StrokeStyle visible, hidden;
 };
 
+/// How one class of planar-map region is filled.
+struct RegionStyle {
+    std::string cls;       ///< shadow | lit | band | highlight
+    double k = 0.0;        ///< band: the isophote level it starts at; highlight: the gleam threshold
+    std::string fill = "#cccccc";
+    double opacity = 1.0;
+    double erosion = 0.0;  ///< pixels the fill is shrunk by, to part it from the strokes
+};
+
 struct Style {
     int width = 800, height = 800;
     double margin = 32.0;               ///< pixels between the mesh's bounding circle and the edge
     std::string background = "#ffffff"; ///< or "none"
     std::optional<Light> light;
     std::vector<ContourStyle> contours;
+    std::vector<RegionStyle> regions; ///< fills; empty: none
+
+    /// The contours the fills need besides those drawn: the shadow contour
+    /// for lit and shadow, an isophote per band, a gleam per highlight.
+    std::vector<ContourSpec> fill_contours() const;
+    /// The fill of a region class (nullptr: not filled).
+    const RegionStyle* region(const std::string& cls, double k) const;
 
     /// The style of @p spec: the matching <contour>, or the defaults for its kind.
     ContourStyle contour(const ContourSpec& spec) const;

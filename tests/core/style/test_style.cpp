@@ -85,6 +85,26 @@ TEST(Style, ErrorsNameLineAndColumn) {
     }
 }
 
+TEST(Style, RegionFills) {
+    const Style s = parse_style(R"(<style>
+  <region class="lit" fill="#ffcc00" erosion="1.5"/>
+  <region class="band" k="0.7" fill="white" opacity="0.5"/>
+  <region class="highlight" k="0.95" fill="#fff"/>
+</style>)", "r.xml", nullptr);
+    ASSERT_EQ(s.regions.size(), 3u);
+    EXPECT_EQ(s.region("lit", 0.0)->erosion, 1.5);
+    EXPECT_EQ(s.region("band", 0.7)->opacity, 0.5);
+    EXPECT_EQ(s.region("shadow", 0.0), nullptr);
+    EXPECT_EQ(s.region("band", 0.5), nullptr);
+    // The contours the fills need: visual, shadow, the band's isophote, the gleam.
+    std::vector<std::string> labels;
+    for (const ContourSpec& c : s.fill_contours()) labels.push_back(c.label());
+    EXPECT_EQ(labels, (std::vector<std::string>{"visual", "shadow", "isophote:0.7", "gleam:0.95"}));
+    EXPECT_NE(error_of("<style><region class=\"band\" fill=\"red\"/></style>").message.find("needs k"), std::string::npos);
+    EXPECT_NE(error_of("<style><region class=\"lit\" k=\"0.5\"/></style>").message.find("takes no k"), std::string::npos);
+    EXPECT_NE(error_of("<style><region class=\"glow\"/></style>").message.find("must be one of"), std::string::npos);
+}
+
 TEST(Style, UnknownNamesAreWarnings) {
     std::vector<StyleDiagnostic> warnings;
     const Style s = parse_style("<style>\n<contour kind=\"visual\" colour=\"red\"><visible/><outline/></contour>\n<fills/>\n</style>",
