@@ -4,6 +4,7 @@
 
 #include <QColor>
 
+#include "core/animation/still.h"
 #include "core/visibility/visibility.h"
 
 namespace snaxels::ui {
@@ -25,25 +26,30 @@ std::shared_ptr<ContourScene> make_contour_scene(const LoadedMesh& mesh) {
     return scene;
 }
 
-OverlayResult compute_overlay(const ContourScene& scene, const Camera& camera, const std::vector<ContourSpec>& kinds) {
+OverlayResult compute_overlay(const LoadedMesh& mesh, const ContourScene& scene, const Camera& camera,
+                              const Style& style) {
     const auto start = std::chrono::steady_clock::now();
+    StillJob job;
+    job.camera = camera;
+    job.light = style.light ? *style.light : default_light(camera);
+    job.kinds.clear();
+    for (const ContourStyle& cs : style.contours) job.kinds.push_back(cs.spec);
+    if (job.kinds.empty()) job.kinds.push_back({});
+    job.style = style;
+    job.engine.check_invariants = false;
+    StillOutput still = render_still(mesh, scene.topology, scene.rays.get(), job);
+
     OverlayResult out;
-    const SnaxelEngine engine(scene.topology);
-    const Light light = default_light(camera);
-    const VisibilitySampler sampler(*scene.rays, camera);
-    EngineOptions options;
-    options.check_invariants = false;
-    for (const ContourSpec& spec : kinds) {
-        const ContourResult r = engine.compute(spec, camera, light, options);
-        const ContourVisibility vis = sampler.classify(engine, r);
-        const QColor c(view_colour(spec.kind));
-        const glm::vec3 colour(float(c.redF()), float(c.greenF()), float(c.blueF()));
+    out.svg = std::move(still.svg);
+    for (std::size_t c = 0; c < still.results.size(); ++c) {
+        const ContourResult& r = still.results[c];
+        const QColor colour(view_colour(r.spec.kind));
         out.loops += r.fronts.loops.size();
         out.snaxels += r.fronts.snaxels.size();
-        for (const LoopVisibility& loop : vis.loops)
+        for (const LoopVisibility& loop : still.visibility[c].loops)
             for (const VisibilityRun& run : loop.runs) {
                 ContourStrip strip;
-                strip.colour = colour;
+                strip.colour = glm::vec3(float(colour.redF()), float(colour.greenF()), float(colour.blueF()));
                 strip.hidden = run.qi > 0;
                 strip.closed = run.closed;
                 strip.points.reserve(run.points.size());

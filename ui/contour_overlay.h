@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "core/mesh/build.h"
+#include "core/style/style.h"
 #include "core/snaxel/snaxel_engine.h"
 #include "core/visibility/ray_scene.h"
 #include "ui/meshview.h"
@@ -23,15 +24,19 @@ std::shared_ptr<ContourScene> make_contour_scene(const LoadedMesh& mesh);
 
 struct OverlayResult {
     std::vector<ContourStrip> strips;
+    std::string svg; ///< the frame as `snaxels-cli contours --svg` draws it
     std::size_t loops = 0, snaxels = 0;
-    double ms = 0.0; ///< engine and visibility time
+    double ms = 0.0; ///< the whole frame: engine, visibility, drawing
 };
 
 /// Colours of the kinds in the 3-D view: bright enough for the shaded mesh
 /// and the dark background alike.
 const char* view_colour(ContourKind kind);
 
-/// The contours of @p kinds seen by @p camera, lit from the viewer's upper left.
-OverlayResult compute_overlay(const ContourScene& scene, const Camera& camera, const std::vector<ContourSpec>& kinds);
+/// The contours of @p style seen by @p camera, lit from the viewer's upper
+/// left (unless the style says otherwise): strips for the 3-D view and the
+/// SVG that export writes, from one computation.
+OverlayResult compute_overlay(const LoadedMesh& mesh, const ContourScene& scene, const Camera& camera,
+                              const Style& style);
 
 } // namespace snaxels::ui

@@ -13,7 +13,10 @@
 #include <QMimeData>
 #include <QProgressBar>
 #include <QSettings>
+#include <QSplitter>
 #include <QStatusBar>
+#include <QSvgRenderer>
+#include <QSvgWidget>
 #include <QTimer>
 #include <QtConcurrent/QtConcurrentRun>
 
@@ -42,11 +45,26 @@ LoadResult loadInBackground(const QString& spec) {
 
 } // namespace
 
+Style viewer_style() {
+    Style style = default_style();
+    style.contours.push_back(default_contour_style({ContourKind::Shadow, 0.0}));
+    return style;
+}
+
 MainWindow::MainWindow(QWidget* parent)
-    : QMainWindow(parent), view_(new MeshView(this)), meshLabel_(new QLabel(this)),
+    : QMainWindow(parent), view_(new MeshView(this)), svgPane_(new QSvgWidget(this)), meshLabel_(new QLabel(this)),
       busy_(new QProgressBar(this)), contourLabel_(new QLabel(this)), contourTimer_(new QTimer(this)) {
     setWindowTitle("snaxels");
-    setCentralWidget(view_);
+    // The 3-D view and, beside it, the SVG the export writes for this view.
+    auto* splitter = new QSplitter(this);
+    splitter->addWidget(view_);
+    splitter->addWidget(svgPane_);
+    svgPane_->renderer()->setAspectRatioMode(Qt::KeepAspectRatio);
+    svgPane_->setMinimumSize(200, 200);
+    splitter->setStretchFactor(0, 3);
+    splitter->setStretchFactor(1, 2);
+    splitter->setSizes({600, 400});
+    setCentralWidget(splitter);
     setAcceptDrops(true);
     busy_->setRange(0, 0); // indeterminate: importers report no progress
     busy_->setMaximumWidth(160);
@@ -86,9 +104,11 @@ void MainWindow::startContours() {
     }
     contoursPending_ = false;
     const std::shared_ptr<ContourScene> scene = scene_;
+    const std::shared_ptr<const LoadedMesh> mesh = mesh_;
     const Camera camera = view_->camera();
-    contourWatcher_.setFuture(QtConcurrent::run([scene, camera] {
-        return compute_overlay(*scene, camera, {ContourSpec{}, ContourSpec{ContourKind::Shadow, 0.0}});
+    const Style style = style_;
+    contourWatcher_.setFuture(QtConcurrent::run([mesh, scene, camera, style] {
+        return compute_overlay(*mesh, *scene, camera, style);
     }));
 }
 
@@ -101,6 +121,9 @@ void MainWindow::onContoursFinished() {
     contourLoops_ = result.loops;
     contourLabel_->setText(tr("%1 loops, %2 snaxels, %3 ms").arg(result.loops).arg(result.snaxels).arg(result.ms, 0, 'f', 1));
     view_->setContours(std::move(result.strips));
+    svg_ = QByteArray::fromStdString(result.svg);
+    svgPane_->load(svg_);
+    svgPane_->renderer()->setAspectRatioMode(Qt::KeepAspectRatio); // load() resets it
     emit contoursUpdated();
 }
 

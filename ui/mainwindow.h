@@ -12,6 +12,7 @@
 #include "ui/contour_overlay.h"
 
 class QLabel;
+class QSvgWidget;
 class QTimer;
 class QMenu;
 class QProgressBar;
@@ -19,6 +20,10 @@ class QProgressBar;
 namespace snaxels::ui {
 
 class MeshView;
+
+/// The style the application draws with until styles can be edited in it:
+/// the default style plus the shadow line.
+Style viewer_style();
 
 /// What a background load produces: a mesh or the one-line reason it failed.
 struct LoadResult {
@@ -37,6 +42,9 @@ class MainWindow : public QMainWindow {
     void openMesh(const QString& spec);
     const LoadedMesh* mesh() const { return mesh_.get(); }
     MeshView* meshView() const { return view_; }
+    QSvgWidget* svgPane() const { return svgPane_; }
+    /// The SVG the pane shows: what export writes for the current view.
+    const QByteArray& currentSvg() const { return svg_; }
     bool isLoading() const { return watcher_.isRunning(); }
 
     /// The contours currently drawn (for tests): loops and snaxels.
@@ -63,6 +71,9 @@ class MainWindow : public QMainWindow {
     void rebuildRecentMenu();
 
     MeshView* view_;
+    QSvgWidget* svgPane_;
+    QByteArray svg_;
+    Style style_ = viewer_style();
     QMenu* recentMenu_ = nullptr;
     QLabel* meshLabel_;
     QProgressBar* busy_;

@@ -9,6 +9,7 @@
 #include "app/cli/commands.h"
 #include "app/cli/scene_options.h"
 #include "core/error.h"
+#include "core/animation/still.h"
 #include "core/export/contours_json.h"
 #include "core/export/svg.h"
 #include "core/mesh/import.h"
@@ -53,63 +54,26 @@ int run_contours(const std::vector<std::string>& argv) {
     complete_scene(scene, report);
     const Camera& camera = scene.camera;
     const Light& light = *scene.light;
-    const std::vector<ContourSpec>& kinds = scene.kinds;
-    const glm::dvec3 centre = 0.5 * (report.bbox_min + report.bbox_max);
-    const double radius = std::max(0.5 * glm::length(report.bbox_max - report.bbox_min), 1e-12);
-    const int width = scene.style.width, height = scene.style.height;
 
     const MeshTopology topology = build_topology(loaded.mesh);
-    const SnaxelEngine engine(topology);
-    EngineOptions options;
-    if (scene.check) options.check_invariants = true;
-    std::vector<ContourResult> results;
-    for (const ContourSpec& spec : kinds) results.push_back(engine.compute(spec, camera, light, options));
-
-    std::vector<ContourVisibility> visibility;
-    if (scene.visibility) {
-        const RayScene rays(topology);
-        const VisibilitySampler sampler(rays, camera);
-        for (const ContourResult& r : results) visibility.push_back(sampler.classify(engine, r));
-    }
-    const ImageProjection projection(camera, centre, radius, width, height, scene.style.margin);
-    const Drawing drawing =
-        make_drawing(engine, results, projection, visibility.empty() ? nullptr : &visibility);
+    StillJob job;
+    job.camera = camera;
+    job.light = light;
+    job.kinds = scene.kinds;
+    job.style = scene.style;
+    job.visibility = scene.visibility;
+    if (scene.check) job.engine.check_invariants = true;
+    const StillOutput still = render_still(loaded, topology, nullptr, job);
+    const std::vector<ContourResult>& results = still.results;
+    const std::vector<ContourVisibility>& visibility = still.visibility;
 
     auto emit = [](const std::string& path, const std::string& text) {
         if (path == "-") std::cout << text;
         else write_file_atomically(path, text);
     };
-    // Fills: the post-processed planar map of the contours the style's
-    // region classes need (computed here if they are not drawn).
-    std::vector<MapRegion> regions;
-    if (!scene.style.regions.empty()) {
-        std::vector<ContourResult> fill_results;
-        auto result_of = [&](const ContourSpec& spec) -> const ContourResult* {
-            for (const ContourResult& r : results)
-                if (r.spec.kind == spec.kind && std::abs(r.spec.k - spec.k) < 1e-9) return &r;
-            for (const ContourResult& r : fill_results)
-                if (r.spec.kind == spec.kind && std::abs(r.spec.k - spec.k) < 1e-9) return &r;
-            return nullptr;
-        };
-        const std::vector<ContourSpec> needed = scene.style.fill_contours();
-        fill_results.reserve(needed.size());
-        for (const ContourSpec& spec : needed)
-            if (!result_of(spec)) fill_results.push_back(engine.compute(spec, camera, light, options));
-        PostMapInput input;
-        for (const ContourSpec& spec : needed) {
-            const ContourResult* r = result_of(spec);
-            if (spec.kind == ContourKind::Visual) input.visual = r;
-            if (spec.kind == ContourKind::Shadow) input.shadow = r;
-            if (spec.kind == ContourKind::Isophote) input.isophotes.push_back(r);
-            if (spec.kind == ContourKind::Gleam) input.gleam = r;
-        }
-        std::sort(input.isophotes.begin(), input.isophotes.end(),
-                  [](const ContourResult* a, const ContourResult* b) { return a->spec.k < b->spec.k; });
-        regions = build_post_map(engine, input, projection, camera);
-    }
-    if (!svg_out.empty()) emit(svg_out, to_svg(drawing, scene.style, regions.empty() ? nullptr : &regions));
+    if (!svg_out.empty()) emit(svg_out, still.svg);
     if (!json_out.empty())
-        emit(json_out, contours_to_json(report, camera, light, drawing, results).dump() + "\n");
+        emit(json_out, contours_to_json(report, camera, light, still.drawing, results).dump() + "\n");
     if (json_out.empty() && svg_out.empty()) {
         std::cout << report.source << ": " << report.vertices << " vertices, " << report.faces
                   << " faces\n";

@@ -91,7 +91,10 @@ std::string document_start(int width, int height, const std::string& background)
     std::string out = "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n"
                       "<svg xmlns=\"http://www.w3.org/2000/svg\" version=\"1.1\" width=\"" + w + "\" height=\"" + h +
                       "\" viewBox=\"0 0 " + w + " " + h + "\">\n";
-    if (background != "none") out += "<rect width=\"100%\" height=\"100%\" fill=\"" + background + "\"/>\n";
+    // Sizes in user units, not percentages: some renderers (QtSvg) resolve
+    // percentages against the widget rather than the viewBox.
+    if (background != "none")
+        out += "<rect x=\"0\" y=\"0\" width=\"" + w + "\" height=\"" + h + "\" fill=\"" + background + "\"/>\n";
     return out;
 }
 

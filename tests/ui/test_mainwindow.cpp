@@ -7,6 +7,8 @@
 #include <QSignalSpy>
 #include <QStandardPaths>
 #include <QSurfaceFormat>
+#include <QSvgRenderer>
+#include <QSvgWidget>
 #include <QTest>
 
 #include "ui/mainwindow.h"
@@ -63,12 +65,20 @@ class TestMainWindow : public QObject {
             }
         QVERIFY2(ink > 300, qPrintable(QString("%1 contour pixels").arg(ink)));
 
+        // The SVG pane shows the export of this view: visible and hidden
+        // groups, and it renders.
+        QVERIFY(window.currentSvg().contains("<g id=\"visible\">"));
+        QVERIFY(window.currentSvg().contains("<g id=\"hidden\">"));
+        QVERIFY(window.svgPane()->renderer()->isValid());
+        const QByteArray before = window.currentSvg();
+
         // Orbiting the camera brings new contours.
         contours.clear();
         QTest::mousePress(window.meshView(), Qt::LeftButton, {}, QPoint(300, 300));
         QTest::mouseMove(window.meshView(), QPoint(380, 320));
         QTest::mouseRelease(window.meshView(), Qt::LeftButton, {}, QPoint(380, 320));
         QVERIFY(contours.wait(30000));
+        QVERIFY(window.currentSvg() != before);
     }
 
     void reportsAFileThatFailsToLoad() {

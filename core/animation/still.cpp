@@ -1,0 +1,61 @@
+#include "core/animation/still.h"
+
+#include <algorithm>
+#include <cmath>
+#include <memory>
+
+#include "core/export/svg.h"
+
+namespace snaxels {
+
+StillOutput render_still(const LoadedMesh& mesh, const MeshTopology& topology, const RayScene* rays,
+                         const StillJob& job) {
+    StillOutput out;
+    const MeshReport& report = mesh.report;
+    const glm::dvec3 centre = 0.5 * (report.bbox_min + report.bbox_max);
+    const double radius = std::max(0.5 * glm::length(report.bbox_max - report.bbox_min), 1e-12);
+    const SnaxelEngine engine(topology);
+    for (const ContourSpec& spec : job.kinds) out.results.push_back(engine.compute(spec, job.camera, job.light, job.engine));
+
+    std::unique_ptr<RayScene> own_rays;
+    if (job.visibility) {
+        if (!rays) rays = (own_rays = std::make_unique<RayScene>(topology)).get();
+        const VisibilitySampler sampler(*rays, job.camera);
+        for (const ContourResult& r : out.results) out.visibility.push_back(sampler.classify(engine, r));
+    }
+    const ImageProjection projection(job.camera, centre, radius, job.style.width, job.style.height, job.style.margin);
+    out.drawing = make_drawing(engine, out.results, projection, job.visibility ? &out.visibility : nullptr);
+
+    // Fills: the post-processed planar map of the contours the style's
+    // region classes need (computed here if they are not drawn).
+    if (!job.style.regions.empty()) {
+        std::vector<ContourResult> fill_results;
+        auto same = [](const ContourSpec& a, const ContourSpec& b) { return a.kind == b.kind && std::abs(a.k - b.k) < 1e-9; };
+        auto result_of = [&](const ContourSpec& spec) -> const ContourResult* {
+            for (const ContourResult& r : out.results)
+                if (same(r.spec, spec)) return &r;
+            for (const ContourResult& r : fill_results)
+                if (same(r.spec, spec)) return &r;
+            return nullptr;
+        };
+        const std::vector<ContourSpec> needed = job.style.fill_contours();
+        fill_results.reserve(needed.size()); // result_of's pointers must stay valid
+        for (const ContourSpec& spec : needed)
+            if (!result_of(spec)) fill_results.push_back(engine.compute(spec, job.camera, job.light, job.engine));
+        PostMapInput input;
+        for (const ContourSpec& spec : needed) {
+            const ContourResult* r = result_of(spec);
+            if (spec.kind == ContourKind::Visual) input.visual = r;
+            if (spec.kind == ContourKind::Shadow) input.shadow = r;
+            if (spec.kind == ContourKind::Isophote) input.isophotes.push_back(r);
+            if (spec.kind == ContourKind::Gleam) input.gleam = r;
+        }
+        std::sort(input.isophotes.begin(), input.isophotes.end(),
+                  [](const ContourResult* a, const ContourResult* b) { return a->spec.k < b->spec.k; });
+        out.regions = build_post_map(engine, input, projection, job.camera);
+    }
+    out.svg = to_svg(out.drawing, job.style, out.regions.empty() ? nullptr : &out.regions);
+    return out;
+}
+
+} // namespace snaxels

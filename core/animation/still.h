@@ -1,0 +1,39 @@
+#pragma once
+/// One still frame through the whole pipeline, shared by `snaxels-cli
+/// contours` and the application's SVG pane: contours, hidden lines, the
+/// planar map the style's fills need, the drawing and its SVG.
+
+#include <string>
+#include <vector>
+
+#include "core/export/drawing.h"
+#include "core/mesh/build.h"
+#include "core/planarmap/post_map.h"
+#include "core/style/style.h"
+#include "core/visibility/visibility.h"
+
+namespace snaxels {
+
+struct StillJob {
+    Camera camera;
+    Light light;
+    std::vector<ContourSpec> kinds{ContourSpec{}}; ///< the contours drawn
+    Style style = default_style();
+    bool visibility = true;
+    EngineOptions engine;
+};
+
+struct StillOutput {
+    std::vector<ContourResult> results;        ///< parallel to the job's kinds
+    std::vector<ContourVisibility> visibility; ///< parallel to results, when computed
+    Drawing drawing;
+    std::vector<MapRegion> regions;            ///< when the style has fills
+    std::string svg;
+};
+
+/// Renders @p job on @p topology, whose bounding box is @p mesh's report's.
+/// @p rays may be given (built once per mesh); else one is built if needed.
+StillOutput render_still(const LoadedMesh& mesh, const MeshTopology& topology, const RayScene* rays,
+                         const StillJob& job);
+
+} // namespace snaxels
