@@ -3,7 +3,10 @@
 #include <QAction>
 #include <QApplication>
 #include <QCloseEvent>
+#include <QDir>
+#include <QDockWidget>
 #include <QDragEnterEvent>
+#include <QFile>
 #include <QDropEvent>
 #include <QFileDialog>
 #include <QFileInfo>
@@ -22,7 +25,10 @@
 
 #include "core/error.h"
 #include "core/mesh/import.h"
+#include "core/util/atomic_file.h"
 #include "ui/meshview.h"
+#include "ui/resources.h"
+#include "ui/styleeditor.h"
 
 namespace snaxels::ui {
 namespace {
@@ -45,14 +51,9 @@ LoadResult loadInBackground(const QString& spec) {
 
 } // namespace
 
-Style viewer_style() {
-    Style style = default_style();
-    style.contours.push_back(default_contour_style({ContourKind::Shadow, 0.0}));
-    return style;
-}
-
 MainWindow::MainWindow(QWidget* parent)
-    : QMainWindow(parent), view_(new MeshView(this)), svgPane_(new QSvgWidget(this)), meshLabel_(new QLabel(this)),
+    : QMainWindow(parent), view_(new MeshView(this)), svgPane_(new QSvgWidget(this)),
+      styleEditor_(new StyleEditor(this)), meshLabel_(new QLabel(this)),
       busy_(new QProgressBar(this)), contourLabel_(new QLabel(this)), contourTimer_(new QTimer(this)) {
     setWindowTitle("snaxels");
     // The 3-D view and, beside it, the SVG the export writes for this view.
@@ -65,6 +66,17 @@ MainWindow::MainWindow(QWidget* parent)
     splitter->setStretchFactor(1, 2);
     splitter->setSizes({600, 400});
     setCentralWidget(splitter);
+
+    // The style editor, docked; a style that parses applies to both views.
+    style_ = styleEditor_->style();
+    auto* dock = new QDockWidget(tr("Style"), this);
+    dock->setObjectName("styleDock");
+    dock->setWidget(styleEditor_);
+    addDockWidget(Qt::RightDockWidgetArea, dock);
+    connect(styleEditor_, &StyleEditor::styleChanged, this, [this](const Style& style) {
+        style_ = style;
+        scheduleContours();
+    });
     setAcceptDrops(true);
     busy_->setRange(0, 0); // indeterminate: importers report no progress
     busy_->setMaximumWidth(160);
@@ -83,6 +95,7 @@ MainWindow::MainWindow(QWidget* parent)
     connect(&watcher_, &QFutureWatcher<LoadResult>::finished, this, &MainWindow::onLoadFinished);
 
     QSettings settings;
+    resize(1400, 860); // until a saved layout says otherwise
     restoreGeometry(settings.value("window/geometry").toByteArray());
     restoreState(settings.value("window/state").toByteArray());
 }
@@ -145,9 +158,47 @@ void MainWindow::createMenus() {
     QAction* quit = file->addAction(tr("&Quit"), this, &QWidget::close);
     quit->setShortcut(QKeySequence::Quit);
 
+    createStyleMenu();
+
     QMenu* viewMenu = menuBar()->addMenu(tr("&View"));
     QAction* reset = viewMenu->addAction(tr("&Reset Camera"), view_, &MeshView::resetCamera);
     reset->setShortcut(Qt::Key_Home);
+}
+
+void MainWindow::createStyleMenu() {
+    QMenu* menu = menuBar()->addMenu(tr("&Style"));
+    QMenu* presets = menu->addMenu(tr("&Presets"));
+    const QDir dir(dataDirectory() + "/styles");
+    for (const QFileInfo& file : dir.entryInfoList({"*.xml"}, QDir::Files, QDir::Name))
+        presets->addAction(file.completeBaseName(), this, [this, path = file.absoluteFilePath()] {
+            QFile in(path);
+            if (!in.open(QIODevice::ReadOnly)) {
+                statusBar()->showMessage(tr("Cannot read %1").arg(path), 6000);
+                return;
+            }
+            styleEditor_->setText(QString::fromUtf8(in.readAll()), path);
+        });
+    presets->setEnabled(!presets->isEmpty());
+    menu->addAction(tr("&Load Style…"), this, [this] {
+        const QString path = QFileDialog::getOpenFileName(this, tr("Load Style"), QString(), tr("Styles (*.xml)"));
+        if (path.isEmpty()) return;
+        QFile in(path);
+        if (!in.open(QIODevice::ReadOnly)) {
+            QMessageBox::warning(this, tr("Load Style"), tr("Cannot read %1: %2").arg(path, in.errorString()));
+            return;
+        }
+        styleEditor_->setText(QString::fromUtf8(in.readAll()), path);
+    });
+    menu->addAction(tr("&Save Style As…"), this, [this] {
+        const QString path = QFileDialog::getSaveFileName(this, tr("Save Style"), QString(), tr("Styles (*.xml)"));
+        if (path.isEmpty()) return;
+        try {
+            write_file_atomically(path.toStdString(), styleEditor_->text().toStdString());
+            statusBar()->showMessage(tr("Saved %1").arg(path), 4000);
+        } catch (const std::exception& e) {
+            QMessageBox::warning(this, tr("Save Style"), QString::fromStdString(e.what()));
+        }
+    });
 }
 
 void MainWindow::openMesh(const QString& spec) {

@@ -20,10 +20,7 @@ class QProgressBar;
 namespace snaxels::ui {
 
 class MeshView;
-
-/// The style the application draws with until styles can be edited in it:
-/// the default style plus the shadow line.
-Style viewer_style();
+class StyleEditor;
 
 /// What a background load produces: a mesh or the one-line reason it failed.
 struct LoadResult {
@@ -43,6 +40,7 @@ class MainWindow : public QMainWindow {
     const LoadedMesh* mesh() const { return mesh_.get(); }
     MeshView* meshView() const { return view_; }
     QSvgWidget* svgPane() const { return svgPane_; }
+    StyleEditor* styleEditor() const { return styleEditor_; }
     /// The SVG the pane shows: what export writes for the current view.
     const QByteArray& currentSvg() const { return svg_; }
     bool isLoading() const { return watcher_.isRunning(); }
@@ -63,6 +61,7 @@ class MainWindow : public QMainWindow {
 
   private:
     void createMenus();
+    void createStyleMenu();
     void onLoadFinished();
     void scheduleContours();
     void startContours();
@@ -73,7 +72,8 @@ class MainWindow : public QMainWindow {
     MeshView* view_;
     QSvgWidget* svgPane_;
     QByteArray svg_;
-    Style style_ = viewer_style();
+    StyleEditor* styleEditor_;
+    Style style_;
     QMenu* recentMenu_ = nullptr;
     QLabel* meshLabel_;
     QProgressBar* busy_;

@@ -3,6 +3,7 @@
 
 #include <QApplication>
 #include <QDir>
+#include <QFile>
 #include <QSet>
 #include <QSignalSpy>
 #include <QStandardPaths>
@@ -14,6 +15,7 @@
 #include "ui/mainwindow.h"
 #include "ui/meshview.h"
 #include "ui/resources.h"
+#include "ui/styleeditor.h"
 
 using snaxels::ui::MainWindow;
 
@@ -79,6 +81,27 @@ class TestMainWindow : public QObject {
         QTest::mouseRelease(window.meshView(), Qt::LeftButton, {}, QPoint(380, 320));
         QVERIFY(contours.wait(30000));
         QVERIFY(window.currentSvg() != before);
+
+        // Editing the style redraws: the toon preset brings fills.
+        QFile toon(snaxels::ui::dataDirectory() + "/styles/toon.xml");
+        QVERIFY(toon.open(QIODevice::ReadOnly));
+        contours.clear();
+        window.styleEditor()->setText(QString::fromUtf8(toon.readAll()), "toon.xml");
+        QVERIFY(contours.wait(30000));
+        QVERIFY(window.currentSvg().contains("<g id=\"fills\""));
+        QVERIFY(window.currentSvg().contains("#f6c86b"));
+        window.grab().save(QString(SCREENSHOT_DIR) + "/mainwindow-toon.png");
+
+        // A broken style is reported at its line and column; the last good
+        // style stays in force.
+        const QByteArray good = window.currentSvg();
+        contours.clear();
+        window.styleEditor()->editor()->setPlainText(
+            "<style>\n  <contour kind=\"visual\">\n    <visible width=\"-3\"/>\n  </contour>\n</style>\n");
+        QTest::qWait(800);
+        QVERIFY2(window.styleEditor()->problem().startsWith("3:5: width=\"-3\""), qPrintable(window.styleEditor()->problem()));
+        QCOMPARE(contours.count(), 0);
+        QCOMPARE(window.currentSvg(), good);
     }
 
     void reportsAFileThatFailsToLoad() {
