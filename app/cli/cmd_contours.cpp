@@ -35,6 +35,7 @@ int run_contours(const std::vector<std::string>& argv) {
             auto specs = scene_option_specs();
             specs.push_back({"json", "OUT", "write the contours as JSON to OUT ('-' for standard output)"});
             specs.push_back({"svg", "OUT", "write the contours as SVG to OUT ('-' for standard output)"});
+            specs.push_back({"planar-map", "post", "build the post-processed planar map; the JSON lists its regions"});
             return specs;
         }(),
         {"MESH"});
@@ -43,6 +44,9 @@ int run_contours(const std::vector<std::string>& argv) {
         return 0;
     }
     SceneOptions scene = parse_scene_options(args);
+    const auto planar = args.value("planar-map");
+    if (planar && *planar != "post")
+        throw UsageError("--planar-map takes 'post' (the post-processed map), not '" + *planar + "'");
     const std::string json_out = args.value("json").value_or("");
     const std::string svg_out = args.value("svg").value_or("");
     if (!json_out.empty() && json_out == svg_out)
@@ -62,6 +66,7 @@ int run_contours(const std::vector<std::string>& argv) {
     job.kinds = scene.kinds;
     job.style = scene.style;
     job.visibility = scene.visibility;
+    job.planar_map = bool(planar);
     if (scene.check) job.engine.check_invariants = true;
     const StillOutput still = render_still(loaded, topology, nullptr, job);
     const std::vector<ContourResult>& results = still.results;
@@ -73,7 +78,10 @@ int run_contours(const std::vector<std::string>& argv) {
     };
     if (!svg_out.empty()) emit(svg_out, still.svg);
     if (!json_out.empty())
-        emit(json_out, contours_to_json(report, camera, light, still.drawing, results).dump() + "\n");
+        emit(json_out, contours_to_json(report, camera, light, still.drawing, results,
+                                        planar || !still.regions.empty() ? &still.regions : nullptr)
+                               .dump() +
+                           "\n");
     if (json_out.empty() && svg_out.empty()) {
         std::cout << report.source << ": " << report.vertices << " vertices, " << report.faces
                   << " faces\n";

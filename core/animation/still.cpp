@@ -28,7 +28,7 @@ StillOutput render_still(const LoadedMesh& mesh, const MeshTopology& topology, c
 
     // Fills: the post-processed planar map of the contours the style's
     // region classes need (computed here if they are not drawn).
-    if (!job.style.regions.empty()) {
+    if (!job.style.regions.empty() || job.planar_map) {
         std::vector<ContourResult> fill_results;
         auto same = [](const ContourSpec& a, const ContourSpec& b) { return a.kind == b.kind && std::abs(a.k - b.k) < 1e-9; };
         auto result_of = [&](const ContourSpec& spec) -> const ContourResult* {
@@ -38,7 +38,9 @@ StillOutput render_still(const LoadedMesh& mesh, const MeshTopology& topology, c
                 if (same(r.spec, spec)) return &r;
             return nullptr;
         };
-        const std::vector<ContourSpec> needed = job.style.fill_contours();
+        std::vector<ContourSpec> needed = job.style.fill_contours();
+        if (needed.empty()) // the whole map: patches, lit and shadow
+            needed = {ContourSpec{}, ContourSpec{ContourKind::Shadow, 0.0}};
         fill_results.reserve(needed.size()); // result_of's pointers must stay valid
         for (const ContourSpec& spec : needed)
             if (!result_of(spec)) fill_results.push_back(engine.compute(spec, job.camera, job.light, job.engine));

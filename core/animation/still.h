@@ -20,6 +20,7 @@ struct StillJob {
     std::vector<ContourSpec> kinds{ContourSpec{}}; ///< the contours drawn
     Style style = default_style();
     bool visibility = true;
+    bool planar_map = false; ///< build the post-processed map even without fills
     EngineOptions engine;
 };
 
@@ -27,7 +28,7 @@ struct StillOutput {
     std::vector<ContourResult> results;        ///< parallel to the job's kinds
     std::vector<ContourVisibility> visibility; ///< parallel to results, when computed
     Drawing drawing;
-    std::vector<MapRegion> regions;            ///< when the style has fills
+    std::vector<MapRegion> regions;            ///< when the style has fills or the job asks
     std::string svg;
 };
 

@@ -11,7 +11,8 @@ nlohmann::json stats_json(const ContourStats& s) {
 } // namespace
 
 nlohmann::json contours_to_json(const MeshReport& mesh, const Camera& camera, const Light& light,
-                                const Drawing& drawing, const std::vector<ContourResult>& results) {
+                                const Drawing& drawing, const std::vector<ContourResult>& results,
+                                const std::vector<MapRegion>* regions) {
     nlohmann::json doc;
     doc["mesh"] = {{"source", mesh.source},
                    {"vertices", mesh.vertices},
@@ -52,6 +53,24 @@ nlohmann::json contours_to_json(const MeshReport& mesh, const Camera& camera, co
         total.ms += r.stats.ms;
     }
     doc["contours"] = std::move(contours);
+    if (regions) {
+        nlohmann::json list = nlohmann::json::array();
+        for (const MapRegion& r : *regions) {
+            nlohmann::json polygons = nlohmann::json::array();
+            for (const auto& poly : r.polygons) {
+                nlohmann::json points = nlohmann::json::array();
+                for (const glm::dvec2& p : poly) points.push_back({p.x, p.y});
+                polygons.push_back(std::move(points));
+            }
+            list.push_back({{"class", region_class_name(r.cls)},
+                            {"k", r.k},
+                            {"depth", r.depth},
+                            {"visible", true},
+                            {"area", r.area},
+                            {"polygons", std::move(polygons)}});
+        }
+        doc["regions"] = std::move(list);
+    }
     doc["stats"] = stats_json(total);
     return doc;
 }

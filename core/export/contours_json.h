@@ -4,13 +4,16 @@
 #include <nlohmann/json.hpp>
 
 #include "core/export/drawing.h"
+#include "core/planarmap/post_map.h"
 #include "core/mesh/report.h"
 
 namespace snaxels {
 
 /// One JSON document with the mesh, camera, light, image size, every
 /// contour's loops of snaxels (p in 3-D, q in pixels) and engine statistics.
+/// With @p regions, a "regions" member lists the planar map.
 nlohmann::json contours_to_json(const MeshReport& mesh, const Camera& camera, const Light& light,
-                                const Drawing& drawing, const std::vector<ContourResult>& results);
+                                const Drawing& drawing, const std::vector<ContourResult>& results,
+                                const std::vector<MapRegion>* regions = nullptr);
 
 } // namespace snaxels
