@@ -40,6 +40,7 @@ LoadResult loadInBackground(const QString& spec) {
     try {
         auto mesh = std::make_shared<const LoadedMesh>(load_mesh(spec.toStdString()));
         result.scene = make_contour_scene(*mesh);
+        result.geometry = std::make_shared<MeshGeometry>(mesh_geometry(mesh->mesh));
         result.mesh = std::move(mesh);
     } catch (const std::bad_alloc&) {
         result.error = spec + ": out of memory while loading";
@@ -215,7 +216,7 @@ void MainWindow::openMesh(const QString& spec) {
 
 void MainWindow::onLoadFinished() {
     busy_->hide();
-    const LoadResult result = watcher_.result();
+    LoadResult result = watcher_.result();
     if (!result.mesh) {
         statusBar()->showMessage(tr("Could not open %1").arg(loadingSpec_), 8000);
         auto* box = new QMessageBox(QMessageBox::Warning, tr("Could not open mesh"), result.error,
@@ -229,7 +230,7 @@ void MainWindow::onLoadFinished() {
     mesh_ = result.mesh;
     scene_ = result.scene;
     view_->setContours({});
-    view_->setMesh(mesh_->mesh); // frames the camera, which schedules contours
+    view_->setGeometry(std::move(*result.geometry)); // frames the camera, which schedules contours
     const MeshReport& r = mesh_->report;
     meshLabel_->setText(tr("%1 vertices, %2 faces, %3 boundary edges%4")
                             .arg(r.vertices)

@@ -26,6 +26,7 @@ class StyleEditor;
 struct LoadResult {
     std::shared_ptr<const LoadedMesh> mesh;
     std::shared_ptr<ContourScene> scene;
+    std::shared_ptr<MeshGeometry> geometry;
     QString error;
 };
 

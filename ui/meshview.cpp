@@ -87,9 +87,9 @@ MeshView::~MeshView() {
     doneCurrent();
 }
 
-void MeshView::setMesh(const Mesh& mesh) {
-    vertices_.clear();
-    vertices_.reserve(mesh.n_faces() * 18);
+MeshGeometry mesh_geometry(const Mesh& mesh) {
+    MeshGeometry g;
+    g.vertices.reserve(mesh.n_faces() * 18);
     glm::dvec3 lo(std::numeric_limits<double>::max()), hi(-std::numeric_limits<double>::max());
     for (const auto vh : mesh.vertices()) {
         lo = glm::min(lo, to_glm(mesh.point(vh)));
@@ -99,12 +99,20 @@ void MeshView::setMesh(const Mesh& mesh) {
         for (const auto vh : mesh.fv_range(fh)) {
             const auto& p = mesh.point(vh);
             const auto& n = mesh.normal(vh);
-            vertices_.insert(vertices_.end(), {float(p[0]), float(p[1]), float(p[2]), float(n[0]),
-                                               float(n[1]), float(n[2])});
+            g.vertices.insert(g.vertices.end(), {float(p[0]), float(p[1]), float(p[2]), float(n[0]), float(n[1]), float(n[2])});
         }
+    g.centre = mesh.n_vertices() ? 0.5 * (lo + hi) : glm::dvec3(0.0);
+    g.radius = mesh.n_vertices() ? std::max(0.5 * glm::length(hi - lo), 1e-9) : 1.0;
+    return g;
+}
+
+void MeshView::setMesh(const Mesh& mesh) { setGeometry(mesh_geometry(mesh)); }
+
+void MeshView::setGeometry(MeshGeometry geometry) {
+    vertices_ = std::move(geometry.vertices);
     vertexCount_ = static_cast<int>(vertices_.size() / 6);
-    centre_ = mesh.n_vertices() ? 0.5 * (lo + hi) : glm::dvec3(0.0);
-    radius_ = mesh.n_vertices() ? std::max(0.5 * glm::length(hi - lo), 1e-9) : 1.0;
+    centre_ = geometry.centre;
+    radius_ = geometry.radius;
     dirty_ = true;
     resetCamera();
 }

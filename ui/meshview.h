@@ -19,6 +19,16 @@
 
 namespace snaxels::ui {
 
+/// Triangles ready for the GPU (position and normal per corner), and the
+/// bounding sphere the camera frames; built off the GUI thread for big meshes.
+struct MeshGeometry {
+    std::vector<float> vertices;
+    glm::dvec3 centre{0.0};
+    double radius = 1.0;
+};
+
+MeshGeometry mesh_geometry(const Mesh& mesh);
+
 /// A contour polyline to draw on the surface.
 struct ContourStrip {
     std::vector<glm::vec3> points;
@@ -35,6 +45,8 @@ class MeshView : public QOpenGLWidget, protected QOpenGLFunctions_3_3_Core {
 
     /// Copies the mesh's triangles for drawing and frames the camera on it.
     void setMesh(const Mesh& mesh);
+    /// The same with triangles prepared by mesh_geometry (on any thread).
+    void setGeometry(MeshGeometry geometry);
     void clearMesh();
     /// Frames the whole mesh in a three-quarter view.
     void resetCamera();
