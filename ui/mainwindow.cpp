@@ -239,7 +239,7 @@ void MainWindow::onLoadFinished() {
                             .arg(r.split_vertices ? tr(", %1 vertices split").arg(r.split_vertices)
                                                   : QString()));
     setWindowTitle(tr("%1 — snaxels").arg(QFileInfo(loadingSpec_).fileName()));
-    statusBar()->showMessage(tr("Loaded %1").arg(loadingSpec_), 4000);
+    statusBar()->showMessage(tr("Loaded %1").arg(QFileInfo(loadingSpec_).fileName()), 4000);
     if (!loadingSpec_.startsWith("proc:")) addRecentFile(QFileInfo(loadingSpec_).absoluteFilePath());
     emit meshLoaded(loadingSpec_);
 }

@@ -3,10 +3,15 @@
 
 #include <QApplication>
 #include <QCommandLineParser>
+#include <QFile>
 #include <QSurfaceFormat>
+#include <QTimer>
+
+#include <cstdio>
 
 #include "ui/mainwindow.h"
 #include "ui/resources.h"
+#include "ui/styleeditor.h"
 
 int main(int argc, char** argv) {
     QSurfaceFormat format;
@@ -27,10 +32,37 @@ int main(int argc, char** argv) {
     parser.addVersionOption();
     parser.addPositionalArgument("mesh", "Mesh file or proc:NAME[:FACES] to open "
                                          "(default: the bundled Spot scene).");
+    const QCommandLineOption style_option("style-file", "Start with this XML style (docs/styles.md).", "xml");
+    const QCommandLineOption screenshot_option(
+        "screenshot", "Save a picture of the window to this PNG once the drawing is ready, then quit.", "png");
+    parser.addOption(style_option);
+    parser.addOption(screenshot_option);
     parser.process(app);
 
     snaxels::ui::MainWindow window;
+    if (parser.isSet(style_option)) {
+        QFile in(parser.value(style_option));
+        if (!in.open(QIODevice::ReadOnly)) {
+            std::fprintf(stderr, "snaxels: cannot read %s: %s\n", qPrintable(in.fileName()), qPrintable(in.errorString()));
+            return 1;
+        }
+        window.styleEditor()->setText(QString::fromUtf8(in.readAll()), in.fileName());
+    }
     window.show();
+    if (parser.isSet(screenshot_option)) {
+        const QString png = parser.value(screenshot_option);
+        QObject::connect(&window, &snaxels::ui::MainWindow::contoursUpdated, &window, [&window, png] {
+            QTimer::singleShot(300, &window, [&window, png] {
+                const bool saved = window.grab().save(png);
+                if (!saved) std::fprintf(stderr, "snaxels: cannot write %s\n", qPrintable(png));
+                QApplication::exit(saved ? 0 : 1);
+            });
+        });
+        QObject::connect(&window, &snaxels::ui::MainWindow::loadFailed, &window, [](const QString& message) {
+            std::fprintf(stderr, "snaxels: %s\n", qPrintable(message));
+            QApplication::exit(1);
+        });
+    }
     const QStringList args = parser.positionalArguments();
     window.openMesh(args.isEmpty() ? snaxels::ui::defaultScenePath() : args.first());
     return app.exec();
