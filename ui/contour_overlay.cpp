@@ -27,11 +27,11 @@ std::shared_ptr<ContourScene> make_contour_scene(const LoadedMesh& mesh) {
 }
 
 OverlayResult compute_overlay(const LoadedMesh& mesh, const ContourScene& scene, const Camera& camera,
-                              const Style& style) {
+                              const Style& style, const std::optional<Light>& light) {
     const auto start = std::chrono::steady_clock::now();
     StillJob job;
     job.camera = camera;
-    job.light = style.light ? *style.light : default_light(camera);
+    job.light = light ? *light : style.light ? *style.light : default_light(camera);
     job.kinds.clear();
     for (const ContourStyle& cs : style.contours) job.kinds.push_back(cs.spec);
     if (job.kinds.empty()) job.kinds.push_back({});

@@ -3,6 +3,7 @@
 // fronts with their hidden parts, as strips the view draws on the surface.
 
 #include <memory>
+#include <optional>
 #include <vector>
 
 #include "core/mesh/build.h"
@@ -37,6 +38,6 @@ const char* view_colour(ContourKind kind);
 /// left (unless the style says otherwise): strips for the 3-D view and the
 /// SVG that export writes, from one computation.
 OverlayResult compute_overlay(const LoadedMesh& mesh, const ContourScene& scene, const Camera& camera,
-                              const Style& style);
+                              const Style& style, const std::optional<Light>& light = std::nullopt);
 
 } // namespace snaxels::ui

@@ -4,6 +4,10 @@
 #include <QApplication>
 #include <QCloseEvent>
 #include <QDir>
+#include <QPointer>
+#include <QProgressDialog>
+#include <atomic>
+#include <glm/gtx/rotate_vector.hpp>
 #include <QDockWidget>
 #include <QDragEnterEvent>
 #include <QFile>
@@ -29,6 +33,8 @@
 #include "ui/meshview.h"
 #include "ui/resources.h"
 #include "ui/styleeditor.h"
+#include "ui/timeline.h"
+#include "core/animation/pipeline.h"
 
 namespace snaxels::ui {
 namespace {
@@ -54,7 +60,7 @@ LoadResult loadInBackground(const QString& spec) {
 
 MainWindow::MainWindow(QWidget* parent)
     : QMainWindow(parent), view_(new MeshView(this)), svgPane_(new QSvgWidget(this)),
-      styleEditor_(new StyleEditor(this)), meshLabel_(new QLabel(this)),
+      styleEditor_(new StyleEditor(this)), timeline_(new Timeline(this)), meshLabel_(new QLabel(this)),
       busy_(new QProgressBar(this)), contourLabel_(new QLabel(this)), contourTimer_(new QTimer(this)) {
     setWindowTitle("snaxels");
     // The 3-D view and, beside it, the SVG the export writes for this view.
@@ -78,6 +84,13 @@ MainWindow::MainWindow(QWidget* parent)
         style_ = style;
         scheduleContours();
     });
+
+    // The timeline, docked below: scrubbing turns the view or the light.
+    auto* timelineDock = new QDockWidget(tr("Timeline"), this);
+    timelineDock->setObjectName("timelineDock");
+    timelineDock->setWidget(timeline_);
+    addDockWidget(Qt::BottomDockWidgetArea, timelineDock);
+    connect(timeline_, &Timeline::changed, this, &MainWindow::applyFrame);
     setAcceptDrops(true);
     busy_->setRange(0, 0); // indeterminate: importers report no progress
     busy_->setMaximumWidth(160);
@@ -102,8 +115,109 @@ MainWindow::MainWindow(QWidget* parent)
 }
 
 MainWindow::~MainWindow() {
+    *exportCancel_ = true; // an export still running stops at its next frame
+    exportFuture_.waitForFinished();
     watcher_.waitForFinished();
     contourWatcher_.waitForFinished();
+}
+
+void MainWindow::applyFrame() {
+    const AnimationSpec spec = timeline_->spec();
+    if (spec.kind == AnimationSpec::Kind::Turntable) {
+        view_->centreView(); // turntables orbit the mesh's centre, as exports do
+        view_->setTurntable(spec.degrees_per_frame * timeline_->frame());
+    } else {
+        view_->setTurntable(0.0);
+    }
+    scheduleContours();
+}
+
+Light MainWindow::frameLight() const {
+    // As FrameDriver poses it: the base light turned about the vertical axis.
+    const AnimationSpec spec = timeline_->spec();
+    const Camera base = view_->baseCamera();
+    Light light = style_.light ? *style_.light : default_light(base);
+    const double angle = glm::radians(spec.degrees_per_frame * timeline_->frame());
+    const glm::dvec3 axis(0.0, 1.0, 0.0);
+    const glm::dvec3 centre = mesh_ ? 0.5 * (mesh_->report.bbox_min + mesh_->report.bbox_max) : glm::dvec3(0.0);
+    if (spec.kind == AnimationSpec::Kind::Turntable && !light.point) light.dir = glm::rotate(light.dir, angle, axis);
+    if (spec.kind == AnimationSpec::Kind::LightOrbit) {
+        if (light.point) light.pos = centre + glm::rotate(light.pos - centre, angle, axis);
+        else light.dir = glm::rotate(light.dir, angle, axis);
+    }
+    return light;
+}
+
+bool MainWindow::exportFrame(const QString& path) {
+    try {
+        write_file_atomically(path.toStdString(), svg_.toStdString());
+        statusBar()->showMessage(tr("Exported %1").arg(QFileInfo(path).fileName()), 4000);
+        emit exportFinished(path);
+        return true;
+    } catch (const std::exception& e) {
+        const QString message = QString::fromStdString(e.what());
+        QMessageBox::warning(this, tr("Export Frame"), message);
+        emit exportFailed(message);
+        return false;
+    }
+}
+
+void MainWindow::exportAnimation(const QString& path) {
+    if (!mesh_ || exporting_) return;
+    exporting_ = true;
+    AnimationJob job;
+    job.animation = timeline_->spec();
+    job.camera = view_->baseCamera();
+    job.light = style_.light ? *style_.light : default_light(job.camera);
+    job.kinds.clear();
+    for (const ContourStyle& cs : style_.contours) job.kinds.push_back(cs.spec);
+    if (job.kinds.empty()) job.kinds.push_back({});
+    job.style = style_;
+    job.engine.check_invariants = false;
+
+    auto* dialog = new QProgressDialog(tr("Exporting %1…").arg(QFileInfo(path).fileName()), tr("Cancel"), 0,
+                                       job.animation.frames, this);
+    dialog->setAttribute(Qt::WA_DeleteOnClose);
+    dialog->setWindowModality(Qt::WindowModal);
+    dialog->setMinimumDuration(300);
+    exportCancel_ = std::make_shared<std::atomic<bool>>(false);
+    auto cancelled = exportCancel_;
+    connect(dialog, &QProgressDialog::canceled, this, [cancelled] { *cancelled = true; });
+    QPointer<QProgressDialog> guard(dialog);
+    job.progress = [guard](int done, int) {
+        QMetaObject::invokeMethod(qApp, [guard, done] {
+            if (guard) guard->setValue(done);
+        }, Qt::QueuedConnection);
+    };
+    job.cancelled = [cancelled] { return cancelled->load(); };
+    const std::shared_ptr<const LoadedMesh> mesh = mesh_;
+    const std::string mesh_path = loadingSpec_.toStdString();
+    auto* watcher = new QFutureWatcher<QString>(this);
+    connect(watcher, &QFutureWatcher<QString>::finished, this, [this, watcher, guard, path] {
+        const QString error = watcher->result();
+        watcher->deleteLater();
+        if (guard) guard->close();
+        exporting_ = false;
+        if (error.isEmpty()) {
+            statusBar()->showMessage(tr("Exported %1").arg(QFileInfo(path).fileName()), 6000);
+            emit exportFinished(path);
+        } else {
+            statusBar()->showMessage(error, 8000);
+            emit exportFailed(error);
+        }
+    });
+    exportFuture_ = QtConcurrent::run([mesh, mesh_path, job, path]() -> QString {
+        try {
+            const AnimationOutput out = run_animation(*mesh, mesh_path, job);
+            write_file_atomically(path.toStdString(), out.svg); // only now: a cancel leaves nothing
+            return {};
+        } catch (const AnimationCancelled&) {
+            return QObject::tr("Export cancelled; nothing was written");
+        } catch (const std::exception& e) {
+            return QString::fromStdString(e.what());
+        }
+    });
+    watcher->setFuture(exportFuture_);
 }
 
 void MainWindow::scheduleContours() {
@@ -121,8 +235,9 @@ void MainWindow::startContours() {
     const std::shared_ptr<const LoadedMesh> mesh = mesh_;
     const Camera camera = view_->camera();
     const Style style = style_;
-    contourWatcher_.setFuture(QtConcurrent::run([mesh, scene, camera, style] {
-        return compute_overlay(*mesh, *scene, camera, style);
+    const Light light = frameLight();
+    contourWatcher_.setFuture(QtConcurrent::run([mesh, scene, camera, style, light] {
+        return compute_overlay(*mesh, *scene, camera, style, light);
     }));
 }
 
@@ -160,6 +275,26 @@ void MainWindow::createMenus() {
     quit->setShortcut(QKeySequence::Quit);
 
     createStyleMenu();
+
+    QMenu* exportMenu = menuBar()->addMenu(tr("&Export"));
+    QAction* exportAnim = exportMenu->addAction(tr("&Animated SVG…"), this, [this] {
+        const QString path = QFileDialog::getSaveFileName(this, tr("Export Animated SVG"), QString(), tr("SVG (*.svg)"));
+        if (!path.isEmpty()) exportAnimation(path);
+    });
+    exportAnim->setShortcut(QKeySequence(tr("Ctrl+E")));
+    QAction* exportStill = exportMenu->addAction(tr("Current &Frame as SVG…"), this, [this] {
+        const QString path = QFileDialog::getSaveFileName(this, tr("Export Frame"), QString(), tr("SVG (*.svg)"));
+        if (!path.isEmpty()) exportFrame(path);
+    });
+    exportStill->setShortcut(QKeySequence(tr("Ctrl+Shift+E")));
+
+    QMenu* playMenu = menuBar()->addMenu(tr("&Play"));
+    QAction* play = playMenu->addAction(tr("Play / Pause"), timeline_, &Timeline::togglePlay);
+    play->setShortcut(Qt::Key_Space);
+    QAction* next = playMenu->addAction(tr("Next Frame"), this, [this] { timeline_->step(1); });
+    next->setShortcut(Qt::Key_Right);
+    QAction* previous = playMenu->addAction(tr("Previous Frame"), this, [this] { timeline_->step(-1); });
+    previous->setShortcut(Qt::Key_Left);
 
     QMenu* viewMenu = menuBar()->addMenu(tr("&View"));
     QAction* reset = viewMenu->addAction(tr("&Reset Camera"), view_, &MeshView::resetCamera);

@@ -3,6 +3,7 @@
 // status bar with the mesh report. Meshes load on a worker thread so the
 // window never freezes.
 
+#include <atomic>
 #include <memory>
 
 #include <QFutureWatcher>
@@ -21,6 +22,7 @@ namespace snaxels::ui {
 
 class MeshView;
 class StyleEditor;
+class Timeline;
 
 /// What a background load produces: a mesh or the one-line reason it failed.
 struct LoadResult {
@@ -42,6 +44,13 @@ class MainWindow : public QMainWindow {
     MeshView* meshView() const { return view_; }
     QSvgWidget* svgPane() const { return svgPane_; }
     StyleEditor* styleEditor() const { return styleEditor_; }
+    Timeline* timeline() const { return timeline_; }
+    /// Exports the timeline's animation as animated SVG to @p path off the
+    /// GUI thread, with a progress dialog that can cancel (nothing is
+    /// written then); ends with exportFinished or exportFailed.
+    void exportAnimation(const QString& path);
+    /// Writes the SVG of the current frame to @p path (atomically).
+    bool exportFrame(const QString& path);
     /// The SVG the pane shows: what export writes for the current view.
     const QByteArray& currentSvg() const { return svg_; }
     bool isLoading() const { return watcher_.isRunning(); }
@@ -54,6 +63,8 @@ class MainWindow : public QMainWindow {
     void loadFailed(const QString& message);
     /// New contours are on the 3-D view.
     void contoursUpdated();
+    void exportFinished(const QString& path);
+    void exportFailed(const QString& message);
 
   protected:
     void closeEvent(QCloseEvent* event) override;
@@ -65,6 +76,8 @@ class MainWindow : public QMainWindow {
     void createStyleMenu();
     void onLoadFinished();
     void scheduleContours();
+    void applyFrame();
+    Light frameLight() const;
     void startContours();
     void onContoursFinished();
     void addRecentFile(const QString& path);
@@ -74,6 +87,10 @@ class MainWindow : public QMainWindow {
     QSvgWidget* svgPane_;
     QByteArray svg_;
     StyleEditor* styleEditor_;
+    Timeline* timeline_;
+    bool exporting_ = false;
+    std::shared_ptr<std::atomic<bool>> exportCancel_ = std::make_shared<std::atomic<bool>>(false);
+    QFuture<QString> exportFuture_;
     Style style_;
     QMenu* recentMenu_ = nullptr;
     QLabel* meshLabel_;

@@ -143,6 +143,16 @@ Camera MeshView::camera() const {
     return c;
 }
 
+Camera MeshView::baseCamera() const {
+    MeshView* self = const_cast<MeshView*>(this); // the turntable is set back at once
+    const double turned = turntable_;
+    self->turntable_ = 0.0;
+    Camera c = camera();
+    self->turntable_ = turned;
+    c.up = glm::dvec3(0.0, 1.0, 0.0); // the turntable's axis; the screen basis is the same (no roll)
+    return c;
+}
+
 void MeshView::uploadContours() {
     lineVertices_.clear();
     lineRanges_.clear();
@@ -173,6 +183,19 @@ void MeshView::uploadContours() {
     glVertexAttribPointer(3, 1, GL_FLOAT, GL_FALSE, stride, reinterpret_cast<void*>(7 * sizeof(float)));
     lineVbo_.release();
     linesDirty_ = false;
+}
+
+void MeshView::setTurntable(double degrees) {
+    turntable_ = glm::radians(degrees);
+    update();
+    emit cameraChanged();
+}
+
+void MeshView::centreView() {
+    if (pan_ == glm::dvec3(0.0)) return;
+    pan_ = glm::dvec3(0.0);
+    update();
+    emit cameraChanged();
 }
 
 void MeshView::resetCamera() {
@@ -217,7 +240,8 @@ void MeshView::upload() {
 glm::dmat4 MeshView::viewMatrix() const {
     glm::dmat4 v = glm::translate(glm::dmat4(1.0), glm::dvec3(0.0, 0.0, -distance_) + pan_);
     v = glm::rotate(v, pitch_, glm::dvec3(1, 0, 0));
-    v = glm::rotate(v, yaw_, glm::dvec3(0, 1, 0));
+    // The camera orbits by +turntable: the world turns the other way.
+    v = glm::rotate(v, yaw_ - turntable_, glm::dvec3(0, 1, 0));
     return glm::translate(v, -centre_);
 }
 

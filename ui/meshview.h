@@ -50,10 +50,18 @@ class MeshView : public QOpenGLWidget, protected QOpenGLFunctions_3_3_Core {
     void clearMesh();
     /// Frames the whole mesh in a three-quarter view.
     void resetCamera();
+    /// Turns the mesh about the vertical axis through its centre, as a
+    /// turntable at @p degrees (the user's orbit is kept on top of it).
+    void setTurntable(double degrees);
+    /// Frames the mesh's centre (no pan), as turntables and exports assume.
+    void centreView();
     /// Replaces the contours drawn over the mesh.
     void setContours(std::vector<ContourStrip> strips);
     /// The view's camera, as the engine sees it (a perspective camera).
     Camera camera() const;
+    /// The camera before the turntable turns (frame 0), with world +Y as up:
+    /// what an animation export starts from.
+    Camera baseCamera() const;
 
   signals:
     /// The camera moved (orbit, pan, zoom, reset or a new mesh).
@@ -83,6 +91,7 @@ class MeshView : public QOpenGLWidget, protected QOpenGLFunctions_3_3_Core {
     glm::dvec3 centre_{0.0};
     double radius_ = 1.0;
     double yaw_ = 0.0, pitch_ = 0.0, distance_ = 3.0;
+    double turntable_ = 0.0; // radians
     glm::dvec3 pan_{0.0};
     QPoint lastPos_;
 

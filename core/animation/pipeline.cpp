@@ -63,6 +63,7 @@ AnimationOutput run_animation(const LoadedMesh& mesh, const std::string& mesh_pa
     std::vector<AnimationFrame> recorded;
     recorded.reserve(std::size_t(frames));
     for (int k = 0; k < frames; ++k) {
+        if (job.cancelled && job.cancelled()) throw AnimationCancelled();
         Camera camera;
         Light light;
         driver.apply(k, camera, light);

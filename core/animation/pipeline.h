@@ -4,6 +4,7 @@
 /// and write the animated SVG (and, on request, each frame as static SVG).
 
 #include <functional>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -28,6 +29,13 @@ struct AnimationJob {
     std::string frames_dir; ///< when set, every frame is also written there as static SVG
     /// Called after each frame with (frames done, frames in all).
     std::function<void(int, int)> progress;
+    /// Asked before each frame; true stops the run with AnimationCancelled.
+    std::function<bool()> cancelled;
+};
+
+/// Thrown by run_animation when the job's `cancelled` says so.
+struct AnimationCancelled : std::runtime_error {
+    AnimationCancelled() : std::runtime_error("the animation export was cancelled") {}
 };
 
 struct AnimationOutput {

@@ -4,6 +4,7 @@
 #include <QApplication>
 #include <QDir>
 #include <QFile>
+#include <QTemporaryDir>
 #include <QSet>
 #include <QSignalSpy>
 #include <QStandardPaths>
@@ -16,6 +17,7 @@
 #include "ui/meshview.h"
 #include "ui/resources.h"
 #include "ui/styleeditor.h"
+#include "ui/timeline.h"
 
 using snaxels::ui::MainWindow;
 
@@ -102,6 +104,43 @@ class TestMainWindow : public QObject {
         QVERIFY2(window.styleEditor()->problem().startsWith("3:5: width=\"-3\""), qPrintable(window.styleEditor()->problem()));
         QCOMPARE(contours.count(), 0);
         QCOMPARE(window.currentSvg(), good);
+    }
+
+    // Scrub the timeline, export the animation and a frame; a path that
+    // cannot be written is reported and leaves nothing behind.
+    void scrubsAndExports() {
+        MainWindow window;
+        window.resize(1200, 800);
+        window.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&window));
+        QSignalSpy contours(&window, &MainWindow::contoursUpdated);
+        window.openMesh(QString(SNAXELS_TEST_ASSETS) + "/spot.obj");
+        QVERIFY(contours.wait(60000));
+        const QByteArray first = window.currentSvg();
+        window.timeline()->setFrameCount(12);
+        contours.clear();
+        window.timeline()->setFrame(3); // 6 degrees of turntable
+        QVERIFY(contours.wait(30000));
+        QVERIFY(window.currentSvg() != first);
+
+        QTemporaryDir dir;
+        QSignalSpy finished(&window, &MainWindow::exportFinished);
+        QSignalSpy failed(&window, &MainWindow::exportFailed);
+        const QString animated = dir.filePath("turntable.svg");
+        window.exportAnimation(animated);
+        QVERIFY(finished.wait(120000));
+        QFile out(animated);
+        QVERIFY(out.open(QIODevice::ReadOnly));
+        const QByteArray svg = out.readAll();
+        QVERIFY(svg.contains("<animate attributeName=\"d\""));
+        QVERIFY(window.exportFrame(dir.filePath("frame.svg")));
+        QVERIFY(QFile::exists(dir.filePath("frame.svg")));
+
+        const QString nowhere = dir.filePath("missing-folder/out.svg");
+        window.exportAnimation(nowhere);
+        QVERIFY(failed.wait(120000));
+        QVERIFY2(failed.last().first().toString().contains("does not exist"), qPrintable(failed.last().first().toString()));
+        QVERIFY(!QFile::exists(nowhere));
     }
 
     void reportsAFileThatFailsToLoad() {

@@ -1,0 +1,88 @@
+#include "ui/timeline.h"
+
+#include <QCheckBox>
+#include <QComboBox>
+#include <QDoubleSpinBox>
+#include <QHBoxLayout>
+#include <QLabel>
+#include <QPushButton>
+#include <QSlider>
+#include <QSpinBox>
+
+namespace snaxels::ui {
+
+Timeline::Timeline(QWidget* parent)
+    : QWidget(parent), source_(new QComboBox(this)), degrees_(new QDoubleSpinBox(this)), frames_(new QSpinBox(this)),
+      fps_(new QDoubleSpinBox(this)), slider_(new QSlider(Qt::Horizontal, this)), label_(new QLabel(this)),
+      play_(new QPushButton(tr("Play"), this)), loop_(new QCheckBox(tr("Loop"), this)) {
+    source_->addItem(tr("Turntable"), int(AnimationSpec::Kind::Turntable));
+    source_->addItem(tr("Orbiting light"), int(AnimationSpec::Kind::LightOrbit));
+    degrees_->setRange(-90.0, 90.0);
+    degrees_->setDecimals(2);
+    degrees_->setValue(2.0);
+    degrees_->setSuffix(tr("°/frame"));
+    frames_->setRange(1, 100000);
+    frames_->setValue(180);
+    frames_->setSuffix(tr(" frames"));
+    fps_->setRange(1.0, 240.0);
+    fps_->setValue(24.0);
+    fps_->setSuffix(tr(" fps"));
+    slider_->setRange(0, frames_->value() - 1);
+    loop_->setChecked(true);
+    play_->setCheckable(true);
+    auto* layout = new QHBoxLayout(this);
+    for (QWidget* w : std::initializer_list<QWidget*>{source_, degrees_, frames_, fps_, play_, loop_}) layout->addWidget(w);
+    layout->addWidget(slider_, 1);
+    layout->addWidget(label_);
+    auto refresh = [this] {
+        label_->setText(tr("frame %1 / %2").arg(slider_->value()).arg(frames_->value() - 1));
+        emit changed();
+    };
+    connect(slider_, &QSlider::valueChanged, this, refresh);
+    connect(source_, &QComboBox::currentIndexChanged, this, refresh);
+    connect(degrees_, &QDoubleSpinBox::valueChanged, this, refresh);
+    connect(fps_, &QDoubleSpinBox::valueChanged, this, [this] { timer_.setInterval(int(1000.0 / fps_->value())); });
+    connect(frames_, &QSpinBox::valueChanged, this, [this](int n) { setFrameCount(n); });
+    connect(play_, &QPushButton::clicked, this, &Timeline::togglePlay);
+    connect(&timer_, &QTimer::timeout, this, &Timeline::advance);
+    timer_.setInterval(int(1000.0 / fps_->value()));
+    label_->setText(tr("frame 0 / %1").arg(frames_->value() - 1));
+}
+
+AnimationSpec Timeline::spec() const {
+    AnimationSpec s;
+    s.kind = AnimationSpec::Kind(source_->currentData().toInt());
+    s.degrees_per_frame = degrees_->value();
+    s.frames = frames_->value();
+    s.fps = fps_->value();
+    return s;
+}
+
+int Timeline::frame() const { return slider_->value(); }
+void Timeline::setFrame(int frame) { slider_->setValue(std::clamp(frame, 0, frames_->value() - 1)); }
+
+void Timeline::setFrameCount(int frames) {
+    if (frames_->value() != frames) frames_->setValue(frames);
+    slider_->setRange(0, frames - 1);
+    label_->setText(tr("frame %1 / %2").arg(slider_->value()).arg(frames - 1));
+}
+
+void Timeline::togglePlay() {
+    if (timer_.isActive()) timer_.stop();
+    else timer_.start();
+    play_->setChecked(timer_.isActive());
+    play_->setText(timer_.isActive() ? tr("Pause") : tr("Play"));
+}
+
+void Timeline::step(int delta) {
+    const int n = frames_->value();
+    setFrame(((frame() + delta) % n + n) % n);
+}
+
+void Timeline::advance() {
+    if (frame() + 1 < frames_->value()) setFrame(frame() + 1);
+    else if (loop_->isChecked()) setFrame(0);
+    else togglePlay();
+}
+
+} // namespace snaxels::ui
