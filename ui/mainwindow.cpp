@@ -46,7 +46,7 @@ LoadResult loadInBackground(const QString& spec) {
     try {
         auto mesh = std::make_shared<const LoadedMesh>(load_mesh(spec.toStdString()));
         result.scene = make_contour_scene(*mesh);
-        result.geometry = std::make_shared<MeshGeometry>(mesh_geometry(mesh->mesh));
+        result.geometry = std::make_shared<MeshGeometry>(mesh_geometry(mesh->mesh, display_face_budget()));
         result.mesh = std::move(mesh);
     } catch (const std::bad_alloc&) {
         result.error = spec + ": out of memory while loading";

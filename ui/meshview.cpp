@@ -1,6 +1,8 @@
 #include "ui/meshview.h"
 
 #include <algorithm>
+#include <atomic>
+#include <unordered_map>
 #include <cmath>
 
 #include <QMouseEvent>
@@ -87,26 +89,74 @@ MeshView::~MeshView() {
     doneCurrent();
 }
 
-MeshGeometry mesh_geometry(const Mesh& mesh) {
+namespace {
+
+// Faces the view draws at most; 0: no limit. Set when the GL context shows
+// a software renderer, which draws a million triangles in a sixth of a second.
+std::atomic<std::size_t> face_budget{0};
+
+} // namespace
+
+std::size_t display_face_budget() { return face_budget.load(); }
+
+MeshGeometry mesh_geometry(const Mesh& mesh, std::size_t max_faces) {
     MeshGeometry g;
-    g.vertices.reserve(mesh.n_faces() * 18);
     glm::dvec3 lo(std::numeric_limits<double>::max()), hi(-std::numeric_limits<double>::max());
     for (const auto vh : mesh.vertices()) {
         lo = glm::min(lo, to_glm(mesh.point(vh)));
         hi = glm::max(hi, to_glm(mesh.point(vh)));
     }
-    for (const auto fh : mesh.faces())
-        for (const auto vh : mesh.fv_range(fh)) {
-            const auto& p = mesh.point(vh);
-            const auto& n = mesh.normal(vh);
-            g.vertices.insert(g.vertices.end(), {float(p[0]), float(p[1]), float(p[2]), float(n[0]), float(n[1]), float(n[2])});
-        }
     g.centre = mesh.n_vertices() ? 0.5 * (lo + hi) : glm::dvec3(0.0);
     g.radius = mesh.n_vertices() ? std::max(0.5 * glm::length(hi - lo), 1e-9) : 1.0;
+    auto corner = [&g](const glm::dvec3& p, const glm::dvec3& n) {
+        g.vertices.insert(g.vertices.end(), {float(p.x), float(p.y), float(p.z), float(n.x), float(n.y), float(n.z)});
+    };
+    if (max_faces == 0 || mesh.n_faces() <= max_faces) {
+        g.vertices.reserve(mesh.n_faces() * 18);
+        for (const auto fh : mesh.faces())
+            for (const auto vh : mesh.fv_range(fh)) corner(to_glm(mesh.point(vh)), to_glm(mesh.normal(vh)));
+        return g;
+    }
+    // Vertex clustering on a uniform grid: each cell's vertices merge into
+    // their mean, faces that collapse are dropped. Display only: contours
+    // are always computed on the full mesh.
+    const glm::dvec3 size = glm::max(hi - lo, glm::dvec3(1e-12));
+    const double cells = std::cbrt(double(max_faces) * 0.5 * size.x * size.x / (size.y * size.z) + 1.0);
+    const double cell = std::max(size.x / std::max(cells, 1.0), 1e-12);
+    const glm::dvec3 dims = glm::ceil(size / cell) + 1.0;
+    std::unordered_map<std::uint64_t, std::uint32_t> cluster_of_cell;
+    std::vector<std::uint32_t> cluster(mesh.n_vertices());
+    std::vector<glm::dvec3> sum_p, sum_n;
+    for (const auto vh : mesh.vertices()) {
+        const glm::dvec3 q = glm::floor((to_glm(mesh.point(vh)) - lo) / cell);
+        const std::uint64_t key = std::uint64_t(q.x) + std::uint64_t(dims.x) * (std::uint64_t(q.y) + std::uint64_t(dims.y) * std::uint64_t(q.z));
+        auto [it, inserted] = cluster_of_cell.try_emplace(key, std::uint32_t(sum_p.size()));
+        if (inserted) sum_p.emplace_back(0.0), sum_n.emplace_back(0.0);
+        cluster[vh.idx()] = it->second;
+        sum_p[it->second] += to_glm(mesh.point(vh));
+        sum_n[it->second] += to_glm(mesh.normal(vh));
+    }
+    std::vector<std::uint32_t> count(sum_p.size(), 0);
+    for (const auto c : cluster) ++count[c];
+    for (std::size_t c = 0; c < sum_p.size(); ++c) {
+        sum_p[c] /= double(count[c]);
+        const double len = glm::length(sum_n[c]);
+        sum_n[c] = len > 0.0 ? sum_n[c] / len : glm::dvec3(0.0, 0.0, 1.0);
+    }
+    for (const auto fh : mesh.faces()) {
+        std::uint32_t c[3];
+        int k = 0;
+        for (const auto vh : mesh.fv_range(fh)) c[k++] = cluster[vh.idx()];
+        if (c[0] == c[1] || c[1] == c[2] || c[0] == c[2]) continue;
+        // Clustering can fold a face over; such slivers would show dark.
+        const glm::dvec3 n = glm::cross(sum_p[c[1]] - sum_p[c[0]], sum_p[c[2]] - sum_p[c[0]]);
+        if (glm::dot(n, sum_n[c[0]] + sum_n[c[1]] + sum_n[c[2]]) <= 0.0) continue;
+        for (const auto i : c) corner(sum_p[i], sum_n[i]);
+    }
     return g;
 }
 
-void MeshView::setMesh(const Mesh& mesh) { setGeometry(mesh_geometry(mesh)); }
+void MeshView::setMesh(const Mesh& mesh) { setGeometry(mesh_geometry(mesh, display_face_budget())); }
 
 void MeshView::setGeometry(MeshGeometry geometry) {
     vertices_ = std::move(geometry.vertices);
@@ -210,6 +260,10 @@ void MeshView::resetCamera() {
 
 void MeshView::initializeGL() {
     initializeOpenGLFunctions();
+    const QString renderer = QString::fromLatin1(reinterpret_cast<const char*>(glGetString(GL_RENDERER)));
+    if (renderer.contains("llvmpipe", Qt::CaseInsensitive) || renderer.contains("softpipe", Qt::CaseInsensitive) ||
+        renderer.contains("SwiftShader", Qt::CaseInsensitive))
+        face_budget = 250'000;
     program_.addShaderFromSourceCode(QOpenGLShader::Vertex, kVertexShader);
     program_.addShaderFromSourceCode(QOpenGLShader::Fragment, kFragmentShader);
     program_.link();

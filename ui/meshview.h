@@ -27,7 +27,12 @@ struct MeshGeometry {
     double radius = 1.0;
 };
 
-MeshGeometry mesh_geometry(const Mesh& mesh);
+/// The triangles to draw; above @p max_faces (0: no limit) a lighter mesh
+/// made by vertex clustering, for software renderers.
+MeshGeometry mesh_geometry(const Mesh& mesh, std::size_t max_faces = 0);
+
+/// The face budget of the view's renderer (0: none; set for software renderers).
+std::size_t display_face_budget();
 
 /// A contour polyline to draw on the surface.
 struct ContourStrip {

@@ -3,6 +3,8 @@
 
 #include <QApplication>
 #include <QDir>
+#include <QElapsedTimer>
+#include <QTimer>
 #include <QFile>
 #include <QTemporaryDir>
 #include <QSet>
@@ -141,6 +143,35 @@ class TestMainWindow : public QObject {
         QVERIFY(failed.wait(120000));
         QVERIFY2(failed.last().first().toString().contains("does not exist"), qPrintable(failed.last().first().toString()));
         QVERIFY(!QFile::exists(nowhere));
+    }
+
+    // Loading a million faces runs off the GUI thread: the event loop never
+    // stalls for 200 ms or more while the mesh loads and its contours come.
+    void loadsAMillionFacesWithoutFreezing() {
+        MainWindow window;
+        window.resize(1000, 700);
+        window.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&window));
+        QSignalSpy loaded(&window, &MainWindow::meshLoaded);
+        QSignalSpy contours(&window, &MainWindow::contoursUpdated);
+        QElapsedTimer clock;
+        qint64 last = 0, worst = 0;
+        QTimer tick;
+        tick.setInterval(5);
+        connect(&tick, &QTimer::timeout, [&] {
+            const qint64 now = clock.elapsed();
+            worst = std::max(worst, now - last);
+            last = now;
+        });
+        clock.start();
+        tick.start();
+        window.openMesh("proc:bumpy:1000000");
+        QVERIFY(loaded.wait(180000));
+        QVERIFY(contours.wait(180000));
+        QTest::qWait(300);
+        tick.stop();
+        qInfo() << "longest event-loop stall while loading 1M faces:" << worst << "ms";
+        QVERIFY2(worst < 200, qPrintable(QString("the event loop stalled for %1 ms").arg(worst)));
     }
 
     void reportsAFileThatFailsToLoad() {
