@@ -13,7 +13,6 @@
 namespace snaxels::ui {
 namespace {
 
-constexpr double kFovDeg = 35.0;
 
 const char* kVertexShader = R"(#version 330 core
 layout(location = 0) in vec3 position;
@@ -180,27 +179,17 @@ void MeshView::setContours(std::vector<ContourStrip> strips) {
     update();
 }
 
-Camera MeshView::camera() const {
-    // The inverse view matrix gives the eye and its axes in world space.
-    const glm::dmat4 inv = glm::inverse(viewMatrix());
-    Camera c;
-    c.projection = Camera::Projection::Perspective;
-    c.eye = glm::dvec3(inv * glm::dvec4(0, 0, 0, 1));
-    const glm::dvec3 forward = glm::normalize(glm::dvec3(inv * glm::dvec4(0, 0, -1, 0)));
-    c.target = c.eye + forward * distance_;
-    c.up = glm::normalize(glm::dvec3(inv * glm::dvec4(0, 1, 0, 0)));
-    c.fov_deg = kFovDeg;
-    return c;
-}
+Camera MeshView::camera() const { return orbit_camera(orbit_); }
 
-Camera MeshView::baseCamera() const {
-    MeshView* self = const_cast<MeshView*>(this); // the turntable is set back at once
-    const double turned = turntable_;
-    self->turntable_ = 0.0;
-    Camera c = camera();
-    self->turntable_ = turned;
-    c.up = glm::dvec3(0.0, 1.0, 0.0); // the turntable's axis; the screen basis is the same (no roll)
-    return c;
+Camera MeshView::baseCamera() const { return orbit_base_camera(orbit_); }
+
+void MeshView::setOrbit(const OrbitView& orbit) {
+    const double turntable = orbit_.turntable;
+    orbit_ = orbit;
+    orbit_.centre = centre_; // the mesh's, whatever was saved
+    orbit_.turntable = turntable;
+    update();
+    emit cameraChanged();
 }
 
 void MeshView::uploadContours() {
@@ -236,26 +225,26 @@ void MeshView::uploadContours() {
 }
 
 void MeshView::setTurntable(double degrees) {
-    turntable_ = glm::radians(degrees);
+    orbit_.turntable = glm::radians(degrees);
     update();
     emit cameraChanged();
 }
 
 void MeshView::centreView() {
-    if (pan_ == glm::dvec3(0.0)) return;
-    pan_ = glm::dvec3(0.0);
+    if (orbit_.pan == glm::dvec3(0.0)) return;
+    orbit_.pan = glm::dvec3(0.0);
     update();
     emit cameraChanged();
 }
 
 void MeshView::resetCamera() {
     // A three-quarter view from slightly above reads shapes best.
-    yaw_ = 3.8;
-    pitch_ = 0.3;
-    pan_ = glm::dvec3(0.0);
-    distance_ = radius_ / std::sin(glm::radians(kFovDeg * 0.5)) * 1.05;
+    const double turntable = orbit_.turntable;
+    orbit_ = framing_view(centre_, radius_);
+    orbit_.turntable = turntable;
     update();
     emit cameraChanged();
+    emit viewEdited();
 }
 
 void MeshView::initializeGL() {
@@ -291,18 +280,12 @@ void MeshView::upload() {
     dirty_ = false;
 }
 
-glm::dmat4 MeshView::viewMatrix() const {
-    glm::dmat4 v = glm::translate(glm::dmat4(1.0), glm::dvec3(0.0, 0.0, -distance_) + pan_);
-    v = glm::rotate(v, pitch_, glm::dvec3(1, 0, 0));
-    // The camera orbits by +turntable: the world turns the other way.
-    v = glm::rotate(v, yaw_ - turntable_, glm::dvec3(0, 1, 0));
-    return glm::translate(v, -centre_);
-}
+glm::dmat4 MeshView::viewMatrix() const { return orbit_view_matrix(orbit_); }
 
 glm::dmat4 MeshView::projectionMatrix() const {
     const double aspect = double(std::max(width(), 1)) / std::max(height(), 1);
-    const double near = std::max(distance_ - radius_ * 1.5, distance_ * 1e-3);
-    return glm::perspective(glm::radians(kFovDeg), aspect, near, distance_ + radius_ * 1.5);
+    const double near = std::max(orbit_.distance - radius_ * 1.5, orbit_.distance * 1e-3);
+    return glm::perspective(glm::radians(orbit_.fov_deg), aspect, near, orbit_.distance + radius_ * 1.5);
 }
 
 void MeshView::paintGL() {
@@ -333,7 +316,7 @@ void MeshView::paintGL() {
     lineProgram_.bind();
     glUniformMatrix4fv(lineProgram_.uniformLocation("mvp"), 1, GL_FALSE, glm::value_ptr(mvp));
     // Dashes of about 6 pixels at the mesh's distance.
-    const double worldPerPixel = 2.0 * distance_ * std::tan(glm::radians(kFovDeg * 0.5)) / std::max(height(), 1);
+    const double worldPerPixel = 2.0 * orbit_.distance * std::tan(glm::radians(orbit_.fov_deg * 0.5)) / std::max(height(), 1);
     lineProgram_.setUniformValue("dashLength", float(6.0 * worldPerPixel));
     QOpenGLVertexArrayObject::Binder bind(&lineVao_);
     for (const bool hiddenPass : {true, false})
@@ -346,19 +329,42 @@ void MeshView::paintGL() {
     glDisable(GL_BLEND);
 }
 
-void MeshView::mousePressEvent(QMouseEvent* event) { lastPos_ = event->position().toPoint(); }
+void MeshView::mousePressEvent(QMouseEvent* event) {
+    lastPos_ = event->position().toPoint();
+    dragged_ = false;
+    draggingLight_ = (event->button() == Qt::LeftButton) && (event->modifiers() & Qt::ShiftModifier);
+}
+
+void MeshView::mouseReleaseEvent(QMouseEvent* event) {
+    if (!dragged_) return;
+    dragged_ = false;
+    if (draggingLight_) emit lightEdited();
+    else emit viewEdited();
+    draggingLight_ = false;
+    event->accept();
+}
 
 void MeshView::mouseMoveEvent(QMouseEvent* event) {
     const QPoint pos = event->position().toPoint();
     const QPoint d = pos - lastPos_;
     lastPos_ = pos;
+    if (d.isNull()) return;
+    dragged_ = true;
+    if (draggingLight_ && (event->buttons() & Qt::LeftButton)) {
+        // Screen-space rotation of the light: right turns it about the
+        // screen's up axis, down about its right axis.
+        glm::dvec3 right, up;
+        camera().screen_basis(right, up);
+        emit lightDragged(up, d.x() * 0.01, right, d.y() * 0.01);
+        return;
+    }
     if (event->buttons() & Qt::LeftButton) {
-        yaw_ += d.x() * 0.01;
-        pitch_ = std::clamp(pitch_ + d.y() * 0.01, -1.55, 1.55);
+        orbit_.yaw += d.x() * 0.01;
+        orbit_.pitch = std::clamp(orbit_.pitch + d.y() * 0.01, -1.55, 1.55);
     } else if (event->buttons() & (Qt::RightButton | Qt::MiddleButton)) {
-        const double perPixel = 2.0 * distance_ * std::tan(glm::radians(kFovDeg * 0.5)) /
+        const double perPixel = 2.0 * orbit_.distance * std::tan(glm::radians(orbit_.fov_deg * 0.5)) /
                                 std::max(height(), 1);
-        pan_ += glm::dvec3(d.x() * perPixel, -d.y() * perPixel, 0.0);
+        orbit_.pan += glm::dvec3(d.x() * perPixel, -d.y() * perPixel, 0.0);
     } else {
         return;
     }
@@ -368,9 +374,10 @@ void MeshView::mouseMoveEvent(QMouseEvent* event) {
 
 void MeshView::wheelEvent(QWheelEvent* event) {
     const double steps = event->angleDelta().y() / 120.0;
-    distance_ = std::clamp(distance_ * std::pow(0.85, steps), radius_ * 0.05, radius_ * 100.0);
+    orbit_.distance = std::clamp(orbit_.distance * std::pow(0.85, steps), radius_ * 0.05, radius_ * 100.0);
     update();
     emit cameraChanged();
+    emit viewEdited();
 }
 
 } // namespace snaxels::ui

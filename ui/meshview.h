@@ -1,7 +1,7 @@
 #pragma once
 // The 3-D view: the mesh shaded with two lights and the contours drawn on
 // it (per-kind colours, hidden parts dashed), orbit (left drag), pan (right
-// or middle drag) and zoom (wheel). It draws what it is given and reports
+// or middle drag), zoom (wheel) and the light turned by Shift+left drag. It draws what it is given and reports
 // camera changes; it computes nothing itself.
 
 #include <vector>
@@ -16,6 +16,7 @@
 
 #include "core/mesh/mesh.h"
 #include "core/scene/camera.h"
+#include "core/scene/orbit.h"
 
 namespace snaxels::ui {
 
@@ -67,10 +68,23 @@ class MeshView : public QOpenGLWidget, protected QOpenGLFunctions_3_3_Core {
     /// The camera before the turntable turns (frame 0), with world +Y as up:
     /// what an animation export starts from.
     Camera baseCamera() const;
+    /// The orbit the camera follows (a project file keeps it).
+    const OrbitView& orbit() const { return orbit_; }
+    /// Moves the camera to @p orbit (its centre stays the mesh's, the
+    /// turntable angle the timeline's).
+    void setOrbit(const OrbitView& orbit);
 
   signals:
     /// The camera moved (orbit, pan, zoom, reset or a new mesh).
     void cameraChanged();
+    /// The user finished moving the camera (a drag released, a wheel turn,
+    /// a reset): one step for the undo stack.
+    void viewEdited();
+    /// Shift+drag turns the light: by @p angle_a about @p axis_a, then by
+    /// @p angle_b about @p axis_b (world axes, radians).
+    void lightDragged(glm::dvec3 axis_a, double angle_a, glm::dvec3 axis_b, double angle_b);
+    /// The light drag ended: one step for the undo stack.
+    void lightEdited();
 
   public:
 
@@ -81,6 +95,7 @@ class MeshView : public QOpenGLWidget, protected QOpenGLFunctions_3_3_Core {
     void paintGL() override;
     void mousePressEvent(QMouseEvent* event) override;
     void mouseMoveEvent(QMouseEvent* event) override;
+    void mouseReleaseEvent(QMouseEvent* event) override;
     void wheelEvent(QWheelEvent* event) override;
 
   private:
@@ -95,10 +110,9 @@ class MeshView : public QOpenGLWidget, protected QOpenGLFunctions_3_3_Core {
 
     glm::dvec3 centre_{0.0};
     double radius_ = 1.0;
-    double yaw_ = 0.0, pitch_ = 0.0, distance_ = 3.0;
-    double turntable_ = 0.0; // radians
-    glm::dvec3 pan_{0.0};
+    OrbitView orbit_;
     QPoint lastPos_;
+    bool dragged_ = false, draggingLight_ = false;
 
     std::vector<ContourStrip> strips_;
     std::vector<float> lineVertices_; // position, colour, hidden flag, arc length

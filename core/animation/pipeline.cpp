@@ -13,6 +13,20 @@
 
 namespace snaxels {
 
+AnimationJob make_animation_job(const Style& style, const AnimationSpec& animation, const Camera& camera,
+                                const std::optional<Light>& light) {
+    AnimationJob job;
+    job.animation = animation;
+    job.camera = camera;
+    job.light = light ? *light : style.light ? *style.light : default_light(camera);
+    job.kinds.clear();
+    for (const ContourStyle& cs : style.contours) job.kinds.push_back(cs.spec);
+    if (job.kinds.empty()) job.kinds.push_back({});
+    job.style = style;
+    job.engine.check_invariants = false;
+    return job;
+}
+
 AnimationOutput run_animation(const LoadedMesh& mesh, const std::string& mesh_path, const AnimationJob& job) {
     AnimationOutput out;
     MeshTopology topology = build_topology(mesh.mesh);

@@ -4,6 +4,7 @@
 /// and write the animated SVG (and, on request, each frame as static SVG).
 
 #include <functional>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -45,6 +46,12 @@ struct AnimationOutput {
     std::vector<double> tracking_ms; ///< per frame, all kinds
     int frames = 0;
 };
+
+/// The job the application and a project export: @p animation seen from
+/// @p camera (frame 0), lit by @p light, else the style's light, else the
+/// default light for the camera; the style's contours (visual if none).
+AnimationJob make_animation_job(const Style& style, const AnimationSpec& animation, const Camera& camera,
+                                const std::optional<Light>& light);
 
 /// Runs @p job on @p mesh (read from @p mesh_path, which clips need).
 /// Throws snaxels::Error on bad input (a missing sequence file, an unknown clip).

@@ -23,6 +23,8 @@ struct AnimationSpec {
     int first_file = -1;            ///< Sequence: number of the first file (-1: 0 or 1, whichever exists)
     int frames = 1;
     double fps = 24.0;
+
+    bool operator==(const AnimationSpec&) const = default;
 };
 
 /// Poses the scene for each frame: camera, light, and (for clips and

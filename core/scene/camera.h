@@ -38,6 +38,7 @@ struct Light {
     glm::dvec3 to_light(const glm::dvec3& p) const {
         return point ? glm::normalize(pos - p) : glm::normalize(dir);
     }
+    bool operator==(const Light&) const = default;
 };
 
 /// Light from the viewer's upper left for @p camera: the default light.
