@@ -3,6 +3,7 @@
 #include <chrono>
 
 #include <QColor>
+#include <QStringList>
 
 #include "core/animation/still.h"
 #include "core/visibility/visibility.h"
@@ -19,16 +20,60 @@ const char* view_colour(ContourKind kind) {
     return "#e8402a";
 }
 
-std::shared_ptr<ContourScene> make_contour_scene(const LoadedMesh& mesh) {
+std::shared_ptr<ContourScene> make_contour_scene(const LoadedMesh& mesh, const std::string& path) {
     auto scene = std::make_shared<ContourScene>();
     scene->topology = build_topology(mesh.mesh);
     scene->rays = std::make_unique<RayScene>(scene->topology);
+    scene->mesh_path = path;
+    scene->rest_positions = scene->topology.positions;
+    scene->rest_normals = scene->topology.normals;
+    // Only formats that carry animation are read a second time for clips.
+    const QString suffix = QString::fromStdString(path).section('.', -1).toLower();
+    static const QStringList animated{"gltf", "glb", "fbx", "dae", "x", "blend", "md5mesh", "ms3d", "b3d", "smd", "bvh"};
+    if (path.rfind("proc:", 0) != 0 && animated.contains(suffix)) scene->clips = animation_clips(path);
     return scene;
 }
 
-OverlayResult compute_overlay(const LoadedMesh& mesh, const ContourScene& scene, const Camera& camera,
-                              const Style& style, const std::optional<Light>& light) {
+namespace {
+
+/// Poses @p scene for @p pose (or back to rest); true when the mesh moved.
+bool pose_scene(const LoadedMesh& mesh, ContourScene& scene, const std::optional<ClipPose>& pose) {
+    if (!pose) {
+        if (!scene.posed) return false;
+        scene.topology.positions = scene.rest_positions;
+        scene.topology.normals = scene.rest_normals;
+        scene.posed = false;
+    } else {
+        if (!scene.driver || !(scene.driver_spec == pose->clip)) {
+            scene.driver.reset();
+            const glm::dvec3 centre = 0.5 * (mesh.report.bbox_min + mesh.report.bbox_max);
+            scene.driver = std::make_unique<FrameDriver>(pose->clip, mesh, scene.topology, Camera{}, Light{}, centre,
+                                                         scene.mesh_path);
+            scene.driver_spec = pose->clip;
+        }
+        Camera unused_camera;
+        Light unused_light;
+        scene.driver->apply(pose->frame, unused_camera, unused_light);
+        scene.posed = true;
+    }
+    scene.rays->refit();
+    return true;
+}
+
+} // namespace
+
+OverlayResult compute_overlay(const LoadedMesh& mesh, ContourScene& scene, const Camera& camera,
+                              const Style& style, const std::optional<Light>& light,
+                              const std::optional<ClipPose>& pose) {
     const auto start = std::chrono::steady_clock::now();
+    OverlayResult out;
+    try {
+        if (pose_scene(mesh, scene, pose))
+            out.geometry = std::make_shared<MeshGeometry>(mesh_geometry(scene.topology, display_face_budget()));
+    } catch (const std::exception& e) {
+        out.error = QString::fromStdString(e.what());
+        return out;
+    }
     StillJob job;
     job.camera = camera;
     job.light = light ? *light : style.light ? *style.light : default_light(camera);
@@ -39,7 +84,6 @@ OverlayResult compute_overlay(const LoadedMesh& mesh, const ContourScene& scene,
     job.engine.check_invariants = false;
     StillOutput still = render_still(mesh, scene.topology, scene.rays.get(), job);
 
-    OverlayResult out;
     out.svg = std::move(still.svg);
     for (std::size_t c = 0; c < still.results.size(); ++c) {
         const ContourResult& r = still.results[c];

@@ -6,7 +6,10 @@
 #include <optional>
 #include <vector>
 
+#include <QString>
+
 #include "core/mesh/build.h"
+#include "core/scene/animation.h"
 #include "core/style/style.h"
 #include "core/snaxel/snaxel_engine.h"
 #include "core/visibility/ray_scene.h"
@@ -15,19 +18,37 @@
 namespace snaxels::ui {
 
 /// What contour computation needs of a loaded mesh, built once per mesh.
+/// For the mesh's own clips its topology is posed frame by frame; one
+/// computation at a time may use it.
 struct ContourScene {
     MeshTopology topology;
     std::unique_ptr<RayScene> rays; ///< refers to topology: keep the scene where it is
+    std::string mesh_path;          ///< the file clips are read from
+    std::vector<AnimationClipInfo> clips;
+    std::vector<glm::dvec3> rest_positions, rest_normals; ///< the loaded pose
+    std::unique_ptr<FrameDriver> driver;                  ///< for the clip posed last
+    AnimationSpec driver_spec;
+    bool posed = false; ///< the topology is not in the loaded pose
 };
 
-/// Builds the scene of @p mesh (topology and ray-tracing BVH).
-std::shared_ptr<ContourScene> make_contour_scene(const LoadedMesh& mesh);
+/// Builds the scene of @p mesh read from @p path (topology, ray-tracing
+/// BVH, the file's clips).
+std::shared_ptr<ContourScene> make_contour_scene(const LoadedMesh& mesh, const std::string& path);
+
+/// A clip frame to pose the mesh in before computing contours.
+struct ClipPose {
+    AnimationSpec clip;
+    int frame = 0;
+};
 
 struct OverlayResult {
     std::vector<ContourStrip> strips;
     std::string svg; ///< the frame as `snaxels-cli contours --svg` draws it
     std::size_t loops = 0, snaxels = 0;
     double ms = 0.0; ///< the whole frame: engine, visibility, drawing
+    /// When the pose changed: the triangles to draw now.
+    std::shared_ptr<MeshGeometry> geometry;
+    QString error; ///< posing failed (the clip could not be read)
 };
 
 /// Colours of the kinds in the 3-D view: bright enough for the shaded mesh
@@ -37,7 +58,10 @@ const char* view_colour(ContourKind kind);
 /// The contours of @p style seen by @p camera, lit from the viewer's upper
 /// left (unless the style says otherwise): strips for the 3-D view and the
 /// SVG that export writes, from one computation.
-OverlayResult compute_overlay(const LoadedMesh& mesh, const ContourScene& scene, const Camera& camera,
-                              const Style& style, const std::optional<Light>& light = std::nullopt);
+/// With @p pose the mesh is first posed at that clip frame; without, it is
+/// put back in its loaded pose if a clip had moved it.
+OverlayResult compute_overlay(const LoadedMesh& mesh, ContourScene& scene, const Camera& camera,
+                              const Style& style, const std::optional<Light>& light = std::nullopt,
+                              const std::optional<ClipPose>& pose = std::nullopt);
 
 } // namespace snaxels::ui

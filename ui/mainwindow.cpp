@@ -25,6 +25,7 @@
 #include <QSvgRenderer>
 #include <QSvgWidget>
 #include <QTimer>
+#include <QUndoStack>
 #include <QtConcurrent/QtConcurrentRun>
 
 #include "core/error.h"
@@ -33,7 +34,9 @@
 #include "ui/meshview.h"
 #include "ui/resources.h"
 #include "ui/styleeditor.h"
+#include "ui/svgpane.h"
 #include "ui/timeline.h"
+#include "ui/undo.h"
 #include "core/animation/pipeline.h"
 
 namespace snaxels::ui {
@@ -45,8 +48,8 @@ LoadResult loadInBackground(const QString& spec) {
     LoadResult result;
     try {
         auto mesh = std::make_shared<const LoadedMesh>(load_mesh(spec.toStdString()));
-        result.scene = make_contour_scene(*mesh);
-        result.geometry = std::make_shared<MeshGeometry>(mesh_geometry(mesh->mesh, display_face_budget()));
+        result.scene = make_contour_scene(*mesh, spec.toStdString());
+        result.geometry = std::make_shared<MeshGeometry>(mesh_geometry(result.scene->topology, display_face_budget()));
         result.mesh = std::move(mesh);
     } catch (const std::bad_alloc&) {
         result.error = spec + ": out of memory while loading";
@@ -59,16 +62,15 @@ LoadResult loadInBackground(const QString& spec) {
 } // namespace
 
 MainWindow::MainWindow(QWidget* parent)
-    : QMainWindow(parent), view_(new MeshView(this)), svgPane_(new QSvgWidget(this)),
+    : QMainWindow(parent), view_(new MeshView(this)), svgPane_(new SvgPane(this)),
       styleEditor_(new StyleEditor(this)), timeline_(new Timeline(this)), meshLabel_(new QLabel(this)),
-      busy_(new QProgressBar(this)), contourLabel_(new QLabel(this)), contourTimer_(new QTimer(this)) {
-    setWindowTitle("snaxels");
+      busy_(new QProgressBar(this)), contourLabel_(new QLabel(this)), contourTimer_(new QTimer(this)),
+      undo_(new QUndoStack(this)) {
+    setWindowTitle("snaxels[*]");
     // The 3-D view and, beside it, the SVG the export writes for this view.
     auto* splitter = new QSplitter(this);
     splitter->addWidget(view_);
     splitter->addWidget(svgPane_);
-    svgPane_->renderer()->setAspectRatioMode(Qt::KeepAspectRatio);
-    svgPane_->setMinimumSize(200, 200);
     splitter->setStretchFactor(0, 3);
     splitter->setStretchFactor(1, 2);
     splitter->setSizes({600, 400});
@@ -84,6 +86,43 @@ MainWindow::MainWindow(QWidget* parent)
         style_ = style;
         scheduleContours();
     });
+    committedStyle_ = styleEditor_->text();
+    // Every part of the document that changes becomes one undo step.
+    connect(styleEditor_, &StyleEditor::textApplied, this, [this](const QString& text) {
+        if (restoring_ || text == committedStyle_) return;
+        undo_->push(new SetValueCommand<QString>(tr("Edit Style"), kUndoStyle, committedStyle_, text,
+                                                 [this](const QString& t) {
+                                                     ++restoring_;
+                                                     styleEditor_->setText(t, "style");
+                                                     committedStyle_ = t;
+                                                     --restoring_;
+                                                 }));
+        committedStyle_ = text;
+    });
+    connect(view_, &MeshView::viewEdited, this, [this] {
+        const OrbitView now = viewState();
+        if (restoring_ || now == committedView_) return;
+        undo_->push(new SetValueCommand<OrbitView>(tr("Move Camera"), kUndoCamera, committedView_, now,
+                                                   [this](const OrbitView& v) {
+                                                       ++restoring_;
+                                                       view_->setOrbit(v);
+                                                       committedView_ = viewState();
+                                                       --restoring_;
+                                                   }));
+        committedView_ = now;
+    });
+    connect(view_, &MeshView::lightDragged, this, &MainWindow::onLightDragged);
+    connect(view_, &MeshView::lightEdited, this, [this] {
+        if (restoring_ || light_ == committedLight_) return;
+        undo_->push(new SetValueCommand<std::optional<Light>>(tr("Move Light"), kUndoLight, committedLight_, light_,
+                                                              [this](const std::optional<Light>& l) {
+                                                                  light_ = committedLight_ = l;
+                                                                  scheduleContours();
+                                                              }));
+        committedLight_ = light_;
+    });
+    connect(undo_, &QUndoStack::cleanChanged, this, &MainWindow::updateTitle);
+    connect(undo_, &QUndoStack::indexChanged, this, &MainWindow::updateTitle);
 
     // The timeline, docked below: scrubbing turns the view or the light.
     auto* timelineDock = new QDockWidget(tr("Timeline"), this);
@@ -91,6 +130,19 @@ MainWindow::MainWindow(QWidget* parent)
     timelineDock->setWidget(timeline_);
     addDockWidget(Qt::BottomDockWidgetArea, timelineDock);
     connect(timeline_, &Timeline::changed, this, &MainWindow::applyFrame);
+    committedSpec_ = timeline_->spec();
+    connect(timeline_, &Timeline::specEdited, this, [this] {
+        const AnimationSpec now = timeline_->spec();
+        if (restoring_ || now == committedSpec_) return;
+        undo_->push(new SetValueCommand<AnimationSpec>(tr("Change Animation"), kUndoAnimation, committedSpec_, now,
+                                                       [this](const AnimationSpec& a) {
+                                                           ++restoring_;
+                                                           timeline_->setSpec(a);
+                                                           committedSpec_ = timeline_->spec();
+                                                           --restoring_;
+                                                       }));
+        committedSpec_ = now;
+    });
     setAcceptDrops(true);
     busy_->setRange(0, 0); // indeterminate: importers report no progress
     busy_->setMaximumWidth(160);
@@ -126,17 +178,59 @@ void MainWindow::applyFrame() {
     if (spec.kind == AnimationSpec::Kind::Turntable) {
         view_->centreView(); // turntables orbit the mesh's centre, as exports do
         view_->setTurntable(spec.degrees_per_frame * timeline_->frame());
+        if (!restoring_) committedView_ = viewState();
     } else {
         view_->setTurntable(0.0);
     }
     scheduleContours();
 }
 
+Light MainWindow::baseLight() const {
+    return light_ ? *light_ : style_.light ? *style_.light : default_light(view_->baseCamera());
+}
+
+OrbitView MainWindow::viewState() const {
+    OrbitView v = view_->orbit();
+    v.turntable = 0.0;
+    return v;
+}
+
+void MainWindow::onLightDragged(glm::dvec3 axis_a, double angle_a, glm::dvec3 axis_b, double angle_b) {
+    // The drag turns the light as it is seen at this frame; the document
+    // keeps the frame-0 light, so the frame's own turn is taken off again.
+    Light light = baseLight();
+    const AnimationSpec spec = timeline_->spec();
+    const bool turns = (spec.kind == AnimationSpec::Kind::Turntable && !light.point) ||
+                       spec.kind == AnimationSpec::Kind::LightOrbit;
+    const double frame_angle = turns ? glm::radians(spec.degrees_per_frame * timeline_->frame()) : 0.0;
+    const glm::dvec3 y(0.0, 1.0, 0.0);
+    auto turn = [&](glm::dvec3 v) {
+        v = glm::rotate(v, frame_angle, y);
+        v = glm::rotate(v, angle_a, glm::normalize(axis_a));
+        v = glm::rotate(v, angle_b, glm::normalize(axis_b));
+        return glm::rotate(v, -frame_angle, y);
+    };
+    if (light.point) {
+        const glm::dvec3 centre = mesh_ ? 0.5 * (mesh_->report.bbox_min + mesh_->report.bbox_max) : glm::dvec3(0.0);
+        light.pos = centre + turn(light.pos - centre);
+    } else {
+        light.dir = glm::normalize(turn(light.dir));
+    }
+    light_ = light;
+    scheduleContours();
+}
+
+void MainWindow::turnLight(double right, double down) {
+    glm::dvec3 r, u;
+    view_->camera().screen_basis(r, u);
+    onLightDragged(u, right, r, down);
+    emit view_->lightEdited();
+}
+
 Light MainWindow::frameLight() const {
     // As FrameDriver poses it: the base light turned about the vertical axis.
     const AnimationSpec spec = timeline_->spec();
-    const Camera base = view_->baseCamera();
-    Light light = style_.light ? *style_.light : default_light(base);
+    Light light = baseLight();
     const double angle = glm::radians(spec.degrees_per_frame * timeline_->frame());
     const glm::dvec3 axis(0.0, 1.0, 0.0);
     const glm::dvec3 centre = mesh_ ? 0.5 * (mesh_->report.bbox_min + mesh_->report.bbox_max) : glm::dvec3(0.0);
@@ -165,15 +259,7 @@ bool MainWindow::exportFrame(const QString& path) {
 void MainWindow::exportAnimation(const QString& path) {
     if (!mesh_ || exporting_) return;
     exporting_ = true;
-    AnimationJob job;
-    job.animation = timeline_->spec();
-    job.camera = view_->baseCamera();
-    job.light = style_.light ? *style_.light : default_light(job.camera);
-    job.kinds.clear();
-    for (const ContourStyle& cs : style_.contours) job.kinds.push_back(cs.spec);
-    if (job.kinds.empty()) job.kinds.push_back({});
-    job.style = style_;
-    job.engine.check_invariants = false;
+    AnimationJob job = make_animation_job(style_, timeline_->spec(), view_->baseCamera(), light_);
 
     auto* dialog = new QProgressDialog(tr("Exporting %1…").arg(QFileInfo(path).fileName()), tr("Cancel"), 0,
                                        job.animation.frames, this);
@@ -191,7 +277,7 @@ void MainWindow::exportAnimation(const QString& path) {
     };
     job.cancelled = [cancelled] { return cancelled->load(); };
     const std::shared_ptr<const LoadedMesh> mesh = mesh_;
-    const std::string mesh_path = loadingSpec_.toStdString();
+    const std::string mesh_path = meshSpec_.toStdString();
     auto* watcher = new QFutureWatcher<QString>(this);
     connect(watcher, &QFutureWatcher<QString>::finished, this, [this, watcher, guard, path] {
         const QString error = watcher->result();
@@ -236,8 +322,11 @@ void MainWindow::startContours() {
     const Camera camera = view_->camera();
     const Style style = style_;
     const Light light = frameLight();
-    contourWatcher_.setFuture(QtConcurrent::run([mesh, scene, camera, style, light] {
-        return compute_overlay(*mesh, *scene, camera, style, light);
+    std::optional<ClipPose> pose;
+    if (const AnimationSpec spec = timeline_->spec(); spec.kind == AnimationSpec::Kind::Clip)
+        pose = ClipPose{spec, timeline_->frame()};
+    contourWatcher_.setFuture(QtConcurrent::run([mesh, scene, camera, style, light, pose] {
+        return compute_overlay(*mesh, *scene, camera, style, light, pose);
     }));
 }
 
@@ -247,32 +336,49 @@ void MainWindow::onContoursFinished() {
         startContours();
         return;
     }
+    if (!result.error.isEmpty()) {
+        statusBar()->showMessage(result.error, 8000);
+        return;
+    }
+    if (result.geometry) view_->setPose(std::move(*result.geometry));
     contourLoops_ = result.loops;
     contourLabel_->setText(tr("%1 loops, %2 snaxels, %3 ms").arg(result.loops).arg(result.snaxels).arg(result.ms, 0, 'f', 1));
     view_->setContours(std::move(result.strips));
     svg_ = QByteArray::fromStdString(result.svg);
     svgPane_->load(svg_);
-    svgPane_->renderer()->setAspectRatioMode(Qt::KeepAspectRatio); // load() resets it
     emit contoursUpdated();
 }
 
 void MainWindow::createMenus() {
     QMenu* file = menuBar()->addMenu(tr("&File"));
-    QAction* open = file->addAction(tr("&Open Mesh…"), this, [this] {
+    QAction* open = file->addAction(tr("&Open…"), this, [this] {
         const QString path = QFileDialog::getOpenFileName(
-            this, tr("Open Mesh"), QSettings().value("paths/lastDir").toString(),
-            tr("Meshes (*.obj *.ply *.stl *.off *.gltf *.glb *.fbx *.dae *.3ds *.x *.blend);;"
-               "All files (*)"));
+            this, tr("Open Mesh or Project"), QSettings().value("paths/lastDir").toString(),
+            tr("Meshes and projects (*.obj *.ply *.stl *.off *.gltf *.glb *.fbx *.dae *.3ds *.x *.blend *.snaxels);;"
+               "Projects (*.snaxels);;All files (*)"));
         if (path.isEmpty()) return;
         QSettings().setValue("paths/lastDir", QFileInfo(path).absolutePath());
-        openMesh(path);
+        openFile(path);
     });
     open->setShortcut(QKeySequence::Open);
     recentMenu_ = file->addMenu(tr("Open &Recent"));
     rebuildRecentMenu();
     file->addSeparator();
+    QAction* save = file->addAction(tr("&Save Project"), this, [this] { saveProjectInteractive(false); });
+    save->setShortcut(QKeySequence::Save);
+    QAction* saveAs = file->addAction(tr("Save Project &As…"), this, [this] { saveProjectInteractive(true); });
+    saveAs->setShortcut(QKeySequence::SaveAs);
+    file->addSeparator();
     QAction* quit = file->addAction(tr("&Quit"), this, &QWidget::close);
     quit->setShortcut(QKeySequence::Quit);
+
+    QMenu* edit = menuBar()->addMenu(tr("&Edit"));
+    QAction* undo = undo_->createUndoAction(this, tr("&Undo"));
+    undo->setShortcut(QKeySequence::Undo);
+    QAction* redo = undo_->createRedoAction(this, tr("&Redo"));
+    redo->setShortcut(QKeySequence::Redo);
+    edit->addAction(undo);
+    edit->addAction(redo);
 
     createStyleMenu();
 
@@ -299,6 +405,14 @@ void MainWindow::createMenus() {
     QMenu* viewMenu = menuBar()->addMenu(tr("&View"));
     QAction* reset = viewMenu->addAction(tr("&Reset Camera"), view_, &MeshView::resetCamera);
     reset->setShortcut(Qt::Key_Home);
+    viewMenu->addAction(tr("Reset &Light"), this, [this] {
+        // Back to the style's light (or the default); one undo step.
+        if (!light_) return;
+        light_.reset();
+        scheduleContours();
+        emit view_->lightEdited();
+    });
+    viewMenu->addAction(tr("&Fit SVG Pane"), svgPane_, &SvgPane::fit);
 }
 
 void MainWindow::createStyleMenu() {
@@ -353,19 +467,31 @@ void MainWindow::onLoadFinished() {
     busy_->hide();
     LoadResult result = watcher_.result();
     if (!result.mesh) {
+        // Nothing of the document changes: the mesh, style and edits stay.
+        QString message = result.error;
+        if (pendingProject_) message = tr("%1: its mesh could not be opened: %2").arg(pendingProjectPath_, result.error);
         statusBar()->showMessage(tr("Could not open %1").arg(loadingSpec_), 8000);
-        auto* box = new QMessageBox(QMessageBox::Warning, tr("Could not open mesh"), result.error,
-                                    QMessageBox::Ok, this);
+        auto* box = new QMessageBox(QMessageBox::Warning, pendingProject_ ? tr("Could not open project") : tr("Could not open mesh"),
+                                    message, QMessageBox::Ok, this);
         box->setAttribute(Qt::WA_DeleteOnClose);
         box->open();
+        const bool wasProject = pendingProject_.has_value();
+        pendingProject_.reset();
         emit loadFailed(result.error);
+        if (wasProject) emit projectFailed(message);
         return;
     }
     if (contourWatcher_.isRunning()) contoursPending_ = true; // its contours are of the old mesh
     mesh_ = result.mesh;
     scene_ = result.scene;
     view_->setContours({});
+    meshSpec_ = loadingSpec_;
+    ++restoring_; // framing the new mesh is not an edit
     view_->setGeometry(std::move(*result.geometry)); // frames the camera, which schedules contours
+    timeline_->setClips(scene_->clips);
+    --restoring_;
+    committedView_ = viewState();
+    committedSpec_ = timeline_->spec();
     const MeshReport& r = mesh_->report;
     meshLabel_->setText(tr("%1 vertices, %2 faces, %3 boundary edges%4")
                             .arg(r.vertices)
@@ -373,10 +499,18 @@ void MainWindow::onLoadFinished() {
                             .arg(r.boundary_edges)
                             .arg(r.split_vertices ? tr(", %1 vertices split").arg(r.split_vertices)
                                                   : QString()));
-    setWindowTitle(tr("%1 — snaxels").arg(QFileInfo(loadingSpec_).fileName()));
     statusBar()->showMessage(tr("Loaded %1").arg(QFileInfo(loadingSpec_).fileName()), 4000);
-    if (!loadingSpec_.startsWith("proc:")) addRecentFile(QFileInfo(loadingSpec_).absoluteFilePath());
+    if (pendingProject_) {
+        const Project project = std::move(*pendingProject_);
+        pendingProject_.reset();
+        applyProject(project, pendingProjectPath_);
+    } else {
+        meshChanged_ = true;
+        if (!loadingSpec_.startsWith("proc:")) addRecentFile(QFileInfo(loadingSpec_).absoluteFilePath());
+    }
+    updateTitle();
     emit meshLoaded(loadingSpec_);
+    if (!projectPath_.isEmpty() && !meshChanged_) emit projectOpened(projectPath_);
 }
 
 void MainWindow::addRecentFile(const QString& path) {
@@ -393,12 +527,16 @@ void MainWindow::rebuildRecentMenu() {
     recentMenu_->clear();
     const QStringList recent = QSettings().value("recentFiles").toStringList();
     for (const QString& path : recent)
-        recentMenu_->addAction(QFileInfo(path).fileName(), this, [this, path] { openMesh(path); })
+        recentMenu_->addAction(QFileInfo(path).fileName(), this, [this, path] { openFile(path); })
             ->setToolTip(path);
     recentMenu_->setEnabled(!recent.isEmpty());
 }
 
 void MainWindow::closeEvent(QCloseEvent* event) {
+    if (!maybeSave()) {
+        event->ignore();
+        return;
+    }
     QSettings settings;
     settings.setValue("window/geometry", saveGeometry());
     settings.setValue("window/state", saveState());
@@ -411,7 +549,126 @@ void MainWindow::dragEnterEvent(QDragEnterEvent* event) {
 
 void MainWindow::dropEvent(QDropEvent* event) {
     const auto urls = event->mimeData()->urls();
-    if (!urls.isEmpty() && urls.first().isLocalFile()) openMesh(urls.first().toLocalFile());
+    if (!urls.isEmpty() && urls.first().isLocalFile()) openFile(urls.first().toLocalFile());
+}
+
+void MainWindow::openFile(const QString& path) {
+    if (path.endsWith(kProjectExtension, Qt::CaseInsensitive)) openProject(path);
+    else openMesh(path);
+}
+
+bool MainWindow::isModified() const { return meshChanged_ || !undo_->isClean(); }
+
+void MainWindow::updateTitle() {
+    const QString name = !projectPath_.isEmpty() ? QFileInfo(projectPath_).fileName()
+                         : !meshSpec_.isEmpty()   ? QFileInfo(meshSpec_).fileName()
+                                                  : QString();
+    setWindowTitle(name.isEmpty() ? tr("snaxels[*]") : tr("%1[*] — snaxels").arg(name));
+    setWindowModified(isModified());
+}
+
+bool MainWindow::maybeSave() {
+    if (!isModified()) return true;
+    const QString name = projectPath_.isEmpty() ? tr("this project") : QFileInfo(projectPath_).fileName();
+    QMessageBox box(QMessageBox::Warning, tr("Unsaved changes"),
+                    tr("Save the changes to %1 first?").arg(name),
+                    QMessageBox::Save | QMessageBox::Discard | QMessageBox::Cancel, this);
+    box.setInformativeText(tr("The style, camera, light and animation edits are lost otherwise."));
+    box.setDefaultButton(QMessageBox::Save);
+    box.setObjectName("unsavedChangesBox");
+    switch (box.exec()) {
+    case QMessageBox::Save: return saveProjectInteractive(false);
+    case QMessageBox::Discard: return true;
+    default: return false;
+    }
+}
+
+bool MainWindow::saveProjectInteractive(bool ask_path) {
+    if (!mesh_) {
+        QMessageBox::information(this, tr("Save Project"), tr("Open a mesh first: a project refers to one."));
+        return false;
+    }
+    QString path = projectPath_;
+    if (ask_path || path.isEmpty()) {
+        path = QFileDialog::getSaveFileName(this, tr("Save Project"), QSettings().value("paths/lastDir").toString(),
+                                            tr("Snaxels projects (*.snaxels)"));
+        if (path.isEmpty()) return false;
+        if (!path.endsWith(kProjectExtension, Qt::CaseInsensitive)) path += kProjectExtension;
+    }
+    return saveProject(path);
+}
+
+bool MainWindow::saveProject(const QString& path) {
+    if (!mesh_) return false;
+    Project p;
+    p.mesh = project_mesh_reference(path.toStdString(), meshSpec_.toStdString());
+    p.view = viewState();
+    p.light = light_;
+    p.animation = timeline_->spec();
+    p.frame = timeline_->frame();
+    p.style = styleEditor_->text().toStdString();
+    try {
+        write_project(path.toStdString(), p);
+    } catch (const std::exception& e) {
+        const QString message = QString::fromStdString(e.what());
+        QMessageBox::warning(this, tr("Save Project"), message);
+        statusBar()->showMessage(message, 8000);
+        return false;
+    }
+    projectPath_ = path;
+    meshChanged_ = false;
+    undo_->setClean();
+    updateTitle();
+    addRecentFile(QFileInfo(path).absoluteFilePath());
+    statusBar()->showMessage(tr("Saved %1").arg(QFileInfo(path).fileName()), 4000);
+    emit projectSaved(path);
+    return true;
+}
+
+void MainWindow::openProject(const QString& path) {
+    if (watcher_.isRunning()) {
+        statusBar()->showMessage(tr("Still loading %1; try again when it is done").arg(loadingSpec_), 4000);
+        return;
+    }
+    Project project;
+    try {
+        project = read_project(path.toStdString());
+    } catch (const std::exception& e) {
+        const QString message = QString::fromStdString(e.what());
+        auto* box = new QMessageBox(QMessageBox::Warning, tr("Could not open project"), message, QMessageBox::Ok, this);
+        box->setAttribute(Qt::WA_DeleteOnClose);
+        box->open();
+        statusBar()->showMessage(message, 8000);
+        emit projectFailed(message);
+        return;
+    }
+    if (!maybeSave()) return;
+    pendingProject_ = std::move(project);
+    pendingProjectPath_ = path;
+    openMesh(QString::fromStdString(resolve_project_mesh(path.toStdString(), pendingProject_->mesh)));
+}
+
+void MainWindow::applyProject(const Project& p, const QString& path) {
+    ++restoring_;
+    styleEditor_->setText(p.style.empty() ? initial_style_text() : QString::fromStdString(p.style), "style");
+    const bool clipFound = timeline_->setSpec(p.animation);
+    timeline_->setFrame(p.frame);
+    light_ = p.light;
+    view_->setOrbit(p.view);
+    --restoring_;
+    committedStyle_ = styleEditor_->text();
+    committedView_ = viewState();
+    committedLight_ = light_;
+    committedSpec_ = timeline_->spec();
+    undo_->clear();
+    projectPath_ = path;
+    meshChanged_ = false;
+    addRecentFile(QFileInfo(path).absoluteFilePath());
+    if (!clipFound)
+        statusBar()->showMessage(tr("%1: the mesh has no clip \"%2\"; the timeline shows a turntable")
+                                     .arg(QFileInfo(path).fileName(), QString::fromStdString(p.animation.clip)),
+                                 8000);
+    scheduleContours();
 }
 
 } // namespace snaxels::ui

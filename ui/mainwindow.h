@@ -1,15 +1,19 @@
 #pragma once
-// The main window: the 3-D view, menus, recent files, drag-and-drop and a
-// status bar with the mesh report. Meshes load on a worker thread so the
-// window never freezes.
+// The main window: the 3-D view, the SVG pane, the style editor and the
+// timeline around one document (mesh, camera, light, animation, style) with
+// an undo stack, saved as a project file; menus, recent files,
+// drag-and-drop and a status bar. Meshes load and exports run on worker
+// threads so the window never freezes.
 
 #include <atomic>
 #include <memory>
+#include <optional>
 
 #include <QFutureWatcher>
 #include <QMainWindow>
 
 #include "core/mesh/build.h"
+#include "core/project/project.h"
 #include "ui/contour_overlay.h"
 
 class QLabel;
@@ -17,11 +21,13 @@ class QSvgWidget;
 class QTimer;
 class QMenu;
 class QProgressBar;
+class QUndoStack;
 
 namespace snaxels::ui {
 
 class MeshView;
 class StyleEditor;
+class SvgPane;
 class Timeline;
 
 /// What a background load produces: a mesh or the one-line reason it failed.
@@ -40,9 +46,27 @@ class MainWindow : public QMainWindow {
 
     /// Starts loading @p spec (a file path or proc:NAME[:FACES]) in the background.
     void openMesh(const QString& spec);
+    /// Opens a project (.snaxels) or a mesh, by the file's extension.
+    void openFile(const QString& path);
+    /// Reads the project at @p path and loads its mesh in the background;
+    /// the project replaces the document once the mesh has loaded (ends with
+    /// projectOpened or projectFailed; the document is untouched on failure).
+    /// Asks first when the document has unsaved changes.
+    void openProject(const QString& path);
+    /// Saves the document as a project at @p path (atomically).
+    bool saveProject(const QString& path);
+    QString projectPath() const { return projectPath_; }
+    /// Unsaved changes: an edit since the last save or open, or a new mesh.
+    bool isModified() const;
+    QUndoStack* undoStack() const { return undo_; }
+    /// The light the user set by dragging (none: the style's or the default).
+    const std::optional<Light>& userLight() const { return light_; }
+    /// Turns the light as a Shift+drag in the view does (radians about
+    /// the screen's up and right axes).
+    void turnLight(double right, double down);
     const LoadedMesh* mesh() const { return mesh_.get(); }
     MeshView* meshView() const { return view_; }
-    QSvgWidget* svgPane() const { return svgPane_; }
+    SvgPane* svgPane() const { return svgPane_; }
     StyleEditor* styleEditor() const { return styleEditor_; }
     Timeline* timeline() const { return timeline_; }
     /// Exports the timeline's animation as animated SVG to @p path off the
@@ -65,6 +89,9 @@ class MainWindow : public QMainWindow {
     void contoursUpdated();
     void exportFinished(const QString& path);
     void exportFailed(const QString& message);
+    void projectOpened(const QString& path);
+    void projectFailed(const QString& message);
+    void projectSaved(const QString& path);
 
   protected:
     void closeEvent(QCloseEvent* event) override;
@@ -72,6 +99,15 @@ class MainWindow : public QMainWindow {
     void dropEvent(QDropEvent* event) override;
 
   private:
+    /// Asks to save unsaved changes: false when the user cancels.
+    bool maybeSave();
+    bool saveProjectInteractive(bool ask_path);
+    void applyProject(const Project& project, const QString& path);
+    void updateTitle();
+    /// The camera as the document keeps it (no turntable angle).
+    OrbitView viewState() const;
+    Light baseLight() const;
+    void onLightDragged(glm::dvec3 axis_a, double angle_a, glm::dvec3 axis_b, double angle_b);
     void createMenus();
     void createStyleMenu();
     void onLoadFinished();
@@ -84,7 +120,7 @@ class MainWindow : public QMainWindow {
     void rebuildRecentMenu();
 
     MeshView* view_;
-    QSvgWidget* svgPane_;
+    SvgPane* svgPane_;
     QByteArray svg_;
     StyleEditor* styleEditor_;
     Timeline* timeline_;
@@ -104,6 +140,20 @@ class MainWindow : public QMainWindow {
     QFutureWatcher<OverlayResult> contourWatcher_;
     bool contoursPending_ = false;
     std::size_t contourLoops_ = 0;
+
+    // The document: what a project file keeps, its undo stack and state.
+    QUndoStack* undo_;
+    QString meshSpec_;    ///< the mesh loaded now (path or proc: spec)
+    QString projectPath_; ///< empty until saved or opened
+    std::optional<Light> light_;
+    QString committedStyle_;
+    OrbitView committedView_;
+    std::optional<Light> committedLight_;
+    AnimationSpec committedSpec_;
+    bool meshChanged_ = false;
+    int restoring_ = 0; ///< set while an undo step or a project sets the document
+    std::optional<Project> pendingProject_;
+    QString pendingProjectPath_;
 };
 
 } // namespace snaxels::ui

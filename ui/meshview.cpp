@@ -98,12 +98,12 @@ std::atomic<std::size_t> face_budget{0};
 
 std::size_t display_face_budget() { return face_budget.load(); }
 
-MeshGeometry mesh_geometry(const Mesh& mesh, std::size_t max_faces) {
+MeshGeometry mesh_geometry(const MeshTopology& mesh, std::size_t max_faces) {
     MeshGeometry g;
     glm::dvec3 lo(std::numeric_limits<double>::max()), hi(-std::numeric_limits<double>::max());
-    for (const auto vh : mesh.vertices()) {
-        lo = glm::min(lo, to_glm(mesh.point(vh)));
-        hi = glm::max(hi, to_glm(mesh.point(vh)));
+    for (const glm::dvec3& p : mesh.positions) {
+        lo = glm::min(lo, p);
+        hi = glm::max(hi, p);
     }
     g.centre = mesh.n_vertices() ? 0.5 * (lo + hi) : glm::dvec3(0.0);
     g.radius = mesh.n_vertices() ? std::max(0.5 * glm::length(hi - lo), 1e-9) : 1.0;
@@ -112,8 +112,8 @@ MeshGeometry mesh_geometry(const Mesh& mesh, std::size_t max_faces) {
     };
     if (max_faces == 0 || mesh.n_faces() <= max_faces) {
         g.vertices.reserve(mesh.n_faces() * 18);
-        for (const auto fh : mesh.faces())
-            for (const auto vh : mesh.fv_range(fh)) corner(to_glm(mesh.point(vh)), to_glm(mesh.normal(vh)));
+        for (const auto& f : mesh.face_vertices)
+            for (const std::int32_t v : f) corner(mesh.positions[v], mesh.normals[v]);
         return g;
     }
     // Vertex clustering on a uniform grid: each cell's vertices merge into
@@ -126,14 +126,14 @@ MeshGeometry mesh_geometry(const Mesh& mesh, std::size_t max_faces) {
     std::unordered_map<std::uint64_t, std::uint32_t> cluster_of_cell;
     std::vector<std::uint32_t> cluster(mesh.n_vertices());
     std::vector<glm::dvec3> sum_p, sum_n;
-    for (const auto vh : mesh.vertices()) {
-        const glm::dvec3 q = glm::floor((to_glm(mesh.point(vh)) - lo) / cell);
+    for (std::size_t v = 0; v < mesh.n_vertices(); ++v) {
+        const glm::dvec3 q = glm::floor((mesh.positions[v] - lo) / cell);
         const std::uint64_t key = std::uint64_t(q.x) + std::uint64_t(dims.x) * (std::uint64_t(q.y) + std::uint64_t(dims.y) * std::uint64_t(q.z));
         auto [it, inserted] = cluster_of_cell.try_emplace(key, std::uint32_t(sum_p.size()));
         if (inserted) sum_p.emplace_back(0.0), sum_n.emplace_back(0.0);
-        cluster[vh.idx()] = it->second;
-        sum_p[it->second] += to_glm(mesh.point(vh));
-        sum_n[it->second] += to_glm(mesh.normal(vh));
+        cluster[v] = it->second;
+        sum_p[it->second] += mesh.positions[v];
+        sum_n[it->second] += mesh.normals[v];
     }
     std::vector<std::uint32_t> count(sum_p.size(), 0);
     for (const auto c : cluster) ++count[c];
@@ -142,10 +142,8 @@ MeshGeometry mesh_geometry(const Mesh& mesh, std::size_t max_faces) {
         const double len = glm::length(sum_n[c]);
         sum_n[c] = len > 0.0 ? sum_n[c] / len : glm::dvec3(0.0, 0.0, 1.0);
     }
-    for (const auto fh : mesh.faces()) {
-        std::uint32_t c[3];
-        int k = 0;
-        for (const auto vh : mesh.fv_range(fh)) c[k++] = cluster[vh.idx()];
+    for (const auto& f : mesh.face_vertices) {
+        const std::uint32_t c[3] = {cluster[f[0]], cluster[f[1]], cluster[f[2]]};
         if (c[0] == c[1] || c[1] == c[2] || c[0] == c[2]) continue;
         // Clustering can fold a face over; such slivers would show dark.
         const glm::dvec3 n = glm::cross(sum_p[c[1]] - sum_p[c[0]], sum_p[c[2]] - sum_p[c[0]]);
@@ -155,7 +153,7 @@ MeshGeometry mesh_geometry(const Mesh& mesh, std::size_t max_faces) {
     return g;
 }
 
-void MeshView::setMesh(const Mesh& mesh) { setGeometry(mesh_geometry(mesh, display_face_budget())); }
+void MeshView::setMesh(const Mesh& mesh) { setGeometry(mesh_geometry(build_topology(mesh), display_face_budget())); }
 
 void MeshView::setGeometry(MeshGeometry geometry) {
     vertices_ = std::move(geometry.vertices);
@@ -164,6 +162,13 @@ void MeshView::setGeometry(MeshGeometry geometry) {
     radius_ = geometry.radius;
     dirty_ = true;
     resetCamera();
+}
+
+void MeshView::setPose(MeshGeometry geometry) {
+    vertices_ = std::move(geometry.vertices);
+    vertexCount_ = static_cast<int>(vertices_.size() / 6);
+    dirty_ = true;
+    update();
 }
 
 void MeshView::clearMesh() {

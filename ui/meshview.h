@@ -15,6 +15,7 @@
 #include <glm/glm.hpp>
 
 #include "core/mesh/mesh.h"
+#include "core/snaxel/topology.h"
 #include "core/scene/camera.h"
 #include "core/scene/orbit.h"
 
@@ -30,7 +31,7 @@ struct MeshGeometry {
 
 /// The triangles to draw; above @p max_faces (0: no limit) a lighter mesh
 /// made by vertex clustering, for software renderers.
-MeshGeometry mesh_geometry(const Mesh& mesh, std::size_t max_faces = 0);
+MeshGeometry mesh_geometry(const MeshTopology& mesh, std::size_t max_faces = 0);
 
 /// The face budget of the view's renderer (0: none; set for software renderers).
 std::size_t display_face_budget();
@@ -53,6 +54,9 @@ class MeshView : public QOpenGLWidget, protected QOpenGLFunctions_3_3_Core {
     void setMesh(const Mesh& mesh);
     /// The same with triangles prepared by mesh_geometry (on any thread).
     void setGeometry(MeshGeometry geometry);
+    /// Replaces the triangles of the same mesh in another pose (a clip
+    /// frame) without moving the camera.
+    void setPose(MeshGeometry geometry);
     void clearMesh();
     /// Frames the whole mesh in a three-quarter view.
     void resetCamera();

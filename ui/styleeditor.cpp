@@ -120,6 +120,7 @@ void StyleEditor::apply() {
         mark(d.line, d.column, QColor("#ffd6d6"));
         edit_->setExtraSelections(marks);
     }
+    emit textApplied(edit_->toPlainText());
 }
 
 } // namespace snaxels::ui

@@ -29,6 +29,8 @@ class StyleEditor : public QWidget {
   signals:
     /// A new style parsed and is in force.
     void styleChanged(const snaxels::Style& style);
+    /// The text was taken up (typing paused, or set): parsed or not.
+    void textApplied(const QString& text);
 
   private:
     void apply();

@@ -1,5 +1,7 @@
 #include "ui/timeline.h"
 
+#include <cmath>
+
 #include <QCheckBox>
 #include <QComboBox>
 #include <QDoubleSpinBox>
@@ -10,13 +12,18 @@
 #include <QSpinBox>
 
 namespace snaxels::ui {
+namespace {
+constexpr int kKindRole = Qt::UserRole;
+constexpr int kClipRole = Qt::UserRole + 1;
+constexpr int kSecondsRole = Qt::UserRole + 2;
+} // namespace
 
 Timeline::Timeline(QWidget* parent)
     : QWidget(parent), source_(new QComboBox(this)), degrees_(new QDoubleSpinBox(this)), frames_(new QSpinBox(this)),
       fps_(new QDoubleSpinBox(this)), slider_(new QSlider(Qt::Horizontal, this)), label_(new QLabel(this)),
       play_(new QPushButton(tr("Play"), this)), loop_(new QCheckBox(tr("Loop"), this)) {
-    source_->addItem(tr("Turntable"), int(AnimationSpec::Kind::Turntable));
-    source_->addItem(tr("Orbiting light"), int(AnimationSpec::Kind::LightOrbit));
+    setClips({});
+    source_->setToolTip(tr("What moves from frame to frame"));
     degrees_->setRange(-90.0, 90.0);
     degrees_->setDecimals(2);
     degrees_->setValue(2.0);
@@ -39,19 +46,91 @@ Timeline::Timeline(QWidget* parent)
         emit changed();
     };
     connect(slider_, &QSlider::valueChanged, this, refresh);
-    connect(source_, &QComboBox::currentIndexChanged, this, refresh);
-    connect(degrees_, &QDoubleSpinBox::valueChanged, this, refresh);
-    connect(fps_, &QDoubleSpinBox::valueChanged, this, [this] { timer_.setInterval(int(1000.0 / fps_->value())); });
-    connect(frames_, &QSpinBox::valueChanged, this, [this](int n) { setFrameCount(n); });
+    connect(source_, &QComboBox::currentIndexChanged, this, [this, refresh] {
+        updateEnabled();
+        // A clip plays its own length at the rate set.
+        if (!quiet_ && AnimationSpec::Kind(source_->currentData(kKindRole).toInt()) == AnimationSpec::Kind::Clip) {
+            ++quiet_;
+            setFrameCount(std::max(1, int(std::lround(source_->currentData(kSecondsRole).toDouble() * fps_->value())) + 1));
+            --quiet_;
+        }
+        refresh();
+        edited();
+    });
+    connect(degrees_, &QDoubleSpinBox::valueChanged, this, [this, refresh] {
+        refresh();
+        edited();
+    });
+    connect(fps_, &QDoubleSpinBox::valueChanged, this, [this, refresh] {
+        timer_.setInterval(int(1000.0 / fps_->value()));
+        refresh(); // a clip's frames are at other times now
+        edited();
+    });
+    connect(frames_, &QSpinBox::valueChanged, this, [this](int n) {
+        setFrameCount(n);
+        emit changed();
+        edited();
+    });
     connect(play_, &QPushButton::clicked, this, &Timeline::togglePlay);
     connect(&timer_, &QTimer::timeout, this, &Timeline::advance);
     timer_.setInterval(int(1000.0 / fps_->value()));
     label_->setText(tr("frame 0 / %1").arg(frames_->value() - 1));
 }
 
+void Timeline::setClips(const std::vector<AnimationClipInfo>& clips) {
+    ++quiet_;
+    const AnimationSpec before = source_->count() ? spec() : AnimationSpec{};
+    source_->clear();
+    source_->addItem(tr("Turntable"), int(AnimationSpec::Kind::Turntable));
+    source_->addItem(tr("Orbiting light"), int(AnimationSpec::Kind::LightOrbit));
+    for (const AnimationClipInfo& clip : clips) {
+        source_->addItem(tr("Clip: %1").arg(QString::fromStdString(clip.name)), int(AnimationSpec::Kind::Clip));
+        source_->setItemData(source_->count() - 1, QString::fromStdString(clip.name), kClipRole);
+        source_->setItemData(source_->count() - 1, clip.duration, kSecondsRole);
+    }
+    if (before.kind == AnimationSpec::Kind::LightOrbit) source_->setCurrentIndex(1);
+    updateEnabled();
+    --quiet_;
+}
+
+bool Timeline::setSpec(const AnimationSpec& s) {
+    ++quiet_;
+    int index = s.kind == AnimationSpec::Kind::LightOrbit ? 1 : 0;
+    bool found = s.kind == AnimationSpec::Kind::Turntable || s.kind == AnimationSpec::Kind::LightOrbit;
+    if (s.kind == AnimationSpec::Kind::Clip)
+        for (int i = 2; i < source_->count(); ++i)
+            if (source_->itemData(i, kClipRole).toString().toStdString() == s.clip ||
+                (s.clip.empty() && i == 2) || std::to_string(i - 2) == s.clip) {
+                index = i;
+                found = true;
+                break;
+            }
+    source_->setCurrentIndex(index);
+    degrees_->setValue(s.degrees_per_frame);
+    fps_->setValue(s.fps);
+    int frames = s.frames;
+    if (frames <= 0 && index >= 2)
+        frames = std::max(1, int(std::lround(source_->itemData(index, kSecondsRole).toDouble() * s.fps)) + 1);
+    setFrameCount(std::max(frames, 1));
+    updateEnabled();
+    --quiet_;
+    emit changed();
+    return found;
+}
+
+void Timeline::edited() {
+    if (!quiet_) emit specEdited();
+}
+
+void Timeline::updateEnabled() {
+    const auto kind = AnimationSpec::Kind(source_->currentData(kKindRole).toInt());
+    degrees_->setEnabled(kind != AnimationSpec::Kind::Clip);
+}
+
 AnimationSpec Timeline::spec() const {
     AnimationSpec s;
-    s.kind = AnimationSpec::Kind(source_->currentData().toInt());
+    s.kind = AnimationSpec::Kind(source_->currentData(kKindRole).toInt());
+    if (s.kind == AnimationSpec::Kind::Clip) s.clip = source_->currentData(kClipRole).toString().toStdString();
     s.degrees_per_frame = degrees_->value();
     s.frames = frames_->value();
     s.fps = fps_->value();

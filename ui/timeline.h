@@ -1,10 +1,12 @@
 #pragma once
-// The timeline: what moves (turntable or orbiting light), how far per frame,
+// The timeline: what moves (turntable, orbiting light or one of the mesh's
+// own clips), how far per frame,
 // how many frames at what rate, the current frame, play/pause and loop.
 
 #include <QTimer>
 #include <QWidget>
 
+#include "core/mesh/mesh_animation.h"
 #include "core/scene/animation.h"
 
 class QCheckBox;
@@ -24,6 +26,11 @@ class Timeline : public QWidget {
 
     /// Source, degrees per frame, frame count and rate.
     AnimationSpec spec() const;
+    /// Shows @p spec (an undo step or a project); a clip the mesh lacks
+    /// falls back to the turntable and returns false.
+    bool setSpec(const AnimationSpec& spec);
+    /// The loaded mesh's own clips (name, seconds), offered as sources.
+    void setClips(const std::vector<AnimationClipInfo>& clips);
     int frame() const;
     void setFrame(int frame);
     void setFrameCount(int frames);
@@ -36,9 +43,14 @@ class Timeline : public QWidget {
   signals:
     /// The current frame or the animation settings changed.
     void changed();
+    /// The user changed the animation settings (source, degrees, frames,
+    /// rate): one step for the undo stack.
+    void specEdited();
 
   private:
     void advance();
+    void edited();
+    void updateEnabled();
 
     QComboBox* source_;
     QDoubleSpinBox* degrees_;
@@ -49,6 +61,7 @@ class Timeline : public QWidget {
     QPushButton* play_;
     QCheckBox* loop_;
     QTimer timer_;
+    int quiet_ = 0; ///< set while showing a spec: no specEdited
 };
 
 } // namespace snaxels::ui

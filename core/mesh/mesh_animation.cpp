@@ -49,15 +49,17 @@ struct MeshAnimation::Impl {
     std::string clip;
 };
 
-std::vector<std::string> animation_clips(const std::string& path) {
+std::vector<AnimationClipInfo> animation_clips(const std::string& path) {
     Assimp::Importer importer;
     const aiScene* scene = detail::read_assimp_scene(importer, path);
-    std::vector<std::string> names;
+    std::vector<AnimationClipInfo> clips;
     for (unsigned a = 0; a < scene->mNumAnimations; ++a) {
-        std::string n = scene->mAnimations[a]->mName.C_Str();
-        names.push_back(n.empty() ? "clip" + std::to_string(a) : n);
+        const aiAnimation* anim = scene->mAnimations[a];
+        std::string n = anim->mName.C_Str();
+        const double tps = anim->mTicksPerSecond > 0 ? anim->mTicksPerSecond : 25.0;
+        clips.push_back({n.empty() ? "clip" + std::to_string(a) : n, std::max(anim->mDuration, 0.0) / tps});
     }
-    return names;
+    return clips;
 }
 
 MeshAnimation::MeshAnimation(const std::string& path, const std::string& clip)

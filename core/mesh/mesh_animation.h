@@ -31,7 +31,13 @@ class MeshAnimation {
     std::unique_ptr<Impl> impl_;
 };
 
-/// Every clip name of @p path (empty when it has none).
-std::vector<std::string> animation_clips(const std::string& path);
+struct AnimationClipInfo {
+    std::string name;
+    double duration = 0.0; ///< seconds
+};
+
+/// Every clip of @p path (empty when it has none), named as MeshAnimation
+/// names them.
+std::vector<AnimationClipInfo> animation_clips(const std::string& path);
 
 } // namespace snaxels

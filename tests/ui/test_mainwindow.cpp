@@ -12,13 +12,17 @@
 #include <QStandardPaths>
 #include <QSurfaceFormat>
 #include <QSvgRenderer>
-#include <QSvgWidget>
+#include <QMessageBox>
+#include <QPushButton>
+#include <QUndoStack>
+#include <QComboBox>
 #include <QTest>
 
 #include "ui/mainwindow.h"
 #include "ui/meshview.h"
 #include "ui/resources.h"
 #include "ui/styleeditor.h"
+#include "ui/svgpane.h"
 #include "ui/timeline.h"
 
 using snaxels::ui::MainWindow;
