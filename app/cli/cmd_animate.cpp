@@ -10,6 +10,7 @@
 
 #include "app/cli/args.h"
 #include "app/cli/commands.h"
+#include "app/cli/progress.h"
 #include "app/cli/scene_options.h"
 #include "core/error.h"
 #include "core/mesh/import.h"
@@ -17,29 +18,6 @@
 #include "core/util/atomic_file.h"
 
 namespace snaxels::cli {
-namespace {
-
-class Progress {
-  public:
-    Progress(int total, bool enabled) : total_(total), enabled_(enabled) {}
-    void set_total(int total) { total_ = total; }
-    void update(int done) {
-        if (!enabled_) return;
-        const int width = 40, filled = total_ ? width * done / total_ : width;
-        std::fprintf(stderr, "\r[%.*s%*s] %d/%d frames", filled,
-                     "########################################", width - filled, "", done, total_);
-        std::fflush(stderr);
-    }
-    void finish() {
-        if (enabled_) std::fprintf(stderr, "\n");
-    }
-
-  private:
-    int total_;
-    bool enabled_;
-};
-
-} // namespace
 
 int run_animate(const std::vector<std::string>& argv) {
     auto specs = scene_option_specs();

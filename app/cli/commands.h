@@ -20,6 +20,7 @@ int run_info(const std::vector<std::string>& args);
 int run_contours(const std::vector<std::string>& args);
 int run_bench(const std::vector<std::string>& args);
 int run_animate(const std::vector<std::string>& args);
+int run_render(const std::vector<std::string>& args);
 
 /// The sentence every command's help uses to say what MESH may be.
 extern const char* const kMeshArgumentHelp;

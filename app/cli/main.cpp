@@ -24,6 +24,7 @@ const std::vector<Command>& commands() {
         {"info", "print a report on a mesh (counts, repairs, bounding box)", run_info},
         {"contours", "find visual, shadow, isophote and gleam contours; JSON and SVG", run_contours},
         {"animate", "track contours through an animation; animated SVG whose paths move", run_animate},
+        {"render", "render a project saved by the application (animated or one frame)", run_render},
         {"bench", "time import, topology and contour extraction on a mesh", run_bench},
     };
     return all;

@@ -1,5 +1,5 @@
-// snaxels: the desktop application. Opens the mesh given on the command
-// line, or the bundled default scene.
+// snaxels: the desktop application. Opens the project or mesh given on the
+// command line, or the bundled default scene.
 
 #include <QApplication>
 #include <QCommandLineParser>
@@ -30,7 +30,7 @@ int main(int argc, char** argv) {
     parser.setApplicationDescription("Snaxels: vector line art from 3-D meshes.");
     parser.addHelpOption();
     parser.addVersionOption();
-    parser.addPositionalArgument("mesh", "Mesh file or proc:NAME[:FACES] to open "
+    parser.addPositionalArgument("file", "Project (.snaxels), mesh file or proc:NAME[:FACES] to open "
                                          "(default: the bundled Spot scene).");
     const QCommandLineOption style_option("style-file", "Start with this XML style (docs/styles.md).", "xml");
     const QCommandLineOption screenshot_option(
@@ -58,12 +58,16 @@ int main(int argc, char** argv) {
                 QApplication::exit(saved ? 0 : 1);
             });
         });
+        QObject::connect(&window, &snaxels::ui::MainWindow::projectFailed, &window, [](const QString& message) {
+            std::fprintf(stderr, "snaxels: %s\n", qPrintable(message));
+            QApplication::exit(1);
+        });
         QObject::connect(&window, &snaxels::ui::MainWindow::loadFailed, &window, [](const QString& message) {
             std::fprintf(stderr, "snaxels: %s\n", qPrintable(message));
             QApplication::exit(1);
         });
     }
     const QStringList args = parser.positionalArguments();
-    window.openMesh(args.isEmpty() ? snaxels::ui::defaultScenePath() : args.first());
+    window.openFile(args.isEmpty() ? snaxels::ui::defaultScenePath() : args.first());
     return app.exec();
 }

@@ -16,6 +16,10 @@
 #include <QPushButton>
 #include <QUndoStack>
 #include <QComboBox>
+#include <QDoubleSpinBox>
+#include <QPlainTextEdit>
+#include <QProcess>
+#include <QWheelEvent>
 #include <QTest>
 
 #include "ui/mainwindow.h"
@@ -26,6 +30,33 @@
 #include "ui/timeline.h"
 
 using snaxels::ui::MainWindow;
+
+namespace {
+
+/// Answers the next unsaved-changes question with @p button once it shows.
+void answerUnsavedPrompt(QMessageBox::StandardButton button, bool* asked) {
+    auto* poll = new QTimer;
+    poll->setInterval(20);
+    QObject::connect(poll, &QTimer::timeout, [poll, button, asked] {
+        auto* box = qobject_cast<QMessageBox*>(QApplication::activeModalWidget());
+        if (!box || box->objectName() != "unsavedChangesBox") return;
+        *asked = true;
+        box->button(button)->click();
+        poll->deleteLater();
+    });
+    poll->start();
+}
+
+QByteArray readAll(const QString& path) {
+    QFile f(path);
+    return f.open(QIODevice::ReadOnly) ? f.readAll() : QByteArray();
+}
+
+QImage paneImage(MainWindow& window) {
+    return window.svgPane()->grab().toImage().convertToFormat(QImage::Format_RGB32);
+}
+
+} // namespace
 
 class TestMainWindow : public QObject {
     Q_OBJECT
@@ -176,6 +207,320 @@ class TestMainWindow : public QObject {
         tick.stop();
         qInfo() << "longest event-loop stall while loading 1M faces:" << worst << "ms";
         QVERIFY2(worst < 200, qPrintable(QString("the event loop stalled for %1 ms").arg(worst)));
+    }
+
+    // The user's whole round: open a mesh, edit the style and see the SVG
+    // pane change, move the camera and the light, change the animation,
+    // scrub, export; save the project, reopen it in a new window and get
+    // the same export byte for byte.
+    void endToEndProjectRoundTrip() {
+        QTemporaryDir dir;
+        QVERIFY(QDir(dir.path()).mkpath("meshes"));
+        QVERIFY(QFile::copy(QString(SNAXELS_TEST_ASSETS) + "/spot.obj", dir.filePath("meshes/spot.obj")));
+        QDir(dir.path()).mkpath("projects");
+        const QString projectFile = dir.filePath("projects/cow.snaxels");
+        QByteArray exported;
+        {
+            MainWindow window;
+            window.resize(1200, 800);
+            window.show();
+            QVERIFY(QTest::qWaitForWindowExposed(&window));
+            QSignalSpy contours(&window, &MainWindow::contoursUpdated);
+            window.openMesh(dir.filePath("meshes/spot.obj"));
+            QVERIFY(contours.wait(60000));
+            QVERIFY(window.isModified()); // a mesh in an unsaved document
+            const QByteArray firstSvg = window.currentSvg();
+            const QImage firstPane = paneImage(window);
+
+            // Type into the style editor: a thick blue outline, then pause.
+            contours.clear();
+            QPlainTextEdit* editor = window.styleEditor()->editor();
+            editor->setFocus();
+            editor->setPlainText(
+                "<style>\n  <contour kind=\"visual\">\n    <visible stroke=\"#1040ff\" width=\"4\"/>\n"
+                "    <hidden draw=\"false\"/>\n  </contour>\n  <contour kind=\"shadow\">\n"
+                "    <visible stroke=\"#10a040\" width=\"1.5\"/>\n  </contour>\n</style>\n");
+            QTest::keyClick(editor, Qt::Key_End, Qt::ControlModifier);
+            QTest::keyClicks(editor, "<!-- blue -->");
+            QVERIFY(contours.wait(30000));
+            QTest::qWait(100);
+            QVERIFY(window.currentSvg().contains("#1040ff"));
+            QVERIFY(window.currentSvg() != firstSvg);
+            // The pane shows it: pixels changed and the blue ink is there.
+            const QImage pane = paneImage(window);
+            QVERIFY(pane != firstPane);
+            qsizetype blue = 0;
+            for (int y = 0; y < pane.height(); ++y)
+                for (int x = 0; x < pane.width(); ++x) {
+                    const QRgb p = pane.pixel(x, y);
+                    blue += qBlue(p) > 200 && qRed(p) < 90 && qGreen(p) < 120;
+                }
+            QVERIFY2(blue > 100, qPrintable(QString("%1 blue pixels in the pane").arg(blue)));
+            QVERIFY(window.undoStack()->count() >= 1);
+
+            // The pane zooms about the pointer, pans and fits again.
+            snaxels::ui::SvgPane* svgPane = window.svgPane();
+            const QRectF fitted = svgPane->drawingRect();
+            QWheelEvent wheel(QPointF(40, 50), svgPane->mapToGlobal(QPointF(40, 50)), {}, QPoint(0, 240),
+                              Qt::NoButton, Qt::NoModifier, Qt::NoScrollPhase, false);
+            QApplication::sendEvent(svgPane, &wheel);
+            QVERIFY(svgPane->zoom() > 1.4);
+            QVERIFY(svgPane->drawingRect().width() > fitted.width() * 1.4);
+            QTest::mousePress(svgPane, Qt::LeftButton, {}, QPoint(100, 100));
+            QTest::mouseMove(svgPane, QPoint(130, 90));
+            QTest::mouseRelease(svgPane, Qt::LeftButton, {}, QPoint(130, 90));
+            QVERIFY(svgPane->offset() != QPointF());
+            QTest::mouseDClick(svgPane, Qt::LeftButton, {}, QPoint(100, 100));
+            QCOMPARE(svgPane->drawingRect(), fitted);
+
+            // Camera and light edits; the animation: 4 degrees a frame, 30 frames.
+            contours.clear();
+            QTest::mousePress(window.meshView(), Qt::LeftButton, {}, QPoint(300, 300));
+            QTest::mouseMove(window.meshView(), QPoint(340, 310));
+            QTest::mouseRelease(window.meshView(), Qt::LeftButton, {}, QPoint(340, 310));
+            QVERIFY(contours.wait(30000));
+            window.turnLight(0.4, -0.2);
+            QVERIFY(window.userLight().has_value());
+            auto* degrees = window.timeline()->findChild<QDoubleSpinBox*>();
+            QVERIFY(degrees);
+            degrees->setValue(4.0);
+            window.timeline()->setFrameCount(30);
+            contours.clear();
+            window.timeline()->setFrame(7); // scrub
+            QVERIFY(contours.wait(30000));
+            QCOMPARE(window.timeline()->frame(), 7);
+
+            QSignalSpy finished(&window, &MainWindow::exportFinished);
+            window.exportAnimation(dir.filePath("first.svg"));
+            QVERIFY(finished.wait(180000));
+            exported = readAll(dir.filePath("first.svg"));
+            QVERIFY(exported.contains("<animate attributeName=\"d\""));
+            QVERIFY(exported.contains("#1040ff"));
+
+            QVERIFY(window.saveProject(projectFile));
+            QVERIFY(!window.isModified());
+            QVERIFY(window.windowTitle().startsWith("cow.snaxels"));
+        }
+        // The project keeps the mesh relative to itself.
+        QVERIFY(readAll(projectFile).contains("\"mesh\": \"../meshes/spot.obj\""));
+
+        MainWindow reopened;
+        reopened.resize(900, 700); // another window size: the export must not care
+        reopened.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&reopened));
+        QSignalSpy opened(&reopened, &MainWindow::projectOpened);
+        QSignalSpy contours(&reopened, &MainWindow::contoursUpdated);
+        reopened.openFile(projectFile);
+        QVERIFY(opened.wait(60000));
+        QVERIFY(contours.wait(30000));
+        QCOMPARE(reopened.timeline()->frame(), 7);
+        QCOMPARE(reopened.timeline()->spec().degrees_per_frame, 4.0);
+        QVERIFY(!reopened.isModified());
+        QCOMPARE(reopened.undoStack()->count(), 0);
+        QSignalSpy finished(&reopened, &MainWindow::exportFinished);
+        reopened.exportAnimation(dir.filePath("second.svg"));
+        QVERIFY(finished.wait(180000));
+        const QByteArray again = readAll(dir.filePath("second.svg"));
+        QCOMPARE(again.size(), exported.size());
+        QVERIFY2(again == exported, "the reopened project exports other bytes");
+
+        // The command-line twin renders the saved project to the same bytes.
+        QProcess cli;
+        cli.start(QCoreApplication::applicationDirPath() + "/snaxels-cli",
+                  {"render", projectFile, "-o", dir.filePath("cli.svg")});
+        QVERIFY(cli.waitForFinished(180000));
+        QVERIFY2(cli.exitCode() == 0, cli.readAllStandardError().constData());
+        QVERIFY2(readAll(dir.filePath("cli.svg")) == exported, "snaxels-cli render writes other bytes");
+    }
+
+    // Every edit is one undo step; unsaved changes are asked about before
+    // the window closes or another project replaces them.
+    void undoesEditsAndAsksBeforeLosingThem() {
+        QTemporaryDir dir;
+        MainWindow window;
+        window.resize(1000, 700);
+        window.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&window));
+        QSignalSpy contours(&window, &MainWindow::contoursUpdated);
+        window.openMesh(QString(SNAXELS_TEST_ASSETS) + "/spot.obj");
+        QVERIFY(contours.wait(60000));
+        QTest::qWait(400);
+        QCOMPARE(window.undoStack()->count(), 0); // loading is not an edit
+        const QByteArray original = window.currentSvg();
+        const QString originalStyle = window.styleEditor()->text();
+
+        // Camera: a drag is one step; undo puts the view back exactly.
+        const snaxels::OrbitView before = window.meshView()->orbit();
+        QTest::mousePress(window.meshView(), Qt::LeftButton, {}, QPoint(300, 300));
+        QTest::mouseMove(window.meshView(), QPoint(320, 300));
+        QTest::mouseMove(window.meshView(), QPoint(360, 330));
+        QTest::mouseRelease(window.meshView(), Qt::LeftButton, {}, QPoint(360, 330));
+        QCOMPARE(window.undoStack()->count(), 1);
+        QVERIFY(!(window.meshView()->orbit() == before));
+        window.undoStack()->undo();
+        QVERIFY(window.meshView()->orbit() == before);
+        window.undoStack()->redo();
+        QVERIFY(!(window.meshView()->orbit() == before));
+        window.undoStack()->undo();
+
+        // Style: a preset is a step; undo brings the text and the drawing back.
+        QFile toon(snaxels::ui::dataDirectory() + "/styles/toon.xml");
+        QVERIFY(toon.open(QIODevice::ReadOnly));
+        contours.clear();
+        window.styleEditor()->setText(QString::fromUtf8(toon.readAll()), "toon.xml");
+        QVERIFY(contours.wait(30000));
+        QVERIFY(window.currentSvg().contains("<g id=\"fills\""));
+        QTest::qWait(1600); // a later edit does not merge with this one
+        // Animation: the source is a step.
+        auto* source = window.timeline()->findChild<QComboBox*>();
+        source->setCurrentIndex(1); // orbiting light
+        QCOMPARE(window.timeline()->spec().kind, snaxels::AnimationSpec::Kind::LightOrbit);
+        window.undoStack()->undo();
+        QCOMPARE(window.timeline()->spec().kind, snaxels::AnimationSpec::Kind::Turntable);
+        contours.clear();
+        window.undoStack()->undo(); // the preset
+        QCOMPARE(window.styleEditor()->text(), originalStyle);
+        QVERIFY(contours.wait(30000));
+        QTest::qWait(200);
+        QCOMPARE(window.currentSvg(), original);
+        // Light: a drag is a step; undo returns to the style's light.
+        window.turnLight(0.3, 0.1);
+        QVERIFY(window.userLight().has_value());
+        window.undoStack()->undo();
+        QVERIFY(!window.userLight().has_value());
+        window.undoStack()->redo();
+
+        // Closing asks: Cancel keeps the window and everything in it.
+        QVERIFY(window.isModified());
+        bool asked = false;
+        answerUnsavedPrompt(QMessageBox::Cancel, &asked);
+        QVERIFY(!window.close());
+        QVERIFY(asked);
+        QVERIFY(window.isVisible());
+        QVERIFY(window.userLight().has_value());
+
+        // Opening another project asks too; Cancel keeps this one.
+        const QString other = dir.filePath("other.snaxels");
+        QVERIFY(window.saveProject(other));
+        window.turnLight(0.2, 0.0);
+        QVERIFY(window.isModified());
+        asked = false;
+        answerUnsavedPrompt(QMessageBox::Cancel, &asked);
+        QSignalSpy opened(&window, &MainWindow::projectOpened);
+        window.openProject(other);
+        QVERIFY(asked);
+        QTest::qWait(300);
+        QCOMPARE(opened.count(), 0);
+        QVERIFY(window.isModified());
+        // Save answers by saving to the project's file: nothing lost.
+        asked = false;
+        answerUnsavedPrompt(QMessageBox::Save, &asked);
+        QVERIFY(window.close());
+        QVERIFY(asked);
+        QVERIFY(!window.isModified());
+    }
+
+    // A glTF with its own clips: the timeline offers them, scrubbing poses
+    // the mesh (its contours move) and the export follows the clip.
+    void playsTheMeshsOwnClip() {
+        MainWindow window;
+        window.resize(1000, 700);
+        window.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&window));
+        QSignalSpy contours(&window, &MainWindow::contoursUpdated);
+        window.openMesh(QString(SNAXELS_TEST_ASSETS) + "/anim/skinned-bar.gltf");
+        QVERIFY(contours.wait(60000));
+        auto* source = window.timeline()->findChild<QComboBox*>();
+        QVERIFY(source->count() >= 3);
+        QVERIFY(source->itemText(2).startsWith("Clip: "));
+        contours.clear();
+        source->setCurrentIndex(2);
+        QCOMPARE(window.timeline()->spec().kind, snaxels::AnimationSpec::Kind::Clip);
+        QVERIFY(window.timeline()->spec().frames > 2); // the clip's length at 24 fps
+        QVERIFY(contours.wait(30000));
+        QTest::qWait(200);
+        const QByteArray rest = window.currentSvg();
+        contours.clear();
+        window.timeline()->setFrame(window.timeline()->spec().frames / 2);
+        QVERIFY(contours.wait(30000));
+        QTest::qWait(200);
+        QVERIFY(window.currentSvg() != rest); // the bar bent
+        window.grab().save(QString(SCREENSHOT_DIR) + "/mainwindow-clip.png");
+
+        QTemporaryDir dir;
+        QSignalSpy finished(&window, &MainWindow::exportFinished);
+        window.exportAnimation(dir.filePath("clip.svg"));
+        QVERIFY(finished.wait(120000));
+        QVERIFY(readAll(dir.filePath("clip.svg")).contains("<animate attributeName=\"d\""));
+        // Back to the turntable: the mesh returns to its loaded pose.
+        contours.clear();
+        snaxels::AnimationSpec turntable;
+        turntable.kind = snaxels::AnimationSpec::Kind::Turntable;
+        window.timeline()->setSpec(turntable);
+        window.timeline()->setFrame(0);
+        QVERIFY(contours.wait(30000));
+    }
+
+    // A broken mesh, a broken project and an unwritable export leave the
+    // document as it was, with a message in the window.
+    void badInputLosesNothing() {
+        QTemporaryDir dir;
+        MainWindow window;
+        window.resize(1000, 700);
+        window.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&window));
+        QSignalSpy contours(&window, &MainWindow::contoursUpdated);
+        window.openMesh(QString(SNAXELS_TEST_ASSETS) + "/spot.obj");
+        QVERIFY(contours.wait(60000));
+        window.turnLight(0.3, 0.0);
+        QTest::qWait(300);
+        const auto* mesh = window.mesh();
+        const QString style = window.styleEditor()->text();
+        const int steps = window.undoStack()->count();
+
+        QSignalSpy failed(&window, &MainWindow::loadFailed);
+        window.openMesh(QString(SNAXELS_TEST_ASSETS) + "/bad/truncated.ply");
+        QVERIFY(failed.wait(30000));
+        QVERIFY(!failed.first().first().toString().isEmpty());
+        auto* box = window.findChild<QMessageBox*>();
+        QVERIFY(box && box->isVisible());
+        QVERIFY(box->text().contains("truncated.ply"));
+        box->close();
+        QCOMPARE(window.mesh(), mesh);
+        QCOMPARE(window.styleEditor()->text(), style);
+        QCOMPARE(window.undoStack()->count(), steps);
+
+        QFile broken(dir.filePath("broken.snaxels"));
+        QVERIFY(broken.open(QIODevice::WriteOnly));
+        broken.write("{\"format\": \"snaxels-project\", \"version\": 1, \"mesh\": \"nowhere.obj\",");
+        broken.close();
+        QSignalSpy projectFailed(&window, &MainWindow::projectFailed);
+        window.openProject(broken.fileName());
+        QCOMPARE(projectFailed.count(), 1);
+        QVERIFY(projectFailed.first().first().toString().contains("broken.snaxels"));
+        QCOMPARE(window.mesh(), mesh);
+        // A project whose mesh is gone: named, and nothing replaced.
+        QVERIFY(window.saveProject(dir.filePath("p.snaxels")));
+        window.turnLight(0.1, 0.0);
+        QFile(dir.filePath("p.snaxels")).copy(dir.filePath("sub.snaxels"));
+        QDir(dir.path()).mkpath("elsewhere");
+        QVERIFY(QFile::rename(dir.filePath("sub.snaxels"), dir.filePath("elsewhere/moved.snaxels")));
+        projectFailed.clear();
+        bool asked = false;
+        answerUnsavedPrompt(QMessageBox::Discard, &asked);
+        window.openProject(dir.filePath("elsewhere/moved.snaxels"));
+        QVERIFY(projectFailed.wait(30000));
+        QVERIFY(projectFailed.first().first().toString().contains("moved.snaxels"));
+        QCOMPARE(window.mesh(), mesh);
+        QCOMPARE(window.styleEditor()->text(), style);
+
+        // Saving where it cannot be written: a message, the document stays unsaved.
+        window.turnLight(0.1, 0.0);
+        QTimer::singleShot(200, [] {
+            if (auto* w = qobject_cast<QMessageBox*>(QApplication::activeModalWidget())) w->accept();
+        });
+        QVERIFY(!window.saveProject(dir.filePath("no-such-folder/p.snaxels")));
+        QVERIFY(window.isModified());
     }
 
     void reportsAFileThatFailsToLoad() {

@@ -1,0 +1,79 @@
+#include <unistd.h>
+
+#include <cstdio>
+#include <iostream>
+
+#include "app/cli/args.h"
+#include "app/cli/commands.h"
+#include "app/cli/progress.h"
+#include "app/cli/scene_options.h"
+#include "core/animation/pipeline.h"
+#include "core/animation/still.h"
+#include "core/error.h"
+#include "core/mesh/import.h"
+#include "core/project/project.h"
+#include "core/util/atomic_file.h"
+
+namespace snaxels::cli {
+
+int run_render(const std::vector<std::string>& argv) {
+    Args args("render",
+              "render PROJECT.snaxels -o OUT.svg [--still [--frame N]]",
+              "Renders a project saved by the application: its mesh, camera, light, animation and\n"
+              "style. Without --still it writes the animated SVG, the very bytes the application's\n"
+              "Export > Animated SVG writes for the project; with --still, one frame of the\n"
+              "animation (the project's current frame, or N) as static SVG.",
+              {{"output", "OUT.svg", "the SVG to write", false, 'o'},
+               {"still", "", "write one frame as static SVG instead of the animation"},
+               {"frame", "N", "with --still: the frame (default: the project's current frame)"}},
+              {"PROJECT"});
+    if (!args.parse(argv)) {
+        std::cout << args.help();
+        return 0;
+    }
+    const auto output = args.value("output");
+    if (!output) throw UsageError("-o OUT.svg is required");
+    if (args.flag("frame") && !args.flag("still")) throw UsageError("--frame goes with --still");
+    const std::string project_path = args.positional()[0];
+    const Project project = read_project(project_path);
+    const std::string mesh_path = resolve_project_mesh(project_path, project.mesh);
+    std::vector<StyleDiagnostic> warnings;
+    const Style style = project.style.empty() ? default_style()
+                                              : parse_style(project.style, project_path + " (style)", &warnings);
+    for (const StyleDiagnostic& w : warnings)
+        std::cerr << "snaxels-cli: " << project_path << " (style):" << w.line << ":" << w.column
+                  << ": warning: " << w.message << '\n';
+    const LoadedMesh loaded = load_mesh(mesh_path);
+    OrbitView view = project.view;
+    view.centre = 0.5 * (loaded.report.bbox_min + loaded.report.bbox_max); // as the application frames it
+    AnimationJob job = make_animation_job(style, project.animation, orbit_base_camera(view), project.light);
+
+    if (!args.flag("still")) {
+        Progress progress(0, ::isatty(2));
+        job.progress = [&](int done, int total) {
+            progress.set_total(total);
+            progress.update(done);
+        };
+        const AnimationOutput result = run_animation(loaded, mesh_path, job);
+        progress.finish();
+        write_file_atomically(*output, result.svg);
+        std::printf("%s: %d frames at %g fps, %zu paths, %zu bytes\n", output->c_str(), result.frames,
+                    project.animation.fps, result.stats.paths, result.svg.size());
+        return 0;
+    }
+    const int frame = args.value("frame") ? parse_int("frame", *args.value("frame"), 0, 100000) : project.frame;
+    MeshTopology topology = build_topology(loaded.mesh);
+    const glm::dvec3 centre = 0.5 * (loaded.report.bbox_min + loaded.report.bbox_max);
+    FrameDriver driver(job.animation, loaded, topology, job.camera, job.light, centre, mesh_path);
+    StillJob still;
+    driver.apply(frame, still.camera, still.light);
+    still.kinds = job.kinds;
+    still.style = style;
+    still.engine = job.engine;
+    const StillOutput out = render_still(loaded, topology, nullptr, still);
+    write_file_atomically(*output, out.svg);
+    std::printf("%s: frame %d, %zu bytes\n", output->c_str(), frame, out.svg.size());
+    return 0;
+}
+
+} // namespace snaxels::cli
