@@ -1,5 +1,6 @@
 #include "ui/contour_overlay.h"
 
+#include <algorithm>
 #include <chrono>
 
 #include <QColor>
@@ -18,6 +19,37 @@ const char* view_colour(ContourKind kind) {
     case ContourKind::Gleam: return "#ffc000";
     }
     return "#e8402a";
+}
+
+RegionShading region_shading(const Style& style, const Light& light, bool enabled) {
+    RegionShading r;
+    r.enabled = enabled;
+    r.light = light;
+    auto colour = [](const std::string& text, const glm::vec3& fallback) {
+        const QColor c(QString::fromStdString(text));
+        return c.isValid() ? glm::vec3(float(c.redF()), float(c.greenF()), float(c.blueF())) : fallback;
+    };
+    if (!style.regions.empty()) {
+        for (const RegionStyle& region : style.regions) {
+            if (region.cls == "shadow") r.shadow = colour(region.fill, r.shadow);
+            else if (region.cls == "lit") r.lit = colour(region.fill, r.lit);
+            else if (region.cls == "band") r.bands.emplace_back(region.k, colour(region.fill, r.lit));
+            else if (region.cls == "highlight") r.highlights.emplace_back(region.k, colour(region.fill, glm::vec3(1.0f)));
+        }
+    } else {
+        for (const ContourStyle& cs : style.contours) {
+            if (cs.spec.kind == ContourKind::Isophote) r.bands.emplace_back(cs.spec.k, glm::vec3(0.0f));
+            if (cs.spec.kind == ContourKind::Gleam) r.highlights.emplace_back(cs.spec.k, glm::vec3(1.0f, 0.98f, 0.9f));
+        }
+        // Bands step from the lit tone toward a pale one.
+        std::sort(r.bands.begin(), r.bands.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+        for (std::size_t i = 0; i < r.bands.size(); ++i)
+            r.bands[i].second = glm::mix(r.lit, glm::vec3(1.0f, 0.97f, 0.9f), float(i + 1) / float(r.bands.size() + 1));
+    }
+    auto ascending = [](const auto& a, const auto& b) { return a.first < b.first; };
+    std::sort(r.bands.begin(), r.bands.end(), ascending);
+    std::sort(r.highlights.begin(), r.highlights.end(), ascending);
+    return r;
 }
 
 std::shared_ptr<ContourScene> make_contour_scene(const LoadedMesh& mesh, const std::string& path) {
@@ -83,6 +115,7 @@ OverlayResult compute_overlay(const LoadedMesh& mesh, ContourScene& scene, const
     job.style = style;
     job.engine.check_invariants = false;
     StillOutput still = render_still(mesh, scene.topology, scene.rays.get(), job);
+    out.light = job.light;
 
     out.svg = std::move(still.svg);
     for (std::size_t c = 0; c < still.results.size(); ++c) {

@@ -49,7 +49,13 @@ struct OverlayResult {
     /// When the pose changed: the triangles to draw now.
     std::shared_ptr<MeshGeometry> geometry;
     QString error; ///< posing failed (the clip could not be read)
+    Light light;   ///< the light the frame was computed with
 };
+
+/// The region colouring of @p style lit by @p light: the style's fills
+/// (shadow, lit, band k, highlight k), or where it has none, shadow and lit
+/// tones with a band per isophote and a highlight per gleam it draws.
+RegionShading region_shading(const Style& style, const Light& light, bool enabled);
 
 /// Colours of the kinds in the 3-D view: bright enough for the shaded mesh
 /// and the dark background alike.

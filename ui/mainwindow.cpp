@@ -341,6 +341,7 @@ void MainWindow::onContoursFinished() {
         return;
     }
     if (result.geometry) view_->setPose(std::move(*result.geometry));
+    view_->setRegionShading(region_shading(style_, result.light, regionsAction_->isChecked()));
     contourLoops_ = result.loops;
     contourLabel_->setText(tr("%1 loops, %2 snaxels, %3 ms").arg(result.loops).arg(result.snaxels).arg(result.ms, 0, 'f', 1));
     view_->setContours(std::move(result.strips));
@@ -411,6 +412,17 @@ void MainWindow::createMenus() {
         light_.reset();
         scheduleContours();
         emit view_->lightEdited();
+    });
+    regionsAction_ = viewMenu->addAction(tr("&Colour Regions"));
+    regionsAction_->setCheckable(true);
+    regionsAction_->setShortcut(QKeySequence(tr("Ctrl+R")));
+    regionsAction_->setToolTip(tr("Colour the surface by planar-map region: shadow, lit, isophote bands, highlights"));
+    regionsAction_->setChecked(QSettings().value("view/regions", false).toBool());
+    connect(regionsAction_, &QAction::toggled, this, [this](bool on) {
+        QSettings().setValue("view/regions", on);
+        RegionShading shading = view_->regionShading();
+        shading.enabled = on;
+        view_->setRegionShading(std::move(shading));
     });
     viewMenu->addAction(tr("&Fit SVG Pane"), svgPane_, &SvgPane::fit);
 }

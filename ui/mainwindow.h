@@ -16,6 +16,7 @@
 #include "core/project/project.h"
 #include "ui/contour_overlay.h"
 
+class QAction;
 class QLabel;
 class QSvgWidget;
 class QTimer;
@@ -69,6 +70,8 @@ class MainWindow : public QMainWindow {
     SvgPane* svgPane() const { return svgPane_; }
     StyleEditor* styleEditor() const { return styleEditor_; }
     Timeline* timeline() const { return timeline_; }
+    /// View > Colour Regions.
+    QAction* regionsAction() const { return regionsAction_; }
     /// Exports the timeline's animation as animated SVG to @p path off the
     /// GUI thread, with a progress dialog that can cancel (nothing is
     /// written then); ends with exportFinished or exportFailed.
@@ -129,6 +132,7 @@ class MainWindow : public QMainWindow {
     QFuture<QString> exportFuture_;
     Style style_;
     QMenu* recentMenu_ = nullptr;
+    QAction* regionsAction_ = nullptr;
     QLabel* meshLabel_;
     QProgressBar* busy_;
     QFutureWatcher<LoadResult> watcher_;

@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include <QMouseEvent>
+#include <QVector3D>
 #include <QWheelEvent>
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/gtc/type_ptr.hpp>
@@ -19,16 +20,40 @@ layout(location = 0) in vec3 position;
 layout(location = 1) in vec3 normal;
 uniform mat4 mvp;
 uniform mat4 modelView;
+uniform vec3 eye;        // world
+uniform vec3 lightDir;   // world, toward the light (directional)
+uniform vec3 lightPos;   // world (point light)
+uniform bool lightIsPoint;
 out vec3 viewNormal;
+out float nDotL;         // the shadow and isophote function, per vertex as the engine samples it
+out float rDotV;         // the gleam function
 void main() {
     viewNormal = mat3(modelView) * normal;
+    vec3 n = normalize(normal);
+    vec3 l = lightIsPoint ? normalize(lightPos - position) : normalize(lightDir);
+    vec3 v = normalize(eye - position);
+    nDotL = dot(n, l);
+    rDotV = dot(reflect(-l, n), v);
     gl_Position = mvp * vec4(position, 1.0);
 }
 )";
 
 // Two-sided: open meshes show their inside, lit as well as the outside.
+// With region colouring the surface takes the colour of its planar-map
+// class (shadow, lit, isophote band, highlight), shaded lightly for form.
 const char* kFragmentShader = R"(#version 330 core
 in vec3 viewNormal;
+in float nDotL;
+in float rDotV;
+uniform bool regions;
+uniform vec3 shadowColour;
+uniform vec3 litColour;
+uniform int bandCount;
+uniform float bandK[8];
+uniform vec3 bandColour[8];
+uniform int highlightCount;
+uniform float highlightK[4];
+uniform vec3 highlightColour[4];
 out vec4 colour;
 void main() {
     vec3 n = normalize(viewNormal);
@@ -36,8 +61,18 @@ void main() {
     vec3 key = normalize(vec3(-0.5, 0.6, 0.65));
     float diffuse = max(dot(n, key), 0.0);
     float fill = 0.35 * max(n.z, 0.0);
-    vec3 base = vec3(0.80, 0.78, 0.74);
-    colour = vec4(base * (0.18 + 0.7 * diffuse + fill), 1.0);
+    if (!regions) {
+        vec3 base = vec3(0.80, 0.78, 0.74);
+        colour = vec4(base * (0.18 + 0.7 * diffuse + fill), 1.0);
+        return;
+    }
+    vec3 c = nDotL < 0.0 ? shadowColour : litColour;
+    for (int i = 0; i < bandCount; ++i)
+        if (nDotL >= bandK[i]) c = bandColour[i];
+    if (nDotL >= 0.0)
+        for (int i = 0; i < highlightCount; ++i)
+            if (rDotV >= highlightK[i]) c = highlightColour[i];
+    colour = vec4(c * (0.72 + 0.2 * diffuse + 0.12 * fill), 1.0);
 }
 )";
 
@@ -169,6 +204,36 @@ void MeshView::setPose(MeshGeometry geometry) {
     vertexCount_ = static_cast<int>(vertices_.size() / 6);
     dirty_ = true;
     update();
+}
+
+void MeshView::setRegionShading(RegionShading shading) {
+    shading_ = std::move(shading);
+    update();
+}
+
+void MeshView::setRegionUniforms() {
+    const RegionShading& r = shading_;
+    auto vec = [](const glm::dvec3& v) { return QVector3D(float(v.x), float(v.y), float(v.z)); };
+    auto rgb = [](const glm::vec3& v) { return QVector3D(v.x, v.y, v.z); };
+    program_.setUniformValue("regions", r.enabled);
+    program_.setUniformValue("eye", vec(camera().eye));
+    program_.setUniformValue("lightDir", vec(r.light.dir));
+    program_.setUniformValue("lightPos", vec(r.light.pos));
+    program_.setUniformValue("lightIsPoint", r.light.point);
+    program_.setUniformValue("shadowColour", rgb(r.shadow));
+    program_.setUniformValue("litColour", rgb(r.lit));
+    const int bands = int(std::min<std::size_t>(r.bands.size(), 8));
+    program_.setUniformValue("bandCount", bands);
+    for (int i = 0; i < bands; ++i) {
+        program_.setUniformValue(QString("bandK[%1]").arg(i).toLatin1().constData(), float(r.bands[i].first));
+        program_.setUniformValue(QString("bandColour[%1]").arg(i).toLatin1().constData(), rgb(r.bands[i].second));
+    }
+    const int highlights = int(std::min<std::size_t>(r.highlights.size(), 4));
+    program_.setUniformValue("highlightCount", highlights);
+    for (int i = 0; i < highlights; ++i) {
+        program_.setUniformValue(QString("highlightK[%1]").arg(i).toLatin1().constData(), float(r.highlights[i].first));
+        program_.setUniformValue(QString("highlightColour[%1]").arg(i).toLatin1().constData(), rgb(r.highlights[i].second));
+    }
 }
 
 void MeshView::clearMesh() {
@@ -304,6 +369,7 @@ void MeshView::paintGL() {
     program_.bind();
     glUniformMatrix4fv(program_.uniformLocation("mvp"), 1, GL_FALSE, glm::value_ptr(mvp));
     glUniformMatrix4fv(program_.uniformLocation("modelView"), 1, GL_FALSE, glm::value_ptr(mv));
+    setRegionUniforms();
     {
         QOpenGLVertexArrayObject::Binder bind(&vao_);
         glDrawArrays(GL_TRIANGLES, 0, vertexCount_);

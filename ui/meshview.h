@@ -44,6 +44,18 @@ struct ContourStrip {
     bool closed = false;
 };
 
+/// How the 3-D view colours the surface by planar-map region: the class of
+/// each point from the light (N.L for shadow and isophote bands, R.V for
+/// highlights), as the fills of the exported SVG classify it.
+struct RegionShading {
+    bool enabled = false;
+    Light light;
+    glm::vec3 shadow{0.36f, 0.42f, 0.58f};
+    glm::vec3 lit{0.93f, 0.86f, 0.72f};
+    std::vector<std::pair<double, glm::vec3>> bands;      ///< (k, colour), ascending k: N.L >= k
+    std::vector<std::pair<double, glm::vec3>> highlights; ///< (k, colour), ascending k: R.V >= k
+};
+
 class MeshView : public QOpenGLWidget, protected QOpenGLFunctions_3_3_Core {
     Q_OBJECT
   public:
@@ -65,6 +77,9 @@ class MeshView : public QOpenGLWidget, protected QOpenGLFunctions_3_3_Core {
     void setTurntable(double degrees);
     /// Frames the mesh's centre (no pan), as turntables and exports assume.
     void centreView();
+    /// Colours the surface by region (or not, when not enabled).
+    void setRegionShading(RegionShading shading);
+    const RegionShading& regionShading() const { return shading_; }
     /// Replaces the contours drawn over the mesh.
     void setContours(std::vector<ContourStrip> strips);
     /// The view's camera, as the engine sees it (a perspective camera).
@@ -104,6 +119,7 @@ class MeshView : public QOpenGLWidget, protected QOpenGLFunctions_3_3_Core {
 
   private:
     void upload();
+    void setRegionUniforms();
     void uploadContours();
     glm::dmat4 viewMatrix() const;
     glm::dmat4 projectionMatrix() const;
@@ -118,6 +134,7 @@ class MeshView : public QOpenGLWidget, protected QOpenGLFunctions_3_3_Core {
     QPoint lastPos_;
     bool dragged_ = false, draggingLight_ = false;
 
+    RegionShading shading_;
     std::vector<ContourStrip> strips_;
     std::vector<float> lineVertices_; // position, colour, hidden flag, arc length
     std::vector<std::pair<int, int>> lineRanges_; // first vertex, count per strip

@@ -131,6 +131,26 @@ class TestMainWindow : public QObject {
         QVERIFY(window.currentSvg().contains("#f6c86b"));
         window.grab().save(QString(SCREENSHOT_DIR) + "/mainwindow-toon.png");
 
+        // Region colouring: the 3-D view takes the style's lit and shadow
+        // fills (shaded lightly), both present on the lit cow.
+        window.regionsAction()->setChecked(true);
+        QTest::qWait(200);
+        const QImage regions = window.meshView()->grabFramebuffer().convertToFormat(QImage::Format_RGB32);
+        regions.save(QString(SCREENSHOT_DIR) + "/mainwindow-regions.png");
+        auto near = [](QRgb p, QColor c, double scale) {
+            return std::abs(qRed(p) - c.red() * scale) < 40 && std::abs(qGreen(p) - c.green() * scale) < 40 &&
+                   std::abs(qBlue(p) - c.blue() * scale) < 40;
+        };
+        qsizetype lit = 0, shadow = 0;
+        for (int y = 0; y < regions.height(); ++y)
+            for (int x = 0; x < regions.width(); ++x) {
+                const QRgb p = regions.pixel(x, y);
+                lit += near(p, QColor("#f6c86b"), 0.85);
+                shadow += near(p, QColor("#c0603e"), 0.85);
+            }
+        QVERIFY2(lit > 2000 && shadow > 2000, qPrintable(QString("lit %1, shadow %2 pixels").arg(lit).arg(shadow)));
+        window.regionsAction()->setChecked(false);
+
         // A broken style is reported at its line and column; the last good
         // style stays in force.
         const QByteArray good = window.currentSvg();
