@@ -54,7 +54,7 @@ StillOutput render_still(const LoadedMesh& mesh, const MeshTopology& topology, c
         }
         std::sort(input.isophotes.begin(), input.isophotes.end(),
                   [](const ContourResult* a, const ContourResult* b) { return a->spec.k < b->spec.k; });
-        out.regions = build_post_map(engine, input, projection, job.camera);
+        out.regions = build_post_map(engine, input, projection, job.camera, job.light);
     }
     out.svg = to_svg(out.drawing, job.style, out.regions.empty() ? nullptr : &out.regions);
     return out;

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <unordered_map>
+#include <unordered_set>
 
 #include <polyclipping/clipper.hpp>
 
@@ -11,7 +13,7 @@ namespace {
 
 using ClipperLib::Paths;
 
-constexpr double kScale = 64.0; // Clipper works in integers: 1/64 pixel
+constexpr double kScale = 1024.0; // Clipper works in integers: 1/1024 pixel
 
 Paths to_paths(const std::vector<std::vector<glm::dvec2>>& polygons) {
     Paths out;
@@ -79,7 +81,7 @@ const char* region_class_name(RegionClass cls) {
 }
 
 std::vector<MapRegion> build_post_map(const SnaxelEngine& engine, const PostMapInput& in,
-                                      const ImageProjection& projection, const Camera& camera) {
+                                      const ImageProjection& projection, const Camera& camera, const Light& light) {
     std::vector<MapRegion> regions;
     const ContourResult& visual = *in.visual;
     const std::map<std::int32_t, Paths> patches = regions_by_patch(engine, visual, visual, projection);
@@ -139,6 +141,102 @@ std::vector<MapRegion> build_post_map(const SnaxelEngine& engine, const PostMapI
         }
         if (!glints.empty()) regions.push_back({RegionClass::Highlight, in.gleam->spec.k, depth, from_paths(glints), area(glints)});
         ++depth;
+    }
+
+    // The silhouette band. The visual contour follows the interpolated
+    // normals, the mesh's outline its faces: where they differ (creases,
+    // coarse meshes) faces turned to the viewer reach past the contour, and
+    // faces turned away inside a patch fold its outline over itself, so
+    // the loop's polygon misses what lies under the fold. The band is every
+    // face turned to the viewer that has a vertex with N.V < 0 (a face
+    // whose vertices all face the viewer lies inside a patch) or lies
+    // within two rings of the contour or of a fold; what of it no patch
+    // covers joins the map, classed by the face's own N.L.
+    const MeshTopology& topo = engine.topology();
+    auto facing = [&](const std::array<std::int32_t, 3>& f) {
+        const glm::dvec3 &a = topo.positions[f[0]], &b = topo.positions[f[1]], &c = topo.positions[f[2]];
+        return glm::dot(glm::cross(b - a, c - a), camera.to_viewer((a + b + c) / 3.0)) > 0.0;
+    };
+    std::vector<char> fold(topo.n_vertices(), 0);
+    std::vector<std::int32_t> frontier;
+    auto mark = [&](std::int32_t v) {
+        if (!fold[v]) fold[v] = 1, frontier.push_back(v);
+    };
+    // Seeds: both ends of the contour's edges (past them the surface may
+    // fold back under the patch) and the corners of faces turned away
+    // inside a patch.
+    for (const Snaxel& s : visual.fronts.snaxels) mark(s.inside), mark(s.outside);
+    for (const auto& f : topo.face_vertices) {
+        if (visual.vertex_f[f[0]] < 0.0 || visual.vertex_f[f[1]] < 0.0 || visual.vertex_f[f[2]] < 0.0) continue;
+        if (facing(f)) continue;
+        for (const auto v : f) mark(v);
+    }
+    for (int ring = 0; ring < 2; ++ring) {
+        std::vector<std::int32_t> next;
+        for (const std::int32_t v : frontier)
+            for (std::int32_t i = topo.ring_start[v]; i < topo.ring_start[v + 1]; ++i)
+                if (!fold[topo.ring[i]]) fold[topo.ring[i]] = 1, next.push_back(topo.ring[i]);
+        frontier = std::move(next);
+    }
+    const int classes = 2 + int(in.isophotes.size());
+    // Each class's faces all face the viewer, so they wind one way in the
+    // image: the outline of the set (its edges that no other face of the
+    // set shares) has the same non-zero fill as the triangles, at a
+    // fraction of the clipping cost.
+    std::vector<std::unordered_set<std::uint64_t>> outline(static_cast<std::size_t>(classes));
+    auto key = [](std::int32_t u, std::int32_t v) { return (std::uint64_t(std::uint32_t(u)) << 32) | std::uint32_t(v); };
+    for (const auto& f : topo.face_vertices) {
+        const bool outside = visual.vertex_f[f[0]] < 0.0 || visual.vertex_f[f[1]] < 0.0 || visual.vertex_f[f[2]] < 0.0;
+        if (!outside && !fold[f[0]] && !fold[f[1]] && !fold[f[2]]) continue;
+        if (!facing(f)) continue; // turned away: hidden on closed meshes
+        int cls = 1;
+        if (in.shadow) {
+            double nl = 0.0;
+            for (const auto v : f) nl += glm::dot(topo.normals[v], light.to_light(topo.positions[v]));
+            nl /= 3.0;
+            cls = nl < 0.0 ? 0 : 1;
+            for (std::size_t i = 0; i < in.isophotes.size(); ++i)
+                if (nl >= in.isophotes[i]->spec.k) cls = 2 + int(i);
+        }
+        auto& edges = outline[std::size_t(cls)];
+        for (int k = 0; k < 3; ++k) {
+            const std::int32_t u = f[k], v = f[(k + 1) % 3];
+            if (!edges.erase(key(v, u))) edges.insert(key(u, v));
+        }
+    }
+    std::vector<Paths> band_faces(static_cast<std::size_t>(classes)); // shadow, lit, band 1, band 2, ...
+    for (std::size_t cls = 0; cls < outline.size(); ++cls) {
+        // Chain the outline's edges into closed loops (any pairing at a
+        // vertex where several meet gives the same winding numbers).
+        std::unordered_multimap<std::int32_t, std::int32_t> next;
+        for (const std::uint64_t e : outline[cls]) next.emplace(std::int32_t(e >> 32), std::int32_t(e & 0xffffffffu));
+        std::vector<std::vector<glm::dvec2>> loops;
+        while (!next.empty()) {
+            auto it = next.begin();
+            const std::int32_t start = it->first;
+            std::vector<glm::dvec2> loop;
+            std::int32_t v = start;
+            while (it != next.end()) {
+                loop.push_back(projection.project(topo.positions[v]));
+                v = it->second;
+                next.erase(it);
+                if (v == start) break;
+                it = next.find(v);
+            }
+            loops.push_back(std::move(loop));
+        }
+        band_faces[cls] = to_paths(loops);
+    }
+    for (int cls = classes - 1; cls >= 0; --cls) { // brighter classes first
+        if (band_faces[std::size_t(cls)].empty()) continue;
+        const Paths& united = band_faces[std::size_t(cls)];
+        const Paths rest = clip(united, covered, ClipperLib::ctDifference);
+        covered = clip(covered, united, ClipperLib::ctUnion);
+        const double a = area(rest);
+        if (a <= 0.0) continue;
+        const RegionClass rc = cls == 0 ? RegionClass::Shadow : cls == 1 ? RegionClass::Lit : RegionClass::Band;
+        const double k = cls >= 2 ? in.isophotes[std::size_t(cls - 2)]->spec.k : 0.0;
+        regions.push_back({rc, k, depth, from_paths(rest), a});
     }
     return regions;
 }

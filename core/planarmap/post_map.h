@@ -4,7 +4,9 @@
 /// Clipper into non-overlapping image regions, each with its class.
 ///
 /// Front-facing patches (the regions of the visual contour) are taken
-/// nearest first; each keeps what no nearer patch already covers. Inside a
+/// nearest first; each keeps what no nearer patch already covers. Faces
+/// turned to the viewer past the visual contour fill the rest of the mesh's
+/// outline. Inside a
 /// patch, the regions of the shadow contour, the isophotes (ascending) and
 /// the gleams split it into shadow, lit, isophote bands and highlights.
 
@@ -37,9 +39,12 @@ struct PostMapInput {
 };
 
 /// The regions of the map; they do not overlap and cover the projection of
-/// the front-facing surface.
+/// the front-facing surface: the visual contour's patches and, past them,
+/// the silhouette band of faces turned to the viewer that the contour of
+/// interpolated normals leaves out (classed by their own N.L, depth after
+/// every patch). @p light classes that band.
 std::vector<MapRegion> build_post_map(const SnaxelEngine& engine, const PostMapInput& input,
-                                      const ImageProjection& projection, const Camera& camera);
+                                      const ImageProjection& projection, const Camera& camera, const Light& light);
 
 /// Shrinks a region's polygons by @p pixels (morphological erosion, round joins).
 std::vector<std::vector<glm::dvec2>> erode(const std::vector<std::vector<glm::dvec2>>& polygons, double pixels);
