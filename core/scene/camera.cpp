@@ -46,6 +46,17 @@ glm::dvec2 ImageProjection::project(const glm::dvec3& p) const {
             0.5 * height_ - scale_ * glm::dot(d, up_) / depth};
 }
 
+void ImageProjection::pixel_ray(const glm::dvec2& pixel, double back, glm::dvec3& origin, glm::dvec3& dir) const {
+    const double x = (pixel.x - 0.5 * width_) / scale_, y = (0.5 * height_ - pixel.y) / scale_;
+    if (camera_.orthographic()) {
+        dir = forward_;
+        origin = centre_ + x * right_ + y * up_ - back * forward_;
+    } else {
+        origin = camera_.eye;
+        dir = glm::normalize(forward_ + x * right_ + y * up_);
+    }
+}
+
 nlohmann::json to_json(const Camera& c) {
     if (c.orthographic())
         return {{"projection", "orthographic"}, {"view_dir", {c.view_dir.x, c.view_dir.y, c.view_dir.z}}};

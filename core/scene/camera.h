@@ -54,6 +54,10 @@ class ImageProjection {
     ImageProjection(const Camera& camera, const glm::dvec3& centre, double radius, int width,
                     int height, double margin = 32.0);
     glm::dvec2 project(const glm::dvec3& p) const;
+    /// The ray through image point @p pixel: an origin on the camera's side
+    /// (@p back world units before the bounding sphere's centre, for
+    /// orthographic views; the eye for perspective ones) and a unit direction.
+    void pixel_ray(const glm::dvec2& pixel, double back, glm::dvec3& origin, glm::dvec3& dir) const;
     int width() const { return width_; }
     int height() const { return height_; }
 

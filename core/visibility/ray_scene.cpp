@@ -140,6 +140,22 @@ Crossings RayScene::count(const VisibilityRay& r) const {
     return c.crossings;
 }
 
+RayHit RayScene::nearest(const VisibilityRay& r) const {
+    CountContext c{};
+    init_context(c, r, false); // the occlusion filter skips ignored faces only
+    RTCRayHit rayhit{};
+    rayhit.ray = make_ray(r);
+    rayhit.hit.geomID = RTC_INVALID_GEOMETRY_ID;
+    rtcIntersect1(static_cast<RTCScene>(scene_), &c.embree, &rayhit);
+    RayHit hit;
+    if (rayhit.hit.geomID == RTC_INVALID_GEOMETRY_ID) return hit;
+    hit.face = std::int32_t(rayhit.hit.primID);
+    hit.u = rayhit.hit.u;
+    hit.v = rayhit.hit.v;
+    hit.t = rayhit.ray.tfar;
+    return hit;
+}
+
 bool RayScene::occluded(const VisibilityRay& r) const {
     CountContext c{};
     init_context(c, r, false);

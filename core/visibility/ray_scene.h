@@ -28,6 +28,14 @@ struct Crossings {
     int back = 0;
 };
 
+/// The nearest surface a ray meets: its face, barycentric coordinates
+/// (point = (1-u-v) a + u b + v c over the face's corners) and distance.
+struct RayHit {
+    std::int32_t face = MeshTopology::kNone;
+    double u = 0.0, v = 0.0, t = 0.0;
+    bool hit() const { return face != MeshTopology::kNone; }
+};
+
 struct CountContext;
 
 class RayScene {
@@ -46,6 +54,8 @@ class RayScene {
     Crossings count(const VisibilityRay& ray) const;
     /// Whether anything blocks the ray segment (faster than count()).
     bool occluded(const VisibilityRay& ray) const;
+    /// The nearest crossing of the ray segment (the ignored faces skipped).
+    RayHit nearest(const VisibilityRay& ray) const;
 
     const MeshTopology& topology() const { return topo_; }
 

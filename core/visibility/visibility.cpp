@@ -51,6 +51,27 @@ VisibilityRay VisibilitySampler::face_ray(std::int32_t face, const glm::dvec3& p
     return ray;
 }
 
+VisibilityRay VisibilitySampler::vertex_ray(std::int32_t v) const {
+    const MeshTopology& topo = scene_.topology();
+    double len = 0.0;
+    const std::int32_t begin = topo.ring_start[v], end = topo.ring_start[v + 1];
+    for (std::int32_t i = begin; i < end; ++i) len += glm::length(topo.positions[topo.ring[i]] - topo.positions[v]);
+    len = end > begin ? len / (end - begin) : topo.mean_edge_length;
+    VisibilityRay ray = make_ray(topo.positions[v], topo.normals[v], len);
+    ray.ignore = {v, MeshTopology::kNone, MeshTopology::kNone};
+    return ray;
+}
+
+VisibilityRay VisibilitySampler::edge_ray(std::int32_t e, double t) const {
+    const MeshTopology& topo = scene_.topology();
+    const std::int32_t a = topo.edge_vertices[e][0], b = topo.edge_vertices[e][1];
+    const glm::dvec3 p = glm::mix(topo.positions[a], topo.positions[b], t);
+    const glm::dvec3 n = slerp_normal(topo.normals[a], topo.normals[b], t);
+    VisibilityRay ray = make_ray(p, n, glm::length(topo.positions[a] - topo.positions[b]));
+    ray.ignore = {a, b, MeshTopology::kNone};
+    return ray;
+}
+
 int VisibilitySampler::qi(const VisibilityRay& ray) const {
     if (!scene_.occluded(ray)) return 0; // most samples: an any-hit query suffices
     const Crossings c = scene_.count(ray);

@@ -49,6 +49,11 @@ class VisibilitySampler {
     VisibilityRay snaxel_ray(const Snaxel& s, const glm::dvec3& p, const glm::dvec3& n) const;
     /// The ray from a point inside face @p face: the faces around its corners are ignored.
     VisibilityRay face_ray(std::int32_t face, const glm::dvec3& p, const glm::dvec3& n) const;
+    /// The ray from vertex @p v: the faces around it are ignored.
+    VisibilityRay vertex_ray(std::int32_t v) const;
+    /// The ray from the point at @p t along edge @p e (0 at its first
+    /// vertex): the faces around both ends are ignored.
+    VisibilityRay edge_ray(std::int32_t e, double t) const;
     /// QI along a ray: crossings of front- and back-facing layers (the larger
     /// count, so open sheets seen from behind count too).
     int qi(const VisibilityRay& ray) const;

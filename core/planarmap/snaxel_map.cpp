@@ -1,0 +1,321 @@
+#include "core/planarmap/snaxel_map.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <tuple>
+#include <unordered_map>
+
+#include "core/util/parallel.h"
+#include "core/visibility/visibility.h"
+
+namespace snaxels {
+namespace {
+
+constexpr int kOccluded = -1; // behind a nearer surface
+constexpr int kBack = 64;     // added to the class of a visible vertex turned away (N.V < 0)
+
+/// Root of the linear interpolant of fa (at 0) and fb (at 1), else the middle.
+double linear_root(double fa, double fb) {
+    if ((fa < 0.0) == (fb < 0.0) || fa == fb) return 0.5;
+    return std::clamp(fa / (fa - fb), 0.0, 1.0);
+}
+
+} // namespace
+
+SnaxelMap build_snaxel_map(const SnaxelEngine& engine, const SnaxelMapInput& in, const RayScene& rays,
+                           const ImageProjection& projection, const Camera& camera, const Light& light) {
+    const auto start = std::chrono::steady_clock::now();
+    const MeshTopology& topo = engine.topology();
+    const ContourResult& visual = *in.visual;
+    const auto V = std::int32_t(topo.n_vertices());
+    const auto E = std::int32_t(topo.n_edges());
+    const int bands = int(in.isophotes.size());
+    const int highlight = 2 + bands; // classes: 0 shadow, 1 lit, 2.. bands, then highlight
+    const VisibilitySampler sampler(rays, camera);
+    SnaxelMap map;
+
+    // Labels: where every kind's converged front leaves each vertex (rules
+    // 1 and 4), after the image-plane test against nearer surfaces (rule 2).
+    std::vector<int> label(static_cast<std::size_t>(V), kOccluded);
+    std::vector<double> nl(static_cast<std::size_t>(V));
+    const std::vector<double> levels = [&] {
+        std::vector<double> l{0.0};
+        for (const ContourResult* iso : in.isophotes) l.push_back(iso->spec.k);
+        return l;
+    }();
+    parallel_for(std::size_t(V), [&](std::size_t i) {
+        const auto v = std::int32_t(i);
+        if (rays.occluded(sampler.vertex_ray(v))) {
+            label[i] = kOccluded;
+            return;
+        }
+        nl[i] = glm::dot(topo.normals[i], light.to_light(topo.positions[i]));
+        if (visual.vertex_f[i] < 0.0) {
+            // Seen although turned away: through a hole of an open mesh, or
+            // a corner past the contour of interpolated normals. Its side of
+            // the surface forms its own regions, classed by N.L alone.
+            int cls = in.shadow && nl[i] < 0.0 ? 0 : 1;
+            for (int k = 0; k < bands; ++k)
+                if (cls != 0 && nl[i] >= levels[std::size_t(k + 1)]) cls = 2 + k;
+            label[i] = kBack + cls;
+            return;
+        }
+        int cls = in.shadow && in.shadow->vertex_f[i] < 0.0 ? 0 : 1;
+        for (int k = 0; k < bands; ++k)
+            if (cls != 0 && in.isophotes[std::size_t(k)]->vertex_f[i] >= 0.0) cls = 2 + k; // brighter wins
+        if (in.gleam && in.gleam->vertex_f[i] >= 0.0) cls = highlight;
+        label[i] = cls;
+    }, 256);
+
+    // A vertex turned away next to one turned toward the viewer is where
+    // rays graze the contour's fold: only its front neighbour is trusted.
+    {
+        std::vector<int> settled = label;
+        for (std::int32_t v = 0; v < V; ++v) {
+            if (label[std::size_t(v)] < kBack) continue;
+            for (std::int32_t i = topo.ring_start[v]; i < topo.ring_start[v + 1]; ++i) {
+                const int l = label[std::size_t(topo.ring[i])];
+                if (l >= 0 && l < kBack) {
+                    settled[std::size_t(v)] = kOccluded;
+                    break;
+                }
+            }
+        }
+        label = std::move(settled);
+    }
+
+    // Regions: grown from a seed over edges of equal label; every vertex no
+    // region reached seeds a new one (rule 3: same kinds merge). A front
+    // needs room on the mesh: a region with no vertex whose whole ring
+    // shares its label is thinner than the tessellation and cannot hold
+    // one; when it is also a fleck of a few vertices, its vertices join the
+    // label most of their neighbours outside it carry, and the regions are
+    // grown again. (Long thin bands along a coarse mesh are kept.)
+    std::vector<std::int32_t> comp(static_cast<std::size_t>(V), -1);
+    std::vector<int> comp_label;
+    std::vector<std::int32_t> stack;
+    auto grow = [&] {
+        std::fill(comp.begin(), comp.end(), -1);
+        comp_label.clear();
+        for (std::int32_t seed = 0; seed < V; ++seed) {
+            if (label[std::size_t(seed)] < 0 || comp[std::size_t(seed)] >= 0) continue;
+            const auto id = std::int32_t(comp_label.size());
+            comp_label.push_back(label[std::size_t(seed)]);
+            comp[std::size_t(seed)] = id;
+            stack.push_back(seed);
+            while (!stack.empty()) {
+                const std::int32_t v = stack.back();
+                stack.pop_back();
+                for (std::int32_t i = topo.ring_start[v]; i < topo.ring_start[v + 1]; ++i) {
+                    const std::int32_t w = topo.ring[i];
+                    if (comp[std::size_t(w)] < 0 && label[std::size_t(w)] == label[std::size_t(v)]) {
+                        comp[std::size_t(w)] = id;
+                        stack.push_back(w);
+                    }
+                }
+            }
+        }
+    };
+    std::size_t seeds = 0;
+    for (int pass = 0; pass < 4; ++pass) {
+        grow();
+        seeds += comp_label.size();
+        std::vector<char> supported(comp_label.size(), 0);
+        std::vector<int> size(comp_label.size(), 0);
+        for (const std::int32_t r : comp)
+            if (r >= 0) ++size[std::size_t(r)];
+        for (std::size_t r = 0; r < size.size(); ++r) supported[r] = size[r] >= in.min_unsupported_vertices;
+        for (std::int32_t v = 0; v < V; ++v) {
+            const std::int32_t r = comp[std::size_t(v)];
+            if (r < 0 || supported[std::size_t(r)]) continue;
+            bool interior = topo.ring_start[v + 1] > topo.ring_start[v];
+            for (std::int32_t i = topo.ring_start[v]; i < topo.ring_start[v + 1] && interior; ++i)
+                interior = label[std::size_t(topo.ring[i])] == label[std::size_t(v)];
+            supported[std::size_t(r)] = interior;
+        }
+        std::vector<int> relabel = label;
+        bool changed = false;
+        for (std::int32_t v = 0; v < V; ++v) {
+            const std::int32_t r = comp[std::size_t(v)];
+            if (r < 0 || supported[std::size_t(r)]) continue;
+            int best = label[std::size_t(v)], best_count = 0;
+            for (std::int32_t i = topo.ring_start[v]; i < topo.ring_start[v + 1]; ++i) {
+                const std::int32_t w = topo.ring[i];
+                if (comp[std::size_t(w)] == r) continue;
+                const int candidate = label[std::size_t(w)];
+                int count = 0;
+                for (std::int32_t j = topo.ring_start[v]; j < topo.ring_start[v + 1]; ++j)
+                    count += comp[std::size_t(topo.ring[j])] != r && label[std::size_t(topo.ring[j])] == candidate;
+                if (count > best_count || (count == best_count && candidate > best)) best = candidate, best_count = count;
+            }
+            if (best != label[std::size_t(v)]) relabel[std::size_t(v)] = best, changed = true;
+        }
+        if (!changed) break;
+        label = std::move(relabel);
+    }
+    map.stats.seeds = seeds;
+    for (const int l : label) {
+        if (l >= 0) ++map.stats.visible_vertices;
+        if (l == kOccluded) ++map.stats.occluded_vertices;
+    }
+
+    // Where fronts stop on edges whose labels differ (rules 3 and 4).
+    std::vector<std::int32_t> cut_edges;
+    for (std::int32_t e = 0; e < E; ++e) {
+        const int la = label[std::size_t(topo.edge_vertices[e][0])], lb = label[std::size_t(topo.edge_vertices[e][1])];
+        if (la != lb && (la >= 0 || lb >= 0)) cut_edges.push_back(e);
+    }
+    std::vector<glm::dvec3> edge_point(static_cast<std::size_t>(E));
+    auto snaxel_point = [&](const ContourResult& r, std::int32_t e, int a, int b) {
+        const std::int32_t s = r.fronts.edge_snaxel.empty() ? MeshTopology::kNone : r.fronts.edge_snaxel[std::size_t(e)];
+        if (s != MeshTopology::kNone) return engine.position(r.fronts.snaxels[std::size_t(s)]);
+        const double t = linear_root(r.vertex_f[std::size_t(a)], r.vertex_f[std::size_t(b)]);
+        return glm::mix(topo.positions[std::size_t(a)], topo.positions[std::size_t(b)], t);
+    };
+    parallel_for(cut_edges.size(), [&](std::size_t i) {
+        const std::int32_t e = cut_edges[i];
+        const std::int32_t a = topo.edge_vertices[e][0], b = topo.edge_vertices[e][1];
+        const int la = label[std::size_t(a)], lb = label[std::size_t(b)];
+        glm::dvec3& out = edge_point[std::size_t(e)];
+        if (la < 0 && lb < 0) {
+            out = 0.5 * (topo.positions[std::size_t(a)] + topo.positions[std::size_t(b)]);
+        } else if ((la >= kBack) != (lb >= kBack) && la != kOccluded && lb != kOccluded) {
+            out = snaxel_point(visual, e, a, b); // the visual contour between the two sides
+        } else if (la == kOccluded || lb == kOccluded) {
+            // The projection of the nearer front: where the ray to the
+            // viewer becomes blocked along the edge, bisected.
+            double lo = la == kOccluded ? 1.0 : 0.0, hi = 1.0 - lo; // lo visible, hi occluded
+            for (int step = 0; step < in.bisection_steps; ++step) {
+                const double mid = 0.5 * (lo + hi);
+                (rays.occluded(sampler.edge_ray(e, mid)) ? hi : lo) = mid;
+            }
+            out = glm::mix(topo.positions[std::size_t(a)], topo.positions[std::size_t(b)], 0.5 * (lo + hi));
+        } else if (la >= kBack) {
+            // Two classes on the far side: the root of N.L at the level between them.
+            const int top = std::max(la, lb) - kBack;
+            const double level = levels[std::size_t(std::max(top - 1, 0))];
+            out = glm::mix(topo.positions[std::size_t(a)], topo.positions[std::size_t(b)],
+                           linear_root(nl[std::size_t(a)] - level, nl[std::size_t(b)] - level));
+        } else {
+            // Two shading classes: the front of the brighter one's kind.
+            const int top = std::max(la, lb);
+            const ContourResult* kind = top == highlight ? in.gleam : top >= 2 ? in.isophotes[std::size_t(top - 2)] : in.shadow;
+            out = kind ? snaxel_point(*kind, e, a, b)
+                       : 0.5 * (topo.positions[std::size_t(a)] + topo.positions[std::size_t(b)]);
+        }
+    }, 64);
+
+    // Each region's part of every face it touches, walked counter-clockwise
+    // over corners, edge points and (where three labels meet) a junction.
+    // Its steps across the face, or along a mesh boundary, are the region's
+    // outline; steps along interior edges are shared with the next face.
+    const std::int64_t junction_base = std::int64_t(V) + E;
+    std::unordered_map<std::int32_t, glm::dvec3> junction;
+    std::vector<std::tuple<std::int32_t, std::int64_t, std::int64_t>> steps; // region, from, to
+    for (std::int32_t f = 0; f < std::int32_t(topo.n_faces()); ++f) {
+        const auto& fv = topo.face_vertices[std::size_t(f)];
+        const auto& fe = topo.face_edges[std::size_t(f)];
+        const int l[3] = {label[std::size_t(fv[0])], label[std::size_t(fv[1])], label[std::size_t(fv[2])]};
+        if (l[0] < 0 && l[1] < 0 && l[2] < 0) continue;
+        const bool uniform = l[0] == l[1] && l[1] == l[2];
+        const bool rim = topo.is_boundary_edge(fe[0]) || topo.is_boundary_edge(fe[1]) || topo.is_boundary_edge(fe[2]);
+        if (uniform && !rim) continue;
+        const bool three = l[0] != l[1] && l[1] != l[2] && l[0] != l[2];
+        if (three)
+            junction[f] = (edge_point[std::size_t(fe[0])] + edge_point[std::size_t(fe[1])] + edge_point[std::size_t(fe[2])]) / 3.0;
+        const std::int32_t c[3] = {comp[std::size_t(fv[0])], comp[std::size_t(fv[1])], comp[std::size_t(fv[2])]};
+        for (int owner = 0; owner < 3; ++owner) {
+            const std::int32_t r = c[owner];
+            if (r < 0) continue;
+            bool seen = false; // each region once per face
+            for (int k = 0; k < owner; ++k) seen = seen || c[k] == r;
+            if (seen) continue;
+            // The piece: (id, face edge it leads along, or -1 across the face).
+            std::int64_t ids[7];
+            int along[7];
+            int n = 0;
+            for (int k = 0; k < 3; ++k) {
+                const int k1 = (k + 1) % 3;
+                if (c[k] == r) ids[n] = fv[std::size_t(k)], along[n++] = k;
+                if (l[k] != l[k1] && (c[k] == r || c[k1] == r)) {
+                    ids[n] = std::int64_t(V) + fe[std::size_t(k)];
+                    along[n++] = c[k1] == r ? k : -1; // toward the next corner: along edge k; else across
+                    if (three && c[k] == r) ids[n] = junction_base + f, along[n++] = -1;
+                }
+            }
+            for (int i = 0; i < n; ++i) {
+                const std::int64_t a = ids[i], b = ids[(i + 1) % n];
+                const bool across = along[i] < 0 || (a >= V && b >= V);
+                if (across || topo.is_boundary_edge(fe[std::size_t(along[i])])) steps.emplace_back(r, a, b);
+            }
+        }
+    }
+
+    // Chain each region's steps into loops and project them.
+    auto point_of = [&](std::int64_t id) -> glm::dvec3 {
+        if (id < V) return topo.positions[std::size_t(id)];
+        if (id < junction_base) return edge_point[std::size_t(id - V)];
+        return junction.at(std::int32_t(id - junction_base));
+    };
+    std::sort(steps.begin(), steps.end());
+    std::vector<char> used(steps.size(), 0);
+    std::vector<MapRegion> regions(comp_label.size());
+    std::vector<double> depth_sum(comp_label.size(), 0.0);
+    std::vector<std::size_t> depth_n(comp_label.size(), 0);
+    for (std::int32_t v = 0; v < V; ++v) {
+        const std::int32_t r = comp[std::size_t(v)];
+        if (r < 0) continue;
+        const glm::dvec3& p = topo.positions[std::size_t(v)];
+        depth_sum[std::size_t(r)] += camera.orthographic() ? glm::dot(p, camera.forward()) : glm::length(p - camera.eye);
+        ++depth_n[std::size_t(r)];
+    }
+    for (std::size_t i = 0; i < steps.size(); ++i) {
+        if (used[i]) continue;
+        const std::int32_t r = std::get<0>(steps[i]);
+        const std::int64_t first = std::get<1>(steps[i]);
+        std::vector<glm::dvec2> loop;
+        std::size_t at = i;
+        while (true) {
+            used[at] = 1;
+            loop.push_back(projection.project(point_of(std::get<1>(steps[at]))));
+            const std::int64_t to = std::get<2>(steps[at]);
+            if (to == first) break;
+            auto it = std::lower_bound(steps.begin(), steps.end(), std::make_tuple(r, to, std::int64_t(-1)));
+            while (it != steps.end() && std::get<0>(*it) == r && std::get<1>(*it) == to && used[std::size_t(it - steps.begin())]) ++it;
+            if (it == steps.end() || std::get<0>(*it) != r || std::get<1>(*it) != to) break; // open: cannot happen on a manifold
+            at = std::size_t(it - steps.begin());
+        }
+        if (loop.size() >= 3) regions[std::size_t(r)].polygons.push_back(std::move(loop));
+    }
+    // Classes, areas (signed loop areas add up: holes wind the other way)
+    // and depth order.
+    std::vector<std::size_t> order(regions.size());
+    for (std::size_t r = 0; r < regions.size(); ++r) {
+        const int cls = comp_label[r] >= kBack ? comp_label[r] - kBack : comp_label[r];
+        MapRegion& region = regions[r];
+        region.cls = cls == 0 ? RegionClass::Shadow : cls == 1 ? RegionClass::Lit : cls == highlight ? RegionClass::Highlight : RegionClass::Band;
+        region.k = cls == highlight ? in.gleam->spec.k : cls >= 2 ? in.isophotes[std::size_t(cls - 2)]->spec.k : 0.0;
+        double signed_area = 0.0;
+        for (const auto& poly : region.polygons)
+            for (std::size_t j = 0; j < poly.size(); ++j) {
+                const glm::dvec2& p = poly[j];
+                const glm::dvec2& q = poly[(j + 1) % poly.size()];
+                signed_area += p.x * q.y - q.x * p.y;
+            }
+        region.area = 0.5 * std::abs(signed_area);
+        order[r] = r;
+    }
+    std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+        return depth_sum[a] / double(std::max<std::size_t>(depth_n[a], 1)) < depth_sum[b] / double(std::max<std::size_t>(depth_n[b], 1));
+    });
+    std::vector<std::int32_t> rank(regions.size());
+    for (std::size_t i = 0; i < order.size(); ++i) rank[order[i]] = std::int32_t(i);
+    for (std::size_t r = 0; r < regions.size(); ++r) regions[r].depth = rank[r];
+    map.vertex_region = std::move(comp);
+    map.regions = std::move(regions);
+    map.stats.ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    return map;
+}
+
+} // namespace snaxels

@@ -1,0 +1,70 @@
+#pragma once
+/// The snaxel-defined visible-surface planar map (the paper's "Planar Map
+/// Generation", second method), in the fronts-as-region-boundaries form of
+/// ENGINE-NOTES: every vertex carries the label its converged fronts give
+/// it, and the map's regions are the connected sets of equal labels, bounded
+/// by the fronts on the edges between them.
+///
+/// The paper's amended rules, and where they act here:
+///  1. Fronts of every kind collide: a vertex's label combines all kinds
+///     (visual, shadow, isophotes, gleam) into one map class.
+///  2. Collisions in the image plane: a vertex behind a nearer surface (a
+///     ray to the viewer is blocked) is inside a closer front's projection.
+///  3. Same kinds merge and split (one region per connected label set);
+///     different kinds push against each other: where labels differ along an
+///     edge, the front stops at that kind's root (the engine's snaxel on the
+///     edge), and where three labels meet in a face, at a junction inside it.
+///  4. Occluded fronts yield to visible ones (f_pmap = -delta f): occluded
+///     vertices leave every region, and the visible region's front stops on
+///     the edge where the ray to the viewer becomes blocked (bisected), the
+///     projection of the nearer front. Darker isophotes yield to brighter
+///     ones: a vertex takes the brightest band whose isophote it is inside.
+/// Surface seen although turned away from the viewer (inside an open mesh
+/// through a hole, or a corner past the contour of interpolated normals)
+/// forms regions of its own, classed by N.L.
+/// The labels are the converged state: each region is grown (flood fill)
+/// from a seed vertex, and every vertex no front reached is reseeded until
+/// all are covered. A region must hold a vertex whose whole ring shares its
+/// label (room for a front) or be more than a fleck: the corners and flecks
+/// of a few vertices that interpolated normals and per-vertex tests leave
+/// are dissolved into their neighbours, so slivers thinner than the tessellation, which
+/// polygon clipping of separately discretized contours produces, cannot
+/// arise.
+
+#include <vector>
+
+#include "core/planarmap/post_map.h"
+#include "core/visibility/ray_scene.h"
+
+namespace snaxels {
+
+struct SnaxelMapInput {
+    const ContourResult* visual = nullptr;       ///< required: the two sides of the surface
+    const ContourResult* shadow = nullptr;       ///< none: everything visible is lit
+    std::vector<const ContourResult*> isophotes; ///< ascending k
+    const ContourResult* gleam = nullptr;
+    int bisection_steps = 7; ///< locating an occlusion boundary on an edge (1/128 of it)
+    /// A region without an interior vertex (one whose whole ring shares its
+    /// label) is dissolved if it has fewer vertices than this.
+    int min_unsupported_vertices = 6;
+};
+
+struct SnaxelMapStats {
+    std::size_t visible_vertices = 0, occluded_vertices = 0;
+    std::size_t seeds = 0; ///< regions grown, over every pass: the first seed and every reseed
+    double ms = 0.0;
+};
+
+struct SnaxelMap {
+    std::vector<MapRegion> regions;         ///< depth: order of mean depth, 0 nearest
+    std::vector<std::int32_t> vertex_region; ///< per vertex: index into regions, or -1 (occluded)
+    SnaxelMapStats stats;
+};
+
+/// The visible-surface map of @p input seen by @p camera and lit by
+/// @p light; @p rays is the BVH of the engine's topology at its current
+/// positions.
+SnaxelMap build_snaxel_map(const SnaxelEngine& engine, const SnaxelMapInput& input, const RayScene& rays,
+                           const ImageProjection& projection, const Camera& camera, const Light& light);
+
+} // namespace snaxels
