@@ -21,6 +21,79 @@ double linear_root(double fa, double fb) {
     return std::clamp(fa / (fa - fb), 0.0, 1.0);
 }
 
+/// The visual contour's segments in the image, bucketed on a grid, with
+/// their depth: what an edge's image collides with (rule 2).
+class ContourImage {
+  public:
+    template <class Depth>
+    ContourImage(const SnaxelEngine& engine, const ContourResult& visual, const ImageProjection& projection,
+                 Depth&& depth)
+        : width_(projection.width()), height_(projection.height()) {
+        const Fronts& fronts = visual.fronts;
+        for (const FrontLoop& loop : fronts.loops) {
+            std::int32_t prev = MeshTopology::kNone, first = MeshTopology::kNone;
+            auto add = [&](std::int32_t s0, std::int32_t s1) {
+                const glm::dvec3 a = engine.position(fronts.snaxels[std::size_t(s0)]);
+                const glm::dvec3 b = engine.position(fronts.snaxels[std::size_t(s1)]);
+                segments_.push_back({projection.project(a), projection.project(b), depth(a), depth(b)});
+            };
+            fronts.for_each_in_loop(loop, [&](std::int32_t s) {
+                if (prev != MeshTopology::kNone) add(prev, s);
+                else first = s;
+                prev = s;
+            });
+            if (loop.closed && first != MeshTopology::kNone && prev != first) add(prev, first);
+        }
+        cols_ = std::max(1, int(std::ceil(width_ / kCell))) + 2;
+        rows_ = std::max(1, int(std::ceil(height_ / kCell))) + 2;
+        cells_.assign(std::size_t(cols_) * std::size_t(rows_), {});
+        for (std::size_t i = 0; i < segments_.size(); ++i)
+            for_cells(segments_[i].a, segments_[i].b, [&](std::vector<std::uint32_t>& cell) { cell.push_back(std::uint32_t(i)); });
+    }
+
+    /// The parameter along p0 -> p1 of the first crossing with a segment
+    /// nearer than the point there (depth(s) gives the point's depth), or -1.
+    template <class Depth> double first_crossing(glm::dvec2 p0, glm::dvec2 p1, Depth&& depth) const {
+        double best = 2.0;
+        for_cells(p0, p1, [&](const std::vector<std::uint32_t>& cell) {
+            for (const std::uint32_t i : cell) {
+                const Segment& g = segments_[i];
+                const glm::dvec2 r = p1 - p0, q = g.b - g.a;
+                const double denom = r.x * q.y - r.y * q.x;
+                if (std::abs(denom) < 1e-12) continue;
+                const glm::dvec2 w = g.a - p0;
+                const double t = (w.x * q.y - w.y * q.x) / denom;
+                const double u = (w.x * r.y - w.y * r.x) / denom;
+                if (t < 0.0 || t > 1.0 || u < 0.0 || u > 1.0 || t >= best) continue;
+                if (g.da + u * (g.db - g.da) < depth(t)) best = t;
+            }
+        });
+        return best <= 1.0 ? best : -1.0;
+    }
+
+  private:
+    static constexpr double kCell = 8.0;
+    struct Segment {
+        glm::dvec2 a, b;
+        double da, db;
+    };
+    template <class Cells, class Fn> void visit(Cells& cells, glm::dvec2 a, glm::dvec2 b, Fn&& fn) const {
+        const int x0 = std::clamp(int(std::floor(std::min(a.x, b.x) / kCell)) + 1, 0, cols_ - 1);
+        const int x1 = std::clamp(int(std::floor(std::max(a.x, b.x) / kCell)) + 1, 0, cols_ - 1);
+        const int y0 = std::clamp(int(std::floor(std::min(a.y, b.y) / kCell)) + 1, 0, rows_ - 1);
+        const int y1 = std::clamp(int(std::floor(std::max(a.y, b.y) / kCell)) + 1, 0, rows_ - 1);
+        for (int y = y0; y <= y1; ++y)
+            for (int x = x0; x <= x1; ++x) fn(cells[std::size_t(y) * std::size_t(cols_) + std::size_t(x)]);
+    }
+    template <class Fn> void for_cells(glm::dvec2 a, glm::dvec2 b, Fn&& fn) { visit(cells_, a, b, fn); }
+    template <class Fn> void for_cells(glm::dvec2 a, glm::dvec2 b, Fn&& fn) const { visit(cells_, a, b, fn); }
+
+    double width_, height_;
+    int cols_ = 1, rows_ = 1;
+    std::vector<Segment> segments_;
+    std::vector<std::vector<std::uint32_t>> cells_;
+};
+
 } // namespace
 
 SnaxelMap build_snaxel_map(const SnaxelEngine& engine, const SnaxelMapInput& in, const RayScene& rays,
@@ -44,8 +117,13 @@ SnaxelMap build_snaxel_map(const SnaxelEngine& engine, const SnaxelMapInput& in,
         for (const ContourResult* iso : in.isophotes) l.push_back(iso->spec.k);
         return l;
     }();
+    // On a closed mesh a point turned away is always behind the surface
+    // (rays from the fold's far side only graze it): no ray is needed.
+    bool open = false;
+    for (std::int32_t e = 0; e < E && !open; ++e) open = topo.is_boundary_edge(e);
     parallel_for(std::size_t(V), [&](std::size_t i) {
         const auto v = std::int32_t(i);
+        if (!open && visual.vertex_f[i] < 0.0) return;
         if (rays.occluded(sampler.vertex_ray(v))) {
             label[i] = kOccluded;
             return;
@@ -68,6 +146,7 @@ SnaxelMap build_snaxel_map(const SnaxelEngine& engine, const SnaxelMapInput& in,
         label[i] = cls;
     }, 256);
 
+    const double t_labels = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
     // A vertex turned away next to one turned toward the viewer is where
     // rays graze the contour's fold: only its front neighbour is trusted.
     {
@@ -155,6 +234,7 @@ SnaxelMap build_snaxel_map(const SnaxelEngine& engine, const SnaxelMapInput& in,
         label = std::move(relabel);
     }
     map.stats.seeds = seeds;
+    const double t_grow = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
     for (const int l : label) {
         if (l >= 0) ++map.stats.visible_vertices;
         if (l == kOccluded) ++map.stats.occluded_vertices;
@@ -167,6 +247,10 @@ SnaxelMap build_snaxel_map(const SnaxelEngine& engine, const SnaxelMapInput& in,
         if (la != lb && (la >= 0 || lb >= 0)) cut_edges.push_back(e);
     }
     std::vector<glm::dvec3> edge_point(static_cast<std::size_t>(E));
+    auto depth_of = [&](const glm::dvec3& p) {
+        return camera.orthographic() ? glm::dot(p, camera.forward()) : glm::dot(p - camera.eye, camera.forward());
+    };
+    const ContourImage occluder(engine, visual, projection, depth_of);
     auto snaxel_point = [&](const ContourResult& r, std::int32_t e, int a, int b) {
         const std::int32_t s = r.fronts.edge_snaxel.empty() ? MeshTopology::kNone : r.fronts.edge_snaxel[std::size_t(e)];
         if (s != MeshTopology::kNone) return engine.position(r.fronts.snaxels[std::size_t(s)]);
@@ -183,14 +267,28 @@ SnaxelMap build_snaxel_map(const SnaxelEngine& engine, const SnaxelMapInput& in,
         } else if ((la >= kBack) != (lb >= kBack) && la != kOccluded && lb != kOccluded) {
             out = snaxel_point(visual, e, a, b); // the visual contour between the two sides
         } else if (la == kOccluded || lb == kOccluded) {
-            // The projection of the nearer front: where the ray to the
-            // viewer becomes blocked along the edge, bisected.
-            double lo = la == kOccluded ? 1.0 : 0.0, hi = 1.0 - lo; // lo visible, hi occluded
-            for (int step = 0; step < in.bisection_steps; ++step) {
-                const double mid = 0.5 * (lo + hi);
-                (rays.occluded(sampler.edge_ray(e, mid)) ? hi : lo) = mid;
+            // Rule 2: the visible side's front stops where the edge's image
+            // meets the image of a nearer front (the occluder's visual
+            // contour), so both sides of the occlusion share one curve. If
+            // no such crossing shows, the ray to the viewer is bisected.
+            const std::int32_t from = la == kOccluded ? b : a, to = la == kOccluded ? a : b;
+            const glm::dvec3& p0 = topo.positions[std::size_t(from)];
+            const glm::dvec3& p1 = topo.positions[std::size_t(to)];
+            const double t = occluder.first_crossing(projection.project(p0), projection.project(p1),
+                                                     [&](double s) { return depth_of(glm::mix(p0, p1, s)); });
+            if (t >= 0.0) {
+                out = glm::mix(p0, p1, t);
+            } else {
+                double lo = from == a ? 0.0 : 1.0, hi = 1.0 - lo; // lo visible, hi occluded
+                const double pixels = glm::length(projection.project(p0) - projection.project(p1));
+                const int steps = std::clamp(int(std::ceil(std::log2(std::max(pixels / in.tolerance_px, 1.0)))), 1,
+                                             in.bisection_steps);
+                for (int step = 0; step < steps; ++step) {
+                    const double mid = 0.5 * (lo + hi);
+                    (rays.occluded(sampler.edge_ray(e, mid)) ? hi : lo) = mid;
+                }
+                out = glm::mix(topo.positions[std::size_t(a)], topo.positions[std::size_t(b)], 0.5 * (lo + hi));
             }
-            out = glm::mix(topo.positions[std::size_t(a)], topo.positions[std::size_t(b)], 0.5 * (lo + hi));
         } else if (la >= kBack) {
             // Two classes on the far side: the root of N.L at the level between them.
             const int top = std::max(la, lb) - kBack;
@@ -206,6 +304,8 @@ SnaxelMap build_snaxel_map(const SnaxelEngine& engine, const SnaxelMapInput& in,
         }
     }, 64);
 
+    const double t_grown = 0.0; (void)t_grown;
+    const double t_edges = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
     // Each region's part of every face it touches, walked counter-clockwise
     // over corners, edge points and (where three labels meet) a junction.
     // Its steps across the face, or along a mesh boundary, are the region's
@@ -213,7 +313,18 @@ SnaxelMap build_snaxel_map(const SnaxelEngine& engine, const SnaxelMapInput& in,
     const std::int64_t junction_base = std::int64_t(V) + E;
     std::unordered_map<std::int32_t, glm::dvec3> junction;
     std::vector<std::tuple<std::int32_t, std::int64_t, std::int64_t>> steps; // region, from, to
-    for (std::int32_t f = 0; f < std::int32_t(topo.n_faces()); ++f) {
+    // Only faces with a cut edge or a mesh-boundary edge have such steps.
+    std::vector<std::int32_t> faces;
+    faces.reserve(2 * cut_edges.size());
+    for (std::int32_t e = 0; e < E; ++e) {
+        const int la = label[std::size_t(topo.edge_vertices[e][0])], lb = label[std::size_t(topo.edge_vertices[e][1])];
+        if (la == lb && (la < 0 || !topo.is_boundary_edge(e))) continue;
+        for (const std::int32_t f : topo.edge_faces[std::size_t(e)])
+            if (f != MeshTopology::kNone) faces.push_back(f);
+    }
+    std::sort(faces.begin(), faces.end());
+    faces.erase(std::unique(faces.begin(), faces.end()), faces.end());
+    for (const std::int32_t f : faces) {
         const auto& fv = topo.face_vertices[std::size_t(f)];
         const auto& fe = topo.face_edges[std::size_t(f)];
         const int l[3] = {label[std::size_t(fv[0])], label[std::size_t(fv[1])], label[std::size_t(fv[2])]};
@@ -315,6 +426,7 @@ SnaxelMap build_snaxel_map(const SnaxelEngine& engine, const SnaxelMapInput& in,
     map.vertex_region = std::move(comp);
     map.regions = std::move(regions);
     map.stats.ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    if (getenv("SNAXELS_DEBUG_MAP")) std::fprintf(stderr, "grow %.1f labels %.1f edges %.1f total %.1f (cut edges %zu)\n", t_grow, t_labels, t_edges, map.stats.ms, cut_edges.size());
     return map;
 }
 

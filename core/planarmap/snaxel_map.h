@@ -43,7 +43,10 @@ struct SnaxelMapInput {
     const ContourResult* shadow = nullptr;       ///< none: everything visible is lit
     std::vector<const ContourResult*> isophotes; ///< ascending k
     const ContourResult* gleam = nullptr;
-    int bisection_steps = 7; ///< locating an occlusion boundary on an edge (1/128 of it)
+    /// Locating an occlusion boundary on an edge: bisection until the step
+    /// projects under tolerance_px, at most bisection_steps times.
+    double tolerance_px = 0.25;
+    int bisection_steps = 10;
     /// A region without an interior vertex (one whose whole ring shares its
     /// label) is dissolved if it has fewer vertices than this.
     int min_unsupported_vertices = 6;
