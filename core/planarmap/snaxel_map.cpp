@@ -13,6 +13,7 @@ namespace snaxels {
 namespace {
 
 constexpr int kOccluded = -1; // behind a nearer surface
+constexpr int kAway = -2;     // turned away from the viewer, not seen (N.V < 0)
 constexpr int kBack = 64;     // added to the class of a visible vertex turned away (N.V < 0)
 
 /// Root of the linear interpolant of fa (at 0) and fb (at 1), else the middle.
@@ -123,7 +124,10 @@ SnaxelMap build_snaxel_map(const SnaxelEngine& engine, const SnaxelMapInput& in,
     for (std::int32_t e = 0; e < E && !open; ++e) open = topo.is_boundary_edge(e);
     parallel_for(std::size_t(V), [&](std::size_t i) {
         const auto v = std::int32_t(i);
-        if (!open && visual.vertex_f[i] < 0.0) return;
+        if (!open && visual.vertex_f[i] < 0.0) {
+            label[i] = kAway;
+            return;
+        }
         if (rays.occluded(sampler.vertex_ray(v))) {
             label[i] = kOccluded;
             return;
@@ -264,14 +268,16 @@ SnaxelMap build_snaxel_map(const SnaxelEngine& engine, const SnaxelMapInput& in,
         glm::dvec3& out = edge_point[std::size_t(e)];
         if (la < 0 && lb < 0) {
             out = 0.5 * (topo.positions[std::size_t(a)] + topo.positions[std::size_t(b)]);
-        } else if ((la >= kBack) != (lb >= kBack) && la != kOccluded && lb != kOccluded) {
+        } else if (la == kAway || lb == kAway) {
+            out = snaxel_point(visual, e, a, b); // the visual contour (closed meshes)
+        } else if ((la >= kBack) != (lb >= kBack) && la >= 0 && lb >= 0) {
             out = snaxel_point(visual, e, a, b); // the visual contour between the two sides
         } else if (la == kOccluded || lb == kOccluded) {
             // Rule 2: the visible side's front stops where the edge's image
             // meets the image of a nearer front (the occluder's visual
             // contour), so both sides of the occlusion share one curve. If
             // no such crossing shows, the ray to the viewer is bisected.
-            const std::int32_t from = la == kOccluded ? b : a, to = la == kOccluded ? a : b;
+            const std::int32_t from = la < 0 ? b : a, to = la < 0 ? a : b;
             const glm::dvec3& p0 = topo.positions[std::size_t(from)];
             const glm::dvec3& p1 = topo.positions[std::size_t(to)];
             const double t = occluder.first_crossing(projection.project(p0), projection.project(p1),
@@ -313,6 +319,13 @@ SnaxelMap build_snaxel_map(const SnaxelEngine& engine, const SnaxelMapInput& in,
     const std::int64_t junction_base = std::int64_t(V) + E;
     std::unordered_map<std::int32_t, glm::dvec3> junction;
     std::vector<std::tuple<std::int32_t, std::int64_t, std::int64_t>> steps; // region, from, to
+    std::vector<std::pair<std::int32_t, std::int32_t>> rim_faces; // (face, region) taken past the contour
+    auto facing = [&](std::int32_t f) {
+        const auto& fv = topo.face_vertices[std::size_t(f)];
+        const glm::dvec3 &p0 = topo.positions[std::size_t(fv[0])], &p1 = topo.positions[std::size_t(fv[1])],
+                         &p2 = topo.positions[std::size_t(fv[2])];
+        return glm::dot(glm::cross(p1 - p0, p2 - p0), camera.to_viewer((p0 + p1 + p2) / 3.0)) > 0.0;
+    };
     // Only faces with a cut edge or a mesh-boundary edge have such steps.
     std::vector<std::int32_t> faces;
     faces.reserve(2 * cut_edges.size());
@@ -336,31 +349,111 @@ SnaxelMap build_snaxel_map(const SnaxelEngine& engine, const SnaxelMapInput& in,
         if (three)
             junction[f] = (edge_point[std::size_t(fe[0])] + edge_point[std::size_t(fe[1])] + edge_point[std::size_t(fe[2])]) / 3.0;
         const std::int32_t c[3] = {comp[std::size_t(fv[0])], comp[std::size_t(fv[1])], comp[std::size_t(fv[2])]};
+        // The piece of the corners `in` picks: (id, face edge it leads
+        // along, or -1 across the face), counter-clockwise.
+        std::int64_t ids[7];
+        int along[7];
+        auto piece = [&](auto&& in) {
+            int n = 0;
+            for (int k = 0; k < 3; ++k) {
+                const int k1 = (k + 1) % 3;
+                if (in(k)) ids[n] = fv[std::size_t(k)], along[n++] = k;
+                if (l[k] != l[k1] && (in(k) || in(k1))) {
+                    ids[n] = std::int64_t(V) + fe[std::size_t(k)];
+                    along[n++] = in(k1) ? k : -1; // toward the next corner: along edge k; else across
+                    if (three && in(k)) ids[n] = junction_base + f, along[n++] = -1;
+                }
+            }
+            return n;
+        };
         for (int owner = 0; owner < 3; ++owner) {
             const std::int32_t r = c[owner];
             if (r < 0) continue;
             bool seen = false; // each region once per face
             for (int k = 0; k < owner; ++k) seen = seen || c[k] == r;
             if (seen) continue;
-            // The piece: (id, face edge it leads along, or -1 across the face).
-            std::int64_t ids[7];
-            int along[7];
-            int n = 0;
-            for (int k = 0; k < 3; ++k) {
-                const int k1 = (k + 1) % 3;
-                if (c[k] == r) ids[n] = fv[std::size_t(k)], along[n++] = k;
-                if (l[k] != l[k1] && (c[k] == r || c[k1] == r)) {
-                    ids[n] = std::int64_t(V) + fe[std::size_t(k)];
-                    along[n++] = c[k1] == r ? k : -1; // toward the next corner: along edge k; else across
-                    if (three && c[k] == r) ids[n] = junction_base + f, along[n++] = -1;
-                }
-            }
+            const int n = piece([&](int k) { return c[k] == r; });
             for (int i = 0; i < n; ++i) {
                 const std::int64_t a = ids[i], b = ids[(i + 1) % n];
                 const bool across = along[i] < 0 || (a >= V && b >= V);
                 if (across || topo.is_boundary_edge(fe[std::size_t(along[i])])) steps.emplace_back(r, a, b);
             }
         }
+        // A face turned to the viewer with corners past the contour of
+        // interpolated normals (turned away by their normals): the face is
+        // seen whole, so its part past the contour joins the region of its
+        // seen corners (the one holding most), up to the mesh's own outline
+        // instead of the approximate one. The
+        // part's steps cancel the region's steps across the face (and those
+        // of the next such face).
+        int away = 0, front = 0, most = 0;
+        std::int32_t region = -1;
+        for (int k = 0; k < 3; ++k) {
+            if (l[k] == kAway) ++away;
+            if (c[k] < 0) continue;
+            ++front;
+            int count = 0;
+            for (int j = 0; j < 3; ++j) count += c[j] == c[k];
+            if (count > most) most = count, region = c[k];
+        }
+        if (away == 0 || front == 0 || away + front != 3) continue; // no hidden corner
+        if (away == 0 || region < 0 || !facing(f)) continue;
+        {
+            // Only where the face itself is seen (past a fold it may lie behind the nearer sheet).
+            const glm::dvec3 centroid = (topo.positions[std::size_t(fv[0])] + topo.positions[std::size_t(fv[1])] +
+                                         topo.positions[std::size_t(fv[2])]) / 3.0;
+            const glm::dvec3 n = glm::normalize(glm::cross(topo.positions[std::size_t(fv[1])] - topo.positions[std::size_t(fv[0])],
+                                                           topo.positions[std::size_t(fv[2])] - topo.positions[std::size_t(fv[0])]));
+            if (rays.occluded(sampler.face_ray(f, centroid, n))) continue;
+        }
+        const int n = piece([&](int k) { return l[k] == kAway; });
+        for (int i = 0; i < n; ++i) steps.emplace_back(region, ids[i], ids[(i + 1) % n]);
+        rim_faces.emplace_back(f, region);
+    }
+    // Past a crease the mesh's outline can lie a few faces beyond the
+    // contour: seen faces turned to the viewer whose corners are all turned
+    // away by their normals join the region of the face they adjoin (up to
+    // three rings).
+    {
+        std::unordered_map<std::int32_t, std::int32_t> taken;
+        for (const auto& [f, r] : rim_faces) taken[f] = r;
+        std::vector<std::pair<std::int32_t, std::int32_t>> ring = rim_faces;
+        for (int step = 0; step < 3 && !ring.empty(); ++step) {
+            std::vector<std::pair<std::int32_t, std::int32_t>> next;
+            for (const auto& [f, r] : ring)
+                for (const std::int32_t e : topo.face_edges[std::size_t(f)])
+                    for (const std::int32_t g : topo.edge_faces[std::size_t(e)]) {
+                        if (g == MeshTopology::kNone || taken.count(g)) continue;
+                        const auto& gv = topo.face_vertices[std::size_t(g)];
+                        if (label[std::size_t(gv[0])] != kAway || label[std::size_t(gv[1])] != kAway ||
+                            label[std::size_t(gv[2])] != kAway || !facing(g))
+                            continue;
+                        const glm::dvec3 &p0 = topo.positions[std::size_t(gv[0])], &p1 = topo.positions[std::size_t(gv[1])],
+                                         &p2 = topo.positions[std::size_t(gv[2])];
+                        if (rays.occluded(sampler.face_ray(g, (p0 + p1 + p2) / 3.0, glm::normalize(glm::cross(p1 - p0, p2 - p0)))))
+                            continue;
+                        taken[g] = r;
+                        next.emplace_back(g, r);
+                        for (int k = 0; k < 3; ++k) steps.emplace_back(r, gv[std::size_t(k)], gv[std::size_t((k + 1) % 3)]);
+                    }
+            ring = std::move(next);
+        }
+    }
+    // Steps walked both ways (between two pieces of one region) cancel.
+    std::sort(steps.begin(), steps.end());
+    {
+        std::vector<char> gone(steps.size(), 0);
+        for (std::size_t i = 0; i < steps.size(); ++i) {
+            if (gone[i]) continue;
+            const auto& [r, a, b] = steps[i];
+            auto it = std::lower_bound(steps.begin(), steps.end(), std::make_tuple(r, b, a));
+            while (it != steps.end() && *it == std::make_tuple(r, b, a) && gone[std::size_t(it - steps.begin())]) ++it;
+            if (it != steps.end() && *it == std::make_tuple(r, b, a)) gone[i] = gone[std::size_t(it - steps.begin())] = 1;
+        }
+        std::size_t kept = 0;
+        for (std::size_t i = 0; i < steps.size(); ++i)
+            if (!gone[i]) steps[kept++] = steps[i];
+        steps.resize(kept);
     }
 
     // Chain each region's steps into loops and project them.
@@ -369,7 +462,6 @@ SnaxelMap build_snaxel_map(const SnaxelEngine& engine, const SnaxelMapInput& in,
         if (id < junction_base) return edge_point[std::size_t(id - V)];
         return junction.at(std::int32_t(id - junction_base));
     };
-    std::sort(steps.begin(), steps.end());
     std::vector<char> used(steps.size(), 0);
     std::vector<MapRegion> regions(comp_label.size());
     std::vector<double> depth_sum(comp_label.size(), 0.0);

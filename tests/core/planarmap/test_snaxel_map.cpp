@@ -80,23 +80,36 @@ TEST(SnaxelMap, AgreesWithRayCastClassesPerPixel) {
             const Maps m = build_maps(s, engine, rays, cam, light, proj, k);
             const std::vector<int> image = test::rasterize_regions(m.snaxel.regions, kSize, kSize);
             std::size_t covered = 0, agree = 0, uncovered = 0;
+            std::vector<unsigned char> debug(std::size_t(kSize) * kSize * 3, 255);
             for (int y = 0; y < kSize; ++y)
                 for (int x = 0; x < kSize; ++x) {
                     const int direct = test::direct_class(rays, proj, cam, light, {k}, s.radius, x, y);
                     if (direct < 0) continue;
                     ++covered;
                     const int r = image[std::size_t(y) * kSize + std::size_t(x)];
+                    unsigned char* px = &debug[(std::size_t(y) * kSize + std::size_t(x)) * 3];
                     if (r < 0) {
                         ++uncovered;
+                        px[0] = 255, px[1] = 0, px[2] = 0;
                         continue;
                     }
-                    agree += test::region_class_index(m.snaxel.regions[std::size_t(r)], {k}) == direct;
+                    const bool same = test::region_class_index(m.snaxel.regions[std::size_t(r)], {k}) == direct;
+                    agree += same;
+                    const unsigned char shade = (unsigned char)(60 + 60 * direct);
+                    if (same) px[0] = px[1] = px[2] = shade;
+                    else px[0] = 0, px[1] = 0, px[2] = 255;
                 }
             const double fraction = double(agree) / double(covered);
             std::printf("%s view %d: %zu regions, %zu covered pixels, %.2f%% agree, %.2f%% outside every region, %.1f ms\n",
                         file.c_str(), view, m.snaxel.regions.size(), covered, 100.0 * fraction,
                         100.0 * double(uncovered) / double(covered), m.snaxel.stats.ms);
             EXPECT_GE(fraction, 0.98) << file << " view " << view;
+            if (const char* dir = getenv("SNAXELS_DEBUG_MAP_DIR")) {
+                FILE* out = std::fopen((std::string(dir) + "/" + file + "-" + std::to_string(view) + ".ppm").c_str(), "wb");
+                std::fprintf(out, "P6 %d %d 255\n", kSize, kSize);
+                std::fwrite(debug.data(), 1, debug.size(), out);
+                std::fclose(out);
+            }
         }
     }
 }
