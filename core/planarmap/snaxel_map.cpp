@@ -248,7 +248,7 @@ SnaxelMap build_snaxel_map(const SnaxelEngine& engine, const SnaxelMapInput& in,
     std::vector<std::int32_t> cut_edges;
     for (std::int32_t e = 0; e < E; ++e) {
         const int la = label[std::size_t(topo.edge_vertices[e][0])], lb = label[std::size_t(topo.edge_vertices[e][1])];
-        if (la != lb && (la >= 0 || lb >= 0)) cut_edges.push_back(e);
+        if (la != lb) cut_edges.push_back(e); // both hidden: a junction may still use its middle
     }
     std::vector<glm::dvec3> edge_point(static_cast<std::size_t>(E));
     auto depth_of = [&](const glm::dvec3& p) {
@@ -409,6 +409,18 @@ SnaxelMap build_snaxel_map(const SnaxelEngine& engine, const SnaxelMapInput& in,
         const int n = piece([&](int k) { return l[k] == kAway; });
         for (int i = 0; i < n; ++i) steps.emplace_back(region, ids[i], ids[(i + 1) % n]);
         rim_faces.emplace_back(f, region);
+    }
+    // A face turned away whose corners all face the viewer by their
+    // normals (at creases, where the normals are averaged) is hidden, yet
+    // lies inside its region: its image would cancel the faces it folds
+    // over. Its triangle, walked the other way, cancels it back.
+    for (std::int32_t f = 0; f < std::int32_t(topo.n_faces()); ++f) {
+        const auto& fv = topo.face_vertices[std::size_t(f)];
+        const std::int32_t r = comp[std::size_t(fv[0])];
+        if (r < 0 || comp[std::size_t(fv[1])] != r || comp[std::size_t(fv[2])] != r || comp_label[std::size_t(r)] >= kBack)
+            continue;
+        if (facing(f)) continue;
+        for (int k = 0; k < 3; ++k) steps.emplace_back(r, fv[std::size_t((k + 1) % 3)], fv[std::size_t(k)]);
     }
     // Past a crease the mesh's outline can lie a few faces beyond the
     // contour: seen faces turned to the viewer whose corners are all turned

@@ -12,15 +12,15 @@
 namespace snaxels::test {
 
 /// Per pixel of a width x height image: the index of the region covering
-/// its centre (even-odd within a region; where regions overlap, the nearer
-/// one by depth order), or -1.
+/// its centre (non-zero winding within a region, as SVG fills them; where
+/// regions overlap, the nearer one by depth order), or -1.
 inline std::vector<int> rasterize_regions(const std::vector<MapRegion>& regions, int width, int height) {
     std::vector<int> image(std::size_t(width) * std::size_t(height), -1);
     std::vector<std::size_t> order(regions.size());
     for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
     // Farthest first, so nearer regions paint over.
     std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return regions[a].depth > regions[b].depth; });
-    std::vector<double> xs;
+    std::vector<std::pair<double, int>> xs; // crossing, winding direction
     for (const std::size_t r : order)
         for (int y = 0; y < height; ++y) {
             const double cy = y + 0.5;
@@ -30,12 +30,15 @@ inline std::vector<int> rasterize_regions(const std::vector<MapRegion>& regions,
                     const glm::dvec2& a = poly[i];
                     const glm::dvec2& b = poly[(i + 1) % poly.size()];
                     if ((a.y <= cy) == (b.y <= cy)) continue;
-                    xs.push_back(a.x + (cy - a.y) / (b.y - a.y) * (b.x - a.x));
+                    xs.push_back({a.x + (cy - a.y) / (b.y - a.y) * (b.x - a.x), b.y > a.y ? 1 : -1});
                 }
             std::sort(xs.begin(), xs.end());
-            for (std::size_t i = 0; i + 1 < xs.size(); i += 2) {
-                const int x0 = std::max(0, int(std::ceil(xs[i] - 0.5)));
-                const int x1 = std::min(width - 1, int(std::floor(xs[i + 1] - 0.5)));
+            int winding = 0;
+            for (std::size_t i = 0; i + 1 < xs.size(); ++i) {
+                winding += xs[i].second;
+                if (winding == 0) continue;
+                const int x0 = std::max(0, int(std::ceil(xs[i].first - 0.5)));
+                const int x1 = std::min(width - 1, int(std::floor(xs[i + 1].first - 0.5)));
                 for (int x = x0; x <= x1; ++x) image[std::size_t(y) * std::size_t(width) + std::size_t(x)] = int(r);
             }
         }
