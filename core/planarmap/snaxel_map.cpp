@@ -150,7 +150,6 @@ SnaxelMap build_snaxel_map(const SnaxelEngine& engine, const SnaxelMapInput& in,
         label[i] = cls;
     }, 256);
 
-    const double t_labels = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
     // A vertex turned away next to one turned toward the viewer is where
     // rays graze the contour's fold: only its front neighbour is trusted.
     {
@@ -173,8 +172,8 @@ SnaxelMap build_snaxel_map(const SnaxelEngine& engine, const SnaxelMapInput& in,
     // needs room on the mesh: a region with no vertex whose whole ring
     // shares its label is thinner than the tessellation and cannot hold
     // one; when it is also a fleck of a few vertices, its vertices join the
-    // label most of their neighbours outside it carry, and the regions are
-    // grown again. (Long thin bands along a coarse mesh are kept.)
+    // label most of their neighbours outside it carry, and the regions they
+    // reach are grown again. (Long thin bands along a coarse mesh are kept.)
     std::vector<std::int32_t> comp(static_cast<std::size_t>(V), -1);
     std::vector<int> comp_label;
     std::vector<std::int32_t> stack;
@@ -200,10 +199,9 @@ SnaxelMap build_snaxel_map(const SnaxelEngine& engine, const SnaxelMapInput& in,
             }
         }
     };
-    std::size_t seeds = 0;
-    for (int pass = 0; pass < 4; ++pass) {
-        grow();
-        seeds += comp_label.size();
+    grow();
+    std::size_t seeds = comp_label.size();
+    for (int pass = 0; pass < 3; ++pass) { // dissolving can leave a new fleck behind
         std::vector<char> supported(comp_label.size(), 0);
         std::vector<int> size(comp_label.size(), 0);
         for (const std::int32_t r : comp)
@@ -217,8 +215,9 @@ SnaxelMap build_snaxel_map(const SnaxelEngine& engine, const SnaxelMapInput& in,
                 interior = label[std::size_t(topo.ring[i])] == label[std::size_t(v)];
             supported[std::size_t(r)] = interior;
         }
-        std::vector<int> relabel = label;
-        bool changed = false;
+        // Each fleck vertex takes the label most of its neighbours outside
+        // the fleck carry.
+        std::vector<std::pair<std::int32_t, int>> moves;
         for (std::int32_t v = 0; v < V; ++v) {
             const std::int32_t r = comp[std::size_t(v)];
             if (r < 0 || supported[std::size_t(r)]) continue;
@@ -232,13 +231,66 @@ SnaxelMap build_snaxel_map(const SnaxelEngine& engine, const SnaxelMapInput& in,
                     count += comp[std::size_t(topo.ring[j])] != r && label[std::size_t(topo.ring[j])] == candidate;
                 if (count > best_count || (count == best_count && candidate > best)) best = candidate, best_count = count;
             }
-            if (best != label[std::size_t(v)]) relabel[std::size_t(v)] = best, changed = true;
+            if (best != label[std::size_t(v)]) moves.emplace_back(v, best);
         }
-        if (!changed) break;
-        label = std::move(relabel);
+        if (moves.empty()) break;
+        {
+            // The moved vertices join the regions they now touch: regions
+            // grown again locally, joined where a moved vertex bridges two.
+            std::vector<std::int32_t> parent(comp_label.size());
+            for (std::size_t r = 0; r < parent.size(); ++r) parent[r] = std::int32_t(r);
+            auto find = [&](std::int32_t r) {
+                while (parent[std::size_t(r)] != r) r = parent[std::size_t(r)] = parent[std::size_t(parent[std::size_t(r)])];
+                return r;
+            };
+            for (const auto& [v, l] : moves) {
+                label[std::size_t(v)] = l;
+                comp[std::size_t(v)] = -2; // to be grown
+            }
+            for (const auto& [v0, l0] : moves) {
+                if (comp[std::size_t(v0)] != -2) continue;
+                if (l0 < 0) {
+                    comp[std::size_t(v0)] = -1;
+                    continue;
+                }
+                const auto id = std::int32_t(comp_label.size());
+                comp_label.push_back(l0);
+                parent.push_back(id);
+                comp[std::size_t(v0)] = id;
+                stack.push_back(v0);
+                while (!stack.empty()) {
+                    const std::int32_t v = stack.back();
+                    stack.pop_back();
+                    for (std::int32_t i = topo.ring_start[v]; i < topo.ring_start[v + 1]; ++i) {
+                        const std::int32_t w = topo.ring[i];
+                        if (label[std::size_t(w)] != l0) continue;
+                        if (comp[std::size_t(w)] == -2) {
+                            comp[std::size_t(w)] = id;
+                            stack.push_back(w);
+                        } else if (comp[std::size_t(w)] >= 0) {
+                            parent[std::size_t(find(comp[std::size_t(w)]))] = find(id);
+                        }
+                    }
+                }
+            }
+            // Number the regions that still hold vertices.
+            std::vector<std::int32_t> index(comp_label.size(), -1);
+            std::vector<int> labels;
+            for (std::int32_t v = 0; v < V; ++v) {
+                std::int32_t& r = comp[std::size_t(v)];
+                if (r < 0) continue;
+                const std::int32_t root = find(r);
+                if (index[std::size_t(root)] < 0) {
+                    index[std::size_t(root)] = std::int32_t(labels.size());
+                    labels.push_back(comp_label[std::size_t(root)]);
+                }
+                r = index[std::size_t(root)];
+            }
+            comp_label = std::move(labels);
+            seeds += comp_label.size();
+        }
     }
     map.stats.seeds = seeds;
-    const double t_grow = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
     for (const int l : label) {
         if (l >= 0) ++map.stats.visible_vertices;
         if (l == kOccluded) ++map.stats.occluded_vertices;
@@ -310,8 +362,6 @@ SnaxelMap build_snaxel_map(const SnaxelEngine& engine, const SnaxelMapInput& in,
         }
     }, 64);
 
-    const double t_grown = 0.0; (void)t_grown;
-    const double t_edges = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
     // Each region's part of every face it touches, walked counter-clockwise
     // over corners, edge points and (where three labels meet) a junction.
     // Its steps across the face, or along a mesh boundary, are the region's
@@ -349,19 +399,19 @@ SnaxelMap build_snaxel_map(const SnaxelEngine& engine, const SnaxelMapInput& in,
         if (three)
             junction[f] = (edge_point[std::size_t(fe[0])] + edge_point[std::size_t(fe[1])] + edge_point[std::size_t(fe[2])]) / 3.0;
         const std::int32_t c[3] = {comp[std::size_t(fv[0])], comp[std::size_t(fv[1])], comp[std::size_t(fv[2])]};
-        // The piece of the corners `in` picks: (id, face edge it leads
+        // The piece of the corners `picks` selects: (id, face edge it leads
         // along, or -1 across the face), counter-clockwise.
         std::int64_t ids[7];
         int along[7];
-        auto piece = [&](auto&& in) {
+        auto piece = [&](auto&& picks) {
             int n = 0;
             for (int k = 0; k < 3; ++k) {
                 const int k1 = (k + 1) % 3;
-                if (in(k)) ids[n] = fv[std::size_t(k)], along[n++] = k;
-                if (l[k] != l[k1] && (in(k) || in(k1))) {
+                if (picks(k)) ids[n] = fv[std::size_t(k)], along[n++] = k;
+                if (l[k] != l[k1] && (picks(k) || picks(k1))) {
                     ids[n] = std::int64_t(V) + fe[std::size_t(k)];
-                    along[n++] = in(k1) ? k : -1; // toward the next corner: along edge k; else across
-                    if (three && in(k)) ids[n] = junction_base + f, along[n++] = -1;
+                    along[n++] = picks(k1) ? k : -1; // toward the next corner: along edge k; else across
+                    if (three && picks(k)) ids[n] = junction_base + f, along[n++] = -1;
                 }
             }
             return n;
@@ -530,7 +580,6 @@ SnaxelMap build_snaxel_map(const SnaxelEngine& engine, const SnaxelMapInput& in,
     map.vertex_region = std::move(comp);
     map.regions = std::move(regions);
     map.stats.ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-    if (getenv("SNAXELS_DEBUG_MAP")) std::fprintf(stderr, "grow %.1f labels %.1f edges %.1f total %.1f (cut edges %zu)\n", t_grow, t_labels, t_edges, map.stats.ms, cut_edges.size());
     return map;
 }
 
