@@ -35,7 +35,6 @@ int run_contours(const std::vector<std::string>& argv) {
             auto specs = scene_option_specs();
             specs.push_back({"json", "OUT", "write the contours as JSON to OUT ('-' for standard output)"});
             specs.push_back({"svg", "OUT", "write the contours as SVG to OUT ('-' for standard output)"});
-            specs.push_back({"planar-map", "post", "build the post-processed planar map; the JSON lists its regions"});
             return specs;
         }(),
         {"MESH"});
@@ -44,9 +43,7 @@ int run_contours(const std::vector<std::string>& argv) {
         return 0;
     }
     SceneOptions scene = parse_scene_options(args);
-    const auto planar = args.value("planar-map");
-    if (planar && *planar != "post")
-        throw UsageError("--planar-map takes 'post' (the post-processed map), not '" + *planar + "'");
+    const bool planar = scene.planar_map.has_value();
     const std::string json_out = args.value("json").value_or("");
     const std::string svg_out = args.value("svg").value_or("");
     if (!json_out.empty() && json_out == svg_out)
@@ -66,7 +63,8 @@ int run_contours(const std::vector<std::string>& argv) {
     job.kinds = scene.kinds;
     job.style = scene.style;
     job.visibility = scene.visibility;
-    job.planar_map = bool(planar);
+    job.planar_map = planar;
+    job.map_kind = scene.planar_map.value_or(PlanarMapKind::Snaxel);
     if (scene.check) job.engine.check_invariants = true;
     const StillOutput still = render_still(loaded, topology, nullptr, job);
     const std::vector<ContourResult>& results = still.results;

@@ -67,6 +67,9 @@ std::vector<OptionSpec> scene_option_specs() {
             {"style", "FILE.xml", "how to draw: strokes per contour kind, canvas, light (docs/styles.md)"},
             {"size", "WxH", "image size in pixels (default: the style's canvas, 800x800)"},
             {"no-visibility", "", "skip hidden-line classification (no qi, no dashed runs)"},
+            {"planar-map", "snaxel|post",
+             "the planar map the style's fills come from: snaxel (the snaxel-defined visible-surface map, default) "
+             "or post (polygon clipping); contours --json then lists its regions"},
             {"check", "", "check the snaxel invariants after every iteration (slower)"}};
 }
 
@@ -126,6 +129,11 @@ SceneOptions parse_scene_options(const Args& args) {
         l.point = true;
         l.pos = parse_vec3("light-pos", *p, false);
         o.light = l;
+    }
+    if (const auto m = args.value("planar-map")) {
+        if (*m != "snaxel" && *m != "post")
+            throw UsageError("--planar-map takes snaxel or post, not '" + *m + "'");
+        o.planar_map = parse_planar_map_kind(*m);
     }
     o.visibility = !args.flag("no-visibility");
     o.check = args.flag("check");

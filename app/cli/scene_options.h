@@ -8,6 +8,7 @@
 
 #include "app/cli/args.h"
 #include "core/mesh/report.h"
+#include "core/planarmap/planar_map.h"
 #include "core/scene/camera.h"
 #include "core/snaxel/contour_function.h"
 #include "core/style/style.h"
@@ -22,6 +23,9 @@ struct SceneOptions {
     Style style = default_style();    ///< --style, with --size applied to its canvas
     bool visibility = true;
     bool check = false;
+    /// --planar-map: which map (and, for contours, list its regions); fills
+    /// use the snaxel map when it is not given.
+    std::optional<PlanarMapKind> planar_map;
 };
 
 std::vector<OptionSpec> scene_option_specs();

@@ -44,17 +44,10 @@ StillOutput render_still(const LoadedMesh& mesh, const MeshTopology& topology, c
         fill_results.reserve(needed.size()); // result_of's pointers must stay valid
         for (const ContourSpec& spec : needed)
             if (!result_of(spec)) fill_results.push_back(engine.compute(spec, job.camera, job.light, job.engine));
-        PostMapInput input;
-        for (const ContourSpec& spec : needed) {
-            const ContourResult* r = result_of(spec);
-            if (spec.kind == ContourKind::Visual) input.visual = r;
-            if (spec.kind == ContourKind::Shadow) input.shadow = r;
-            if (spec.kind == ContourKind::Isophote) input.isophotes.push_back(r);
-            if (spec.kind == ContourKind::Gleam) input.gleam = r;
-        }
-        std::sort(input.isophotes.begin(), input.isophotes.end(),
-                  [](const ContourResult* a, const ContourResult* b) { return a->spec.k < b->spec.k; });
-        out.regions = build_post_map(engine, input, projection, job.camera, job.light);
+        std::vector<const ContourResult*> contours;
+        for (const ContourSpec& spec : needed) contours.push_back(result_of(spec));
+        if (job.map_kind == PlanarMapKind::Snaxel && !rays) rays = (own_rays = std::make_unique<RayScene>(topology)).get();
+        out.regions = build_planar_map(job.map_kind, engine, contours, rays, projection, job.camera, job.light).regions;
     }
     out.svg = to_svg(out.drawing, job.style, out.regions.empty() ? nullptr : &out.regions);
     return out;

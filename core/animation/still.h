@@ -8,7 +8,7 @@
 
 #include "core/export/drawing.h"
 #include "core/mesh/build.h"
-#include "core/planarmap/post_map.h"
+#include "core/planarmap/planar_map.h"
 #include "core/style/style.h"
 #include "core/visibility/visibility.h"
 
@@ -20,7 +20,8 @@ struct StillJob {
     std::vector<ContourSpec> kinds{ContourSpec{}}; ///< the contours drawn
     Style style = default_style();
     bool visibility = true;
-    bool planar_map = false; ///< build the post-processed map even without fills
+    bool planar_map = false; ///< build the planar map even without fills
+    PlanarMapKind map_kind = PlanarMapKind::Snaxel; ///< which map the fills (and regions) come from
     EngineOptions engine;
 };
 

@@ -219,7 +219,7 @@ double arc_to(const std::vector<glm::dvec2>& loop, bool closed, const glm::dvec2
 std::string to_svg(const Drawing& drawing, const Style& style, const std::vector<MapRegion>* regions) {
     std::string out = svg::document_start(drawing.width, drawing.height, style.background);
     if (regions && !style.regions.empty()) {
-        out += "<g id=\"fills\" stroke=\"none\" fill-rule=\"evenodd\">\n";
+        out += "<g id=\"fills\" stroke=\"none\" fill-rule=\"nonzero\">\n";
         for (const MapRegion& region : *regions) {
             const RegionStyle* rs = style.region(region_class_name(region.cls), region.k);
             if (!rs) continue;

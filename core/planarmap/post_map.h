@@ -27,7 +27,7 @@ struct MapRegion {
     RegionClass cls = RegionClass::Lit;
     double k = 0.0;  ///< band: the isophote level it starts at; highlight: the gleam threshold
     int depth = 0;   ///< depth order of its patch, 0 nearest
-    std::vector<std::vector<glm::dvec2>> polygons; ///< image pixels; holes wind the other way (use even-odd)
+    std::vector<std::vector<glm::dvec2>> polygons; ///< image pixels; holes wind the other way (non-zero fill)
     double area = 0.0; ///< square pixels
 };
 

@@ -1,0 +1,32 @@
+#pragma once
+/// One entry point for both planar maps: which one, from which contours.
+/// Stills and animations alike call it with the contours they have (drawn
+/// or computed for the fills alone).
+
+#include <string>
+#include <vector>
+
+#include "core/planarmap/post_map.h"
+#include "core/planarmap/snaxel_map.h"
+
+namespace snaxels {
+
+enum class PlanarMapKind { Snaxel, Post };
+
+/// "snaxel" or "post"; throws snaxels::Error naming the text otherwise.
+PlanarMapKind parse_planar_map_kind(const std::string& text);
+const char* planar_map_kind_name(PlanarMapKind kind);
+
+struct PlanarMap {
+    std::vector<MapRegion> regions;
+    std::vector<std::int32_t> vertex_region; ///< snaxel map: each vertex's region (-1: none); empty for post
+};
+
+/// The map of @p kind from @p contours, which must hold the visual contour
+/// and may hold shadow, isophotes (any order) and a gleam. @p rays is
+/// needed for the snaxel map.
+PlanarMap build_planar_map(PlanarMapKind kind, const SnaxelEngine& engine, const std::vector<const ContourResult*>& contours,
+                           const RayScene* rays, const ImageProjection& projection, const Camera& camera,
+                           const Light& light);
+
+} // namespace snaxels
