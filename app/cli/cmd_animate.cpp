@@ -98,9 +98,6 @@ int run_animate(const std::vector<std::string>& argv) {
     if (mesh_path.empty()) mesh_path = loaded.report.source;
     complete_scene(scene, loaded.report);
 
-    if (!scene.style.regions.empty())
-        std::cerr << "snaxels-cli: warning: the style's region fills are drawn in still frames (contours) only; "
-                     "the animated SVG has the strokes\n";
     AnimationJob job;
     job.animation = anim;
     job.camera = scene.camera;
@@ -108,6 +105,7 @@ int run_animate(const std::vector<std::string>& argv) {
     job.kinds = scene.kinds;
     job.style = scene.style;
     job.visibility = scene.visibility;
+    job.map_kind = scene.planar_map.value_or(PlanarMapKind::Snaxel);
     if (scene.check) job.engine.check_invariants = true;
     job.svg = svg_options;
     job.frames_dir = frames_dir;

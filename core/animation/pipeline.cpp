@@ -9,6 +9,8 @@
 #include "core/export/dash_phase.h"
 #include "core/export/svg.h"
 #include "core/util/atomic_file.h"
+#include "core/planarmap/region_tracker.h"
+#include "core/util/parallel.h"
 #include "core/visibility/visibility.h"
 
 namespace snaxels {
@@ -72,6 +74,16 @@ AnimationOutput run_animation(const LoadedMesh& mesh, const std::string& mesh_pa
             for (const double d : surface->dash) period += d;
         dash_phases.push_back(period > 0.0 ? std::make_unique<SurfaceDashPhase>(period) : nullptr);
     }
+    // Fills: the planar map's contours the drawn ones lack are tracked too.
+    const bool fills = !job.style.regions.empty();
+    std::vector<ContourSpec> fill_specs = job.style.fill_contours();
+    std::vector<ContourTracker> fill_trackers;
+    auto same_spec = [](const ContourSpec& a, const ContourSpec& b) { return a.kind == b.kind && std::abs(a.k - b.k) < 1e-9; };
+    if (fills)
+        for (const ContourSpec& spec : fill_specs)
+            if (std::none_of(job.kinds.begin(), job.kinds.end(), [&](const ContourSpec& k) { return same_spec(k, spec); }))
+                fill_trackers.emplace_back(topology, spec, job.engine);
+    RegionTracker region_tracker;
     std::unique_ptr<RayScene> rays;
     const SnaxelEngine engine(topology);
     std::vector<AnimationFrame> recorded;
@@ -81,7 +93,8 @@ AnimationOutput run_animation(const LoadedMesh& mesh, const std::string& mesh_pa
         Camera camera;
         Light light;
         driver.apply(k, camera, light);
-        if (job.visibility) {
+        const bool need_rays = job.visibility || (fills && job.map_kind == PlanarMapKind::Snaxel);
+        if (need_rays) {
             if (!rays) rays = std::make_unique<RayScene>(topology);
             else if (driver.mesh_moves()) rays->refit();
         }
@@ -89,8 +102,14 @@ AnimationOutput run_animation(const LoadedMesh& mesh, const std::string& mesh_pa
         std::vector<ContourVisibility> visibility;
         AnimationFrame frame;
         double ms = 0.0;
+        // The kinds track independently: in parallel.
+        std::vector<const TrackedFrame*> tracked(trackers.size() + fill_trackers.size());
+        parallel_for(tracked.size(), [&](std::size_t c) {
+            tracked[c] = c < trackers.size() ? &trackers[c].step(camera, light)
+                                             : &fill_trackers[c - trackers.size()].step(camera, light);
+        }, 1);
         for (std::size_t c = 0; c < trackers.size(); ++c) {
-            const TrackedFrame& tf = trackers[c].step(camera, light);
+            const TrackedFrame& tf = *tracked[c];
             ms += tf.contour.stats.ms;
             results.push_back(tf.contour);
             std::vector<AnimatedLoop> loops;
@@ -112,6 +131,18 @@ AnimationOutput run_animation(const LoadedMesh& mesh, const std::string& mesh_pa
         out.tracking_ms.push_back(ms);
         const ImageProjection projection(camera, centre, radius, job.style.width, job.style.height, job.style.margin);
         frame.drawing = make_drawing(engine, results, projection, job.visibility ? &visibility : nullptr);
+        if (fills) {
+            std::vector<const ContourResult*> contours;
+            for (const ContourSpec& spec : fill_specs) {
+                const ContourResult* r = nullptr;
+                for (std::size_t c = 0; c < tracked.size() && !r; ++c)
+                    if (same_spec(tracked[c]->contour.spec, spec)) r = &tracked[c]->contour;
+                contours.push_back(r);
+            }
+            PlanarMap map = build_planar_map(job.map_kind, engine, contours, rays.get(), projection, camera, light);
+            frame.region_tracks = region_tracker.step(map);
+            frame.regions = std::move(map.regions);
+        }
         for (std::size_t c = 0; c < trackers.size(); ++c) {
             if (!dash_phases[c]) continue;
             const Fronts& fronts = results[c].fronts;
@@ -136,7 +167,8 @@ AnimationOutput run_animation(const LoadedMesh& mesh, const std::string& mesh_pa
         if (!job.frames_dir.empty()) {
             char name[64];
             std::snprintf(name, sizeof name, "frame_%05d.svg", k);
-            write_file_atomically((std::filesystem::path(job.frames_dir) / name).string(), to_svg(frame.drawing, job.style));
+            write_file_atomically((std::filesystem::path(job.frames_dir) / name).string(),
+                                  to_svg(frame.drawing, job.style, frame.regions.empty() ? nullptr : &frame.regions));
         }
         recorded.push_back(std::move(frame));
         if (job.progress) job.progress(k + 1, frames);

@@ -12,6 +12,7 @@
 #include <nlohmann/json.hpp>
 
 #include "core/export/animated_svg.h"
+#include "core/planarmap/planar_map.h"
 #include "core/scene/animation.h"
 #include "core/snaxel/tracker.h"
 #include "core/style/style.h"
@@ -25,6 +26,7 @@ struct AnimationJob {
     std::vector<ContourSpec> kinds{ContourSpec{}};
     Style style = default_style(); ///< strokes, canvas (size, margin, background)
     bool visibility = true;
+    PlanarMapKind map_kind = PlanarMapKind::Snaxel; ///< the map the style's fills come from
     EngineOptions engine;
     AnimatedSvgOptions svg;
     std::string frames_dir; ///< when set, every frame is also written there as static SVG

@@ -13,6 +13,7 @@ namespace snaxels {
 namespace {
 
 constexpr double kTwoPi = 6.283185307179586;
+constexpr double kMinLoopArea = 4.0; // square pixels: smaller fill loops are not animated
 
 double wrap01(double u) { return u - std::floor(u); }
 
@@ -121,6 +122,231 @@ std::string key_time(double t) {
     char buf[32];
     std::snprintf(buf, sizeof buf, "%.6g", std::clamp(t, 0.0, 1.0));
     return buf;
+}
+
+/// A path shown from the start of frame @p first to the end of frame @p last
+/// of @p total: its display animation (discrete).
+std::string display_animation(int first, int last, std::size_t total, const char* dur) {
+    std::string times = first > 0 ? "0;" + key_time(double(first) / double(total)) : "0";
+    std::string values = first > 0 ? "none;inline" : "inline";
+    if (last + 1 < int(total)) {
+        times += ";" + key_time(double(last + 1) / double(total));
+        values += ";none";
+    }
+    return "<animate attributeName=\"display\" dur=\"" + std::string(dur) +
+           "\" repeatCount=\"indefinite\" calcMode=\"discrete\" keyTimes=\"" + times + "\" values=\"" + values +
+           "\"/>";
+}
+
+/// The linear animation of a path's d through its kept keyframes (@p key,
+/// per sample; sample f is frame @p frame_of[f] of @p total); @p data(out,
+/// f) appends sample f's path data. Before its first frame and after its
+/// last the path holds its first and last shape.
+template <class PathData>
+std::string d_animation(const std::vector<std::uint8_t>& key, const std::vector<int>& frame_of, std::size_t total,
+                        const char* dur, PathData&& data) {
+    std::string times, values;
+    auto add = [&](double t, std::size_t f) {
+        if (!times.empty()) times += ';', values += ';';
+        times += key_time(t);
+        data(values, f);
+    };
+    if (frame_of.front() > 0) add(0.0, 0);
+    for (std::size_t f = 0; f < key.size(); ++f)
+        if (key[f]) add(double(frame_of[f]) / double(total), f);
+    add(1.0, key.size() - 1);
+    return "<animate attributeName=\"d\" dur=\"" + std::string(dur) +
+           "\" repeatCount=\"indefinite\" calcMode=\"linear\" keyTimes=\"" + times + "\" values=\"" + values +
+           "\"/>";
+}
+
+// --- region fills ----------------------------------------------------------
+
+/// Arc-length resampling of a closed loop into @p n points starting at arc
+/// @p start.
+std::vector<glm::dvec2> resample_loop(const std::vector<glm::dvec2>& loop, std::size_t n, double start) {
+    std::vector<double> cum(loop.size() + 1, 0.0);
+    for (std::size_t i = 0; i < loop.size(); ++i) cum[i + 1] = cum[i] + glm::length(loop[(i + 1) % loop.size()] - loop[i]);
+    const double length = cum.back();
+    std::vector<glm::dvec2> out;
+    out.reserve(n);
+    for (std::size_t k = 0; k < n; ++k) {
+        double arc = length > 0.0 ? std::fmod(start + length * double(k) / double(n), length) : 0.0;
+        std::size_t i = std::size_t(std::upper_bound(cum.begin(), cum.end(), arc) - cum.begin());
+        i = std::clamp<std::size_t>(i, 1, loop.size()) - 1;
+        const double seg = cum[i + 1] - cum[i];
+        const double t = seg > 0.0 ? (arc - cum[i]) / seg : 0.0;
+        out.push_back((1.0 - t) * loop[i] + t * loop[(i + 1) % loop.size()]);
+    }
+    return out;
+}
+
+double loop_length(const std::vector<glm::dvec2>& loop) {
+    double l = 0.0;
+    for (std::size_t i = 0; i < loop.size(); ++i) l += glm::length(loop[(i + 1) % loop.size()] - loop[i]);
+    return l;
+}
+
+glm::dvec2 loop_centroid(const std::vector<glm::dvec2>& loop) {
+    glm::dvec2 c(0.0);
+    for (const glm::dvec2& p : loop) c += p;
+    return loop.empty() ? c : c / double(loop.size());
+}
+
+/// Arc length along @p loop to its vertex nearest @p p.
+double arc_nearest(const std::vector<glm::dvec2>& loop, const glm::dvec2& p) {
+    double best = 1e300, arc = 0.0, at = 0.0;
+    for (std::size_t i = 0; i < loop.size(); ++i) {
+        const double d = glm::length(loop[i] - p);
+        if (d < best) best = d, at = arc;
+        arc += glm::length(loop[(i + 1) % loop.size()] - loop[i]);
+    }
+    return at;
+}
+
+struct RegionSample {
+    int frame = 0;
+    std::vector<std::vector<glm::dvec2>> loops;
+};
+
+/// One fill path for frames [i, j) of @p samples (same number of loops).
+void emit_region(const std::vector<RegionSample>& samples, std::size_t i, std::size_t j, const RegionStyle& rs,
+                 RegionClass cls, std::size_t total, const char* dur, double tolerance, std::string& out,
+                 AnimatedSvgStats& stats) {
+    const std::size_t frames = j - i, loops = samples[i].loops.size();
+    // The loops in one order for every frame: the first frame's by size,
+    // later ones matched to the nearest loop of the frame before.
+    std::vector<std::vector<std::vector<glm::dvec2>>> ordered(frames);
+    ordered[0] = samples[i].loops;
+    std::sort(ordered[0].begin(), ordered[0].end(),
+              [](const auto& a, const auto& b) { return loop_length(a) > loop_length(b); });
+    for (std::size_t f = 1; f < frames; ++f) {
+        std::vector<std::vector<glm::dvec2>> pool = samples[i + f].loops;
+        for (std::size_t l = 0; l < loops; ++l) {
+            const glm::dvec2 c = loop_centroid(ordered[f - 1][l]);
+            std::size_t best = 0;
+            for (std::size_t k = 1; k < pool.size(); ++k)
+                if (glm::length(loop_centroid(pool[k]) - c) < glm::length(loop_centroid(pool[best]) - c)) best = k;
+            ordered[f].push_back(std::move(pool[best]));
+            pool.erase(pool.begin() + std::ptrdiff_t(best));
+        }
+    }
+    // Each loop resampled at ~2 px from an anchor that follows it, then
+    // thinned jointly over the frames (Douglas-Peucker) and keyframed.
+    std::vector<std::vector<std::vector<glm::dvec2>>> kept(frames, std::vector<std::vector<glm::dvec2>>(loops));
+    for (std::size_t l = 0; l < loops; ++l) {
+        double longest = 0.0;
+        for (std::size_t f = 0; f < frames; ++f) longest = std::max(longest, loop_length(ordered[f][l]));
+        const std::size_t n = std::clamp<std::size_t>(std::size_t(std::ceil(longest / 2.0)), 8, 4096);
+        std::vector<std::vector<glm::dvec2>> geom(frames);
+        for (std::size_t f = 0; f < frames; ++f) {
+            const auto& loop = ordered[f][l];
+            double start = 0.0;
+            if (f == 0) {
+                std::size_t top = 0; // the top-left-most vertex
+                for (std::size_t k = 1; k < loop.size(); ++k)
+                    if (loop[k].x + loop[k].y < loop[top].x + loop[top].y) top = k;
+                start = arc_nearest(loop, loop[top]);
+            } else {
+                start = arc_nearest(loop, geom[f - 1][0]);
+            }
+            geom[f] = resample_loop(loop, n, start);
+        }
+        std::vector<std::uint8_t> keep(n, 0);
+        keep[0] = keep[n / 2] = 1;
+        douglas_peucker_joint(geom, 0, n / 2, tolerance, keep);
+        douglas_peucker_joint(geom, n / 2, n, tolerance, keep);
+        for (std::size_t f = 0; f < frames; ++f)
+            for (std::size_t k = 0; k < n; ++k)
+                if (keep[k]) kept[f][l].push_back(geom[f][k]);
+    }
+    std::vector<std::vector<glm::dvec2>> flat(frames); // every loop's points, for keyframing
+    for (std::size_t f = 0; f < frames; ++f)
+        for (const auto& loop : kept[f]) flat[f].insert(flat[f].end(), loop.begin(), loop.end());
+    std::vector<std::uint8_t> key(frames, 0);
+    key.front() = key.back() = 1;
+    simplify_time(flat, 0, frames - 1, tolerance, false, key);
+    auto path_data = [&](std::string& to, std::size_t f) {
+        for (std::size_t l = 0; l < loops; ++l) {
+            if (l) to += ' ';
+            svg::append_path_data(to, kept[f][l], true);
+        }
+    };
+    const int first = samples[i].frame, last = samples[j - 1].frame;
+    out += "<path class=\"region\" data-class=\"" + std::string(region_class_name(cls)) + "\" fill=\"" + rs.fill + "\"";
+    if (rs.opacity < 1.0) {
+        out += " fill-opacity=\"";
+        svg::append_number(out, rs.opacity);
+        out += "\"";
+    }
+    out += " d=\"";
+    path_data(out, 0);
+    out += "\"";
+    const bool always = first == 0 && last + 1 == int(total);
+    if (!always) out += " display=\"none\"";
+    out += ">";
+    if (!always) out += display_animation(first, last, total, dur);
+    std::size_t keyframes = 0;
+    for (const auto k : key) keyframes += k;
+    if (keyframes > 1) {
+        std::vector<int> frame_of;
+        for (std::size_t f = i; f < j; ++f) frame_of.push_back(samples[f].frame);
+        out += d_animation(key, frame_of, total, dur, path_data);
+    }
+    out += "</path>\n";
+    ++stats.paths;
+    stats.keyframes += keyframes;
+    stats.frames_spanned += frames;
+    stats.vertices += flat[0].size();
+}
+
+/// The fills of every region track: one path per run of frames in which
+/// the track keeps its number of loops (after erosion).
+void write_regions(const std::vector<AnimationFrame>& frames, double fps, const AnimatedSvgOptions& options,
+                   const Style& style, std::string& out, AnimatedSvgStats& stats) {
+    if (style.regions.empty()) return;
+    std::vector<std::uint64_t> order;
+    std::unordered_map<std::uint64_t, std::vector<std::pair<int, const MapRegion*>>> tracks;
+    for (std::size_t f = 0; f < frames.size(); ++f)
+        for (std::size_t r = 0; r < frames[f].regions.size() && r < frames[f].region_tracks.size(); ++r) {
+            auto& track = tracks[frames[f].region_tracks[r]];
+            if (track.empty()) order.push_back(frames[f].region_tracks[r]);
+            track.push_back({int(f), &frames[f].regions[r]});
+        }
+    if (order.empty()) return;
+    const std::size_t total = frames.size();
+    char dur[32];
+    std::snprintf(dur, sizeof dur, "%.6gs", double(total) / fps);
+    out += "<g id=\"fills\" stroke=\"none\" fill-rule=\"nonzero\">\n";
+    for (const std::uint64_t id : order) {
+        const auto& track = tracks[id];
+        const MapRegion& r0 = *track.front().second;
+        const RegionStyle* rs = style.region(region_class_name(r0.cls), r0.k);
+        if (!rs) continue;
+        std::vector<RegionSample> samples;
+        for (const auto& [f, region] : track) {
+            RegionSample s{f, {}};
+            // Loops under a few square pixels (specks, pinholes) are left
+            // out: they would only break the path at every frame they blink.
+            for (auto& loop : erode(region->polygons, rs->erosion)) {
+                double twice_area = 0.0;
+                for (std::size_t q = 0; q < loop.size(); ++q)
+                    twice_area += loop[q].x * loop[(q + 1) % loop.size()].y - loop[(q + 1) % loop.size()].x * loop[q].y;
+                if (loop.size() >= 3 && std::abs(twice_area) >= 2.0 * kMinLoopArea) s.loops.push_back(std::move(loop));
+            }
+            samples.push_back(std::move(s));
+        }
+        for (std::size_t i = 0; i < samples.size();) {
+            std::size_t j = i + 1;
+            while (j < samples.size() && samples[j].frame == samples[j - 1].frame + 1 &&
+                   samples[j].loops.size() == samples[i].loops.size())
+                ++j;
+            if (!samples[i].loops.empty())
+                emit_region(samples, i, j, *rs, r0.cls, total, dur, options.tolerance_px, out, stats);
+            i = j;
+        }
+    }
+    out += "</g>\n";
 }
 
 ParamLoop parameterize(int frame, const DrawnLoop& dl, const AnimatedLoop& al) {
@@ -535,34 +761,13 @@ class Writer {
         const bool always = first == 0 && last + 1 == int(total);
         if (!always) out += " display=\"none\"";
         out += ">";
-        if (!always) {
-            // Shown from the start of its first frame to the end of its last.
-            std::string times = first > 0 ? "0;" + key_time(double(first) / double(total)) : "0";
-            std::string values = first > 0 ? "none;inline" : "inline";
-            if (last + 1 < int(total)) {
-                times += ";" + key_time(double(last + 1) / double(total));
-                values += ";none";
-            }
-            out += "<animate attributeName=\"display\" dur=\"" + std::string(dur) +
-                   "\" repeatCount=\"indefinite\" calcMode=\"discrete\" keyTimes=\"" + times +
-                   "\" values=\"" + values + "\"/>";
-        }
+        if (!always) out += display_animation(first, last, total, dur);
         std::size_t kept = 0;
         for (const auto k : key) kept += k;
         if (kept > 1) {
-            std::string times, values;
-            auto add = [&](double t, std::size_t f) {
-                if (!times.empty()) times += ';', values += ';';
-                times += key_time(t);
-                path_data(values, f);
-            };
-            if (first > 0) add(0.0, 0);
-            for (std::size_t f = 0; f < reduced.size(); ++f)
-                if (key[f]) add(double(rs.frames[f].first->frame) / double(total), f);
-            add(1.0, reduced.size() - 1);
-            out += "<animate attributeName=\"d\" dur=\"" + std::string(dur) +
-                   "\" repeatCount=\"indefinite\" calcMode=\"linear\" keyTimes=\"" + times +
-                   "\" values=\"" + values + "\"/>";
+            std::vector<int> frame_of;
+            for (const auto& fr : rs.frames) frame_of.push_back(fr.first->frame);
+            out += d_animation(key, frame_of, total, dur, path_data);
         }
         if (stroke.dash_on_surface) out += dash_offset_animation(rs, stroke, closed_path, first, dur);
         out += "</path>\n";
@@ -594,6 +799,7 @@ std::string to_animated_svg(const std::vector<AnimationFrame>& frames, double fp
     for (const AnimationFrame& f : frames)
         for (const DrawnContour& c : f.drawing.contours)
             for (const DrawnLoop& loop : c.loops) with_visibility |= !loop.qi.empty();
+    write_regions(frames, fps, options, style, out, st);
     Writer writer(frames, fps, options, style, st);
     std::vector<std::string> hidden(d0.contours.size()), visible(d0.contours.size());
     for (std::size_t c = 0; c < d0.contours.size(); ++c) writer.contour(c, hidden[c], visible[c]);

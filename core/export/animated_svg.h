@@ -6,12 +6,16 @@
 /// Snaxel identities give the correspondence: a snaxel not yet born or
 /// already gone sits on its predecessor along the loop, so every keyframe
 /// has the same commands and browsers interpolate between them.
+/// Region fills animate the same way: one <path> per region track and run
+/// of frames with the same number of loops (a topology event starts the
+/// next), each loop resampled by arc length from an anchor that follows it.
 
 #include <cstdint>
 #include <string>
 #include <vector>
 
 #include "core/export/drawing.h"
+#include "core/planarmap/post_map.h"
 #include "core/style/style.h"
 
 namespace snaxels {
@@ -25,6 +29,10 @@ struct AnimatedLoop {
 struct AnimationFrame {
     Drawing drawing;
     std::vector<std::vector<AnimatedLoop>> loops; ///< [contour][loop], parallel to drawing.contours
+    /// The planar map's regions (when the style fills them) and, parallel,
+    /// the track each belongs to: one region followed from frame to frame.
+    std::vector<MapRegion> regions;
+    std::vector<std::uint64_t> region_tracks;
 };
 
 struct AnimatedSvgOptions {

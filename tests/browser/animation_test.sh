@@ -2,6 +2,8 @@
 # The animated SVG, seeked in Chromium (pauseAnimations, setCurrentTime) to
 # 12 frame times, against the same frames' static SVGs.
 #   animation_test.sh CLI COMPARE OUTDIR NAME MESH FRAMES FPS -- ANIMATE-OPTIONS...
+# With FILLS="#RRGGBB ..." in the environment the fills of those colours are
+# compared too (a style with region fills).
 set -euo pipefail
 cli=$1; compare=$2; outdir=$3; name=$4; mesh=$5; frames=$6; fps=$7; shift 8
 here=$(dirname "$0")
@@ -32,4 +34,5 @@ for ((i = 0; i < shots; i++)); do picks+=($(( i * (frames - 1) / (shots - 1) )))
 bash "$here/render_svg.sh" "$dir/animated.html" "$dir/animated.png" $((cols * cell)) $((rows * cell))
 bash "$here/render_svg.sh" "$dir/static.html" "$dir/static.png" $((cols * cell)) $((rows * cell))
 echo "frames compared: ${picks[*]}"
-QT_QPA_PLATFORM=offscreen "$compare" "$dir/animated.png" "$dir/static.png" $cols $rows $cell 2 0.97
+# shellcheck disable=SC2086 # FILLS is a list of colours
+QT_QPA_PLATFORM=offscreen "$compare" "$dir/animated.png" "$dir/static.png" $cols $rows $cell 2 0.97 ${FILLS:-}

@@ -1,13 +1,15 @@
 // Compares two screenshots cell by cell: each a grid of COLS x ROWS images
 // of CELL pixels. In every cell, at least MIN of the stroke pixels of each
-// image must lie within TOL pixels of a stroke pixel of the other.
-//   compare_grid A.png B.png COLS ROWS CELL [TOL=2] [MIN=0.97]
+// image must lie within TOL pixels of a stroke pixel of the other; each
+// fill colour given likewise (pixels within a small distance of it).
+//   compare_grid A.png B.png COLS ROWS CELL [TOL=2] [MIN=0.97] [#RRGGBB...]
 
 #include <cstdio>
 #include <cstdlib>
 #include <vector>
 
 #include <QGuiApplication>
+#include <QColor>
 #include <QImage>
 
 namespace {
@@ -16,6 +18,18 @@ std::vector<std::uint8_t> strokes(const QImage& img, int x0, int y0, int cell) {
     std::vector<std::uint8_t> s(std::size_t(cell) * cell, 0);
     for (int y = 0; y < cell; ++y)
         for (int x = 0; x < cell; ++x) s[std::size_t(y) * cell + x] = qGray(img.pixel(x0 + x, y0 + y)) < 200;
+    return s;
+}
+
+// Pixels of one fill colour (within a distance that leaves out antialiased edges).
+std::vector<std::uint8_t> fill(const QImage& img, int x0, int y0, int cell, QRgb colour) {
+    std::vector<std::uint8_t> s(std::size_t(cell) * cell, 0);
+    for (int y = 0; y < cell; ++y)
+        for (int x = 0; x < cell; ++x) {
+            const QRgb p = img.pixel(x0 + x, y0 + y);
+            const int dr = qRed(p) - qRed(colour), dg = qGreen(p) - qGreen(colour), db = qBlue(p) - qBlue(colour);
+            s[std::size_t(y) * cell + x] = dr * dr + dg * dg + db * db < 24 * 24;
+        }
     return s;
 }
 
@@ -42,7 +56,7 @@ double covered(const std::vector<std::uint8_t>& a, const std::vector<std::uint8_
 
 int main(int argc, char** argv) {
     if (argc < 6) {
-        std::fprintf(stderr, "usage: compare_grid A.png B.png COLS ROWS CELL [TOL] [MIN]\n");
+        std::fprintf(stderr, "usage: compare_grid A.png B.png COLS ROWS CELL [TOL] [MIN] [#RRGGBB...]\n");
         return 2;
     }
     QGuiApplication app(argc, argv);
@@ -56,6 +70,15 @@ int main(int argc, char** argv) {
         std::fprintf(stderr, "FAIL: screenshots missing or too small\n");
         return 1;
     }
+    std::vector<QRgb> fills;
+    for (int i = 8; i < argc; ++i) {
+        const QColor colour(argv[i]);
+        if (!colour.isValid()) {
+            std::fprintf(stderr, "not a colour: %s\n", argv[i]);
+            return 2;
+        }
+        fills.push_back(colour.rgb());
+    }
     int failures = 0;
     for (int r = 0; r < rows; ++r)
         for (int c = 0; c < cols; ++c) {
@@ -66,6 +89,15 @@ int main(int argc, char** argv) {
             std::printf("cell %d: %ld / %ld stroke pixels, %.4f / %.4f within %d px%s\n", r * cols + c, na, nb, ab,
                         ba, tol, ok ? "" : "  FAIL");
             failures += !ok;
+            for (const QRgb colour : fills) {
+                const auto fa = fill(a, c * cell, r * cell, cell, colour), fb = fill(b, c * cell, r * cell, cell, colour);
+                const double fab = covered(fa, fb, cell, tol, na), fba = covered(fb, fa, cell, tol, nb);
+                // A colour both images lack (a fill out of view) agrees trivially.
+                const bool fill_ok = (na == 0 && nb == 0) || (na > 0 && nb > 0 && fab >= min && fba >= min);
+                std::printf("cell %d: %ld / %ld pixels of #%06x, %.4f / %.4f within %d px%s\n", r * cols + c, na, nb,
+                            unsigned(colour & 0xffffff), fab, fba, tol, fill_ok ? "" : "  FAIL");
+                failures += !fill_ok;
+            }
         }
     return failures ? 1 : 0;
 }
