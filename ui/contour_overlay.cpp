@@ -106,14 +106,7 @@ OverlayResult compute_overlay(const LoadedMesh& mesh, ContourScene& scene, const
         out.error = QString::fromStdString(e.what());
         return out;
     }
-    StillJob job;
-    job.camera = camera;
-    job.light = light ? *light : style.light ? *style.light : default_light(camera);
-    job.kinds.clear();
-    for (const ContourStyle& cs : style.contours) job.kinds.push_back(cs.spec);
-    if (job.kinds.empty()) job.kinds.push_back({});
-    job.style = style;
-    job.engine.check_invariants = false;
+    const StillJob job = make_still_job(style, camera, light);
     StillOutput still = render_still(mesh, scene.topology, scene.rays.get(), job);
     out.light = job.light;
 

@@ -109,13 +109,7 @@ int run_animate(const std::vector<std::string>& argv) {
     if (scene.check) job.engine.check_invariants = true;
     job.svg = svg_options;
     job.frames_dir = frames_dir;
-    Progress progress(0, ::isatty(2));
-    job.progress = [&](int done, int total) {
-        progress.set_total(total);
-        progress.update(done);
-    };
-    const AnimationOutput result = run_animation(loaded, mesh_path, job);
-    progress.finish();
+    const AnimationOutput result = run_animation_with_progress(loaded, mesh_path, job);
     write_file_atomically(*output, result.svg);
     if (!events_out.empty()) write_file_atomically(events_out, result.events.dump(1) + "\n");
     const double total_ms =

@@ -49,13 +49,7 @@ int run_render(const std::vector<std::string>& argv) {
     AnimationJob job = make_animation_job(style, project.animation, orbit_base_camera(view), project.light);
 
     if (!args.flag("still")) {
-        Progress progress(0, ::isatty(2));
-        job.progress = [&](int done, int total) {
-            progress.set_total(total);
-            progress.update(done);
-        };
-        const AnimationOutput result = run_animation(loaded, mesh_path, job);
-        progress.finish();
+        const AnimationOutput result = run_animation_with_progress(loaded, mesh_path, job);
         write_file_atomically(*output, result.svg);
         std::printf("%s: %d frames at %g fps, %zu paths, %zu bytes\n", output->c_str(), result.frames,
                     project.animation.fps, result.stats.paths, result.svg.size());

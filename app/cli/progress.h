@@ -1,7 +1,11 @@
 #pragma once
 // A frame counter on standard error for long runs (only on a terminal).
 
+#include <unistd.h>
+
 #include <cstdio>
+
+#include "core/animation/pipeline.h"
 
 namespace snaxels::cli {
 
@@ -24,5 +28,17 @@ class Progress {
     int total_;
     bool enabled_;
 };
+
+/// Runs @p job with a frame counter on standard error (when it is a terminal).
+inline AnimationOutput run_animation_with_progress(const LoadedMesh& mesh, const std::string& mesh_path, AnimationJob job) {
+    Progress progress(0, ::isatty(2));
+    job.progress = [&](int done, int total) {
+        progress.set_total(total);
+        progress.update(done);
+    };
+    AnimationOutput result = run_animation(mesh, mesh_path, job);
+    progress.finish();
+    return result;
+}
 
 } // namespace snaxels::cli

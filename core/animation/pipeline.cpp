@@ -6,6 +6,7 @@
 #include <memory>
 
 #include "core/error.h"
+#include "core/animation/still.h"
 #include "core/export/dash_phase.h"
 #include "core/export/svg.h"
 #include "core/util/atomic_file.h"
@@ -20,10 +21,8 @@ AnimationJob make_animation_job(const Style& style, const AnimationSpec& animati
     AnimationJob job;
     job.animation = animation;
     job.camera = camera;
-    job.light = light ? *light : style.light ? *style.light : default_light(camera);
-    job.kinds.clear();
-    for (const ContourStyle& cs : style.contours) job.kinds.push_back(cs.spec);
-    if (job.kinds.empty()) job.kinds.push_back({});
+    job.light = job_light(style, camera, light);
+    job.kinds = style_kinds(style);
     job.style = style;
     job.engine.check_invariants = false;
     return job;

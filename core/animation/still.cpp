@@ -8,6 +8,27 @@
 
 namespace snaxels {
 
+Light job_light(const Style& style, const Camera& camera, const std::optional<Light>& light) {
+    return light ? *light : style.light ? *style.light : default_light(camera);
+}
+
+std::vector<ContourSpec> style_kinds(const Style& style) {
+    std::vector<ContourSpec> kinds;
+    for (const ContourStyle& cs : style.contours) kinds.push_back(cs.spec);
+    if (kinds.empty()) kinds.push_back({});
+    return kinds;
+}
+
+StillJob make_still_job(const Style& style, const Camera& camera, const std::optional<Light>& light) {
+    StillJob job;
+    job.camera = camera;
+    job.light = job_light(style, camera, light);
+    job.kinds = style_kinds(style);
+    job.style = style;
+    job.engine.check_invariants = false;
+    return job;
+}
+
 StillOutput render_still(const LoadedMesh& mesh, const MeshTopology& topology, const RayScene* rays,
                          const StillJob& job) {
     StillOutput out;

@@ -160,6 +160,28 @@ std::string d_animation(const std::vector<std::uint8_t>& key, const std::vector<
            "\"/>";
 }
 
+/// The rest of a `<path` element that animates: its first shape as d, its
+/// display animation unless it shows all along (samples are frames
+/// @p frame_of, up to frame @p last of @p total) and the d animation
+/// through the kept keyframes @p key; leaves the element open for more
+/// children. Returns the keyframes kept.
+template <class PathData>
+std::size_t append_path_animation(std::string& out, PathData&& path_data, const std::vector<std::uint8_t>& key,
+                                  const std::vector<int>& frame_of, int last, std::size_t total, const char* dur) {
+    const int first = frame_of.front();
+    out += " d=\"";
+    path_data(out, 0);
+    out += "\"";
+    const bool always = first == 0 && last + 1 == int(total);
+    if (!always) out += " display=\"none\"";
+    out += ">";
+    if (!always) out += display_animation(first, last, total, dur);
+    std::size_t kept = 0;
+    for (const auto k : key) kept += k;
+    if (kept > 1) out += d_animation(key, frame_of, total, dur, path_data);
+    return kept;
+}
+
 // --- region fills ----------------------------------------------------------
 
 /// Arc-length resampling of a closed loop into @p n points starting at arc
@@ -272,27 +294,16 @@ void emit_region(const std::vector<RegionSample>& samples, std::size_t i, std::s
             svg::append_path_data(to, kept[f][l], true);
         }
     };
-    const int first = samples[i].frame, last = samples[j - 1].frame;
+    const int last = samples[j - 1].frame;
     out += "<path class=\"region\" data-class=\"" + std::string(region_class_name(cls)) + "\" fill=\"" + rs.fill + "\"";
     if (rs.opacity < 1.0) {
         out += " fill-opacity=\"";
         svg::append_number(out, rs.opacity);
         out += "\"";
     }
-    out += " d=\"";
-    path_data(out, 0);
-    out += "\"";
-    const bool always = first == 0 && last + 1 == int(total);
-    if (!always) out += " display=\"none\"";
-    out += ">";
-    if (!always) out += display_animation(first, last, total, dur);
-    std::size_t keyframes = 0;
-    for (const auto k : key) keyframes += k;
-    if (keyframes > 1) {
-        std::vector<int> frame_of;
-        for (std::size_t f = i; f < j; ++f) frame_of.push_back(samples[f].frame);
-        out += d_animation(key, frame_of, total, dur, path_data);
-    }
+    std::vector<int> frame_of;
+    for (std::size_t f = i; f < j; ++f) frame_of.push_back(samples[f].frame);
+    const std::size_t keyframes = append_path_animation(out, path_data, key, frame_of, last, total, dur);
     out += "</path>\n";
     ++stats.paths;
     stats.keyframes += keyframes;
@@ -755,20 +766,10 @@ class Writer {
         char dur[32];
         std::snprintf(dur, sizeof dur, "%.6gs", double(total) / fps_);
 
-        out += "<path d=\"";
-        path_data(out, 0);
-        out += "\"";
-        const bool always = first == 0 && last + 1 == int(total);
-        if (!always) out += " display=\"none\"";
-        out += ">";
-        if (!always) out += display_animation(first, last, total, dur);
-        std::size_t kept = 0;
-        for (const auto k : key) kept += k;
-        if (kept > 1) {
-            std::vector<int> frame_of;
-            for (const auto& fr : rs.frames) frame_of.push_back(fr.first->frame);
-            out += d_animation(key, frame_of, total, dur, path_data);
-        }
+        out += "<path";
+        std::vector<int> frame_of;
+        for (const auto& fr : rs.frames) frame_of.push_back(fr.first->frame);
+        const std::size_t kept = append_path_animation(out, path_data, key, frame_of, last, total, dur);
         if (stroke.dash_on_surface) out += dash_offset_animation(rs, stroke, closed_path, first, dur);
         out += "</path>\n";
         ++stats_.paths;

@@ -52,6 +52,17 @@ QByteArray readAll(const QString& path) {
     return f.open(QIODevice::ReadOnly) ? f.readAll() : QByteArray();
 }
 
+/// Shows @p window at @p size and loads @p mesh into it; true once its
+/// first contours are drawn.
+bool showWithMesh(MainWindow& window, const QString& mesh, QSize size = {1000, 700}) {
+    window.resize(size);
+    window.show();
+    if (!QTest::qWaitForWindowExposed(&window)) return false;
+    QSignalSpy contours(&window, &MainWindow::contoursUpdated);
+    window.openMesh(mesh);
+    return contours.wait(60000);
+}
+
 QImage paneImage(MainWindow& window) {
     return window.svgPane()->grab().toImage().convertToFormat(QImage::Format_RGB32);
 }
@@ -358,12 +369,8 @@ class TestMainWindow : public QObject {
     void undoesEditsAndAsksBeforeLosingThem() {
         QTemporaryDir dir;
         MainWindow window;
-        window.resize(1000, 700);
-        window.show();
-        QVERIFY(QTest::qWaitForWindowExposed(&window));
+        QVERIFY(showWithMesh(window, QString(SNAXELS_TEST_ASSETS) + "/spot.obj"));
         QSignalSpy contours(&window, &MainWindow::contoursUpdated);
-        window.openMesh(QString(SNAXELS_TEST_ASSETS) + "/spot.obj");
-        QVERIFY(contours.wait(60000));
         QTest::qWait(400);
         QCOMPARE(window.undoStack()->count(), 0); // loading is not an edit
         const QByteArray original = window.currentSvg();
@@ -486,12 +493,8 @@ class TestMainWindow : public QObject {
     void badInputLosesNothing() {
         QTemporaryDir dir;
         MainWindow window;
-        window.resize(1000, 700);
-        window.show();
-        QVERIFY(QTest::qWaitForWindowExposed(&window));
+        QVERIFY(showWithMesh(window, QString(SNAXELS_TEST_ASSETS) + "/spot.obj"));
         QSignalSpy contours(&window, &MainWindow::contoursUpdated);
-        window.openMesh(QString(SNAXELS_TEST_ASSETS) + "/spot.obj");
-        QVERIFY(contours.wait(60000));
         window.turnLight(0.3, 0.0);
         QTest::qWait(300);
         const auto* mesh = window.mesh();
