@@ -128,8 +128,10 @@ SnaxelMap build_snaxel_map(const SnaxelEngine& engine, const SnaxelMapInput& in,
             label[i] = kAway;
             return;
         }
-        if (rays.occluded(sampler.vertex_ray(v))) {
-            label[i] = kOccluded;
+        if (rays.occluded(sampler.vertex_ray(v, visual.vertex_f[i] < 0.0))) {
+            // Hidden; one turned away is hidden by its own fold as often as
+            // not, and faces past the contour may still be seen whole.
+            label[i] = visual.vertex_f[i] < 0.0 ? kAway : kOccluded;
             return;
         }
         nl[i] = glm::dot(topo.normals[i], light.to_light(topo.positions[i]));
@@ -149,23 +151,6 @@ SnaxelMap build_snaxel_map(const SnaxelEngine& engine, const SnaxelMapInput& in,
         if (in.gleam && in.gleam->vertex_f[i] >= 0.0) cls = highlight;
         label[i] = cls;
     }, 256);
-
-    // A vertex turned away next to one turned toward the viewer is where
-    // rays graze the contour's fold: only its front neighbour is trusted.
-    {
-        std::vector<int> settled = label;
-        for (std::int32_t v = 0; v < V; ++v) {
-            if (label[std::size_t(v)] < kBack) continue;
-            for (std::int32_t i = topo.ring_start[v]; i < topo.ring_start[v + 1]; ++i) {
-                const int l = label[std::size_t(topo.ring[i])];
-                if (l >= 0 && l < kBack) {
-                    settled[std::size_t(v)] = kOccluded;
-                    break;
-                }
-            }
-        }
-        label = std::move(settled);
-    }
 
     // Regions: grown from a seed over edges of equal label; every vertex no
     // region reached seeds a new one (rule 3: same kinds merge). A front
@@ -199,6 +184,21 @@ SnaxelMap build_snaxel_map(const SnaxelEngine& engine, const SnaxelMapInput& in,
             }
         }
     };
+    // A vertex's share of the image: a third of its faces' projected areas
+    // (each face meets two of the vertex's ring edges).
+    auto vertex_area = [&](std::int32_t v) {
+        double area = 0.0;
+        for (std::int32_t i = topo.ring_start[v]; i < topo.ring_start[v + 1]; ++i)
+            for (const std::int32_t f : topo.edge_faces[std::size_t(topo.ring_edge[i])]) {
+                if (f == MeshTopology::kNone) continue;
+                const auto& fv = topo.face_vertices[std::size_t(f)];
+                const glm::dvec2 p0 = projection.project(topo.positions[std::size_t(fv[0])]);
+                const glm::dvec2 p1 = projection.project(topo.positions[std::size_t(fv[1])]);
+                const glm::dvec2 p2 = projection.project(topo.positions[std::size_t(fv[2])]);
+                area += std::abs((p1.x - p0.x) * (p2.y - p0.y) - (p2.x - p0.x) * (p1.y - p0.y)) / 12.0;
+            }
+        return area;
+    };
     grow();
     std::size_t seeds = comp_label.size();
     for (int pass = 0; pass < 3; ++pass) { // dissolving can leave a new fleck behind
@@ -206,7 +206,13 @@ SnaxelMap build_snaxel_map(const SnaxelEngine& engine, const SnaxelMapInput& in,
         std::vector<int> size(comp_label.size(), 0);
         for (const std::int32_t r : comp)
             if (r >= 0) ++size[std::size_t(r)];
-        for (std::size_t r = 0; r < size.size(); ++r) supported[r] = size[r] >= in.min_unsupported_vertices;
+        std::vector<double> image_area(comp_label.size(), 0.0);
+        for (std::int32_t v = 0; v < V; ++v) {
+            const std::int32_t r = comp[std::size_t(v)];
+            if (r >= 0 && size[std::size_t(r)] < in.min_unsupported_vertices) image_area[std::size_t(r)] += vertex_area(v);
+        }
+        for (std::size_t r = 0; r < size.size(); ++r)
+            supported[r] = size[r] >= in.min_unsupported_vertices || image_area[r] >= in.min_fleck_area_px;
         for (std::int32_t v = 0; v < V; ++v) {
             const std::int32_t r = comp[std::size_t(v)];
             if (r < 0 || supported[std::size_t(r)]) continue;
@@ -464,13 +470,20 @@ SnaxelMap build_snaxel_map(const SnaxelEngine& engine, const SnaxelMapInput& in,
     // normals (at creases, where the normals are averaged) is hidden, yet
     // lies inside its region: its image would cancel the faces it folds
     // over. Its triangle, walked the other way, cancels it back.
-    for (std::int32_t f = 0; f < std::int32_t(topo.n_faces()); ++f) {
-        const auto& fv = topo.face_vertices[std::size_t(f)];
-        const std::int32_t r = comp[std::size_t(fv[0])];
-        if (r < 0 || comp[std::size_t(fv[1])] != r || comp[std::size_t(fv[2])] != r || comp_label[std::size_t(r)] >= kBack)
-            continue;
-        if (facing(f)) continue;
-        for (int k = 0; k < 3; ++k) steps.emplace_back(r, fv[std::size_t((k + 1) % 3)], fv[std::size_t(k)]);
+    {
+        std::vector<char> hidden_inside(topo.n_faces(), 0);
+        parallel_for(topo.n_faces(), [&](std::size_t f) {
+            const auto& fv = topo.face_vertices[f];
+            const std::int32_t r = comp[std::size_t(fv[0])];
+            hidden_inside[f] = r >= 0 && comp[std::size_t(fv[1])] == r && comp[std::size_t(fv[2])] == r &&
+                               comp_label[std::size_t(r)] < kBack && !facing(std::int32_t(f));
+        }, 4096);
+        for (std::size_t f = 0; f < topo.n_faces(); ++f) {
+            if (!hidden_inside[f]) continue;
+            const auto& fv = topo.face_vertices[f];
+            const std::int32_t r = comp[std::size_t(fv[0])];
+            for (int k = 0; k < 3; ++k) steps.emplace_back(r, fv[std::size_t((k + 1) % 3)], fv[std::size_t(k)]);
+        }
     }
     // Past a crease the mesh's outline can lie a few faces beyond the
     // contour: seen faces turned to the viewer whose corners are all turned

@@ -48,8 +48,12 @@ struct SnaxelMapInput {
     double tolerance_px = 0.25;
     int bisection_steps = 10;
     /// A region without an interior vertex (one whose whole ring shares its
-    /// label) is dissolved if it has fewer vertices than this.
+    /// label) is dissolved if it has fewer vertices than this and covers
+    /// less of the image than min_fleck_area_px (its vertices' share of
+    /// their faces' projected area): on a coarse mesh a few vertices can
+    /// span a large, real region.
     int min_unsupported_vertices = 6;
+    double min_fleck_area_px = 16.0;
 };
 
 struct SnaxelMapStats {

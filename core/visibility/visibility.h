@@ -49,8 +49,10 @@ class VisibilitySampler {
     VisibilityRay snaxel_ray(const Snaxel& s, const glm::dvec3& p, const glm::dvec3& n) const;
     /// The ray from a point inside face @p face: the faces around its corners are ignored.
     VisibilityRay face_ray(std::int32_t face, const glm::dvec3& p, const glm::dvec3& n) const;
-    /// The ray from vertex @p v: the faces around it are ignored.
-    VisibilityRay vertex_ray(std::int32_t v) const;
+    /// The ray from vertex @p v: the faces around it are ignored. It starts
+    /// off the surface on its normal's side, or (@p back_side) the other:
+    /// a vertex turned away is seen, if at all, from its back.
+    VisibilityRay vertex_ray(std::int32_t v, bool back_side = false) const;
     /// The ray from the point at @p t along edge @p e (0 at its first
     /// vertex): the faces around both ends are ignored.
     VisibilityRay edge_ray(std::int32_t e, double t) const;

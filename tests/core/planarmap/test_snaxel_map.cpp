@@ -64,12 +64,14 @@ Light random_light(std::mt19937& rng, const Camera& cam) {
 
 // Rasterized at 512 x 512, the snaxel-defined map's class agrees with the
 // class found directly at the pixel (ray cast, shading at the hit) on at
-// least 98% of the pixels the mesh covers. Fandisk's sharp creases, shaded
-// with normals averaged across them, put its silhouette strips in another
-// class than their region on some views: it is held to 97.5%.
+// least 98% of the pixels the mesh covers, on the dense meshes. A map made
+// of the mesh's vertices resolves no finer than its faces: the teapot's
+// inside, seen only through the thin gap under its lid between vertices,
+// and Suzanne (505 vertices, faces 20-40 px across here) are held to what
+// their tessellation allows.
 TEST(SnaxelMap, AgreesWithRayCastClassesPerPixel) {
     constexpr int kSize = 512;
-    for (const std::string file : {"spot.obj", "horse.ply", "fandisk.obj", "stanford-bunny.obj"}) {
+    for (const std::string file : {"suzanne.obj", "teapot.obj", "spot.obj", "horse.ply", "fandisk.obj", "stanford-bunny.obj"}) {
         const Scene s(file);
         const SnaxelEngine engine(s.topo);
         const RayScene rays(s.topo);
@@ -105,7 +107,8 @@ TEST(SnaxelMap, AgreesWithRayCastClassesPerPixel) {
             std::printf("%s view %d: %zu regions, %zu covered pixels, %.2f%% agree, %.2f%% outside every region, %.1f ms\n",
                         file.c_str(), view, m.snaxel.regions.size(), covered, 100.0 * fraction,
                         100.0 * double(uncovered) / double(covered), m.snaxel.stats.ms);
-            EXPECT_GE(fraction, file == "fandisk.obj" ? 0.975 : 0.98) << file << " view " << view;
+            const double least = file == "suzanne.obj" ? 0.93 : file == "teapot.obj" ? 0.97 : 0.98;
+            EXPECT_GE(fraction, least) << file << " view " << view;
             if (const char* dir = getenv("SNAXELS_DEBUG_MAP_DIR")) {
                 FILE* out = std::fopen((std::string(dir) + "/" + file + "-" + std::to_string(view) + ".ppm").c_str(), "wb");
                 std::fprintf(out, "P6 %d %d 255\n", kSize, kSize);
