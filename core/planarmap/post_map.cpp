@@ -51,14 +51,43 @@ double area(const Paths& paths) {
     return std::abs(a) / (kScale * kScale);
 }
 
+// The region of the visual contour every vertex lies in: the engine's own
+// labels, or (for tracked contours, which carry none) the connected sets of
+// equal sign of f.
+std::vector<std::int32_t> patch_labels(const MeshTopology& topo, const ContourResult& visual) {
+    if (visual.vertex_region.size() == topo.n_vertices()) return visual.vertex_region;
+    std::vector<std::int32_t> label(topo.n_vertices(), -1);
+    std::vector<std::int32_t> stack;
+    std::int32_t next = 0;
+    for (std::int32_t seed = 0; seed < std::int32_t(topo.n_vertices()); ++seed) {
+        if (label[std::size_t(seed)] >= 0) continue;
+        const bool positive = visual.vertex_f[std::size_t(seed)] >= 0.0;
+        label[std::size_t(seed)] = next;
+        stack.push_back(seed);
+        while (!stack.empty()) {
+            const std::int32_t v = stack.back();
+            stack.pop_back();
+            for (std::int32_t i = topo.ring_start[v]; i < topo.ring_start[v + 1]; ++i) {
+                const std::int32_t w = topo.ring[i];
+                if (label[std::size_t(w)] < 0 && (visual.vertex_f[std::size_t(w)] >= 0.0) == positive) {
+                    label[std::size_t(w)] = next;
+                    stack.push_back(w);
+                }
+            }
+        }
+        ++next;
+    }
+    return label;
+}
+
 // The projected loops of each positive region of `result`, grouped by the
 // visual patch the region lies in (its vertices face the viewer).
 std::map<std::int32_t, Paths> regions_by_patch(const SnaxelEngine& engine, const ContourResult& result,
-                                                const ContourResult& visual, const ImageProjection& projection) {
+                                                const std::vector<std::int32_t>& patch_of, const ImageProjection& projection) {
     std::map<std::int32_t, std::vector<std::vector<glm::dvec2>>> loops;
     for (const FrontLoop& loop : result.fronts.loops) {
         const Snaxel& first = result.fronts.snaxels[loop.first];
-        const std::int32_t patch = visual.vertex_region[first.inside];
+        const std::int32_t patch = patch_of[std::size_t(first.inside)];
         std::vector<glm::dvec2> poly;
         result.fronts.for_each_in_loop(loop, [&](std::int32_t s) { poly.push_back(projection.project(engine.position(result.fronts.snaxels[s]))); });
         loops[patch].push_back(std::move(poly));
@@ -84,14 +113,15 @@ std::vector<MapRegion> build_post_map(const SnaxelEngine& engine, const PostMapI
                                       const ImageProjection& projection, const Camera& camera, const Light& light) {
     std::vector<MapRegion> regions;
     const ContourResult& visual = *in.visual;
-    const std::map<std::int32_t, Paths> patches = regions_by_patch(engine, visual, visual, projection);
+    const std::vector<std::int32_t> patch_of = patch_labels(engine.topology(), visual);
+    const std::map<std::int32_t, Paths> patches = regions_by_patch(engine, visual, patch_of, projection);
     // Nearest first, by the mean depth of each patch's contour.
     std::vector<std::pair<double, std::int32_t>> order;
     for (const auto& [patch, paths] : patches) {
         double depth = 0.0;
         std::size_t n = 0;
         for (const FrontLoop& loop : visual.fronts.loops) {
-            if (visual.vertex_region[visual.fronts.snaxels[loop.first].inside] != patch) continue;
+            if (patch_of[std::size_t(visual.fronts.snaxels[loop.first].inside)] != patch) continue;
             visual.fronts.for_each_in_loop(loop, [&](std::int32_t s) {
                 const glm::dvec3 p = engine.position(visual.fronts.snaxels[s]);
                 depth += camera.orthographic() ? glm::dot(p, camera.forward()) : glm::length(p - camera.eye);
@@ -103,10 +133,10 @@ std::vector<MapRegion> build_post_map(const SnaxelEngine& engine, const PostMapI
     std::sort(order.begin(), order.end());
 
     std::map<std::int32_t, Paths> lit, highlight;
-    if (in.shadow) lit = regions_by_patch(engine, *in.shadow, visual, projection);
+    if (in.shadow) lit = regions_by_patch(engine, *in.shadow, patch_of, projection);
     std::vector<std::map<std::int32_t, Paths>> bands;
-    for (const ContourResult* iso : in.isophotes) bands.push_back(regions_by_patch(engine, *iso, visual, projection));
-    if (in.gleam) highlight = regions_by_patch(engine, *in.gleam, visual, projection);
+    for (const ContourResult* iso : in.isophotes) bands.push_back(regions_by_patch(engine, *iso, patch_of, projection));
+    if (in.gleam) highlight = regions_by_patch(engine, *in.gleam, patch_of, projection);
     auto of = [](const std::map<std::int32_t, Paths>& m, std::int32_t patch) {
         const auto it = m.find(patch);
         return it == m.end() ? Paths{} : it->second;
