@@ -31,18 +31,26 @@ std::vector<std::uint64_t> RegionTracker::step(const PlanarMap& map) {
             const std::size_t r = std::size_t(key >> 32), p = std::size_t(key & 0xffffffffu);
             if (r < now.size() && p < prev_.size() && compatible(r, p)) candidates.emplace_back(-double(count), r, p);
         }
-    } else {
-        for (std::size_t r = 0; r < now.size(); ++r)
-            for (std::size_t p = 0; p < prev_.size(); ++p) {
-                if (!compatible(r, p)) continue;
-                const double d = glm::length(now[r].centre - prev_[p].centre);
-                // A region moves less than its own size between frames.
-                if (d <= std::max(8.0, 0.5 * std::sqrt(std::max(now[r].area, prev_[p].area)))) candidates.emplace_back(d, r, p);
-            }
     }
     std::sort(candidates.begin(), candidates.end());
     std::vector<std::uint64_t> tracks(now.size(), 0);
     std::vector<char> assigned(now.size(), 0), taken(prev_.size(), 0);
+    for (const auto& [score, r, p] : candidates) {
+        if (assigned[r] || taken[p]) continue;
+        tracks[r] = prev_tracks_[p];
+        assigned[r] = taken[p] = 1;
+    }
+    // The rest (the post-processed map's regions, or regions that hold no
+    // vertex) continue the nearest region of their class left over.
+    candidates.clear();
+    for (std::size_t r = 0; r < now.size(); ++r)
+        for (std::size_t p = 0; p < prev_.size() && !assigned[r]; ++p) {
+            if (taken[p] || !compatible(r, p)) continue;
+            const double d = glm::length(now[r].centre - prev_[p].centre);
+            // A region moves less than its own size between frames.
+            if (d <= std::max(8.0, 0.5 * std::sqrt(std::max(now[r].area, prev_[p].area)))) candidates.emplace_back(d, r, p);
+        }
+    std::sort(candidates.begin(), candidates.end());
     for (const auto& [score, r, p] : candidates) {
         if (assigned[r] || taken[p]) continue;
         tracks[r] = prev_tracks_[p];

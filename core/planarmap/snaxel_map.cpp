@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <chrono>
+#include <mutex>
+#include <thread>
 #include <cmath>
 #include <tuple>
 #include <unordered_map>
@@ -11,6 +13,30 @@
 
 namespace snaxels {
 namespace {
+
+/// One step of a region's outline, from one point to the next (point ids:
+/// vertices, then edge points, junctions and crossings), sorted by region
+/// and start.
+struct Step {
+    std::uint64_t key = 0; ///< region << 40 | from
+    std::int64_t to = 0;
+    Step() = default;
+    Step(std::int32_t region, std::int64_t from, std::int64_t next)
+        : key((std::uint64_t(region) << 40) | std::uint64_t(from)), to(next) {}
+    std::int32_t region() const { return std::int32_t(key >> 40); }
+    std::int64_t from() const { return std::int64_t(key & ((std::uint64_t(1) << 40) - 1)); }
+    bool operator<(const Step& o) const { return key < o.key || (key == o.key && to < o.to); }
+    bool operator==(const Step& o) const { return key == o.key && to == o.to; }
+};
+
+/// A point of a face's part past the contour: its id, the face edge the
+/// part's boundary follows from it (-1: across the face), where it is and N.L there.
+struct RimPoint {
+    std::int64_t id = 0;
+    int along = -1;
+    glm::dvec3 p{0.0};
+    double nl = 0.0;
+};
 
 constexpr int kOccluded = -1; // behind a nearer surface
 constexpr int kAway = -2;     // turned away from the viewer, not seen (N.V < 0)
@@ -373,14 +399,90 @@ SnaxelMap build_snaxel_map(const SnaxelEngine& engine, const SnaxelMapInput& in,
     // Its steps across the face, or along a mesh boundary, are the region's
     // outline; steps along interior edges are shared with the next face.
     const std::int64_t junction_base = std::int64_t(V) + E;
-    std::unordered_map<std::int32_t, glm::dvec3> junction;
-    std::vector<std::tuple<std::int32_t, std::int64_t, std::int64_t>> steps; // region, from, to
+    std::vector<Step> steps;
     std::vector<std::pair<std::int32_t, std::int32_t>> rim_faces; // (face, region) taken past the contour
     auto facing = [&](std::int32_t f) {
         const auto& fv = topo.face_vertices[std::size_t(f)];
         const glm::dvec3 &p0 = topo.positions[std::size_t(fv[0])], &p1 = topo.positions[std::size_t(fv[1])],
                          &p2 = topo.positions[std::size_t(fv[2])];
         return glm::dot(glm::cross(p1 - p0, p2 - p0), camera.to_viewer((p0 + p1 + p2) / 3.0)) > 0.0;
+    };
+    // Points past the contour: where N.L crosses a level on a face edge (one
+    // per edge and level, shared by both faces) or across a face.
+    const std::int64_t level_base = junction_base + std::int64_t(topo.n_faces());
+    const std::int64_t across_base = level_base + std::int64_t(E) * std::int64_t(levels.size());
+    std::unordered_map<std::int64_t, glm::dvec3> extra_point;
+    std::unordered_map<std::int64_t, double> extra_nl;
+    // N.L of every vertex (those turned away were not lit above).
+    for (std::int32_t v = 0; v < V; ++v)
+        if (label[std::size_t(v)] == kAway) nl[std::size_t(v)] = glm::dot(topo.normals[std::size_t(v)], light.to_light(topo.positions[std::size_t(v)]));
+    auto class_of = [&](double value) {
+        int cls = in.shadow && value < 0.0 ? 0 : 1;
+        for (int k = 0; k < bands; ++k)
+            if (cls != 0 && value >= levels[std::size_t(k + 1)]) cls = 2 + k;
+        return cls;
+    };
+    std::unordered_map<int, std::int32_t> outline_regions; // class -> region of the strips past the contour
+    auto outline_region = [&](int cls) {
+        const auto it = outline_regions.find(cls);
+        if (it != outline_regions.end()) return it->second;
+        const auto id = std::int32_t(comp_label.size());
+        comp_label.push_back(cls);
+        outline_regions[cls] = id;
+        return id;
+    };
+    auto split_rim = [&](const std::vector<RimPoint>& poly, std::int32_t f, std::size_t level, double value,
+                         const std::array<std::int32_t, 3>& fe) {
+        std::vector<RimPoint> below, above;
+        const std::size_t n = poly.size();
+        for (std::size_t k = 0; k < n; ++k) {
+            const RimPoint& a = poly[k];
+            const RimPoint& b = poly[(k + 1) % n];
+            (a.nl < value ? below : above).push_back(a);
+            if ((a.nl < value) == (b.nl < value)) continue;
+            RimPoint q;
+            q.along = a.along;
+            if (a.along >= 0) {
+                // On face edge a.along: the edge's own root, the same for both faces.
+                const std::int32_t e = fe[std::size_t(a.along)];
+                const std::int32_t u = topo.edge_vertices[e][0], w = topo.edge_vertices[e][1];
+                const double t = linear_root(nl[std::size_t(u)] - value, nl[std::size_t(w)] - value);
+                q.id = level_base + std::int64_t(e) * std::int64_t(levels.size()) + std::int64_t(level);
+                q.p = glm::mix(topo.positions[std::size_t(u)], topo.positions[std::size_t(w)], t);
+            } else {
+                const double t = std::clamp((value - a.nl) / (b.nl - a.nl), 0.0, 1.0);
+                q.id = across_base + (std::int64_t(f) * std::int64_t(levels.size()) + std::int64_t(level)) * 8 + std::int64_t(k);
+                q.p = glm::mix(a.p, b.p, t);
+            }
+            q.nl = value;
+            extra_point[q.id] = q.p;
+            below.push_back(q);
+            above.push_back(q);
+        }
+        return std::make_pair(std::move(below), std::move(above));
+    };
+    auto point_of = [&](std::int64_t id) -> glm::dvec3 {
+        if (id < V) return topo.positions[std::size_t(id)];
+        if (id < junction_base) return edge_point[std::size_t(id - V)];
+        if (id < std::int64_t(V) + E + std::int64_t(topo.n_faces())) {
+            const auto& fe = topo.face_edges[std::size_t(id - junction_base)];
+            return (edge_point[std::size_t(fe[0])] + edge_point[std::size_t(fe[1])] + edge_point[std::size_t(fe[2])]) / 3.0;
+        }
+        return extra_point.at(id);
+    };
+    // N.L at a point of a piece: at a vertex its own, on an edge
+    // interpolated along it, at a junction the mean of its face's edge points'.
+    auto nl_on_edge = [&](std::int32_t e) {
+        const std::int32_t u = topo.edge_vertices[e][0], w = topo.edge_vertices[e][1];
+        const double len = glm::length(topo.positions[std::size_t(w)] - topo.positions[std::size_t(u)]);
+        const double t = len > 0.0 ? glm::length(edge_point[std::size_t(e)] - topo.positions[std::size_t(u)]) / len : 0.5;
+        return glm::mix(nl[std::size_t(u)], nl[std::size_t(w)], std::clamp(t, 0.0, 1.0));
+    };
+    auto nl_of = [&](std::int64_t id) -> double {
+        if (id < V) return nl[std::size_t(id)];
+        if (id < junction_base) return nl_on_edge(std::int32_t(id - V));
+        const auto& fe = topo.face_edges[std::size_t(id - junction_base)];
+        return (nl_on_edge(fe[0]) + nl_on_edge(fe[1]) + nl_on_edge(fe[2])) / 3.0;
     };
     // Only faces with a cut edge or a mesh-boundary edge have such steps.
     std::vector<std::int32_t> faces;
@@ -393,7 +495,19 @@ SnaxelMap build_snaxel_map(const SnaxelEngine& engine, const SnaxelMapInput& in,
     }
     std::sort(faces.begin(), faces.end());
     faces.erase(std::unique(faces.begin(), faces.end()), faces.end());
-    for (const std::int32_t f : faces) {
+    // The faces are walked in parallel, each thread into its own lists.
+    struct WalkOut {
+        std::vector<Step> steps;
+        std::vector<std::pair<std::int32_t, std::int32_t>> rim_faces;
+    };
+    const std::size_t chunks = std::max<std::size_t>(1, std::thread::hardware_concurrency());
+    std::vector<WalkOut> walk(chunks);
+    std::mutex shared_points; // the rare crossings past the contour, and strip regions
+    parallel_for(chunks, [&](std::size_t chunk) {
+      auto& out_steps = walk[chunk].steps;
+      auto& out_rim = walk[chunk].rim_faces;
+      for (std::size_t fi = chunk * faces.size() / chunks; fi < (chunk + 1) * faces.size() / chunks; ++fi) {
+        const std::int32_t f = faces[fi];
         const auto& fv = topo.face_vertices[std::size_t(f)];
         const auto& fe = topo.face_edges[std::size_t(f)];
         const int l[3] = {label[std::size_t(fv[0])], label[std::size_t(fv[1])], label[std::size_t(fv[2])]};
@@ -402,8 +516,6 @@ SnaxelMap build_snaxel_map(const SnaxelEngine& engine, const SnaxelMapInput& in,
         const bool rim = topo.is_boundary_edge(fe[0]) || topo.is_boundary_edge(fe[1]) || topo.is_boundary_edge(fe[2]);
         if (uniform && !rim) continue;
         const bool three = l[0] != l[1] && l[1] != l[2] && l[0] != l[2];
-        if (three)
-            junction[f] = (edge_point[std::size_t(fe[0])] + edge_point[std::size_t(fe[1])] + edge_point[std::size_t(fe[2])]) / 3.0;
         const std::int32_t c[3] = {comp[std::size_t(fv[0])], comp[std::size_t(fv[1])], comp[std::size_t(fv[2])]};
         // The piece of the corners `picks` selects: (id, face edge it leads
         // along, or -1 across the face), counter-clockwise.
@@ -432,7 +544,7 @@ SnaxelMap build_snaxel_map(const SnaxelEngine& engine, const SnaxelMapInput& in,
             for (int i = 0; i < n; ++i) {
                 const std::int64_t a = ids[i], b = ids[(i + 1) % n];
                 const bool across = along[i] < 0 || (a >= V && b >= V);
-                if (across || topo.is_boundary_edge(fe[std::size_t(along[i])])) steps.emplace_back(r, a, b);
+                if (across || topo.is_boundary_edge(fe[std::size_t(along[i])])) out_steps.emplace_back(r, a, b);
             }
         }
         // A face turned to the viewer with corners past the contour of
@@ -463,8 +575,50 @@ SnaxelMap build_snaxel_map(const SnaxelEngine& engine, const SnaxelMapInput& in,
             if (rays.occluded(sampler.face_ray(f, centroid, n))) continue;
         }
         const int n = piece([&](int k) { return l[k] == kAway; });
-        for (int i = 0; i < n; ++i) steps.emplace_back(region, ids[i], ids[(i + 1) % n]);
-        rim_faces.emplace_back(f, region);
+        // The part past the contour keeps its region's class where the
+        // shading there agrees; where N.L crosses a level inside it (a
+        // straight line: N.L is linear over the face), the other side goes to
+        // the outline strip of that class.
+        double nls[7];
+        bool one_class = true;
+        for (int k = 0; k < n; ++k) {
+            nls[k] = nl_of(ids[k]);
+            one_class = one_class && class_of(nls[k]) == comp_label[std::size_t(region)];
+        }
+        if (one_class) { // the usual case: no level crosses the part
+            for (int k = 0; k < n; ++k) out_steps.emplace_back(region, ids[k], ids[(k + 1) % n]);
+            out_rim.emplace_back(f, region);
+            continue;
+        }
+        const std::lock_guard<std::mutex> lock(shared_points);
+        std::vector<RimPoint> part;
+        for (int k = 0; k < n; ++k) part.push_back({ids[k], along[k], point_of(ids[k]), nls[k]});
+        std::vector<std::vector<RimPoint>> parts{std::move(part)};
+        for (std::size_t level = 0; level < levels.size(); ++level) {
+            if (level == 0 && !in.shadow) continue;
+            std::vector<std::vector<RimPoint>> next;
+            for (const auto& poly : parts) {
+                auto [below, above] = split_rim(poly, f, level, levels[level], fe);
+                if (below.size() >= 3) next.push_back(std::move(below));
+                if (above.size() >= 3) next.push_back(std::move(above));
+            }
+            parts = std::move(next);
+        }
+        for (const auto& poly : parts) {
+            glm::dvec3 mid(0.0);
+            double mid_nl = 0.0;
+            for (const RimPoint& q : poly) mid += q.p, mid_nl += q.nl;
+            mid_nl /= double(poly.size());
+            const int cls = class_of(mid_nl);
+            const std::int32_t target = cls == comp_label[std::size_t(region)] ? region : outline_region(cls);
+            for (std::size_t k = 0; k < poly.size(); ++k) out_steps.emplace_back(target, poly[k].id, poly[(k + 1) % poly.size()].id);
+        }
+        out_rim.emplace_back(f, region);
+      }
+    }, 1);
+    for (WalkOut& w : walk) {
+        steps.insert(steps.end(), w.steps.begin(), w.steps.end());
+        rim_faces.insert(rim_faces.end(), w.rim_faces.begin(), w.rim_faces.end());
     }
     // A face turned away whose corners all face the viewer by their
     // normals (at creases, where the normals are averaged) is hidden, yet
@@ -520,10 +674,10 @@ SnaxelMap build_snaxel_map(const SnaxelEngine& engine, const SnaxelMapInput& in,
         std::vector<char> gone(steps.size(), 0);
         for (std::size_t i = 0; i < steps.size(); ++i) {
             if (gone[i]) continue;
-            const auto& [r, a, b] = steps[i];
-            auto it = std::lower_bound(steps.begin(), steps.end(), std::make_tuple(r, b, a));
-            while (it != steps.end() && *it == std::make_tuple(r, b, a) && gone[std::size_t(it - steps.begin())]) ++it;
-            if (it != steps.end() && *it == std::make_tuple(r, b, a)) gone[i] = gone[std::size_t(it - steps.begin())] = 1;
+            const Step back(steps[i].region(), steps[i].to, steps[i].from());
+            auto it = std::lower_bound(steps.begin(), steps.end(), back);
+            while (it != steps.end() && *it == back && gone[std::size_t(it - steps.begin())]) ++it;
+            if (it != steps.end() && *it == back) gone[i] = gone[std::size_t(it - steps.begin())] = 1;
         }
         std::size_t kept = 0;
         for (std::size_t i = 0; i < steps.size(); ++i)
@@ -532,11 +686,6 @@ SnaxelMap build_snaxel_map(const SnaxelEngine& engine, const SnaxelMapInput& in,
     }
 
     // Chain each region's steps into loops and project them.
-    auto point_of = [&](std::int64_t id) -> glm::dvec3 {
-        if (id < V) return topo.positions[std::size_t(id)];
-        if (id < junction_base) return edge_point[std::size_t(id - V)];
-        return junction.at(std::int32_t(id - junction_base));
-    };
     std::vector<char> used(steps.size(), 0);
     std::vector<MapRegion> regions(comp_label.size());
     std::vector<double> depth_sum(comp_label.size(), 0.0);
@@ -550,18 +699,18 @@ SnaxelMap build_snaxel_map(const SnaxelEngine& engine, const SnaxelMapInput& in,
     }
     for (std::size_t i = 0; i < steps.size(); ++i) {
         if (used[i]) continue;
-        const std::int32_t r = std::get<0>(steps[i]);
-        const std::int64_t first = std::get<1>(steps[i]);
+        const std::int32_t r = steps[i].region();
+        const std::int64_t first = steps[i].from();
         std::vector<glm::dvec2> loop;
         std::size_t at = i;
         while (true) {
             used[at] = 1;
-            loop.push_back(projection.project(point_of(std::get<1>(steps[at]))));
-            const std::int64_t to = std::get<2>(steps[at]);
+            loop.push_back(projection.project(point_of(steps[at].from())));
+            const std::int64_t to = steps[at].to;
             if (to == first) break;
-            auto it = std::lower_bound(steps.begin(), steps.end(), std::make_tuple(r, to, std::int64_t(-1)));
-            while (it != steps.end() && std::get<0>(*it) == r && std::get<1>(*it) == to && used[std::size_t(it - steps.begin())]) ++it;
-            if (it == steps.end() || std::get<0>(*it) != r || std::get<1>(*it) != to) break; // open: cannot happen on a manifold
+            auto it = std::lower_bound(steps.begin(), steps.end(), Step(r, to, -1));
+            while (it != steps.end() && it->region() == r && it->from() == to && used[std::size_t(it - steps.begin())]) ++it;
+            if (it == steps.end() || it->region() != r || it->from() != to) break; // open: cannot happen on a manifold
             at = std::size_t(it - steps.begin());
         }
         if (loop.size() >= 3) regions[std::size_t(r)].polygons.push_back(std::move(loop));
