@@ -56,27 +56,10 @@ double area(const Paths& paths) {
 // equal sign of f.
 std::vector<std::int32_t> patch_labels(const MeshTopology& topo, const ContourResult& visual) {
     if (visual.vertex_region.size() == topo.n_vertices()) return visual.vertex_region;
-    std::vector<std::int32_t> label(topo.n_vertices(), -1);
-    std::vector<std::int32_t> stack;
-    std::int32_t next = 0;
-    for (std::int32_t seed = 0; seed < std::int32_t(topo.n_vertices()); ++seed) {
-        if (label[std::size_t(seed)] >= 0) continue;
-        const bool positive = visual.vertex_f[std::size_t(seed)] >= 0.0;
-        label[std::size_t(seed)] = next;
-        stack.push_back(seed);
-        while (!stack.empty()) {
-            const std::int32_t v = stack.back();
-            stack.pop_back();
-            for (std::int32_t i = topo.ring_start[v]; i < topo.ring_start[v + 1]; ++i) {
-                const std::int32_t w = topo.ring[i];
-                if (label[std::size_t(w)] < 0 && (visual.vertex_f[std::size_t(w)] >= 0.0) == positive) {
-                    label[std::size_t(w)] = next;
-                    stack.push_back(w);
-                }
-            }
-        }
-        ++next;
-    }
+    std::vector<std::int32_t> label;
+    grow_vertex_sets(topo, label, [](std::int32_t) { return true; }, [&](std::int32_t v, std::int32_t w) {
+        return (visual.vertex_f[std::size_t(v)] >= 0.0) == (visual.vertex_f[std::size_t(w)] >= 0.0);
+    });
     return label;
 }
 

@@ -188,28 +188,6 @@ SnaxelMap build_snaxel_map(const SnaxelEngine& engine, const SnaxelMapInput& in,
     std::vector<std::int32_t> comp(static_cast<std::size_t>(V), -1);
     std::vector<int> comp_label;
     std::vector<std::int32_t> stack;
-    auto grow = [&] {
-        std::fill(comp.begin(), comp.end(), -1);
-        comp_label.clear();
-        for (std::int32_t seed = 0; seed < V; ++seed) {
-            if (label[std::size_t(seed)] < 0 || comp[std::size_t(seed)] >= 0) continue;
-            const auto id = std::int32_t(comp_label.size());
-            comp_label.push_back(label[std::size_t(seed)]);
-            comp[std::size_t(seed)] = id;
-            stack.push_back(seed);
-            while (!stack.empty()) {
-                const std::int32_t v = stack.back();
-                stack.pop_back();
-                for (std::int32_t i = topo.ring_start[v]; i < topo.ring_start[v + 1]; ++i) {
-                    const std::int32_t w = topo.ring[i];
-                    if (comp[std::size_t(w)] < 0 && label[std::size_t(w)] == label[std::size_t(v)]) {
-                        comp[std::size_t(w)] = id;
-                        stack.push_back(w);
-                    }
-                }
-            }
-        }
-    };
     // A vertex's share of the image: a third of its faces' projected areas
     // (each face meets two of the vertex's ring edges).
     auto vertex_area = [&](std::int32_t v) {
@@ -225,7 +203,11 @@ SnaxelMap build_snaxel_map(const SnaxelEngine& engine, const SnaxelMapInput& in,
             }
         return area;
     };
-    grow();
+    comp_label.resize(std::size_t(grow_vertex_sets(
+        topo, comp, [&](std::int32_t v) { return label[std::size_t(v)] >= 0; },
+        [&](std::int32_t v, std::int32_t w) { return label[std::size_t(v)] == label[std::size_t(w)]; })));
+    for (std::int32_t v = 0; v < V; ++v)
+        if (comp[std::size_t(v)] >= 0) comp_label[std::size_t(comp[std::size_t(v)])] = label[std::size_t(v)];
     std::size_t seeds = comp_label.size();
     for (int pass = 0; pass < 3; ++pass) { // dissolving can leave a new fleck behind
         std::vector<char> supported(comp_label.size(), 0);

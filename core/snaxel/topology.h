@@ -42,6 +42,34 @@ struct MeshTopology {
 /// Builds the flat connectivity of @p mesh (normals as stored on the mesh).
 MeshTopology build_topology(const Mesh& mesh);
 
+/// Connected sets of vertices: one set grows from each vertex that
+/// @p seeds accepts and no set holds yet, over the edges (v, w) that
+/// @p joins accepts. @p set_of[v] becomes v's set, or -1; returns the count.
+template <class Seeds, class Joins>
+std::int32_t grow_vertex_sets(const MeshTopology& topo, std::vector<std::int32_t>& set_of, Seeds&& seeds, Joins&& joins) {
+    set_of.assign(topo.n_vertices(), -1);
+    std::vector<std::int32_t> stack;
+    std::int32_t count = 0;
+    for (std::int32_t seed = 0; seed < std::int32_t(topo.n_vertices()); ++seed) {
+        if (set_of[std::size_t(seed)] >= 0 || !seeds(seed)) continue;
+        set_of[std::size_t(seed)] = count;
+        stack.push_back(seed);
+        while (!stack.empty()) {
+            const std::int32_t v = stack.back();
+            stack.pop_back();
+            for (std::int32_t i = topo.ring_start[std::size_t(v)]; i < topo.ring_start[std::size_t(v) + 1]; ++i) {
+                const std::int32_t w = topo.ring[std::size_t(i)];
+                if (set_of[std::size_t(w)] < 0 && joins(v, w)) {
+                    set_of[std::size_t(w)] = count;
+                    stack.push_back(w);
+                }
+            }
+        }
+        ++count;
+    }
+    return count;
+}
+
 } // namespace snaxels
 
 namespace snaxels {
