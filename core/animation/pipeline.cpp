@@ -18,13 +18,15 @@ namespace snaxels {
 
 AnimationJob make_animation_job(const Style& style, const AnimationSpec& animation, const Camera& camera,
                                 const std::optional<Light>& light) {
+    // The same scene as the view's still frame, animated.
+    StillJob still = make_still_job(style, camera, light);
     AnimationJob job;
     job.animation = animation;
-    job.camera = camera;
-    job.light = job_light(style, camera, light);
-    job.kinds = style_kinds(style);
-    job.style = style;
-    job.engine.check_invariants = false;
+    job.camera = still.camera;
+    job.light = still.light;
+    job.kinds = std::move(still.kinds);
+    job.style = std::move(still.style);
+    job.engine = still.engine;
     return job;
 }
 

@@ -178,12 +178,8 @@ class TestMainWindow : public QObject {
     // cannot be written is reported and leaves nothing behind.
     void scrubsAndExports() {
         MainWindow window;
-        window.resize(1200, 800);
-        window.show();
-        QVERIFY(QTest::qWaitForWindowExposed(&window));
+        QVERIFY(showWithMesh(window, QString(SNAXELS_TEST_ASSETS) + "/spot.obj", {1200, 800}));
         QSignalSpy contours(&window, &MainWindow::contoursUpdated);
-        window.openMesh(QString(SNAXELS_TEST_ASSETS) + "/spot.obj");
-        QVERIFY(contours.wait(60000));
         const QByteArray first = window.currentSvg();
         window.timeline()->setFrameCount(12);
         contours.clear();
@@ -451,12 +447,8 @@ class TestMainWindow : public QObject {
     // the mesh (its contours move) and the export follows the clip.
     void playsTheMeshsOwnClip() {
         MainWindow window;
-        window.resize(1000, 700);
-        window.show();
-        QVERIFY(QTest::qWaitForWindowExposed(&window));
+        QVERIFY(showWithMesh(window, QString(SNAXELS_TEST_ASSETS) + "/anim/skinned-bar.gltf", {1000, 700}));
         QSignalSpy contours(&window, &MainWindow::contoursUpdated);
-        window.openMesh(QString(SNAXELS_TEST_ASSETS) + "/anim/skinned-bar.gltf");
-        QVERIFY(contours.wait(60000));
         auto* source = window.timeline()->findChild<QComboBox*>();
         QVERIFY(source->count() >= 3);
         QVERIFY(source->itemText(2).startsWith("Clip: "));
