@@ -676,10 +676,18 @@ void MainWindow::applyProject(const Project& p, const QString& path) {
     projectPath_ = path;
     meshChanged_ = false;
     addRecentFile(QFileInfo(path).absoluteFilePath());
-    if (!clipFound)
-        statusBar()->showMessage(tr("%1: the mesh has no clip \"%2\"; the timeline shows a turntable")
-                                     .arg(QFileInfo(path).fileName(), QString::fromStdString(p.animation.clip)),
-                                 8000);
+    if (!clipFound) {
+        const QString file = QFileInfo(path).fileName();
+        const QString why = p.animation.kind == AnimationSpec::Kind::Clip
+                                ? tr("%1: the mesh has no clip \"%2\"; the timeline shows a turntable")
+                                      .arg(file, QString::fromStdString(p.animation.clip))
+                                : tr("%1: its animation (a mesh sequence or a still) is rendered by snaxels-cli; "
+                                     "the timeline shows a turntable")
+                                      .arg(file);
+        statusBar()->showMessage(why, 10000);
+        meshChanged_ = true; // what the window shows is no longer what the file holds
+        updateTitle();
+    }
     scheduleContours();
 }
 
