@@ -177,7 +177,7 @@ void MainWindow::applyFrame() {
     const AnimationSpec spec = timeline_->spec();
     if (spec.kind == AnimationSpec::Kind::Turntable) {
         view_->centreView(); // turntables orbit the mesh's centre, as exports do
-        view_->setTurntable(spec.degrees_per_frame * timeline_->frame());
+        view_->setTurntable(spec.degrees_per_frame * timeline_->sourceFrame());
         if (!restoring_) committedView_ = viewState();
     } else {
         view_->setTurntable(0.0);
@@ -202,7 +202,7 @@ void MainWindow::onLightDragged(glm::dvec3 axis_a, double angle_a, glm::dvec3 ax
     const AnimationSpec spec = timeline_->spec();
     const bool turns = (spec.kind == AnimationSpec::Kind::Turntable && !light.point) ||
                        spec.kind == AnimationSpec::Kind::LightOrbit;
-    const double frame_angle = turns ? glm::radians(spec.degrees_per_frame * timeline_->frame()) : 0.0;
+    const double frame_angle = turns ? glm::radians(spec.degrees_per_frame * timeline_->sourceFrame()) : 0.0;
     const glm::dvec3 y(0.0, 1.0, 0.0);
     auto turn = [&](glm::dvec3 v) {
         v = glm::rotate(v, frame_angle, y);
@@ -231,7 +231,7 @@ Light MainWindow::frameLight() const {
     // As FrameDriver poses it: the base light turned about the vertical axis.
     const AnimationSpec spec = timeline_->spec();
     Light light = baseLight();
-    const double angle = glm::radians(spec.degrees_per_frame * timeline_->frame());
+    const double angle = glm::radians(spec.degrees_per_frame * timeline_->sourceFrame());
     const glm::dvec3 axis(0.0, 1.0, 0.0);
     const glm::dvec3 centre = mesh_ ? 0.5 * (mesh_->report.bbox_min + mesh_->report.bbox_max) : glm::dvec3(0.0);
     if (spec.kind == AnimationSpec::Kind::Turntable && !light.point) light.dir = glm::rotate(light.dir, angle, axis);
@@ -324,7 +324,7 @@ void MainWindow::startContours() {
     const Light light = frameLight();
     std::optional<ClipPose> pose;
     if (const AnimationSpec spec = timeline_->spec(); spec.kind == AnimationSpec::Kind::Clip)
-        pose = ClipPose{spec, timeline_->frame()};
+        pose = ClipPose{spec, timeline_->frame()}; // the driver adds the in point
     contourWatcher_.setFuture(QtConcurrent::run([mesh, scene, camera, style, light, pose] {
         return compute_overlay(*mesh, *scene, camera, style, light, pose);
     }));

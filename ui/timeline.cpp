@@ -20,7 +20,7 @@ constexpr int kSecondsRole = Qt::UserRole + 2;
 
 Timeline::Timeline(QWidget* parent)
     : QWidget(parent), source_(new QComboBox(this)), degrees_(new QDoubleSpinBox(this)), frames_(new QSpinBox(this)),
-      fps_(new QDoubleSpinBox(this)), slider_(new QSlider(Qt::Horizontal, this)), label_(new QLabel(this)),
+      start_(new QSpinBox(this)), fps_(new QDoubleSpinBox(this)), slider_(new QSlider(Qt::Horizontal, this)), label_(new QLabel(this)),
       play_(new QPushButton(tr("Play"), this)), loop_(new QCheckBox(tr("Loop"), this)) {
     setClips({});
     source_->setToolTip(tr("What moves from frame to frame"));
@@ -31,6 +31,9 @@ Timeline::Timeline(QWidget* parent)
     frames_->setRange(1, 100000);
     frames_->setValue(180);
     frames_->setSuffix(tr(" frames"));
+    start_->setRange(0, 1000000);
+    start_->setPrefix(tr("from "));
+    start_->setToolTip(tr("In point: the source's frame the animation begins at"));
     fps_->setRange(1.0, 240.0);
     fps_->setValue(24.0);
     fps_->setSuffix(tr(" fps"));
@@ -38,7 +41,7 @@ Timeline::Timeline(QWidget* parent)
     loop_->setChecked(true);
     play_->setCheckable(true);
     auto* layout = new QHBoxLayout(this);
-    for (QWidget* w : std::initializer_list<QWidget*>{source_, degrees_, frames_, fps_, play_, loop_}) layout->addWidget(w);
+    for (QWidget* w : std::initializer_list<QWidget*>{source_, degrees_, start_, frames_, fps_, play_, loop_}) layout->addWidget(w);
     layout->addWidget(slider_, 1);
     layout->addWidget(label_);
     auto refresh = [this] {
@@ -58,6 +61,10 @@ Timeline::Timeline(QWidget* parent)
         edited();
     });
     connect(degrees_, &QDoubleSpinBox::valueChanged, this, [this, refresh] {
+        refresh();
+        edited();
+    });
+    connect(start_, &QSpinBox::valueChanged, this, [this, refresh] {
         refresh();
         edited();
     });
@@ -107,6 +114,7 @@ bool Timeline::setSpec(const AnimationSpec& s) {
             }
     source_->setCurrentIndex(index);
     degrees_->setValue(s.degrees_per_frame);
+    start_->setValue(s.start);
     fps_->setValue(s.fps);
     int frames = s.frames;
     if (frames <= 0 && index >= 2)
@@ -133,11 +141,13 @@ AnimationSpec Timeline::spec() const {
     if (s.kind == AnimationSpec::Kind::Clip) s.clip = source_->currentData(kClipRole).toString().toStdString();
     s.degrees_per_frame = degrees_->value();
     s.frames = frames_->value();
+    s.start = start_->value();
     s.fps = fps_->value();
     return s;
 }
 
 int Timeline::frame() const { return slider_->value(); }
+int Timeline::sourceFrame() const { return start_->value() + slider_->value(); }
 void Timeline::setFrame(int frame) { slider_->setValue(std::clamp(frame, 0, frames_->value() - 1)); }
 
 void Timeline::setFrameCount(int frames) {

@@ -32,6 +32,8 @@ class Timeline : public QWidget {
     /// The loaded mesh's own clips (name, seconds), offered as sources.
     void setClips(const std::vector<AnimationClipInfo>& clips);
     int frame() const;
+    /// The source's frame shown now: the in point plus the current frame.
+    int sourceFrame() const;
     void setFrame(int frame);
     void setFrameCount(int frames);
     bool playing() const { return timer_.isActive(); }
@@ -55,6 +57,7 @@ class Timeline : public QWidget {
     QComboBox* source_;
     QDoubleSpinBox* degrees_;
     QSpinBox* frames_;
+    QSpinBox* start_;
     QDoubleSpinBox* fps_;
     QSlider* slider_;
     QLabel* label_;

@@ -27,6 +27,7 @@ int run_animate(const std::vector<std::string>& argv) {
                   {"clip", "NAME", "the mesh file's own animation clip (name or index; skinning and morph targets)"},
                   {"sequence", "PATTERN", "numbered mesh files of one connectivity: #### or %04d marks the number"},
                   {"frames", "N", "number of frames (default: the clip's length; else required)"},
+                  {"start", "N", "begin at the source's frame N (an in point: turntable angle, clip time, sequence file)"},
                   {"fps", "F", "frames per second (default 24)"},
                   {"tolerance", "PX", "drop path vertices and keyframes reproduced within PX pixels (default 0.25)"},
                   {"output", "OUT.svg", "the animated SVG to write", false, 'o'},
@@ -74,6 +75,7 @@ int run_animate(const std::vector<std::string>& argv) {
     if (sources != 1)
         throw UsageError("give exactly one of --turntable, --light-orbit, --clip, --sequence");
     if (const auto v = args.value("fps")) anim.fps = parse_number("fps", *v, 0.0, 1000.0);
+    if (const auto v = args.value("start")) anim.start = parse_int("start", *v, 0, 1000000);
     int frames = 0;
     if (const auto v = args.value("frames")) frames = parse_int("frames", *v, 1, 100000);
     else if (anim.kind != AnimationSpec::Kind::Clip) throw UsageError("--frames is required");

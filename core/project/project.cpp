@@ -95,7 +95,7 @@ class Reader {
 } // namespace
 
 std::string project_text(const Project& p) {
-    json anim{{"source", ""}, {"frames", p.animation.frames}, {"fps", p.animation.fps}};
+    json anim{{"source", ""}, {"frames", p.animation.frames}, {"start", p.animation.start}, {"fps", p.animation.fps}};
     for (const Kinds& k : kKinds)
         if (k.kind == p.animation.kind) anim["source"] = k.name;
     if (p.animation.kind == AnimationSpec::Kind::Turntable || p.animation.kind == AnimationSpec::Kind::LightOrbit)
@@ -182,6 +182,7 @@ Project read_project(const std::string& path) {
         anim.fail_field("source", "must be one of still, turntable, light-orbit, clip, sequence (not \"" + source + "\")");
     p.animation.frames = anim.integer("frames", 0, 100000);
     p.animation.fps = anim.number("fps", 1e-3, 1000.0);
+    if (anim.has("start")) p.animation.start = anim.integer("start", 0, 1000000);
     if (anim.has("degrees_per_frame")) p.animation.degrees_per_frame = anim.number("degrees_per_frame", -360.0, 360.0);
     if (anim.has("clip")) p.animation.clip = anim.string("clip");
     if (p.animation.kind == AnimationSpec::Kind::Sequence) {

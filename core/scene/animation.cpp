@@ -58,6 +58,7 @@ std::string FrameDriver::sequence_path(int k) const {
 void FrameDriver::apply(int k, Camera& camera, Light& light) {
     camera = camera_;
     light = light_;
+    k += spec_.start;
     const double angle = glm::radians(spec_.degrees_per_frame * k);
     const glm::dvec3 axis = glm::normalize(camera_.up);
     switch (spec_.kind) {

@@ -22,6 +22,7 @@ struct AnimationSpec {
     std::string pattern;            ///< Sequence: path with #### or %d for the frame number
     int first_file = -1;            ///< Sequence: number of the first file (-1: 0 or 1, whichever exists)
     int frames = 1;
+    int start = 0; ///< the source's frame the animation begins at (its in point)
     double fps = 24.0;
 
     bool operator==(const AnimationSpec&) const = default;
@@ -39,7 +40,7 @@ class FrameDriver {
     ~FrameDriver();
 
     bool mesh_moves() const;
-    /// Poses frame @p k (0-based); throws snaxels::Error if a sequence file
+    /// Poses frame @p k (0-based, counted from the spec's start); throws snaxels::Error if a sequence file
     /// is missing or does not match the first frame's connectivity.
     void apply(int k, Camera& camera, Light& light);
 

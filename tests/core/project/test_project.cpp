@@ -58,6 +58,7 @@ TEST_F(ProjectFile, EveryNumberReadsBackExactly) {
         p.animation.kind = trial % 2 ? AnimationSpec::Kind::Turntable : AnimationSpec::Kind::LightOrbit;
         p.animation.degrees_per_frame = u(rng) * 3.0;
         p.animation.frames = 1 + trial;
+        p.animation.start = trial % 4;
         p.animation.fps = 1.0 + std::abs(u(rng));
         p.frame = trial / 2;
         p.style = "<style>\n  <contour kind=\"visual\"/>\n</style>\n\"quoted\" \\ ünïcode";

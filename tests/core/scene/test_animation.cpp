@@ -152,3 +152,41 @@ TEST(FrameDriver, TurntableAndLightOrbit) {
     EXPECT_NEAR(light.dir.x, -1.0, 1e-12);
     EXPECT_NEAR(cam.view_dir.z, 1.0, 1e-12);
 }
+
+// An in point (spec.start) shifts the source: frame k of an animation
+// starting at S is frame S + k of one starting at 0, for turntables and
+// for the mesh's own clips.
+TEST(FrameDriver, StartIsAnInPoint) {
+    const LoadedMesh sphere = load_mesh("proc:sphere:500");
+    MeshTopology topo = build_topology(sphere.mesh);
+    Camera base;
+    base.view_dir = glm::normalize(glm::dvec3(0.3, -0.2, 1.0));
+    const Light light0 = default_light(base);
+    AnimationSpec spec;
+    spec.kind = AnimationSpec::Kind::Turntable;
+    spec.degrees_per_frame = 7.0;
+    FrameDriver from_zero(spec, sphere, topo, base, light0, glm::dvec3(0.0), "");
+    spec.start = 10;
+    FrameDriver from_ten(spec, sphere, topo, base, light0, glm::dvec3(0.0), "");
+    Camera a, b;
+    Light la, lb;
+    from_zero.apply(13, a, la);
+    from_ten.apply(3, b, lb);
+    EXPECT_EQ(a.view_dir, b.view_dir);
+    EXPECT_EQ(la.dir, lb.dir);
+
+    const std::string path = test::asset("anim/skinned-bar.gltf");
+    const LoadedMesh bar = import_mesh(path);
+    MeshTopology t0 = build_topology(bar.mesh), t1 = build_topology(bar.mesh);
+    AnimationSpec clip;
+    clip.kind = AnimationSpec::Kind::Clip;
+    clip.fps = 24.0;
+    FrameDriver clip_zero(clip, bar, t0, base, light0, glm::dvec3(0.0), path);
+    clip.start = 6;
+    FrameDriver clip_six(clip, bar, t1, base, light0, glm::dvec3(0.0), path);
+    clip_zero.apply(9, a, la);
+    clip_six.apply(3, b, lb);
+    EXPECT_EQ(t0.positions, t1.positions);
+    clip_six.apply(0, b, lb);
+    EXPECT_NE(t0.positions, t1.positions);
+}
