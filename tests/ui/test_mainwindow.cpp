@@ -19,6 +19,8 @@
 #include <QDoubleSpinBox>
 #include <QPlainTextEdit>
 #include <QProcess>
+#include <QMimeData>
+#include <QUrl>
 #include <QWheelEvent>
 #include <QTest>
 
@@ -536,6 +538,35 @@ class TestMainWindow : public QObject {
         });
         QVERIFY(!window.saveProject(dir.filePath("no-such-folder/p.snaxels")));
         QVERIFY(window.isModified());
+    }
+
+    // Dropping a mesh file opens it; dropping a project opens the project.
+    void opensWhatIsDropped() {
+        QTemporaryDir dir;
+        MainWindow window;
+        QVERIFY(showWithMesh(window, QString(SNAXELS_TEST_ASSETS) + "/spot.obj"));
+        QVERIFY(window.saveProject(dir.filePath("dropped.snaxels")));
+        auto drop = [&](const QString& path) {
+            QMimeData data;
+            data.setUrls({QUrl::fromLocalFile(path)});
+            QDragEnterEvent enter(QPoint(50, 50), Qt::CopyAction, &data, Qt::LeftButton, Qt::NoModifier);
+            QApplication::sendEvent(&window, &enter);
+            QVERIFY(enter.isAccepted());
+            QDropEvent event(QPointF(50, 50), Qt::CopyAction, &data, Qt::LeftButton, Qt::NoModifier);
+            QApplication::sendEvent(&window, &event);
+        };
+        QSignalSpy loaded(&window, &MainWindow::meshLoaded);
+        drop(QString(SNAXELS_TEST_ASSETS) + "/fandisk.obj");
+        QVERIFY(loaded.wait(60000));
+        QCOMPARE(window.mesh()->report.faces, std::size_t(12946));
+        bool asked = false;
+        answerUnsavedPrompt(QMessageBox::Discard, &asked); // the new mesh is an unsaved change
+        QSignalSpy opened(&window, &MainWindow::projectOpened);
+        drop(dir.filePath("dropped.snaxels"));
+        QVERIFY(opened.wait(60000));
+        QVERIFY(asked);
+        QCOMPARE(window.mesh()->report.vertices, std::size_t(2930)); // spot again
+        QCOMPARE(window.projectPath(), dir.filePath("dropped.snaxels"));
     }
 
     void reportsAFileThatFailsToLoad() {
