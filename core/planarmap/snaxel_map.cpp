@@ -692,7 +692,10 @@ SnaxelMap build_snaxel_map(const SnaxelEngine& engine, const SnaxelMapInput& in,
             if (to == first) break;
             auto it = std::lower_bound(steps.begin(), steps.end(), Step(r, to, -1));
             while (it != steps.end() && it->region() == r && it->from() == to && used[std::size_t(it - steps.begin())]) ++it;
-            if (it == steps.end() || it->region() != r || it->from() != to) break; // open: cannot happen on a manifold
+            if (it == steps.end() || it->region() != r || it->from() != to) { // an outline that does not close
+                ++map.stats.open_outlines;
+                break;
+            }
             at = std::size_t(it - steps.begin());
         }
         if (loop.size() >= 3) regions[std::size_t(r)].polygons.push_back(std::move(loop));

@@ -59,6 +59,7 @@ struct SnaxelMapInput {
 struct SnaxelMapStats {
     std::size_t visible_vertices = 0, occluded_vertices = 0;
     std::size_t seeds = 0; ///< regions grown, over every pass: the first seed and every reseed
+    std::size_t open_outlines = 0; ///< region outlines that failed to close (none on a manifold mesh)
     double ms = 0.0;
 };
 

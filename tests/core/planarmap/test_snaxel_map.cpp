@@ -152,3 +152,46 @@ TEST(SnaxelMap, FewerTinyRegionsThanThePostProcessedMap) {
         EXPECT_LT(tiny_snaxel, tiny_post) << file;
     }
 }
+
+// Every region's outline closes, on closed, open, creased and procedural
+// meshes under random views, orthographic and perspective, with bands and a
+// gleam; regions lie inside the image of the mesh.
+TEST(SnaxelMap, OutlinesCloseOnEveryMesh) {
+    for (const std::string file : {"spot.obj", "fandisk.obj", "teapot.obj", "suzanne.obj", "proc:torus:20000", "proc:nose:20000"}) {
+        const LoadedMesh mesh = file.rfind("proc:", 0) == 0 ? load_mesh(file) : import_mesh(test::asset(file));
+        const MeshTopology topo = build_topology(mesh.mesh);
+        const SnaxelEngine engine(topo);
+        const RayScene rays(topo);
+        const glm::dvec3 centre = 0.5 * (mesh.report.bbox_min + mesh.report.bbox_max);
+        const double radius = 0.5 * glm::length(mesh.report.bbox_max - mesh.report.bbox_min);
+        std::mt19937 rng(29);
+        for (int view = 0; view < 4; ++view) {
+            Camera cam = random_camera(rng);
+            if (view % 2) {
+                cam.projection = Camera::Projection::Perspective;
+                cam.target = centre;
+                cam.eye = centre - 3.0 * radius * cam.view_dir;
+            }
+            const Light light = random_light(rng, cam);
+            const ImageProjection proj(cam, centre, radius, 400, 400);
+            const ContourResult visual = engine.compute({}, cam, light);
+            const ContourResult shadow = engine.compute({ContourKind::Shadow, 0.0}, cam, light);
+            const ContourResult iso1 = engine.compute({ContourKind::Isophote, 0.3}, cam, light);
+            const ContourResult iso2 = engine.compute({ContourKind::Isophote, 0.7}, cam, light);
+            const ContourResult gleam = engine.compute({ContourKind::Gleam, 0.9}, cam, light);
+            SnaxelMapInput in;
+            in.visual = &visual;
+            in.shadow = &shadow;
+            in.isophotes = {&iso1, &iso2};
+            in.gleam = &gleam;
+            const SnaxelMap map = build_snaxel_map(engine, in, rays, proj, cam, light);
+            EXPECT_EQ(map.stats.open_outlines, 0u) << file << " view " << view;
+            EXPECT_FALSE(map.regions.empty()) << file << " view " << view;
+            for (const MapRegion& r : map.regions)
+                for (const auto& loop : r.polygons)
+                    for (const glm::dvec2& p : loop) {
+                        ASSERT_TRUE(std::isfinite(p.x) && std::isfinite(p.y)) << file;
+                    }
+        }
+    }
+}
