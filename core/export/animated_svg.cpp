@@ -289,10 +289,8 @@ void emit_region(const std::vector<RegionSample>& samples, std::size_t i, std::s
     key.front() = key.back() = 1;
     simplify_time(flat, 0, frames - 1, tolerance, false, key);
     auto path_data = [&](std::string& to, std::size_t f) {
-        for (std::size_t l = 0; l < loops; ++l) {
-            if (l) to += ' ';
-            svg::append_path_data(to, kept[f][l], true);
-        }
+        for (std::size_t l = 0; l < loops; ++l)
+            svg::append_compact_path_data(to, kept[f][l], true, l ? kept[f][l - 1][0] : glm::dvec2(0.0));
     };
     const int last = samples[j - 1].frame;
     out += "<path class=\"region\" data-class=\"" + std::string(region_class_name(cls)) + "\" fill=\"" + rs.fill + "\"";

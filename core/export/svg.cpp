@@ -71,9 +71,9 @@ void append_joined(std::string& out, long tenths) {
 
 } // namespace
 
-void append_compact_path_data(std::string& out, const std::vector<glm::dvec2>& q, bool closed) {
+void append_compact_path_data(std::string& out, const std::vector<glm::dvec2>& q, bool closed, glm::dvec2 from) {
     std::string d = "m";
-    long px = 0, py = 0;
+    long px = std::lround(from.x * 10.0), py = std::lround(from.y * 10.0);
     for (std::size_t i = 0; i < q.size(); ++i) {
         const long x = std::lround(q[i].x * 10.0), y = std::lround(q[i].y * 10.0);
         if (i == 1) d += 'l';

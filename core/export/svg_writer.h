@@ -20,8 +20,11 @@ void append_path_data(std::string& out, const std::vector<glm::dvec2>& q, bool c
 /// Compact path data for animation: "m x,y l dx,dy ..." with positions
 /// rounded to 0.1 px first (so rounding never accumulates) and numbers
 /// joined as tightly as the SVG path grammar allows. Every keyframe of a
-/// path has the same commands, so browsers interpolate it.
-void append_compact_path_data(std::string& out, const std::vector<glm::dvec2>& q, bool closed);
+/// path has the same commands, so browsers interpolate it. @p from is the
+/// current point the first move is relative to: the origin, or after a
+/// closed subpath its first point (several loops in one path).
+void append_compact_path_data(std::string& out, const std::vector<glm::dvec2>& q, bool closed,
+                              glm::dvec2 from = glm::dvec2(0.0));
 
 /// A Bézier chain as absolute path data "M x,y C x,y x,y x,y ... [Z]".
 void append_chain_data(std::string& out, const BezierChain& chain);
