@@ -14,6 +14,7 @@ namespace {
 
 constexpr double kTwoPi = 6.283185307179586;
 constexpr double kMinLoopArea = 4.0; // square pixels: smaller fill loops are not animated
+constexpr double kMaxFillSweepPx = 2.0; // how far a fill outline may stray between two frames
 
 double wrap01(double u) { return u - std::floor(u); }
 
@@ -256,6 +257,7 @@ void emit_region(const std::vector<RegionSample>& samples, std::size_t i, std::s
     // Each loop resampled at ~2 px from an anchor that follows it, then
     // thinned jointly over the frames (Douglas-Peucker) and keyframed.
     std::vector<std::vector<std::vector<glm::dvec2>>> kept(frames, std::vector<std::vector<glm::dvec2>>(loops));
+    std::vector<std::uint8_t> cut(frames, 0);
     for (std::size_t l = 0; l < loops; ++l) {
         double longest = 0.0;
         for (std::size_t f = 0; f < frames; ++f) longest = std::max(longest, loop_length(ordered[f][l]));
@@ -274,6 +276,24 @@ void emit_region(const std::vector<RegionSample>& samples, std::size_t i, std::s
             }
             geom[f] = resample_loop(loop, n, start);
         }
+        // Linear interpolation between two frames must stay between their
+        // outlines: where the half-way outline strays further than
+        // kMaxFillSweepPx from both, the path is cut there.
+        for (std::size_t f = 1; f < frames; ++f) {
+            const auto& a = geom[f - 1];
+            const auto& b = geom[f];
+            double worst = 0.0;
+            for (std::size_t v = 0; v < n && worst <= kMaxFillSweepPx; ++v) {
+                const glm::dvec2 mid = 0.5 * (a[v] + b[v]);
+                double best = 1e300;
+                for (std::size_t w = v + n - 6; w < v + n + 6 && best > kMaxFillSweepPx; ++w) {
+                    const std::size_t w0 = w % n, w1 = (w + 1) % n;
+                    best = std::min({best, point_segment(mid, a[w0], a[w1]), point_segment(mid, b[w0], b[w1])});
+                }
+                worst = std::max(worst, best);
+            }
+            if (worst > kMaxFillSweepPx) cut[f] = 1;
+        }
         std::vector<std::uint8_t> keep(n, 0);
         keep[0] = keep[n / 2] = 1;
         douglas_peucker_joint(geom, 0, n / 2, tolerance, keep);
@@ -281,6 +301,16 @@ void emit_region(const std::vector<RegionSample>& samples, std::size_t i, std::s
         for (std::size_t f = 0; f < frames; ++f)
             for (std::size_t k = 0; k < n; ++k)
                 if (keep[k]) kept[f][l].push_back(geom[f][k]);
+    }
+    if (std::find(cut.begin() + 1, cut.end(), std::uint8_t(1)) != cut.end()) {
+        // Separate paths for the stretches between cuts.
+        std::size_t from = 0;
+        for (std::size_t f = 1; f <= frames; ++f)
+            if (f == frames || cut[f]) {
+                emit_region(samples, i + from, i + f, rs, cls, total, dur, tolerance, out, stats);
+                from = f;
+            }
+        return;
     }
     std::vector<std::vector<glm::dvec2>> flat(frames); // every loop's points, for keyframing
     for (std::size_t f = 0; f < frames; ++f)

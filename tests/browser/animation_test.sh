@@ -36,3 +36,26 @@ bash "$here/render_svg.sh" "$dir/static.html" "$dir/static.png" $((cols * cell))
 echo "frames compared: ${picks[*]}"
 # shellcheck disable=SC2086 # FILLS is a list of colours
 QT_QPA_PLATFORM=offscreen "$compare" "$dir/animated.png" "$dir/static.png" $cols $rows $cell 2 0.97 ${FILLS:-}
+
+# Fills half way between frames: within what the two frames cover, and
+# covering what both do (interpolated outlines must not bleed or tear).
+if [ -n "${FILLS:-}" ]; then
+  {
+    echo '<!DOCTYPE html><html><head><style>body{margin:0;background:#fff}div{display:grid;grid-template-columns:repeat('$cols','${cell}'px);}svg{display:block}</style></head><body><div>'
+    for f in "${picks[@]}"; do g=$(( f < frames - 1 ? f : frames - 2 )); sed '1d' "$dir/anim.svg" | sed "s/<svg /<svg data-frame=\"$g\" /"; done
+    echo '</div><script>'
+    echo "for (const s of document.querySelectorAll('svg[data-frame]')) { s.pauseAnimations(); s.setCurrentTime((Number(s.dataset.frame) + 0.5) / $fps); }"
+    echo '</script></body></html>'
+  } > "$dir/between.html"
+  for which in 0 1; do
+    {
+      echo '<!DOCTYPE html><html><head><style>body{margin:0;background:#fff}div{display:grid;grid-template-columns:repeat('$cols','${cell}'px);}img{display:block}</style></head><body><div>'
+      for f in "${picks[@]}"; do g=$(( f < frames - 1 ? f : frames - 2 )); printf '<img src="frames/frame_%05d.svg" width="%d" height="%d">\n' $((g + which)) $cell $cell; done
+      echo '</div></body></html>'
+    } > "$dir/static$which.html"
+    bash "$here/render_svg.sh" "$dir/static$which.html" "$dir/static$which.png" $((cols * cell)) $((rows * cell))
+  done
+  bash "$here/render_svg.sh" "$dir/between.html" "$dir/between.png" $((cols * cell)) $((rows * cell))
+  # shellcheck disable=SC2086
+  QT_QPA_PLATFORM=offscreen "$compare" --between "$dir/between.png" "$dir/static0.png" "$dir/static1.png" $cols $rows $cell 2 0.97 $FILLS
+fi

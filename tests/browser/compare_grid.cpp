@@ -3,9 +3,13 @@
 // image must lie within TOL pixels of a stroke pixel of the other; each
 // fill colour given likewise (pixels within a small distance of it).
 //   compare_grid A.png B.png COLS ROWS CELL [TOL=2] [MIN=0.97] [#RRGGBB...]
+// Between two frames: a render half way between the frames of B and C must
+// keep each fill colour within what B or C cover, and cover what both do.
+//   compare_grid --between A.png B.png C.png COLS ROWS CELL TOL MIN #RRGGBB...
 
 #include <cstdio>
 #include <cstdlib>
+#include <string>
 #include <vector>
 
 #include <QGuiApplication>
@@ -54,7 +58,50 @@ double covered(const std::vector<std::uint8_t>& a, const std::vector<std::uint8_
 
 } // namespace
 
+int between(int argc, char** argv) {
+    if (argc < 11) {
+        std::fprintf(stderr, "usage: compare_grid --between A.png B.png C.png COLS ROWS CELL TOL MIN #RRGGBB...\n");
+        return 2;
+    }
+    const QImage a = QImage(argv[2]).convertToFormat(QImage::Format_RGB32);
+    const QImage b = QImage(argv[3]).convertToFormat(QImage::Format_RGB32);
+    const QImage c = QImage(argv[4]).convertToFormat(QImage::Format_RGB32);
+    const int cols = std::atoi(argv[5]), rows = std::atoi(argv[6]), cell = std::atoi(argv[7]);
+    const int tol = std::atoi(argv[8]);
+    const double min = std::atof(argv[9]);
+    for (const QImage* img : {&a, &b, &c})
+        if (img->isNull() || img->width() < cols * cell || img->height() < rows * cell) {
+            std::fprintf(stderr, "FAIL: screenshots missing or too small\n");
+            return 1;
+        }
+    int failures = 0;
+    for (int i = 10; i < argc; ++i) {
+        const QColor colour(argv[i]);
+        if (!colour.isValid()) return 2;
+        for (int r = 0; r < rows; ++r)
+            for (int k = 0; k < cols; ++k) {
+                const auto fa = fill(a, k * cell, r * cell, cell, colour.rgb());
+                const auto fb = fill(b, k * cell, r * cell, cell, colour.rgb());
+                const auto fc = fill(c, k * cell, r * cell, cell, colour.rgb());
+                std::vector<std::uint8_t> either(fb.size()), both(fb.size());
+                for (std::size_t p = 0; p < fb.size(); ++p) either[p] = fb[p] || fc[p], both[p] = fb[p] && fc[p];
+                long na = 0, nboth = 0;
+                const double inside = covered(fa, either, cell, tol, na);
+                const double kept = covered(both, fa, cell, tol, nboth);
+                const bool ok = inside >= min && kept >= min;
+                std::printf("cell %d: %ld pixels of #%06x half way, %.4f within the two frames, %.4f of their common %ld kept%s\n",
+                            r * cols + k, na, unsigned(colour.rgb() & 0xffffff), inside, kept, nboth, ok ? "" : "  FAIL");
+                failures += !ok;
+            }
+    }
+    return failures ? 1 : 0;
+}
+
 int main(int argc, char** argv) {
+    if (argc > 1 && std::string(argv[1]) == "--between") {
+        QGuiApplication app(argc, argv);
+        return between(argc, argv);
+    }
     if (argc < 6) {
         std::fprintf(stderr, "usage: compare_grid A.png B.png COLS ROWS CELL [TOL] [MIN] [#RRGGBB...]\n");
         return 2;
