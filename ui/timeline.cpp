@@ -54,7 +54,7 @@ Timeline::Timeline(QWidget* parent)
         // A clip plays its own length at the rate set.
         if (!quiet_ && AnimationSpec::Kind(source_->currentData(kKindRole).toInt()) == AnimationSpec::Kind::Clip) {
             ++quiet_;
-            setFrameCount(std::max(1, int(std::lround(source_->currentData(kSecondsRole).toDouble() * fps_->value())) + 1));
+            setFrameCount(clip_frame_count(source_->currentData(kSecondsRole).toDouble(), fps_->value()));
             --quiet_;
         }
         refresh();
@@ -118,7 +118,7 @@ bool Timeline::setSpec(const AnimationSpec& s) {
     fps_->setValue(s.fps);
     int frames = s.frames;
     if (frames <= 0 && index >= 2)
-        frames = std::max(1, int(std::lround(source_->itemData(index, kSecondsRole).toDouble() * s.fps)) + 1);
+        frames = clip_frame_count(source_->itemData(index, kSecondsRole).toDouble(), s.fps);
     setFrameCount(std::max(frames, 1));
     updateEnabled();
     --quiet_;

@@ -38,7 +38,7 @@ AnimationOutput run_animation(const LoadedMesh& mesh, const std::string& mesh_pa
     int frames = job.animation.frames;
     if (job.animation.kind == AnimationSpec::Kind::Clip && frames <= 0) {
         const MeshAnimation clip(mesh_path, job.animation.clip);
-        frames = std::max(1, int(std::lround(clip.duration() * job.animation.fps)) + 1 - job.animation.start);
+        frames = std::max(1, clip_frame_count(clip.duration(), job.animation.fps) - job.animation.start);
     }
     frames = std::max(frames, 1);
     out.frames = frames;

@@ -49,6 +49,10 @@ struct MeshAnimation::Impl {
     std::string clip;
 };
 
+int clip_frame_count(double seconds, double fps) {
+    return std::max(1, int(std::lround(seconds * fps)) + 1);
+}
+
 std::vector<AnimationClipInfo> animation_clips(const std::string& path) {
     Assimp::Importer importer;
     const aiScene* scene = detail::read_assimp_scene(importer, path);

@@ -36,6 +36,9 @@ struct AnimationClipInfo {
     double duration = 0.0; ///< seconds
 };
 
+/// Frames a clip of @p seconds plays at @p fps, both ends included (at least 1).
+int clip_frame_count(double seconds, double fps);
+
 /// Every clip of @p path (empty when it has none), named as MeshAnimation
 /// names them.
 std::vector<AnimationClipInfo> animation_clips(const std::string& path);
