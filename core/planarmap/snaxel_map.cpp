@@ -310,6 +310,12 @@ SnaxelMap build_snaxel_map(const SnaxelEngine& engine, const SnaxelMapInput& in,
         if (l == kOccluded) ++map.stats.occluded_vertices;
     }
 
+    auto facing = [&](std::int32_t f) {
+        const auto& fv = topo.face_vertices[std::size_t(f)];
+        const glm::dvec3 &p0 = topo.positions[std::size_t(fv[0])], &p1 = topo.positions[std::size_t(fv[1])],
+                         &p2 = topo.positions[std::size_t(fv[2])];
+        return glm::dot(glm::cross(p1 - p0, p2 - p0), camera.to_viewer((p0 + p1 + p2) / 3.0)) > 0.0;
+    };
     // Where fronts stop on edges whose labels differ (rules 3 and 4).
     std::vector<std::int32_t> cut_edges;
     for (std::int32_t e = 0; e < E; ++e) {
@@ -320,6 +326,8 @@ SnaxelMap build_snaxel_map(const SnaxelEngine& engine, const SnaxelMapInput& in,
     auto depth_of = [&](const glm::dvec3& p) {
         return camera.orthographic() ? glm::dot(p, camera.forward()) : glm::dot(p - camera.eye, camera.forward());
     };
+    std::vector<char> front_face(topo.n_faces(), 0);
+    parallel_for(topo.n_faces(), [&](std::size_t f) { front_face[f] = facing(std::int32_t(f)); }, 4096);
     const ContourImage occluder(engine, visual, projection, depth_of);
     auto snaxel_point = [&](const ContourResult& r, std::int32_t e, int a, int b) {
         const std::int32_t s = r.fronts.edge_snaxel.empty() ? MeshTopology::kNone : r.fronts.edge_snaxel[std::size_t(e)];
@@ -383,12 +391,6 @@ SnaxelMap build_snaxel_map(const SnaxelEngine& engine, const SnaxelMapInput& in,
     const std::int64_t junction_base = std::int64_t(V) + E;
     std::vector<Step> steps;
     std::vector<std::pair<std::int32_t, std::int32_t>> rim_faces; // (face, region) taken past the contour
-    auto facing = [&](std::int32_t f) {
-        const auto& fv = topo.face_vertices[std::size_t(f)];
-        const glm::dvec3 &p0 = topo.positions[std::size_t(fv[0])], &p1 = topo.positions[std::size_t(fv[1])],
-                         &p2 = topo.positions[std::size_t(fv[2])];
-        return glm::dot(glm::cross(p1 - p0, p2 - p0), camera.to_viewer((p0 + p1 + p2) / 3.0)) > 0.0;
-    };
     // Points past the contour: where N.L crosses a level on a face edge (one
     // per edge and level, shared by both faces) or across a face.
     const std::int64_t level_base = junction_base + std::int64_t(topo.n_faces());
@@ -405,6 +407,7 @@ SnaxelMap build_snaxel_map(const SnaxelEngine& engine, const SnaxelMapInput& in,
         return cls;
     };
     std::unordered_map<int, std::int32_t> outline_regions; // class -> region of the strips past the contour
+    std::vector<std::pair<std::int32_t, std::int32_t>> vertexless_faces; // (strip region, face): where the strips lie
     auto outline_region = [&](int cls) {
         const auto it = outline_regions.find(cls);
         if (it != outline_regions.end()) return it->second;
@@ -466,7 +469,23 @@ SnaxelMap build_snaxel_map(const SnaxelEngine& engine, const SnaxelMapInput& in,
         const auto& fe = topo.face_edges[std::size_t(id - junction_base)];
         return (nl_on_edge(fe[0]) + nl_on_edge(fe[1]) + nl_on_edge(fe[2])) / 3.0;
     };
-    // Only faces with a cut edge or a mesh-boundary edge have such steps.
+    // A face turned away from the viewer that lies in a region of the
+    // near side (past the contour, or at a crease where the normals are
+    // averaged) is hidden, yet its image, wound the other way, would cancel
+    // the faces it folds over: its pieces are walked backwards, so they add
+    // nothing to their regions' images.
+    std::vector<char> folded(topo.n_faces(), 0);
+    parallel_for(topo.n_faces(), [&](std::size_t f) {
+        const auto& fv = topo.face_vertices[f];
+        bool near_side = false;
+        for (int k = 0; k < 3; ++k) {
+            const std::int32_t r = comp[std::size_t(fv[std::size_t(k)])];
+            near_side = near_side || (r >= 0 && comp_label[std::size_t(r)] < kBack);
+        }
+        folded[f] = near_side && !front_face[f];
+    }, 4096);
+    // Only faces with a cut edge or a mesh-boundary edge, and folded faces,
+    // have such steps.
     std::vector<std::int32_t> faces;
     faces.reserve(2 * cut_edges.size());
     for (std::int32_t e = 0; e < E; ++e) {
@@ -475,6 +494,8 @@ SnaxelMap build_snaxel_map(const SnaxelEngine& engine, const SnaxelMapInput& in,
         for (const std::int32_t f : topo.edge_faces[std::size_t(e)])
             if (f != MeshTopology::kNone) faces.push_back(f);
     }
+    for (std::size_t f = 0; f < topo.n_faces(); ++f)
+        if (folded[f]) faces.push_back(std::int32_t(f));
     std::sort(faces.begin(), faces.end());
     faces.erase(std::unique(faces.begin(), faces.end()), faces.end());
     // The faces are walked in parallel, each thread into its own lists.
@@ -496,7 +517,7 @@ SnaxelMap build_snaxel_map(const SnaxelEngine& engine, const SnaxelMapInput& in,
         if (l[0] < 0 && l[1] < 0 && l[2] < 0) continue;
         const bool uniform = l[0] == l[1] && l[1] == l[2];
         const bool rim = topo.is_boundary_edge(fe[0]) || topo.is_boundary_edge(fe[1]) || topo.is_boundary_edge(fe[2]);
-        if (uniform && !rim) continue;
+        if (uniform && !rim && !folded[std::size_t(f)]) continue;
         const bool three = l[0] != l[1] && l[1] != l[2] && l[0] != l[2];
         const std::int32_t c[3] = {comp[std::size_t(fv[0])], comp[std::size_t(fv[1])], comp[std::size_t(fv[2])]};
         // The piece of the corners `picks` selects: (id, face edge it leads
@@ -523,10 +544,19 @@ SnaxelMap build_snaxel_map(const SnaxelEngine& engine, const SnaxelMapInput& in,
             for (int k = 0; k < owner; ++k) seen = seen || c[k] == r;
             if (seen) continue;
             const int n = piece([&](int k) { return c[k] == r; });
+            // A folded piece: walked forwards and backwards its steps across
+            // the face and along the mesh's boundary cancel; its steps
+            // along interior edges remain, backwards.
+            const bool backwards = folded[std::size_t(f)] && comp_label[std::size_t(r)] < kBack;
             for (int i = 0; i < n; ++i) {
                 const std::int64_t a = ids[i], b = ids[(i + 1) % n];
                 const bool across = along[i] < 0 || (a >= V && b >= V);
-                if (across || topo.is_boundary_edge(fe[std::size_t(along[i])])) out_steps.emplace_back(r, a, b);
+                const bool outline = across || topo.is_boundary_edge(fe[std::size_t(along[i])]);
+                if (backwards) {
+                    if (!outline) out_steps.emplace_back(r, b, a);
+                } else if (outline) {
+                    out_steps.emplace_back(r, a, b);
+                }
             }
         }
         // A face turned to the viewer with corners past the contour of
@@ -593,6 +623,7 @@ SnaxelMap build_snaxel_map(const SnaxelEngine& engine, const SnaxelMapInput& in,
             mid_nl /= double(poly.size());
             const int cls = class_of(mid_nl);
             const std::int32_t target = cls == comp_label[std::size_t(region)] ? region : outline_region(cls);
+            if (target != region) vertexless_faces.emplace_back(target, f);
             for (std::size_t k = 0; k < poly.size(); ++k) out_steps.emplace_back(target, poly[k].id, poly[(k + 1) % poly.size()].id);
         }
         out_rim.emplace_back(f, region);
@@ -601,25 +632,6 @@ SnaxelMap build_snaxel_map(const SnaxelEngine& engine, const SnaxelMapInput& in,
     for (WalkOut& w : walk) {
         steps.insert(steps.end(), w.steps.begin(), w.steps.end());
         rim_faces.insert(rim_faces.end(), w.rim_faces.begin(), w.rim_faces.end());
-    }
-    // A face turned away whose corners all face the viewer by their
-    // normals (at creases, where the normals are averaged) is hidden, yet
-    // lies inside its region: its image would cancel the faces it folds
-    // over. Its triangle, walked the other way, cancels it back.
-    {
-        std::vector<char> hidden_inside(topo.n_faces(), 0);
-        parallel_for(topo.n_faces(), [&](std::size_t f) {
-            const auto& fv = topo.face_vertices[f];
-            const std::int32_t r = comp[std::size_t(fv[0])];
-            hidden_inside[f] = r >= 0 && comp[std::size_t(fv[1])] == r && comp[std::size_t(fv[2])] == r &&
-                               comp_label[std::size_t(r)] < kBack && !facing(std::int32_t(f));
-        }, 4096);
-        for (std::size_t f = 0; f < topo.n_faces(); ++f) {
-            if (!hidden_inside[f]) continue;
-            const auto& fv = topo.face_vertices[f];
-            const std::int32_t r = comp[std::size_t(fv[0])];
-            for (int k = 0; k < 3; ++k) steps.emplace_back(r, fv[std::size_t((k + 1) % 3)], fv[std::size_t(k)]);
-        }
     }
     // Past a crease the mesh's outline can lie a few faces beyond the
     // contour: seen faces turned to the viewer whose corners are all turned
@@ -676,6 +688,12 @@ SnaxelMap build_snaxel_map(const SnaxelEngine& engine, const SnaxelMapInput& in,
         const std::int32_t r = comp[std::size_t(v)];
         if (r < 0) continue;
         const glm::dvec3& p = topo.positions[std::size_t(v)];
+        depth_sum[std::size_t(r)] += camera.orthographic() ? glm::dot(p, camera.forward()) : glm::length(p - camera.eye);
+        ++depth_n[std::size_t(r)];
+    }
+    for (const auto& [r, f] : vertexless_faces) {
+        const auto& fv = topo.face_vertices[std::size_t(f)];
+        const glm::dvec3 p = (topo.positions[std::size_t(fv[0])] + topo.positions[std::size_t(fv[1])] + topo.positions[std::size_t(fv[2])]) / 3.0;
         depth_sum[std::size_t(r)] += camera.orthographic() ? glm::dot(p, camera.forward()) : glm::length(p - camera.eye);
         ++depth_n[std::size_t(r)];
     }

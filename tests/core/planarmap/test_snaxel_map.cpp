@@ -64,13 +64,14 @@ Light random_light(std::mt19937& rng, const Camera& cam) {
 
 // Rasterized at 512 x 512, the snaxel-defined map's class agrees with the
 // class found directly at the pixel (ray cast, shading at the hit) on at
-// least 98% of the pixels the mesh covers on the smooth dense meshes (over
-// 10 views: spot 99.2-99.8%, horse 99.5-99.8%, bunny 99.2-99.6%). A map
-// made of the mesh's vertices resolves no finer than its faces: fandisk's
-// creases (97.4-99.1%), the teapot's inside seen only through the gap under
-// its lid, between vertices (97.4-99.8%), and Suzanne (505 vertices, faces
-// 20-40 px across here: 89.0-95.0%) are held to what their tessellation
-// allows.
+// least 98% of the pixels the mesh covers on the smooth, dense and creased
+// meshes (over 10 views, SNAXELS_MAP_VIEWS=10: spot 99.4-99.9%, horse
+// 99.6-99.9%, bunny 99.3-99.7%, fandisk 98.5-99.8%). A map made of the
+// mesh's vertices resolves no finer than its faces: the teapot's inside seen
+// only through the gap under its lid, between vertices (97.4-99.9%), and
+// Suzanne (505 vertices, faces 20-40 px across here, where the normalized
+// interpolated normal's N.L is far from linear: 90.2-97.2%) are held to
+// what their tessellation allows.
 TEST(SnaxelMap, AgreesWithRayCastClassesPerPixel) {
     constexpr int kSize = 512;
     for (const std::string file : {"suzanne.obj", "teapot.obj", "spot.obj", "horse.ply", "fandisk.obj", "stanford-bunny.obj"}) {
@@ -78,7 +79,7 @@ TEST(SnaxelMap, AgreesWithRayCastClassesPerPixel) {
         const SnaxelEngine engine(s.topo);
         const RayScene rays(s.topo);
         std::mt19937 rng(11);
-        for (int view = 0; view < 3; ++view) {
+        for (int view = 0; view < (getenv("SNAXELS_MAP_VIEWS") ? std::atoi(getenv("SNAXELS_MAP_VIEWS")) : 3); ++view) {
             const Camera cam = random_camera(rng);
             const Light light = random_light(rng, cam);
             const ImageProjection proj(cam, s.centre, s.radius, kSize, kSize, 16.0);
@@ -109,7 +110,7 @@ TEST(SnaxelMap, AgreesWithRayCastClassesPerPixel) {
             std::printf("%s view %d: %zu regions, %zu covered pixels, %.2f%% agree, %.2f%% outside every region, %.1f ms\n",
                         file.c_str(), view, m.snaxel.regions.size(), covered, 100.0 * fraction,
                         100.0 * double(uncovered) / double(covered), m.snaxel.stats.ms);
-            const double least = file == "suzanne.obj" ? 0.88 : file == "teapot.obj" || file == "fandisk.obj" ? 0.97 : 0.98;
+            const double least = file == "suzanne.obj" ? 0.89 : file == "teapot.obj" ? 0.97 : 0.98;
             EXPECT_GE(fraction, least) << file << " view " << view;
             if (const char* dir = getenv("SNAXELS_DEBUG_MAP_DIR")) {
                 FILE* out = std::fopen((std::string(dir) + "/" + file + "-" + std::to_string(view) + ".ppm").c_str(), "wb");
