@@ -7,6 +7,7 @@
 #include <QStringList>
 
 #include "core/animation/still.h"
+#include "core/snaxel/refine.h"
 #include "core/visibility/visibility.h"
 
 namespace snaxels::ui {
@@ -54,7 +55,7 @@ RegionShading region_shading(const Style& style, const Light& light, bool enable
 
 std::shared_ptr<ContourScene> make_contour_scene(const LoadedMesh& mesh, const std::string& path) {
     auto scene = std::make_shared<ContourScene>();
-    scene->topology = build_topology(mesh.mesh);
+    scene->topology = engine_topology(mesh.mesh);
     scene->rays = std::make_unique<RayScene>(scene->topology);
     scene->mesh_path = path;
     scene->rest_positions = scene->topology.positions;

@@ -108,6 +108,7 @@ int run_animate(const std::vector<std::string>& argv) {
     job.style = scene.style;
     job.visibility = scene.visibility;
     job.map_kind = scene.planar_map.value_or(PlanarMapKind::Snaxel);
+    job.refine = scene.refine;
     if (scene.check) job.engine.check_invariants = true;
     job.svg = svg_options;
     job.frames_dir = frames_dir;

@@ -9,6 +9,7 @@
 #include "app/cli/scene_options.h"
 #include "core/error.h"
 #include "core/mesh/import.h"
+#include "core/snaxel/refine.h"
 #include "core/snaxel/snaxel_engine.h"
 
 namespace snaxels::cli {
@@ -69,7 +70,8 @@ int run_bench(const std::vector<std::string>& argv) {
     print_row("import", time_it(import_runs, [&] { loaded = load_mesh(spec); }),
               "(" + std::to_string(import_runs) + " runs)");
     MeshTopology topology;
-    print_row("topology", time_it(repeat, [&] { topology = build_topology(loaded.mesh); }));
+    print_row("topology", time_it(repeat, [&] { topology = engine_topology(loaded.mesh); }),
+              topology.refinement ? "(refined to " + std::to_string(topology.n_faces()) + " faces)" : "");
     const SnaxelEngine engine(topology);
     Camera camera;
     camera.view_dir = glm::normalize(glm::dvec3(0.4, -0.3, 1.0));

@@ -13,6 +13,7 @@
 #include "core/export/contours_json.h"
 #include "core/export/svg.h"
 #include "core/mesh/import.h"
+#include "core/snaxel/refine.h"
 #include "core/snaxel/snaxel_engine.h"
 #include "core/util/atomic_file.h"
 #include "core/visibility/visibility.h"
@@ -56,7 +57,7 @@ int run_contours(const std::vector<std::string>& argv) {
     const Camera& camera = scene.camera;
     const Light& light = *scene.light;
 
-    const MeshTopology topology = build_topology(loaded.mesh);
+    const MeshTopology topology = engine_topology(loaded.mesh, scene.refine);
     StillJob job;
     job.camera = camera;
     job.light = light;
@@ -75,11 +76,13 @@ int run_contours(const std::vector<std::string>& argv) {
         else write_file_atomically(path, text);
     };
     if (!svg_out.empty()) emit(svg_out, still.svg);
-    if (!json_out.empty())
-        emit(json_out, contours_to_json(report, camera, light, still.drawing, results,
-                                        planar || !still.regions.empty() ? &still.regions : nullptr)
-                               .dump() +
-                           "\n");
+    if (!json_out.empty()) {
+        nlohmann::json doc = contours_to_json(report, camera, light, still.drawing, results,
+                                              planar || !still.regions.empty() ? &still.regions : nullptr);
+        doc["engine"] = {{"refine_levels", topology.refinement ? topology.refinement->levels : 0},
+                         {"faces", topology.n_faces()}};
+        emit(json_out, doc.dump() + "\n");
+    }
     if (json_out.empty() && svg_out.empty()) {
         std::cout << report.source << ": " << report.vertices << " vertices, " << report.faces
                   << " faces\n";

@@ -12,6 +12,7 @@
 #include "core/error.h"
 #include "core/mesh/import.h"
 #include "core/project/project.h"
+#include "core/snaxel/refine.h"
 #include "core/util/atomic_file.h"
 
 namespace snaxels::cli {
@@ -56,7 +57,7 @@ int run_render(const std::vector<std::string>& argv) {
         return 0;
     }
     const int frame = args.value("frame") ? parse_int("frame", *args.value("frame"), 0, 100000) : project.frame;
-    MeshTopology topology = build_topology(loaded.mesh);
+    MeshTopology topology = engine_topology(loaded.mesh, job.refine);
     const glm::dvec3 centre = 0.5 * (loaded.report.bbox_min + loaded.report.bbox_max);
     FrameDriver driver(job.animation, loaded, topology, job.camera, job.light, centre, mesh_path);
     StillJob still;

@@ -70,6 +70,10 @@ std::vector<OptionSpec> scene_option_specs() {
             {"planar-map", "snaxel|post",
              "the planar map the style's fills come from: snaxel (the snaxel-defined visible-surface map, default) "
              "or post (polygon clipping); contours --json then lists its regions"},
+            {"refine", "auto|0-3",
+             "split each face into 4^N on its own plane, new vertices taking the interpolated normal, so contours "
+             "and regions follow the smooth shading of a coarse mesh (default auto: meshes under 20000 faces are "
+             "refined to at least that)"},
             {"check", "", "check the snaxel invariants after every iteration (slower)"}};
 }
 
@@ -134,6 +138,11 @@ SceneOptions parse_scene_options(const Args& args) {
         if (*m != "snaxel" && *m != "post")
             throw UsageError("--planar-map takes snaxel or post, not '" + *m + "'");
         o.planar_map = parse_planar_map_kind(*m);
+    }
+    if (const auto r = args.value("refine")) {
+        if (*r == "auto") o.refine = kAutoRefine;
+        else if (r->size() == 1 && (*r)[0] >= '0' && (*r)[0] <= char('0' + kMaxRefineLevels)) o.refine = (*r)[0] - '0';
+        else throw UsageError("--refine takes auto or a level from 0 to " + std::to_string(kMaxRefineLevels) + ", not '" + *r + "'");
     }
     o.visibility = !args.flag("no-visibility");
     o.check = args.flag("check");

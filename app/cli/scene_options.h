@@ -9,6 +9,7 @@
 #include "app/cli/args.h"
 #include "core/mesh/report.h"
 #include "core/planarmap/planar_map.h"
+#include "core/snaxel/refine.h"
 #include "core/scene/camera.h"
 #include "core/snaxel/contour_function.h"
 #include "core/style/style.h"
@@ -26,6 +27,7 @@ struct SceneOptions {
     /// --planar-map: which map (and, for contours, list its regions); fills
     /// use the snaxel map when it is not given.
     std::optional<PlanarMapKind> planar_map;
+    int refine = kAutoRefine; ///< --refine: levels of refinement for the engine
 };
 
 std::vector<OptionSpec> scene_option_specs();

@@ -32,7 +32,7 @@ AnimationJob make_animation_job(const Style& style, const AnimationSpec& animati
 
 AnimationOutput run_animation(const LoadedMesh& mesh, const std::string& mesh_path, const AnimationJob& job) {
     AnimationOutput out;
-    MeshTopology topology = build_topology(mesh.mesh);
+    MeshTopology topology = engine_topology(mesh.mesh, job.refine);
     const glm::dvec3 mesh_centre = 0.5 * (mesh.report.bbox_min + mesh.report.bbox_max);
     FrameDriver driver(job.animation, mesh, topology, job.camera, job.light, mesh_centre, mesh_path);
     int frames = job.animation.frames;

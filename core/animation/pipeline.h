@@ -14,6 +14,7 @@
 #include "core/export/animated_svg.h"
 #include "core/planarmap/planar_map.h"
 #include "core/scene/animation.h"
+#include "core/snaxel/refine.h"
 #include "core/snaxel/tracker.h"
 #include "core/style/style.h"
 
@@ -27,6 +28,7 @@ struct AnimationJob {
     Style style = default_style(); ///< strokes, canvas (size, margin, background)
     bool visibility = true;
     PlanarMapKind map_kind = PlanarMapKind::Snaxel; ///< the map the style's fills come from
+    int refine = kAutoRefine; ///< levels the mesh is refined by for the engine (core/snaxel/refine.h)
     EngineOptions engine;
     AnimatedSvgOptions svg;
     std::string frames_dir; ///< when set, every frame is also written there as static SVG

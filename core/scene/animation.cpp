@@ -77,7 +77,7 @@ void FrameDriver::apply(int k, Camera& camera, Light& light) {
         break;
     case AnimationSpec::Kind::Clip:
         clip_->pose(double(k) / spec_.fps, soup_);
-        for (std::size_t v = 0; v < topo_.n_vertices(); ++v) topo_.positions[v] = soup_[mesh_.vertex_source[v]];
+        for (std::size_t v = 0; v < topo_.n_base_vertices(); ++v) topo_.positions[v] = soup_[mesh_.vertex_source[v]];
         recompute_normals(topo_);
         break;
     case AnimationSpec::Kind::Sequence: {
@@ -87,7 +87,7 @@ void FrameDriver::apply(int k, Camera& camera, Light& light) {
             throw Error(path + ": has " + std::to_string(soup.positions.size()) +
                         " vertices where the sequence's first file has " + std::to_string(soup_size_) +
                         " (every file must share one connectivity)");
-        for (std::size_t v = 0; v < topo_.n_vertices(); ++v) topo_.positions[v] = soup.positions[mesh_.vertex_source[v]];
+        for (std::size_t v = 0; v < topo_.n_base_vertices(); ++v) topo_.positions[v] = soup.positions[mesh_.vertex_source[v]];
         for (const auto& p : topo_.positions)
             if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z))
                 throw Error(path + ": a vertex has a non-finite coordinate");

@@ -2,6 +2,8 @@
 
 #include <glm/glm.hpp>
 
+#include "core/snaxel/refine.h"
+
 namespace snaxels {
 
 MeshTopology build_topology(const Mesh& mesh) {
@@ -52,7 +54,34 @@ MeshTopology build_topology(const Mesh& mesh) {
 
 namespace snaxels {
 
+std::size_t MeshTopology::n_base_vertices() const { return refinement ? refinement->base_vertices : n_vertices(); }
+
 void recompute_normals(MeshTopology& t) {
+    if (t.refinement) {
+        const MeshRefinement& r = *t.refinement;
+        const std::size_t base = r.base_vertices;
+        std::fill(t.normals.begin(), t.normals.begin() + std::ptrdiff_t(base), glm::dvec3(0.0));
+        for (const auto& f : r.base_faces) {
+            const glm::dvec3 a = t.positions[std::size_t(f[0])];
+            const glm::dvec3 n = glm::cross(t.positions[std::size_t(f[1])] - a, t.positions[std::size_t(f[2])] - a);
+            for (const auto v : f) t.normals[std::size_t(v)] += n;
+        }
+        for (std::size_t v = 0; v < base; ++v) {
+            const double len = glm::length(t.normals[v]);
+            t.normals[v] = len > 0.0 ? t.normals[v] / len : glm::dvec3(0.0, 0.0, 1.0);
+        }
+        for (std::size_t i = 0; i < r.from.size(); ++i) {
+            const auto& from = r.from[i];
+            const glm::dvec3& w = r.weights[i];
+            t.positions[base + i] = w.x * t.positions[std::size_t(from[0])] + w.y * t.positions[std::size_t(from[1])] +
+                                    w.z * t.positions[std::size_t(from[2])];
+            const glm::dvec3 n = w.x * t.normals[std::size_t(from[0])] + w.y * t.normals[std::size_t(from[1])] +
+                                 w.z * t.normals[std::size_t(from[2])];
+            const double len = glm::length(n);
+            t.normals[base + i] = len > 0.0 ? n / len : t.normals[std::size_t(from[0])];
+        }
+        return;
+    }
     std::fill(t.normals.begin(), t.normals.end(), glm::dvec3(0.0));
     for (const auto& f : t.face_vertices) {
         const glm::dvec3 a = t.positions[f[0]];

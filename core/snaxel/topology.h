@@ -5,6 +5,7 @@
 
 #include <array>
 #include <cstdint>
+#include <memory>
 #include <vector>
 
 #include <glm/vec3.hpp>
@@ -12,6 +13,8 @@
 #include "core/mesh/mesh.h"
 
 namespace snaxels {
+
+struct MeshRefinement; // core/snaxel/refine.h
 
 struct MeshTopology {
     static constexpr std::int32_t kNone = -1;
@@ -26,8 +29,13 @@ struct MeshTopology {
     /// the edge to each in ring_edge, in the circulator's circular order.
     std::vector<std::int32_t> ring_start, ring, ring_edge;
     double mean_edge_length = 0.0;
+    /// Set on a refined coarse mesh (refine_topology): how the vertices past
+    /// the original ones follow them.
+    std::shared_ptr<const MeshRefinement> refinement;
 
     std::size_t n_vertices() const { return positions.size(); }
+    /// The mesh's own vertices (the first ones; all of them unless refined).
+    std::size_t n_base_vertices() const;
     std::size_t n_edges() const { return edge_vertices.size(); }
     std::size_t n_faces() const { return face_vertices.size(); }
     bool is_boundary_edge(std::int32_t e) const {
@@ -75,7 +83,9 @@ std::int32_t grow_vertex_sets(const MeshTopology& topo, std::vector<std::int32_t
 namespace snaxels {
 
 /// Recomputes every vertex normal of @p topology from its current positions
-/// (area-weighted face normals, as on import), after the mesh moved.
+/// (area-weighted face normals, as on import), after the mesh moved. On a
+/// refined mesh, after its base vertices moved: the added vertices follow
+/// them (positions and normals interpolated over the original faces).
 void recompute_normals(MeshTopology& topology);
 
 } // namespace snaxels

@@ -5,6 +5,7 @@
 
 #include "core/mesh/import.h"
 #include "core/planarmap/snaxel_map.h"
+#include "core/snaxel/refine.h"
 #include "tests/support/assets.h"
 #include "tests/support/map_raster.h"
 
@@ -63,21 +64,21 @@ Light random_light(std::mt19937& rng, const Camera& cam) {
 } // namespace
 
 // Rasterized at 512 x 512, the snaxel-defined map's class agrees with the
-// class found directly at the pixel (ray cast, shading at the hit) on at
-// least 98% of the pixels the mesh covers on the smooth, dense and creased
-// meshes (over 10 views, SNAXELS_MAP_VIEWS=10: spot 99.4-99.9%, horse
-// 99.6-99.9%, bunny 99.3-99.7%, fandisk 98.5-99.8%). A map made of the
-// mesh's vertices resolves no finer than its faces: the teapot's inside seen
-// only through the gap under its lid, between vertices (97.4-99.9%), and
-// Suzanne (505 vertices, faces 20-40 px across here, where the normalized
-// interpolated normal's N.L is far from linear: 90.2-97.2%) are held to
-// what their tessellation allows.
+// class found directly at the pixel (a ray cast against the mesh as loaded,
+// N.L of the interpolated normal at the hit) on at least 98% of the pixels
+// the mesh covers. The map is built on the topology the engine works on:
+// coarse meshes refined (core/snaxel/refine.h), as the CLI and the
+// application do by default. Over 10 views (SNAXELS_MAP_VIEWS=10) the
+// least agreement measured was 98.1% (Suzanne, refined 3 levels; 90-97%
+// unrefined, where N.L of the normalized interpolated normal is far from
+// linear across its 20-40 px faces).
 TEST(SnaxelMap, AgreesWithRayCastClassesPerPixel) {
     constexpr int kSize = 512;
     for (const std::string file : {"suzanne.obj", "teapot.obj", "spot.obj", "horse.ply", "fandisk.obj", "stanford-bunny.obj"}) {
         const Scene s(file);
-        const SnaxelEngine engine(s.topo);
-        const RayScene rays(s.topo);
+        const MeshTopology topo = engine_topology(s.mesh.mesh);
+        const SnaxelEngine engine(topo);
+        const RayScene rays(topo), reference(s.topo);
         std::mt19937 rng(11);
         for (int view = 0; view < (getenv("SNAXELS_MAP_VIEWS") ? std::atoi(getenv("SNAXELS_MAP_VIEWS")) : 3); ++view) {
             const Camera cam = random_camera(rng);
@@ -90,7 +91,7 @@ TEST(SnaxelMap, AgreesWithRayCastClassesPerPixel) {
             std::vector<unsigned char> debug(std::size_t(kSize) * kSize * 3, 255);
             for (int y = 0; y < kSize; ++y)
                 for (int x = 0; x < kSize; ++x) {
-                    const int direct = test::direct_class(rays, proj, cam, light, {k}, s.radius, x, y);
+                    const int direct = test::direct_class(reference, proj, cam, light, {k}, s.radius, x, y);
                     if (direct < 0) continue;
                     ++covered;
                     const int r = image[std::size_t(y) * kSize + std::size_t(x)];
@@ -107,11 +108,10 @@ TEST(SnaxelMap, AgreesWithRayCastClassesPerPixel) {
                     else px[0] = 0, px[1] = 0, px[2] = 255;
                 }
             const double fraction = double(agree) / double(covered);
-            std::printf("%s view %d: %zu regions, %zu covered pixels, %.2f%% agree, %.2f%% outside every region, %.1f ms\n",
-                        file.c_str(), view, m.snaxel.regions.size(), covered, 100.0 * fraction,
+            std::printf("%s (%zu faces) view %d: %zu regions, %zu covered pixels, %.2f%% agree, %.2f%% outside every region, %.1f ms\n",
+                        file.c_str(), topo.n_faces(), view, m.snaxel.regions.size(), covered, 100.0 * fraction,
                         100.0 * double(uncovered) / double(covered), m.snaxel.stats.ms);
-            const double least = file == "suzanne.obj" ? 0.89 : file == "teapot.obj" ? 0.97 : 0.98;
-            EXPECT_GE(fraction, least) << file << " view " << view;
+            EXPECT_GE(fraction, 0.98) << file << " view " << view;
             if (const char* dir = getenv("SNAXELS_DEBUG_MAP_DIR")) {
                 FILE* out = std::fopen((std::string(dir) + "/" + file + "-" + std::to_string(view) + ".ppm").c_str(), "wb");
                 std::fprintf(out, "P6 %d %d 255\n", kSize, kSize);

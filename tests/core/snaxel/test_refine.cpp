@@ -1,0 +1,208 @@
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <map>
+#include <random>
+
+#include <glm/glm.hpp>
+
+#include "core/mesh/import.h"
+#include "core/snaxel/contour_function.h"
+#include "core/snaxel/refine.h"
+#include "core/snaxel/snaxel_engine.h"
+#include "tests/support/assets.h"
+
+using namespace snaxels;
+
+namespace {
+
+using Weights = std::map<std::int32_t, double>; // original vertex -> weight
+
+/// Where a vertex of a refined topology lies on the original mesh.
+Weights origin(const MeshTopology& t, std::int32_t v) {
+    if (!t.refinement || std::size_t(v) < t.refinement->base_vertices) return {{v, 1.0}};
+    const std::size_t i = std::size_t(v) - t.refinement->base_vertices;
+    Weights w;
+    for (int k = 0; k < 3; ++k) w[t.refinement->from[i][std::size_t(k)]] += t.refinement->weights[i][k];
+    return w;
+}
+
+Weights mix(const Weights& a, const Weights& b, double s) {
+    Weights w;
+    for (const auto& [v, x] : a) w[v] += (1.0 - s) * x;
+    for (const auto& [v, x] : b) w[v] += s * x;
+    return w;
+}
+
+/// The original mesh's smooth (Phong) normal at a point given by weights.
+glm::dvec3 phong_normal(const MeshTopology& base, const Weights& w) {
+    glm::dvec3 n(0.0);
+    for (const auto& [v, x] : w) n += x * base.normals[std::size_t(v)];
+    return glm::normalize(n);
+}
+
+/// |f| of the isophote's function on the original's smooth shading half way
+/// along each segment of its fronts (where a straight contour across a face
+/// strays furthest from the curved one), ascending.
+std::vector<double> isophote_errors(const MeshTopology& base, const MeshTopology& topo, const Camera& cam, const Light& light,
+                            double k) {
+    const SnaxelEngine engine(topo);
+    const ContourSpec spec{ContourKind::Isophote, k};
+    const ContourResult r = engine.compute(spec, cam, light);
+    const ContourFunction f(spec, cam, light); // min(N.L - k, N.V): the isophote's region ends at the visual contour
+    std::vector<double> errors;
+    for (const FrontLoop& loop : r.fronts.loops) {
+        std::int32_t prev = MeshTopology::kNone;
+        auto point = [&](std::int32_t s) {
+            const Snaxel& x = r.fronts.snaxels[std::size_t(s)];
+            return mix(origin(topo, x.inside), origin(topo, x.outside), x.t);
+        };
+        r.fronts.for_each_in_loop(loop, [&](std::int32_t s) {
+            if (prev != MeshTopology::kNone) {
+                const Weights mid = mix(point(prev), point(s), 0.5);
+                glm::dvec3 p(0.0);
+                for (const auto& [v, x] : mid) p += x * base.positions[std::size_t(v)];
+                errors.push_back(std::abs(f(p, phong_normal(base, mid))));
+            }
+            prev = s;
+        });
+    }
+    std::sort(errors.begin(), errors.end());
+    return errors;
+}
+
+double mean(const std::vector<double>& x) {
+    double sum = 0.0;
+    for (const double v : x) sum += v;
+    return x.empty() ? 0.0 : sum / double(x.size());
+}
+
+double percentile(const std::vector<double>& sorted, double q) {
+    return sorted.empty() ? 0.0 : sorted[std::min(sorted.size() - 1, std::size_t(q * double(sorted.size())))];
+}
+
+} // namespace
+
+TEST(Refine, AutomaticLevelsReachTheTarget) {
+    EXPECT_EQ(auto_refine_levels(968), 3);    // Suzanne: 61952 faces
+    EXPECT_EQ(auto_refine_levels(5856), 1);   // spot: 23424
+    EXPECT_EQ(auto_refine_levels(12946), 1);  // fandisk: 51784
+    EXPECT_EQ(auto_refine_levels(69451), 0);  // the bunny is left as it is
+    EXPECT_EQ(auto_refine_levels(2), 3);      // at most three levels
+    EXPECT_EQ(auto_refine_levels(0), 0);
+    EXPECT_EQ(refine_levels(968, 1), 1);
+    EXPECT_EQ(refine_levels(968, 9), kMaxRefineLevels);
+    EXPECT_EQ(refine_levels(100000, 2), 2);   // asked for, even on a dense mesh
+}
+
+// Refining splits every face into 4^L on its own plane: the original
+// vertices keep their indices and normals, the added ones lie on their
+// faces and take the normalized interpolated normal; the surface's
+// boundary grows by 2^L and stays the only boundary.
+TEST(Refine, SplitsFacesOnTheirPlanesWithInterpolatedNormals) {
+    for (const std::string file : {"suzanne.obj", "teapot.obj"}) {
+        const LoadedMesh mesh = import_mesh(test::asset(file));
+        const MeshTopology base = build_topology(mesh.mesh);
+        for (int levels = 1; levels <= 2; ++levels) {
+            const MeshTopology t = refine_topology(base, levels);
+            ASSERT_TRUE(t.refinement) << file;
+            const std::size_t n = std::size_t(1) << levels;
+            EXPECT_EQ(t.n_faces(), base.n_faces() * n * n) << file;
+            EXPECT_EQ(t.n_base_vertices(), base.n_vertices());
+            std::size_t base_boundary = 0, boundary = 0;
+            for (std::int32_t e = 0; e < std::int32_t(base.n_edges()); ++e) base_boundary += base.is_boundary_edge(e);
+            for (std::int32_t e = 0; e < std::int32_t(t.n_edges()); ++e) boundary += t.is_boundary_edge(e);
+            EXPECT_EQ(boundary, base_boundary * n) << file;
+            for (std::size_t v = 0; v < base.n_vertices(); ++v) {
+                ASSERT_EQ(t.positions[v], base.positions[v]);
+                ASSERT_EQ(t.normals[v], base.normals[v]);
+            }
+            for (std::size_t v = base.n_vertices(); v < t.n_vertices(); ++v) {
+                const Weights w = origin(t, std::int32_t(v));
+                glm::dvec3 p(0.0);
+                double sum = 0.0;
+                for (const auto& [u, x] : w) p += x * base.positions[std::size_t(u)], sum += x;
+                ASSERT_NEAR(sum, 1.0, 1e-12);
+                ASSERT_LT(glm::length(t.positions[v] - p), 1e-12);
+                ASSERT_LT(glm::length(t.normals[v] - phong_normal(base, w)), 1e-12);
+            }
+            // Every refined face lies in one original face's plane, facing its way.
+            std::map<std::array<std::int32_t, 3>, std::size_t> face_of;
+            for (std::size_t f = 0; f < base.n_faces(); ++f) {
+                std::array<std::int32_t, 3> key = base.face_vertices[f];
+                std::sort(key.begin(), key.end());
+                face_of[key] = f;
+            }
+            auto unit_normal = [](const glm::dvec3& a, const glm::dvec3& b, const glm::dvec3& c) {
+                return glm::normalize(glm::cross(b - a, c - a));
+            };
+            for (const auto& f : t.face_vertices) {
+                Weights corners;
+                for (const std::int32_t v : f)
+                    for (const auto& [u, x] : origin(t, v)) if (x > 0.0) corners[u] = 1.0;
+                ASSERT_EQ(corners.size(), 3u) << file;
+                std::array<std::int32_t, 3> key{};
+                std::size_t i = 0;
+                for (const auto& [u, x] : corners) key[i++] = u;
+                const auto it = face_of.find(key);
+                ASSERT_NE(it, face_of.end()) << file;
+                const auto& bf = base.face_vertices[it->second];
+                const glm::dvec3 n0 = unit_normal(base.positions[std::size_t(bf[0])], base.positions[std::size_t(bf[1])],
+                                                  base.positions[std::size_t(bf[2])]);
+                const glm::dvec3 n1 = unit_normal(t.positions[std::size_t(f[0])], t.positions[std::size_t(f[1])],
+                                                  t.positions[std::size_t(f[2])]);
+                ASSERT_GT(glm::dot(n0, n1), 1.0 - 1e-9) << file;
+            }
+        }
+    }
+}
+
+// After the original vertices move (a posed frame), recompute_normals puts
+// the added vertices back on the moved faces with the new smooth normals.
+TEST(Refine, AddedVerticesFollowAPose) {
+    const LoadedMesh mesh = import_mesh(test::asset("suzanne.obj"));
+    MeshTopology base = build_topology(mesh.mesh);
+    MeshTopology t = refine_topology(base, 2);
+    std::mt19937 rng(5);
+    std::normal_distribution<double> jitter(0.0, 0.02);
+    for (std::size_t v = 0; v < base.n_vertices(); ++v) {
+        base.positions[v] += glm::dvec3(jitter(rng), jitter(rng), jitter(rng)) + glm::dvec3(0.3, 0.0, 0.0);
+        t.positions[v] = base.positions[v];
+    }
+    recompute_normals(base);
+    recompute_normals(t);
+    for (std::size_t v = 0; v < t.n_vertices(); ++v) {
+        const Weights w = origin(t, std::int32_t(v));
+        glm::dvec3 p(0.0);
+        for (const auto& [u, x] : w) p += x * base.positions[std::size_t(u)];
+        ASSERT_LT(glm::length(t.positions[v] - p), 1e-12);
+        ASSERT_LT(glm::length(t.normals[v] - phong_normal(base, w)), 1e-12);
+    }
+}
+
+// What refining is for: on a coarse mesh an isophote cuts straight across
+// faces where the smooth shading curves; refined, the contour follows it.
+// Measured half way along each front segment, against N.L of the original
+// mesh's interpolated normal.
+TEST(Refine, IsophotesFollowTheSmoothShading) {
+    const LoadedMesh mesh = import_mesh(test::asset("suzanne.obj"));
+    const MeshTopology base = build_topology(mesh.mesh);
+    const MeshTopology refined = engine_topology(mesh.mesh);
+    ASSERT_EQ(refined.n_faces(), base.n_faces() * 64);
+    std::mt19937 rng(17);
+    std::normal_distribution<double> n;
+    for (int view = 0; view < 4; ++view) {
+        Camera cam;
+        cam.view_dir = glm::normalize(glm::dvec3(n(rng), n(rng), n(rng)));
+        Light light = default_light(cam);
+        light.dir = glm::normalize(light.dir + 0.5 * glm::dvec3(n(rng), n(rng), n(rng)));
+        const std::vector<double> coarse = isophote_errors(base, base, cam, light, 0.5);
+        const std::vector<double> fine = isophote_errors(base, refined, cam, light, 0.5);
+        ASSERT_FALSE(coarse.empty() || fine.empty()) << "view " << view;
+        std::printf("view %d: |f| half way along front segments, mean and 95th percentile: %.4f %.4f as loaded, "
+                    "%.4f %.4f refined\n",
+                    view, mean(coarse), percentile(coarse, 0.95), mean(fine), percentile(fine, 0.95));
+        EXPECT_LT(mean(fine), 0.25 * mean(coarse)) << "view " << view;
+        EXPECT_LT(percentile(fine, 0.95), 0.25 * percentile(coarse, 0.95)) << "view " << view;
+    }
+}
