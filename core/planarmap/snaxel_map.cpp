@@ -474,30 +474,29 @@ SnaxelMap build_snaxel_map(const SnaxelEngine& engine, const SnaxelMapInput& in,
     // averaged) is hidden, yet its image, wound the other way, would cancel
     // the faces it folds over: its pieces are walked backwards, so they add
     // nothing to their regions' images.
-    std::vector<char> folded(topo.n_faces(), 0);
+    std::vector<char> folded(topo.n_faces(), 0), walked(topo.n_faces(), 0);
     parallel_for(topo.n_faces(), [&](std::size_t f) {
         const auto& fv = topo.face_vertices[f];
+        const auto& fe = topo.face_edges[f];
         bool near_side = false;
         for (int k = 0; k < 3; ++k) {
             const std::int32_t r = comp[std::size_t(fv[std::size_t(k)])];
             near_side = near_side || (r >= 0 && comp_label[std::size_t(r)] < kBack);
         }
         folded[f] = near_side && !front_face[f];
+        // Only faces with a cut edge or a seen mesh-boundary edge, and
+        // folded faces, have such steps.
+        bool walk = folded[f];
+        for (int k = 0; k < 3 && !walk; ++k) {
+            const int la = label[std::size_t(fv[std::size_t(k)])], lb = label[std::size_t(fv[std::size_t((k + 1) % 3)])];
+            walk = la != lb || (la >= 0 && topo.is_boundary_edge(fe[std::size_t(k)]));
+        }
+        walked[f] = walk;
     }, 4096);
-    // Only faces with a cut edge or a mesh-boundary edge, and folded faces,
-    // have such steps.
     std::vector<std::int32_t> faces;
     faces.reserve(2 * cut_edges.size());
-    for (std::int32_t e = 0; e < E; ++e) {
-        const int la = label[std::size_t(topo.edge_vertices[e][0])], lb = label[std::size_t(topo.edge_vertices[e][1])];
-        if (la == lb && (la < 0 || !topo.is_boundary_edge(e))) continue;
-        for (const std::int32_t f : topo.edge_faces[std::size_t(e)])
-            if (f != MeshTopology::kNone) faces.push_back(f);
-    }
     for (std::size_t f = 0; f < topo.n_faces(); ++f)
-        if (folded[f]) faces.push_back(std::int32_t(f));
-    std::sort(faces.begin(), faces.end());
-    faces.erase(std::unique(faces.begin(), faces.end()), faces.end());
+        if (walked[f]) faces.push_back(std::int32_t(f));
     // The faces are walked in parallel, each thread into its own lists.
     struct WalkOut {
         std::vector<Step> steps;
@@ -663,7 +662,15 @@ SnaxelMap build_snaxel_map(const SnaxelEngine& engine, const SnaxelMapInput& in,
         }
     }
     // Steps walked both ways (between two pieces of one region) cancel.
-    std::sort(steps.begin(), steps.end());
+    {
+        // Sorted in parallel halves, then merged.
+        const auto middle = steps.begin() + std::ptrdiff_t(steps.size() / 2);
+        parallel_for(2, [&](std::size_t half) {
+            if (half == 0) std::sort(steps.begin(), middle);
+            else std::sort(middle, steps.end());
+        }, 1);
+        std::inplace_merge(steps.begin(), middle, steps.end());
+    }
     {
         std::vector<char> gone(steps.size(), 0);
         for (std::size_t i = 0; i < steps.size(); ++i) {
