@@ -148,6 +148,7 @@ MainWindow::MainWindow(QWidget* parent)
     busy_->setMaximumWidth(160);
     busy_->hide();
     statusBar()->addPermanentWidget(contourLabel_);
+    meshLabel_->setObjectName("meshLabel");
     statusBar()->addPermanentWidget(meshLabel_);
     // Contours follow the camera: recomputed off the GUI thread shortly
     // after it stops moving, the newest request winning.
@@ -505,12 +506,15 @@ void MainWindow::onLoadFinished() {
     committedView_ = viewState();
     committedSpec_ = timeline_->spec();
     const MeshReport& r = mesh_->report;
-    meshLabel_->setText(tr("%1 vertices, %2 faces, %3 boundary edges%4")
+    meshLabel_->setText(tr("%1 vertices, %2 faces, %3 boundary edges%4%5")
                             .arg(r.vertices)
                             .arg(r.faces)
                             .arg(r.boundary_edges)
                             .arg(r.split_vertices ? tr(", %1 vertices split").arg(r.split_vertices)
-                                                  : QString()));
+                                                  : QString())
+                            .arg(scene_->topology.refinement
+                                     ? tr(" (refined to %1 faces for contours)").arg(scene_->topology.n_faces())
+                                     : QString()));
     statusBar()->showMessage(tr("Loaded %1").arg(QFileInfo(loadingSpec_).fileName()), 4000);
     if (pendingProject_) {
         const Project project = std::move(*pendingProject_);

@@ -6,6 +6,7 @@
 #include <QElapsedTimer>
 #include <QTimer>
 #include <QFile>
+#include <QLabel>
 #include <QTemporaryDir>
 #include <QSet>
 #include <QSignalSpy>
@@ -181,6 +182,11 @@ class TestMainWindow : public QObject {
     void scrubsAndExports() {
         MainWindow window;
         QVERIFY(showWithMesh(window, QString(SNAXELS_TEST_ASSETS) + "/spot.obj", {1200, 800}));
+        // A coarse mesh is refined for the contours, and the status bar says so.
+        const auto* meshLabel = window.findChild<QLabel*>("meshLabel");
+        QVERIFY(meshLabel);
+        QVERIFY2(meshLabel->text().contains("5856 faces") && meshLabel->text().contains("refined to 23424 faces"),
+                 qPrintable(meshLabel->text()));
         QSignalSpy contours(&window, &MainWindow::contoursUpdated);
         const QByteArray first = window.currentSvg();
         window.timeline()->setFrameCount(12);
