@@ -132,7 +132,11 @@ SnaxelMap build_snaxel_map(const SnaxelEngine& engine, const SnaxelMapInput& in,
     const auto E = std::int32_t(topo.n_edges());
     const int bands = int(in.isophotes.size());
     const int highlight = 2 + bands; // classes: 0 shadow, 1 lit, 2.. bands, then highlight
-    const VisibilitySampler sampler(rays, camera);
+    // Labels are decided at the refined mesh's own scale: a vertex near a
+    // fold of a large face is hidden by the refined faces next to it.
+    VisibilityOptions ray_options;
+    ray_options.original_neighbourhood = false;
+    const VisibilitySampler sampler(rays, camera, ray_options);
     SnaxelMap map;
 
     // Labels: where every kind's converged front leaves each vertex (rules

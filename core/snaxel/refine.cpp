@@ -59,6 +59,7 @@ MeshTopology refine_topology(const MeshTopology& t, int levels) {
     };
     std::vector<std::array<std::int32_t, 3>> faces;
     faces.reserve(t.n_faces() * std::size_t(n) * std::size_t(n));
+    r->face_origin.reserve(faces.capacity());
     std::vector<std::int32_t> grid(std::size_t(n + 1) * std::size_t(n + 1));
     for (std::size_t f = 0; f < t.n_faces(); ++f) {
         const auto& c = t.face_vertices[f];
@@ -81,7 +82,11 @@ MeshTopology refine_topology(const MeshTopology& t, int levels) {
         for (std::int32_t a = 0; a < n; ++a)
             for (std::int32_t b = 0; a + b < n; ++b) {
                 faces.push_back({at(a, b), at(a + 1, b), at(a, b + 1)});
-                if (a + b + 1 < n) faces.push_back({at(a + 1, b), at(a + 1, b + 1), at(a, b + 1)});
+                r->face_origin.push_back(std::int32_t(f));
+                if (a + b + 1 < n) {
+                    faces.push_back({at(a + 1, b), at(a + 1, b + 1), at(a, b + 1)});
+                    r->face_origin.push_back(std::int32_t(f));
+                }
             }
     }
     Mesh mesh;
@@ -95,7 +100,8 @@ MeshTopology refine_topology(const MeshTopology& t, int levels) {
         if (!mesh.add_face(handles[std::size_t(f[0])], handles[std::size_t(f[1])], handles[std::size_t(f[2])]).is_valid())
             return t; // cannot happen on a manifold topology; the mesh is then used as it is
     }
-    MeshTopology out = build_topology(mesh);
+    MeshTopology out = build_topology(mesh); // faces keep the order they were added in
+    if (out.n_faces() != faces.size()) return t;
     out.refinement = std::move(r);
     return out;
 }

@@ -6,6 +6,7 @@
 #include <embree3/rtcore.h>
 
 #include "core/error.h"
+#include "core/snaxel/refine.h"
 
 namespace snaxels {
 
@@ -14,6 +15,12 @@ struct CountContext {
     RTCIntersectContext embree;
     const MeshTopology* topo;
     const VisibilityRay* ray;
+    // On a refined mesh, when the ray asks, the faces ignored are those of
+    // the original mesh around the original vertices the ray's ignored
+    // vertices lie between, as they would be on the mesh as loaded.
+    const MeshRefinement* refinement = nullptr;
+    std::array<std::int32_t, 9> ignore_base{};
+    int n_ignore_base = 0;
     Crossings crossings;
     // A primitive can be reported more than once; remember what was counted.
     std::vector<std::uint32_t> seen;
@@ -22,6 +29,13 @@ struct CountContext {
 namespace {
 
 bool ignored(const CountContext& c, std::uint32_t prim) {
+    if (c.refinement) {
+        const auto& corners = c.refinement->base_faces[std::size_t(c.refinement->face_origin[prim])];
+        for (const std::int32_t v : corners)
+            for (int i = 0; i < c.n_ignore_base; ++i)
+                if (v == c.ignore_base[std::size_t(i)]) return true;
+        return false;
+    }
     for (const std::int32_t v : c.topo->face_vertices[prim])
         for (const std::int32_t w : c.ray->ignore)
             if (v == w) return true;
@@ -128,6 +142,25 @@ void RayScene::init_context(CountContext& c, const VisibilityRay& r, bool counti
     c.embree.filter = counting ? count_filter : occlusion_filter;
     c.topo = &topo_;
     c.ray = &r;
+    if (topo_.refinement && r.original_neighbourhood) {
+        const MeshRefinement& refinement = *topo_.refinement;
+        c.refinement = &refinement;
+        auto add = [&](std::int32_t v) {
+            for (int i = 0; i < c.n_ignore_base; ++i)
+                if (c.ignore_base[std::size_t(i)] == v) return;
+            c.ignore_base[std::size_t(c.n_ignore_base++)] = v;
+        };
+        for (const std::int32_t v : r.ignore) {
+            if (v == MeshTopology::kNone) continue;
+            if (std::size_t(v) < refinement.base_vertices) {
+                add(v);
+                continue;
+            }
+            const std::size_t i = std::size_t(v) - refinement.base_vertices;
+            for (int k = 0; k < 3; ++k)
+                if (refinement.weights[i][k] > 0.0) add(refinement.from[i][std::size_t(k)]);
+        }
+    }
 }
 
 Crossings RayScene::count(const VisibilityRay& r) const {

@@ -19,6 +19,10 @@ struct VisibilityRay {
     glm::dvec3 dir{0.0, 0.0, 1.0}; ///< unit, toward the viewer
     double tfar = 0.0;              ///< where the viewer is (infinity: orthographic)
     std::array<std::int32_t, 3> ignore{MeshTopology::kNone, MeshTopology::kNone, MeshTopology::kNone};
+    /// On a refined mesh (core/snaxel/refine.h): ignore the faces the mesh
+    /// as loaded has around the original vertices the ignored ones lie
+    /// between, not only the refined faces around them.
+    bool original_neighbourhood = false;
 };
 
 /// Crossings of a ray with faces facing along it (front: the face's normal

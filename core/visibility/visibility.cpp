@@ -18,6 +18,7 @@ std::int32_t common_face(const MeshTopology& topo, const Snaxel& a, const Snaxel
 VisibilityRay VisibilitySampler::make_ray(const glm::dvec3& p, const glm::dvec3& n,
                                           double scale) const {
     VisibilityRay ray;
+    ray.original_neighbourhood = options_.original_neighbourhood;
     ray.origin = p + options_.normal_offset * scale * n;
     if (camera_.orthographic()) {
         ray.dir = -glm::normalize(camera_.view_dir);

@@ -19,6 +19,11 @@ struct VisibilityOptions {
     /// Bisection steps that locate a QI change between two samples
     /// (10 steps: 1/1024 of the segment, far below a pixel).
     int bisection_steps = 10;
+    /// On a refined mesh, a ray ignores the faces of the mesh as loaded
+    /// around where it starts (VisibilityRay::original_neighbourhood): a
+    /// contour inside a large flat face is then not hidden by the face's
+    /// own neighbours, as it is not on the mesh as loaded.
+    bool original_neighbourhood = true;
 };
 
 /// A stretch of a loop with one QI. Points are 3-D, in the mesh's coordinates.

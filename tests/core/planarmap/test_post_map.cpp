@@ -9,6 +9,7 @@
 #include "core/planarmap/post_map.h"
 #include "core/snaxel/refine.h"
 #include "tests/support/assets.h"
+#include "tests/support/views.h"
 
 using namespace snaxels;
 
@@ -53,10 +54,8 @@ TEST(PostMap, RegionsPartitionTheSilhouette) {
         const MeshTopology refined = engine_topology(m.mesh); // what the engine works on
         const SnaxelEngine engine(refined);
         std::mt19937 rng(5);
-        std::normal_distribution<double> n;
         for (int view = 0; view < 4; ++view) {
-            Camera cam;
-            cam.view_dir = glm::normalize(glm::dvec3(n(rng), n(rng), n(rng)));
+            const Camera cam = test::random_orthographic_camera(rng);
             const Light light = default_light(cam);
             const ContourResult visual = engine.compute({}, cam, light);
             const ContourResult shadow = engine.compute({ContourKind::Shadow, 0.0}, cam, light);

@@ -8,6 +8,7 @@
 #include "core/snaxel/refine.h"
 #include "tests/support/assets.h"
 #include "tests/support/map_raster.h"
+#include "tests/support/views.h"
 
 using namespace snaxels;
 
@@ -47,12 +48,7 @@ Maps build_maps(const Scene& s, const SnaxelEngine& engine, const RayScene& rays
     return m;
 }
 
-Camera random_camera(std::mt19937& rng) {
-    std::normal_distribution<double> n;
-    Camera cam;
-    cam.view_dir = glm::normalize(glm::dvec3(n(rng), n(rng), n(rng)));
-    return cam;
-}
+Camera random_camera(std::mt19937& rng) { return test::random_orthographic_camera(rng); }
 
 Light random_light(std::mt19937& rng, const Camera& cam) {
     std::normal_distribution<double> n;
