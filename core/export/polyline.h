@@ -38,4 +38,27 @@ inline void douglas_peucker_joint(const std::vector<std::vector<glm::dvec2>>& fr
     douglas_peucker_joint(frames, at, j, tolerance, keep);
 }
 
+/// The vertices of @p q needed to stay within @p tolerance of it (the ends
+/// of an open polyline; a closed one keeps its first vertex and the one
+/// half way round).
+inline std::vector<glm::dvec2> simplify_polyline(const std::vector<glm::dvec2>& q, bool closed, double tolerance) {
+    if (q.size() < 4) return q;
+    std::vector<std::uint8_t> keep(q.size(), 0);
+    const std::vector<std::vector<glm::dvec2>> frames{q};
+    keep.front() = 1;
+    if (closed) {
+        const std::size_t half = q.size() / 2;
+        keep[half] = 1;
+        douglas_peucker_joint(frames, 0, half, tolerance, keep);
+        douglas_peucker_joint(frames, half, q.size(), tolerance, keep);
+    } else {
+        keep.back() = 1;
+        douglas_peucker_joint(frames, 0, q.size() - 1, tolerance, keep);
+    }
+    std::vector<glm::dvec2> out;
+    for (std::size_t i = 0; i < q.size(); ++i)
+        if (keep[i]) out.push_back(q[i]);
+    return out;
+}
+
 } // namespace snaxels

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdio>
 
+#include "core/export/polyline.h"
 #include "core/export/svg_writer.h"
 
 namespace snaxels {
@@ -175,6 +176,9 @@ const char* default_stroke(ContourKind kind) {
 
 namespace {
 
+/// How far a static fill's outline may move when points are left out (px).
+constexpr double kFillTolerancePx = 0.01;
+
 double dash_period(const StrokeStyle& stroke) {
     double period = 0.0;
     for (const double d : stroke.dash) period += d;
@@ -235,7 +239,9 @@ std::string to_svg(const Drawing& drawing, const Style& style, const std::vector
             out += " d=\"";
             for (std::size_t i = 0; i < polygons.size(); ++i) {
                 if (i) out += ' ';
-                svg::append_path_data(out, polygons[i], true);
+                // Region outlines run along mesh edges in straight
+                // stretches of many points: only those that bend it stay.
+                svg::append_path_data(out, simplify_polyline(polygons[i], true, kFillTolerancePx), true);
             }
             out += "\"/>\n";
         }
