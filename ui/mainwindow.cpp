@@ -324,7 +324,8 @@ void MainWindow::startContours() {
     const Style style = style_;
     const Light light = frameLight();
     std::optional<ClipPose> pose;
-    if (const AnimationSpec spec = timeline_->spec(); spec.kind == AnimationSpec::Kind::Clip)
+    if (const AnimationSpec spec = timeline_->spec();
+        spec.kind == AnimationSpec::Kind::Clip || spec.kind == AnimationSpec::Kind::Sequence)
         pose = ClipPose{spec, timeline_->frame()}; // the driver adds the in point
     contourWatcher_.setFuture(QtConcurrent::run([mesh, scene, camera, style, light, pose] {
         return compute_overlay(*mesh, *scene, camera, style, light, pose);
@@ -363,6 +364,14 @@ void MainWindow::createMenus() {
         openFile(path);
     });
     open->setShortcut(QKeySequence::Open);
+    file->addAction(tr("Open Mesh &Sequence…"), this, [this] {
+        const QString path = QFileDialog::getOpenFileName(
+            this, tr("Open Mesh Sequence (choose any of its numbered files)"), QSettings().value("paths/lastDir").toString(),
+            tr("Meshes (*.obj *.ply *.stl *.off);;All files (*)"));
+        if (path.isEmpty()) return;
+        QSettings().setValue("paths/lastDir", QFileInfo(path).absolutePath());
+        openSequence(path);
+    });
     recentMenu_ = file->addMenu(tr("Open &Recent"));
     rebuildRecentMenu();
     file->addSeparator();
@@ -490,6 +499,7 @@ void MainWindow::onLoadFinished() {
         box->open();
         const bool wasProject = pendingProject_.has_value();
         pendingProject_.reset();
+        pendingSequence_.reset();
         emit loadFailed(result.error);
         if (wasProject) emit projectFailed(message);
         return;
@@ -520,6 +530,24 @@ void MainWindow::onLoadFinished() {
         const Project project = std::move(*pendingProject_);
         pendingProject_.reset();
         applyProject(project, pendingProjectPath_);
+    } else if (pendingSequence_) {
+        const SequenceFiles files = std::move(*pendingSequence_);
+        pendingSequence_.reset();
+        AnimationSpec spec = timeline_->spec();
+        spec.kind = AnimationSpec::Kind::Sequence;
+        spec.pattern = files.pattern;
+        spec.first_file = files.first_file;
+        spec.frames = files.count;
+        spec.start = 0;
+        ++restoring_; // part of opening, not an edit to undo
+        timeline_->setSpec(spec);
+        timeline_->setSequenceFiles(files.count);
+        timeline_->setFrame(0);
+        --restoring_;
+        committedSpec_ = timeline_->spec();
+        meshChanged_ = true;
+        statusBar()->showMessage(tr("Loaded a sequence of %1 files: %2").arg(files.count).arg(QFileInfo(QString::fromStdString(files.pattern)).fileName()), 6000);
+        scheduleContours();
     } else {
         meshChanged_ = true;
         if (!loadingSpec_.startsWith("proc:")) addRecentFile(QFileInfo(loadingSpec_).absoluteFilePath());
@@ -621,6 +649,8 @@ bool MainWindow::saveProject(const QString& path) {
     p.view = viewState();
     p.light = light_;
     p.animation = timeline_->spec();
+    if (p.animation.kind == AnimationSpec::Kind::Sequence) // relative to the project, as the mesh is
+        p.animation.pattern = project_mesh_reference(path.toStdString(), p.animation.pattern);
     p.frame = timeline_->frame();
     p.style = styleEditor_->text().toStdString();
     try {
@@ -638,6 +668,37 @@ bool MainWindow::saveProject(const QString& path) {
     addRecentFile(QFileInfo(path).absoluteFilePath());
     statusBar()->showMessage(tr("Saved %1").arg(QFileInfo(path).fileName()), 4000);
     emit projectSaved(path);
+    return true;
+}
+
+bool MainWindow::openSequence(const QString& path) {
+    const std::optional<SequenceFiles> files = find_sequence(path.toStdString());
+    if (!files || files->count < 2) {
+        const QString message =
+            files ? tr("%1: no other file of its series (the number in its name, one up or down) is there; "
+                       "a sequence needs at least two")
+                        .arg(QFileInfo(path).fileName())
+                  : tr("%1: its name holds no frame number, so it is not part of a numbered sequence")
+                        .arg(QFileInfo(path).fileName());
+        auto* box = new QMessageBox(QMessageBox::Warning, tr("Could not open sequence"), message, QMessageBox::Ok, this);
+        box->setAttribute(Qt::WA_DeleteOnClose);
+        box->open();
+        statusBar()->showMessage(message, 8000);
+        emit loadFailed(message);
+        return false;
+    }
+    if (watcher_.isRunning()) {
+        statusBar()->showMessage(tr("Still loading %1; try again when it is done").arg(loadingSpec_), 4000);
+        return false;
+    }
+    if (!maybeSave()) return false;
+    pendingSequence_ = *files;
+    // The mesh is the series' first file; every frame is posed from its file.
+    AnimationSpec probe;
+    probe.kind = AnimationSpec::Kind::Sequence;
+    probe.pattern = files->pattern;
+    probe.first_file = files->first_file;
+    openMesh(QString::fromStdString(sequence_file(probe, 0)));
     return true;
 }
 
@@ -667,7 +728,15 @@ void MainWindow::openProject(const QString& path) {
 void MainWindow::applyProject(const Project& p, const QString& path) {
     ++restoring_;
     styleEditor_->setText(p.style.empty() ? initial_style_text() : QString::fromStdString(p.style), "style");
-    const bool clipFound = timeline_->setSpec(p.animation);
+    AnimationSpec animation = p.animation;
+    int sequenceFiles = 0;
+    if (animation.kind == AnimationSpec::Kind::Sequence) {
+        // Stored relative to the project, as its mesh is.
+        animation.pattern = resolve_project_mesh(path.toStdString(), animation.pattern);
+        if (const auto files = find_sequence(sequence_file(animation, 0))) sequenceFiles = files->count;
+    }
+    const bool clipFound = timeline_->setSpec(animation);
+    if (sequenceFiles > 0) timeline_->setSequenceFiles(sequenceFiles);
     timeline_->setFrame(p.frame);
     light_ = p.light;
     view_->setOrbit(p.view);
@@ -682,12 +751,8 @@ void MainWindow::applyProject(const Project& p, const QString& path) {
     addRecentFile(QFileInfo(path).absoluteFilePath());
     if (!clipFound) {
         const QString file = QFileInfo(path).fileName();
-        const QString why = p.animation.kind == AnimationSpec::Kind::Clip
-                                ? tr("%1: the mesh has no clip \"%2\"; the timeline shows a turntable")
-                                      .arg(file, QString::fromStdString(p.animation.clip))
-                                : tr("%1: its animation (a mesh sequence or a still) is rendered by snaxels-cli; "
-                                     "the timeline shows a turntable")
-                                      .arg(file);
+        const QString why = tr("%1: the mesh has no clip \"%2\"; the timeline shows a turntable")
+                                .arg(file, QString::fromStdString(p.animation.clip));
         statusBar()->showMessage(why, 10000);
         meshChanged_ = true; // what the window shows is no longer what the file holds
         updateTitle();

@@ -49,6 +49,11 @@ class MainWindow : public QMainWindow {
     void openMesh(const QString& spec);
     /// Opens a project (.snaxels) or a mesh, by the file's extension.
     void openFile(const QString& path);
+    /// Opens the numbered series of mesh files @p path belongs to (one
+    /// connectivity, one file per frame): its first file is loaded as the
+    /// mesh and the timeline plays the files. False, with a message, when
+    /// the name holds no frame number or the series has one file.
+    bool openSequence(const QString& path);
     /// Reads the project at @p path and loads its mesh in the background;
     /// the project replaces the document once the mesh has loaded (ends with
     /// projectOpened or projectFailed; the document is untouched on failure).
@@ -157,6 +162,7 @@ class MainWindow : public QMainWindow {
     bool meshChanged_ = false;
     int restoring_ = 0; ///< set while an undo step or a project sets the document
     std::optional<Project> pendingProject_;
+    std::optional<SequenceFiles> pendingSequence_; ///< shown once its first file has loaded
     QString pendingProjectPath_;
 };
 

@@ -4,7 +4,9 @@
 
 #include <QCheckBox>
 #include <QComboBox>
+#include <QDir>
 #include <QDoubleSpinBox>
+#include <QFileInfo>
 #include <QHBoxLayout>
 #include <QLabel>
 #include <QPushButton>
@@ -16,6 +18,9 @@ namespace {
 constexpr int kKindRole = Qt::UserRole;
 constexpr int kClipRole = Qt::UserRole + 1;
 constexpr int kSecondsRole = Qt::UserRole + 2;
+constexpr int kPatternRole = Qt::UserRole + 3; // a sequence's pattern
+constexpr int kFirstRole = Qt::UserRole + 4;   // its first file's number
+constexpr int kCountRole = Qt::UserRole + 5;   // its files (0: unknown)
 } // namespace
 
 Timeline::Timeline(QWidget* parent)
@@ -24,6 +29,7 @@ Timeline::Timeline(QWidget* parent)
       play_(new QPushButton(tr("Play"), this)), loop_(new QCheckBox(tr("Loop"), this)) {
     setClips({});
     source_->setToolTip(tr("What moves from frame to frame"));
+    source_->setSizeAdjustPolicy(QComboBox::AdjustToContents); // clip and sequence names in full
     degrees_->setRange(-90.0, 90.0);
     degrees_->setDecimals(2);
     degrees_->setValue(2.0);
@@ -51,10 +57,16 @@ Timeline::Timeline(QWidget* parent)
     connect(slider_, &QSlider::valueChanged, this, refresh);
     connect(source_, &QComboBox::currentIndexChanged, this, [this, refresh] {
         updateEnabled();
-        // A clip plays its own length at the rate set.
-        if (!quiet_ && AnimationSpec::Kind(source_->currentData(kKindRole).toInt()) == AnimationSpec::Kind::Clip) {
+        // A clip plays its own length at the rate set, a sequence its files.
+        const auto kind = AnimationSpec::Kind(source_->currentData(kKindRole).toInt());
+        if (!quiet_ && kind == AnimationSpec::Kind::Clip) {
             ++quiet_;
             setFrameCount(clip_frame_count(source_->currentData(kSecondsRole).toDouble(), fps_->value()));
+            --quiet_;
+        }
+        if (!quiet_ && kind == AnimationSpec::Kind::Sequence && source_->currentData(kCountRole).toInt() > 0) {
+            ++quiet_;
+            setFrameCount(std::max(1, source_->currentData(kCountRole).toInt() - start_->value()));
             --quiet_;
         }
         refresh();
@@ -86,38 +98,68 @@ Timeline::Timeline(QWidget* parent)
 
 void Timeline::setClips(const std::vector<AnimationClipInfo>& clips) {
     ++quiet_;
-    const AnimationSpec before = source_->count() ? spec() : AnimationSpec{};
+    AnimationSpec before;
+    before.kind = AnimationSpec::Kind::Turntable; // the first time
+    if (source_->count()) before = spec();
     source_->clear();
     source_->addItem(tr("Turntable"), int(AnimationSpec::Kind::Turntable));
     source_->addItem(tr("Orbiting light"), int(AnimationSpec::Kind::LightOrbit));
+    source_->addItem(tr("Still"), int(AnimationSpec::Kind::Still));
     for (const AnimationClipInfo& clip : clips) {
         source_->addItem(tr("Clip: %1").arg(QString::fromStdString(clip.name)), int(AnimationSpec::Kind::Clip));
         source_->setItemData(source_->count() - 1, QString::fromStdString(clip.name), kClipRole);
         source_->setItemData(source_->count() - 1, clip.duration, kSecondsRole);
     }
-    if (before.kind == AnimationSpec::Kind::LightOrbit) source_->setCurrentIndex(1);
+    if (before.kind == AnimationSpec::Kind::LightOrbit || before.kind == AnimationSpec::Kind::Still)
+        source_->setCurrentIndex(source_->findData(int(before.kind), kKindRole));
     updateEnabled();
     --quiet_;
 }
 
 bool Timeline::setSpec(const AnimationSpec& s) {
     ++quiet_;
-    int index = s.kind == AnimationSpec::Kind::LightOrbit ? 1 : 0;
-    bool found = s.kind == AnimationSpec::Kind::Turntable || s.kind == AnimationSpec::Kind::LightOrbit;
-    if (s.kind == AnimationSpec::Kind::Clip)
-        for (int i = 2; i < source_->count(); ++i)
-            if (source_->itemData(i, kClipRole).toString().toStdString() == s.clip ||
-                (s.clip.empty() && i == 2) || std::to_string(i - 2) == s.clip) {
-                index = i;
-                found = true;
-                break;
-            }
-    source_->setCurrentIndex(index);
+    int index = 0; // the turntable, if the source cannot be shown
+    bool found = true;
+    switch (s.kind) {
+    case AnimationSpec::Kind::Turntable:
+    case AnimationSpec::Kind::LightOrbit:
+    case AnimationSpec::Kind::Still: index = source_->findData(int(s.kind), kKindRole); break;
+    case AnimationSpec::Kind::Clip: {
+        found = false;
+        int nth = 0;
+        for (int i = 0; i < source_->count() && !found; ++i) {
+            if (AnimationSpec::Kind(source_->itemData(i, kKindRole).toInt()) != AnimationSpec::Kind::Clip) continue;
+            if (source_->itemData(i, kClipRole).toString().toStdString() == s.clip || (s.clip.empty() && nth == 0) ||
+                std::to_string(nth) == s.clip)
+                index = i, found = true;
+            ++nth;
+        }
+        break;
+    }
+    case AnimationSpec::Kind::Sequence: {
+        // One sequence at a time: the one shown replaces any other.
+        const QString pattern = QString::fromStdString(s.pattern);
+        const int old = source_->findData(int(AnimationSpec::Kind::Sequence), kKindRole);
+        // The same sequence again (an undo step) keeps its file count.
+        const int count = old >= 0 && source_->itemData(old, kPatternRole).toString() == pattern
+                              ? source_->itemData(old, kCountRole).toInt()
+                              : 0;
+        if (old >= 0) source_->removeItem(old);
+        source_->addItem(tr("Sequence: %1").arg(QFileInfo(pattern).fileName()), int(AnimationSpec::Kind::Sequence));
+        index = source_->count() - 1;
+        source_->setItemData(index, pattern, kPatternRole);
+        source_->setItemData(index, s.first_file, kFirstRole);
+        source_->setItemData(index, count, kCountRole);
+        source_->setItemData(index, QDir::toNativeSeparators(pattern), Qt::ToolTipRole);
+        break;
+    }
+    }
+    source_->setCurrentIndex(std::max(index, 0));
     degrees_->setValue(s.degrees_per_frame);
     start_->setValue(s.start);
     fps_->setValue(s.fps);
     int frames = s.frames;
-    if (frames <= 0 && index >= 2)
+    if (frames <= 0 && s.kind == AnimationSpec::Kind::Clip && found)
         frames = clip_frame_count(source_->itemData(index, kSecondsRole).toDouble(), s.fps);
     setFrameCount(std::max(frames, 1));
     updateEnabled();
@@ -126,19 +168,28 @@ bool Timeline::setSpec(const AnimationSpec& s) {
     return found;
 }
 
+void Timeline::setSequenceFiles(int count) {
+    const int index = source_->findData(int(AnimationSpec::Kind::Sequence), kKindRole);
+    if (index >= 0) source_->setItemData(index, count, kCountRole);
+}
+
 void Timeline::edited() {
     if (!quiet_) emit specEdited();
 }
 
 void Timeline::updateEnabled() {
     const auto kind = AnimationSpec::Kind(source_->currentData(kKindRole).toInt());
-    degrees_->setEnabled(kind != AnimationSpec::Kind::Clip);
+    degrees_->setEnabled(kind == AnimationSpec::Kind::Turntable || kind == AnimationSpec::Kind::LightOrbit);
 }
 
 AnimationSpec Timeline::spec() const {
     AnimationSpec s;
     s.kind = AnimationSpec::Kind(source_->currentData(kKindRole).toInt());
     if (s.kind == AnimationSpec::Kind::Clip) s.clip = source_->currentData(kClipRole).toString().toStdString();
+    if (s.kind == AnimationSpec::Kind::Sequence) {
+        s.pattern = source_->currentData(kPatternRole).toString().toStdString();
+        s.first_file = source_->currentData(kFirstRole).toInt();
+    }
     s.degrees_per_frame = degrees_->value();
     s.frames = frames_->value();
     s.start = start_->value();

@@ -1,6 +1,6 @@
 #pragma once
-// The timeline: what moves (turntable, orbiting light or one of the mesh's
-// own clips), how far per frame,
+// The timeline: what moves (turntable, orbiting light, nothing, one of the
+// mesh's own clips or a sequence of mesh files), how far per frame,
 // how many frames at what rate, the current frame, play/pause and loop.
 
 #include <QTimer>
@@ -27,8 +27,11 @@ class Timeline : public QWidget {
     /// Source, degrees per frame, frame count and rate.
     AnimationSpec spec() const;
     /// Shows @p spec (an undo step or a project); a clip the mesh lacks
-    /// falls back to the turntable and returns false.
+    /// falls back to the turntable and returns false. A sequence becomes
+    /// the source offered (in place of any other sequence).
     bool setSpec(const AnimationSpec& spec);
+    /// How many files the sequence shown has (its length when chosen again).
+    void setSequenceFiles(int count);
     /// The loaded mesh's own clips (name, seconds), offered as sources.
     void setClips(const std::vector<AnimationClipInfo>& clips);
     int frame() const;

@@ -47,7 +47,10 @@ int run_render(const std::vector<std::string>& argv) {
     const LoadedMesh loaded = load_mesh(mesh_path);
     OrbitView view = project.view;
     view.centre = 0.5 * (loaded.report.bbox_min + loaded.report.bbox_max); // as the application frames it
-    AnimationJob job = make_animation_job(style, project.animation, orbit_base_camera(view), project.light);
+    AnimationSpec animation = project.animation;
+    if (animation.kind == AnimationSpec::Kind::Sequence) // relative to the project, as its mesh is
+        animation.pattern = resolve_project_mesh(project_path, animation.pattern);
+    AnimationJob job = make_animation_job(style, animation, orbit_base_camera(view), project.light);
 
     if (!args.flag("still")) {
         const AnimationOutput result = run_animation_with_progress(loaded, mesh_path, job);

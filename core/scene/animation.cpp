@@ -1,5 +1,6 @@
 #include "core/scene/animation.h"
 
+#include <cctype>
 #include <cstdio>
 #include <filesystem>
 
@@ -34,13 +35,55 @@ FrameDriver::FrameDriver(const AnimationSpec& spec, const LoadedMesh& mesh, Mesh
 
 FrameDriver::~FrameDriver() = default;
 
+std::optional<SequenceFiles> find_sequence(const std::string& file) {
+    const std::filesystem::path path(file);
+    // The last run of digits in the name (its extension has none that count).
+    const std::string stem = path.stem().string();
+    auto end = stem.find_last_of("0123456789");
+    if (end == std::string::npos) return std::nullopt;
+    auto begin = end;
+    while (begin > 0 && std::isdigit(static_cast<unsigned char>(stem[begin - 1]))) --begin;
+    ++end;
+    const std::size_t width = end - begin;
+    if (width > 9) return std::nullopt;
+    const int number = std::stoi(stem.substr(begin, width));
+    const std::string prefix = stem.substr(0, begin), suffix = stem.substr(end) + path.extension().string();
+    // Numbers written without leading zeros (frame_7, frame_10) use %d.
+    const bool padded = width > 1 && stem[begin] == '0';
+    const std::string marker = padded ? std::string(width, '#') : std::string("%d");
+    auto file_of = [&](int k) {
+        std::string digits = std::to_string(k);
+        if (padded && digits.size() < width) digits.insert(0, width - digits.size(), '0');
+        return (path.parent_path() / (prefix + digits + suffix)).string();
+    };
+    std::error_code ec;
+    SequenceFiles s;
+    s.pattern = (path.parent_path() / (prefix + marker + suffix)).string();
+    s.first_file = number;
+    while (s.first_file > 0 && std::filesystem::is_regular_file(file_of(s.first_file - 1), ec)) --s.first_file;
+    int last = number;
+    while (std::filesystem::is_regular_file(file_of(last + 1), ec)) ++last;
+    s.count = last - s.first_file + 1;
+    return s;
+}
+
 bool FrameDriver::mesh_moves() const {
     return spec_.kind == AnimationSpec::Kind::Clip || spec_.kind == AnimationSpec::Kind::Sequence;
 }
 
-std::string FrameDriver::sequence_path(int k) const {
-    const int number = std::max(spec_.first_file, 0) + k;
-    std::string path = spec_.pattern;
+std::string FrameDriver::sequence_path(int k) const { return sequence_file(spec_, k); }
+
+std::string sequence_file(const AnimationSpec& spec, int k) {
+    int first_number = spec.first_file;
+    if (first_number < 0) {
+        // Numbering starts at 0 or 1, whichever file exists.
+        AnimationSpec zero = spec;
+        zero.first_file = 0;
+        std::error_code ec;
+        first_number = std::filesystem::exists(sequence_file(zero, 0), ec) ? 0 : 1;
+    }
+    const int number = first_number + k;
+    std::string path = spec.pattern;
     if (const auto pct = path.find('%'); pct != std::string::npos) {
         char buf[4096];
         std::snprintf(buf, sizeof buf, path.c_str(), number);

@@ -4,6 +4,7 @@
 /// numbered sequence of mesh files with the same connectivity.
 
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -58,5 +59,22 @@ class FrameDriver {
     std::size_t soup_size_ = 0;
     std::vector<glm::dvec3> soup_;
 };
+
+/// The file of frame @p k of @p spec's sequence (counted from its first
+/// file; a first_file of -1 starts at 0 or 1, whichever exists).
+std::string sequence_file(const AnimationSpec& spec, int k);
+
+/// A numbered series of mesh files found from one of them.
+struct SequenceFiles {
+    std::string pattern; ///< the file's path with its number as #### (as wide as it is written)
+    int first_file = 0;  ///< the lowest number of the unbroken run the file belongs to
+    int count = 0;       ///< files in that run
+};
+
+/// The numbered series @p file belongs to: the last run of digits in its
+/// name is the frame number, and the files with the neighbouring numbers
+/// (written as wide) that exist make the run. Empty when the name holds
+/// no number.
+std::optional<SequenceFiles> find_sequence(const std::string& file);
 
 } // namespace snaxels

@@ -4,6 +4,7 @@
 #include <QApplication>
 #include <QDir>
 #include <QElapsedTimer>
+#include <QTextStream>
 #include <QTimer>
 #include <QFile>
 #include <QLabel>
@@ -25,6 +26,7 @@
 #include <QWheelEvent>
 #include <QTest>
 
+#include "core/mesh/procedural.h"
 #include "ui/mainwindow.h"
 #include "ui/meshview.h"
 #include "ui/resources.h"
@@ -458,10 +460,12 @@ class TestMainWindow : public QObject {
         QVERIFY(showWithMesh(window, QString(SNAXELS_TEST_ASSETS) + "/anim/skinned-bar.gltf", {1000, 700}));
         QSignalSpy contours(&window, &MainWindow::contoursUpdated);
         auto* source = window.timeline()->findChild<QComboBox*>();
-        QVERIFY(source->count() >= 3);
-        QVERIFY(source->itemText(2).startsWith("Clip: "));
+        int clip = -1;
+        for (int i = 0; i < source->count() && clip < 0; ++i)
+            if (source->itemText(i).startsWith("Clip: ")) clip = i;
+        QVERIFY(clip >= 0);
         contours.clear();
-        source->setCurrentIndex(2);
+        source->setCurrentIndex(clip);
         QCOMPARE(window.timeline()->spec().kind, snaxels::AnimationSpec::Kind::Clip);
         QVERIFY(window.timeline()->spec().frames > 2); // the clip's length at 24 fps
         QVERIFY(contours.wait(30000));
@@ -547,6 +551,95 @@ class TestMainWindow : public QObject {
     }
 
     // Dropping a mesh file opens it; dropping a project opens the project.
+    // A numbered series of mesh files plays on the timeline, is saved in a
+    // project relative to it, and reopens and renders (window and
+    // snaxels-cli alike) from anywhere.
+    void playsAMeshSequence() {
+        QTemporaryDir dir;
+        QVERIFY(QDir(dir.path()).mkpath("shots/blob"));
+        const snaxels::TriangleSoup base = snaxels::make_procedural("sphere:3000");
+        for (int k = 1; k <= 5; ++k) {
+            QFile out(dir.filePath(QString("shots/blob/blob_%1.obj").arg(k, 4, 10, QChar('0'))));
+            QVERIFY(out.open(QIODevice::WriteOnly));
+            QTextStream s(&out);
+            for (const auto& p : base.positions) s << "v " << p.x * (1.0 + 0.3 * k) << ' ' << p.y << ' ' << p.z << '\n';
+            for (const auto& t : base.triangles) s << "f " << t[0] + 1 << ' ' << t[1] + 1 << ' ' << t[2] + 1 << '\n';
+        }
+        MainWindow window;
+        window.resize(1000, 700);
+        window.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&window));
+        QSignalSpy contours(&window, &MainWindow::contoursUpdated);
+        QVERIFY(window.openSequence(dir.filePath("shots/blob/blob_0003.obj"))); // any of its files
+        QVERIFY(contours.wait(60000));
+        snaxels::AnimationSpec spec = window.timeline()->spec();
+        QCOMPARE(spec.kind, snaxels::AnimationSpec::Kind::Sequence);
+        QCOMPARE(spec.frames, 5);
+        QCOMPARE(spec.first_file, 1);
+        QVERIFY(window.isModified());
+        QTest::qWait(200);
+        const QByteArray first = window.currentSvg();
+        contours.clear();
+        window.timeline()->setFrame(4); // the widest blob
+        QVERIFY(contours.wait(30000));
+        QTest::qWait(200);
+        QVERIFY(window.currentSvg() != first);
+        window.grab().save(QString(SCREENSHOT_DIR) + "/mainwindow-sequence.png");
+
+        // Saved relative to the project; reopened from there, as it was.
+        const QString projectFile = dir.filePath("shots/blob.snaxels");
+        QVERIFY(window.saveProject(projectFile));
+        QFile saved(projectFile);
+        QVERIFY(saved.open(QIODevice::ReadOnly));
+        const QByteArray text = saved.readAll();
+        QVERIFY2(text.contains("\"pattern\": \"blob/blob_####.obj\""), text.constData());
+        QVERIFY(!window.isModified());
+        QSignalSpy finished(&window, &MainWindow::exportFinished);
+        window.exportAnimation(dir.filePath("sequence.svg"));
+        QVERIFY(finished.wait(120000));
+        const QByteArray exported = readAll(dir.filePath("sequence.svg"));
+        QVERIFY(exported.contains("<animate attributeName=\"d\""));
+
+        MainWindow reopened;
+        reopened.resize(900, 600);
+        reopened.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&reopened));
+        QSignalSpy opened(&reopened, &MainWindow::projectOpened);
+        reopened.openProject(projectFile);
+        QVERIFY(opened.wait(60000));
+        QCOMPARE(reopened.timeline()->spec().kind, snaxels::AnimationSpec::Kind::Sequence);
+        QCOMPARE(reopened.timeline()->spec().frames, 5);
+        QCOMPARE(reopened.timeline()->frame(), 4);
+        QVERIFY(!reopened.isModified());
+        // Switching away and back to the sequence plays its files again.
+        auto* source = reopened.timeline()->findChild<QComboBox*>();
+        const int sequence = source->currentIndex();
+        QVERIFY(source->itemText(sequence).startsWith("Sequence: "));
+        source->setCurrentIndex(0);
+        reopened.timeline()->setFrameCount(9);
+        source->setCurrentIndex(sequence);
+        QCOMPARE(reopened.timeline()->spec().frames, 5);
+
+        // snaxels-cli renders it from another working folder.
+        QProcess cli;
+        cli.setWorkingDirectory(QDir::tempPath());
+        cli.start(QCoreApplication::applicationDirPath() + "/snaxels-cli",
+                  {"render", projectFile, "-o", dir.filePath("cli.svg")});
+        QVERIFY(cli.waitForFinished(180000));
+        QVERIFY2(cli.exitCode() == 0, cli.readAllStandardError().constData());
+        QVERIFY2(readAll(dir.filePath("cli.svg")) == exported, "snaxels-cli render writes other bytes");
+
+        // A file with no number, or with no neighbours, is not a sequence.
+        QSignalSpy failed(&reopened, &MainWindow::loadFailed);
+        QVERIFY(!reopened.openSequence(QString(SNAXELS_TEST_ASSETS) + "/spot.obj"));
+        QVERIFY(failed.count() == 1 && failed.first().first().toString().contains("no frame number"));
+        QVERIFY(QFile::copy(dir.filePath("shots/blob/blob_0001.obj"), dir.filePath("lonely_7.obj")));
+        QVERIFY(!reopened.openSequence(dir.filePath("lonely_7.obj")));
+        QVERIFY(failed.count() == 2 && failed.last().first().toString().contains("at least two"));
+        QCOMPARE(reopened.timeline()->spec().kind, snaxels::AnimationSpec::Kind::Sequence); // nothing changed
+        for (QMessageBox* box : reopened.findChildren<QMessageBox*>()) box->close();
+    }
+
     void opensWhatIsDropped() {
         QTemporaryDir dir;
         MainWindow window;

@@ -131,6 +131,43 @@ TEST(FrameDriver, FileSequence) {
     std::filesystem::remove_all(dir);
 }
 
+// A series found from any one of its files: the last number in the name,
+// padded or not, and the unbroken run of its neighbours.
+TEST(FindSequence, FromAnyOfItsFiles) {
+    const auto dir = std::filesystem::temp_directory_path() / "snaxels-find-sequence-test";
+    std::filesystem::remove_all(dir);
+    std::filesystem::create_directories(dir / "take2");
+    for (const int k : {3, 4, 5, 6, 9}) std::ofstream(dir / "take2" / ("walk_" + std::string(k < 10 ? "000" : "00") + std::to_string(k) + ".obj")) << "x";
+    for (const int k : {8, 9, 10, 11}) std::ofstream(dir / ("run" + std::to_string(k) + ".ply")) << "x";
+    std::ofstream(dir / "plain.obj") << "x";
+
+    const auto walk = find_sequence((dir / "take2" / "walk_0005.obj").string());
+    ASSERT_TRUE(walk);
+    EXPECT_EQ(walk->pattern, (dir / "take2" / "walk_####.obj").string()); // the 2 in take2 is not the frame
+    EXPECT_EQ(walk->first_file, 3);
+    EXPECT_EQ(walk->count, 4); // 3-6: 9 is past a gap
+    AnimationSpec spec;
+    spec.kind = AnimationSpec::Kind::Sequence;
+    spec.pattern = walk->pattern;
+    spec.first_file = walk->first_file;
+    EXPECT_EQ(sequence_file(spec, 3), (dir / "take2" / "walk_0006.obj").string());
+
+    const auto run = find_sequence((dir / "run10.ply").string());
+    ASSERT_TRUE(run);
+    EXPECT_EQ(run->pattern, (dir / "run%d.ply").string()); // not padded
+    EXPECT_EQ(run->first_file, 8);
+    EXPECT_EQ(run->count, 4);
+    spec.pattern = run->pattern;
+    spec.first_file = -1; // 0 or 1, whichever exists: neither, so 1
+    EXPECT_EQ(sequence_file(spec, 9), (dir / "run10.ply").string());
+
+    EXPECT_FALSE(find_sequence((dir / "plain.obj").string()));
+    const auto lonely = find_sequence((dir / "take2" / "walk_0009.obj").string());
+    ASSERT_TRUE(lonely);
+    EXPECT_EQ(lonely->count, 1);
+    std::filesystem::remove_all(dir);
+}
+
 TEST(FrameDriver, TurntableAndLightOrbit) {
     const LoadedMesh mesh = load_mesh("proc:sphere:500");
     MeshTopology topo = build_topology(mesh.mesh);
