@@ -605,12 +605,24 @@ class TestMainWindow : public QObject {
         reopened.show();
         QVERIFY(QTest::qWaitForWindowExposed(&reopened));
         QSignalSpy opened(&reopened, &MainWindow::projectOpened);
+        QSignalSpy reopenedContours(&reopened, &MainWindow::contoursUpdated);
         reopened.openProject(projectFile);
         QVERIFY(opened.wait(60000));
+        QVERIFY(reopenedContours.wait(30000));
+        QTest::qWait(300);
         QCOMPARE(reopened.timeline()->spec().kind, snaxels::AnimationSpec::Kind::Sequence);
         QCOMPARE(reopened.timeline()->spec().frames, 5);
         QCOMPARE(reopened.timeline()->frame(), 4);
         QVERIFY(!reopened.isModified());
+        // The frame shown is the one snaxels-cli renders as a still.
+        QProcess still;
+        still.setWorkingDirectory(QDir::tempPath());
+        still.start(QCoreApplication::applicationDirPath() + "/snaxels-cli",
+                    {"render", projectFile, "--still", "--frame", "4", "-o", dir.filePath("still.svg")});
+        QVERIFY(still.waitForFinished(180000));
+        QVERIFY2(still.exitCode() == 0, still.readAllStandardError().constData());
+        QVERIFY2(readAll(dir.filePath("still.svg")) == reopened.currentSvg(), "the window shows another frame than render --still");
+
         // Switching away and back to the sequence plays its files again.
         auto* source = reopened.timeline()->findChild<QComboBox*>();
         const int sequence = source->currentIndex();
@@ -628,7 +640,6 @@ class TestMainWindow : public QObject {
         QVERIFY(cli.waitForFinished(180000));
         QVERIFY2(cli.exitCode() == 0, cli.readAllStandardError().constData());
         QVERIFY2(readAll(dir.filePath("cli.svg")) == exported, "snaxels-cli render writes other bytes");
-
         // A file with no number, or with no neighbours, is not a sequence.
         QSignalSpy failed(&reopened, &MainWindow::loadFailed);
         QVERIFY(!reopened.openSequence(QString(SNAXELS_TEST_ASSETS) + "/spot.obj"));
