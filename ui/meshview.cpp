@@ -6,12 +6,69 @@
 #include <cmath>
 
 #include <QMouseEvent>
+#include <QPainter>
 #include <QVector3D>
 #include <QWheelEvent>
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/gtc/type_ptr.hpp>
 
 namespace snaxels::ui {
+
+/// Where the light comes from, on a small globe in the view's corner: the
+/// dot is filled when the light is on the viewer's side, hollow behind it;
+/// the hint says how to turn it. A child widget over the view, so it is
+/// painted (and grabbed) like any other.
+class LightGlobe final : public QWidget {
+  public:
+    explicit LightGlobe(MeshView* view) : QWidget(view), view_(view) {
+        setAttribute(Qt::WA_TransparentForMouseEvents);
+        setAttribute(Qt::WA_NoSystemBackground);
+        setObjectName("lightGlobe");
+        resize(140, 78);
+    }
+    void setActive(bool active) {
+        active_ = active;
+        update();
+    }
+
+  protected:
+    void paintEvent(QPaintEvent*) override {
+        const Light& light = view_->regionShading().light;
+        glm::dvec3 dir = light.point ? light.pos - view_->orbitCentre() : light.dir;
+        if (!(glm::length(dir) > 0.0)) return;
+        dir = glm::normalize(dir);
+        glm::dvec3 right, up;
+        const Camera cam = view_->camera();
+        cam.screen_basis(right, up);
+        const double x = glm::dot(dir, right), y = glm::dot(dir, up), z = glm::dot(dir, -cam.forward());
+        QPainter painter(this);
+        painter.setRenderHint(QPainter::Antialiasing);
+        const double r = 22.0;
+        const QPointF c(width() - r - 10.0, r + 8.0);
+        const int alpha = active_ ? 230 : 130;
+        painter.setPen(QPen(QColor(200, 200, 205, alpha), 1.2));
+        painter.setBrush(QColor(255, 255, 255, active_ ? 40 : 16));
+        painter.drawEllipse(c, r, r);
+        painter.setBrush(Qt::NoBrush);
+        painter.drawEllipse(c, r, r * 0.35); // the equator, seen from a little above
+        const QPointF p(c.x() + r * x, c.y() - r * y);
+        painter.setPen(QPen(QColor(255, 214, 90), 1.5));
+        painter.drawLine(c, p);
+        painter.setBrush(z >= 0.0 ? QBrush(QColor(255, 214, 90)) : QBrush(Qt::NoBrush));
+        painter.drawEllipse(p, 4.5, 4.5);
+        painter.setPen(QColor(200, 200, 205, alpha));
+        QFont font = painter.font();
+        font.setPointSizeF(font.pointSizeF() * 0.85);
+        painter.setFont(font);
+        painter.drawText(QRectF(0.0, c.y() + r + 4.0, width() - 4.0, 18.0), Qt::AlignRight | Qt::AlignTop,
+                         MeshView::tr("Shift+drag: light"));
+    }
+
+  private:
+    MeshView* view_;
+    bool active_ = false;
+};
+
 namespace {
 
 
@@ -108,9 +165,14 @@ void main() {
 
 } // namespace
 
-MeshView::MeshView(QWidget* parent) : QOpenGLWidget(parent) {
+MeshView::MeshView(QWidget* parent) : QOpenGLWidget(parent), globe_(new LightGlobe(this)) {
     setFocusPolicy(Qt::StrongFocus);
     setMinimumSize(200, 150);
+}
+
+void MeshView::resizeEvent(QResizeEvent* event) {
+    QOpenGLWidget::resizeEvent(event);
+    globe_->move(width() - globe_->width(), 0);
 }
 
 MeshView::~MeshView() {
@@ -359,6 +421,7 @@ glm::dmat4 MeshView::projectionMatrix() const {
 }
 
 void MeshView::paintGL() {
+    globe_->update(); // the camera or the light may have turned
     glClearColor(0.16f, 0.17f, 0.19f, 1.0f);
     glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
     if (!vertexCount_) return;
@@ -378,7 +441,10 @@ void MeshView::paintGL() {
 
     // Contours: visibility is already known, so no depth test; hidden first.
     if (linesDirty_) uploadContours();
-    if (lineRanges_.empty()) return;
+    if (!lineRanges_.empty()) drawContours(mvp);
+}
+
+void MeshView::drawContours(const glm::mat4& mvp) {
     glDisable(GL_DEPTH_TEST);
     glEnable(GL_BLEND);
     // Blend colour only: the widget composites its framebuffer as
@@ -404,14 +470,20 @@ void MeshView::mousePressEvent(QMouseEvent* event) {
     lastPos_ = event->position().toPoint();
     dragged_ = false;
     draggingLight_ = (event->button() == Qt::LeftButton) && (event->modifiers() & Qt::ShiftModifier);
+    if (draggingLight_) globe_->setActive(true); // the light's globe brightens while it turns
 }
 
 void MeshView::mouseReleaseEvent(QMouseEvent* event) {
-    if (!dragged_) return;
+    if (!dragged_) {
+        draggingLight_ = false;
+        globe_->setActive(false);
+        return;
+    }
     dragged_ = false;
     if (draggingLight_) emit lightEdited();
     else emit viewEdited();
     draggingLight_ = false;
+    globe_->setActive(false);
     event->accept();
 }
 

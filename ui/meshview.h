@@ -56,6 +56,8 @@ struct RegionShading {
     std::vector<std::pair<double, glm::vec3>> highlights; ///< (k, colour), ascending k: R.V >= k
 };
 
+class LightGlobe;
+
 class MeshView : public QOpenGLWidget, protected QOpenGLFunctions_3_3_Core {
     Q_OBJECT
   public:
@@ -80,6 +82,8 @@ class MeshView : public QOpenGLWidget, protected QOpenGLFunctions_3_3_Core {
     /// Colours the surface by region (or not, when not enabled).
     void setRegionShading(RegionShading shading);
     const RegionShading& regionShading() const { return shading_; }
+    /// The point the camera orbits (the mesh's centre, as framed).
+    glm::dvec3 orbitCentre() const { return centre_; }
     /// Replaces the contours drawn over the mesh.
     void setContours(std::vector<ContourStrip> strips);
     /// The view's camera, as the engine sees it (a perspective camera).
@@ -120,6 +124,8 @@ class MeshView : public QOpenGLWidget, protected QOpenGLFunctions_3_3_Core {
   private:
     void upload();
     void setRegionUniforms();
+    void drawContours(const glm::mat4& mvp);
+    void resizeEvent(QResizeEvent* event) override;
     void uploadContours();
     glm::dmat4 viewMatrix() const;
     glm::dmat4 projectionMatrix() const;
@@ -128,6 +134,7 @@ class MeshView : public QOpenGLWidget, protected QOpenGLFunctions_3_3_Core {
     bool dirty_ = false;
     int vertexCount_ = 0;
 
+    LightGlobe* globe_; ///< where the light is, in the top right corner
     glm::dvec3 centre_{0.0};
     double radius_ = 1.0;
     OrbitView orbit_;

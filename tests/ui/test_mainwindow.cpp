@@ -651,6 +651,37 @@ class TestMainWindow : public QObject {
         for (QMessageBox* box : reopened.findChildren<QMessageBox*>()) box->close();
     }
 
+    // A globe in the view's corner shows where the light comes from, and
+    // turns with it.
+    void showsWhereTheLightIs() {
+        MainWindow window;
+        QVERIFY(showWithMesh(window, QString(SNAXELS_TEST_ASSETS) + "/spot.obj"));
+        auto* globe = window.meshView()->findChild<QWidget*>("lightGlobe");
+        QVERIFY(globe && globe->isVisible());
+        QVERIFY(globe->geometry().right() >= window.meshView()->width() - 2); // top right
+        auto yellow = [](const QImage& image, QPoint* where) {
+            int n = 0;
+            QPoint sum;
+            for (int y = 0; y < image.height(); ++y)
+                for (int x = 0; x < image.width(); ++x) {
+                    const QColor c = image.pixelColor(x, y);
+                    if (c.red() > 200 && c.green() > 160 && c.blue() < 140) ++n, sum += QPoint(x, y);
+                }
+            if (n) *where = sum / n;
+            return n;
+        };
+        QTest::qWait(200);
+        QPoint before, after;
+        QVERIFY(yellow(globe->grab().toImage(), &before) > 10);
+        // The default light is the viewer's upper left: the dot is left of
+        // and above the globe's middle.
+        QVERIFY2(before.x() < globe->width() - 32 && before.y() < 30, qPrintable(QString("%1,%2").arg(before.x()).arg(before.y())));
+        window.turnLight(1.2, 0.0); // toward the right
+        QTest::qWait(300);
+        QVERIFY(yellow(globe->grab().toImage(), &after) > 10);
+        QVERIFY2(after.x() > before.x() + 5, qPrintable(QString("%1 -> %2").arg(before.x()).arg(after.x())));
+    }
+
     void opensWhatIsDropped() {
         QTemporaryDir dir;
         MainWindow window;
