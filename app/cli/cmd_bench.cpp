@@ -9,6 +9,7 @@
 #include "app/cli/scene_options.h"
 #include "core/error.h"
 #include "core/mesh/import.h"
+#include "core/planarmap/map_timing.h"
 #include "core/snaxel/refine.h"
 #include "core/snaxel/snaxel_engine.h"
 
@@ -38,13 +39,17 @@ void print_row(const std::string& what, const Timing& t, const std::string& note
 } // namespace
 
 int run_bench(const std::vector<std::string>& argv) {
-    Args args("bench", "bench MESH [--kind KIND]... [--repeat N]",
+    Args args("bench", "bench MESH [--kind KIND]... [--repeat N] [--planar-map FRAMES]",
               std::string("Times the pipeline on MESH: import (weld, repair, normals), engine\n"
                           "topology, and from-scratch contours of each KIND (default visual)\n"
-                          "under an orthographic view along 0.4,-0.3,1; prints median and minimum.\n\n") +
+                          "under an orthographic view along 0.4,-0.3,1; prints median and minimum.\n"
+                          "With --planar-map, also the snaxel-defined planar map while tracking:\n"
+                          "a turntable of FRAMES frames (1 degree each) tracking the visual, shadow\n"
+                          "and isophote:0.5 contours, then the map at 800x800, per frame.\n\n") +
                   kMeshArgumentHelp,
               {{"kind", "KIND", "contour to time (as for 'contours')", true},
-               {"repeat", "N", "runs per measurement (default 10)"}},
+               {"repeat", "N", "runs per measurement (default 10)"},
+               {"planar-map", "FRAMES", "time the planar map while tracking over FRAMES frames (at least 2)"}},
               {"MESH"});
     if (!args.parse(argv)) {
         std::cout << args.help();
@@ -52,6 +57,7 @@ int run_bench(const std::vector<std::string>& argv) {
     }
     int repeat = 10;
     if (const auto r = args.value("repeat")) repeat = parse_int("repeat", *r, 1, 10000);
+    const int map_frames = args.value("planar-map") ? parse_int("planar-map", *args.value("planar-map"), 2, 100000) : 0;
     std::vector<ContourSpec> kinds;
     for (const auto& k : args.values("kind")) {
         try {
@@ -87,6 +93,17 @@ int run_bench(const std::vector<std::string>& argv) {
         });
         print_row("contours " + kind.label(), t,
                   std::to_string(loops) + " loops, " + std::to_string(snaxels) + " snaxels");
+    }
+    if (map_frames > 0) {
+        const TrackedMapTiming t =
+            time_tracked_snaxel_map(topology, loaded.report, map_frames, camera.view_dir, camera.up, 800, 0.5);
+        auto row = [](const std::vector<double>& ms) {
+            return Timing{*std::min_element(ms.begin(), ms.end()), median_of(ms)};
+        };
+        print_row("planar map, tracking", row(t.map_ms),
+                  "(snaxel map per frame, " + std::to_string(map_frames) + "-frame turntable, " +
+                      std::to_string(t.regions / std::size_t(map_frames)) + " regions a frame)");
+        print_row("tracking + planar map", row(t.frame_ms), "(visual, shadow, isophote:0.5 tracked, then the map)");
     }
     return 0;
 }

@@ -73,19 +73,21 @@ double ContourFunction::evaluate(const glm::dvec3& p, const glm::dvec3& n) const
     return nv;
 }
 
-glm::dvec3 slerp_normal(const glm::dvec3& na, const glm::dvec3& nb, double t) {
-    const double c = std::clamp(glm::dot(na, nb), -1.0, 1.0);
-    const double theta = std::acos(c);
-    const double s = std::sin(theta);
-    if (s < 1e-9) {
+SlerpArc::SlerpArc(const glm::dvec3& na, const glm::dvec3& nb)
+    : na_(na), nb_(nb), c_(std::clamp(glm::dot(na, nb), -1.0, 1.0)), theta_(std::acos(c_)), s_(std::sin(theta_)) {}
+
+glm::dvec3 SlerpArc::operator()(double t) const {
+    if (s_ < 1e-9) {
         // Aligned: the limit is na. (Opposite normals have no unique arc;
         // fall back to normalized linear interpolation.)
-        if (c > 0.0) return na;
-        const glm::dvec3 m = (1.0 - t) * na + t * nb;
+        if (c_ > 0.0) return na_;
+        const glm::dvec3 m = (1.0 - t) * na_ + t * nb_;
         const double len = glm::length(m);
-        return len > 1e-12 ? m / len : na;
+        return len > 1e-12 ? m / len : na_;
     }
-    return (std::sin((1.0 - t) * theta) * na + std::sin(t * theta) * nb) / s;
+    return (std::sin((1.0 - t) * theta_) * na_ + std::sin(t * theta_) * nb_) / s_;
 }
+
+glm::dvec3 slerp_normal(const glm::dvec3& na, const glm::dvec3& nb, double t) { return SlerpArc(na, nb)(t); }
 
 } // namespace snaxels

@@ -45,4 +45,17 @@ class ContourFunction {
 /// Spherical linear interpolation of unit normals, the limit na as they align.
 glm::dvec3 slerp_normal(const glm::dvec3& na, const glm::dvec3& nb, double t);
 
+/// slerp_normal along one edge, its arc's angle found once: root polishing
+/// evaluates many points of the same edge (the same values, fewer acos and
+/// sin calls).
+class SlerpArc {
+  public:
+    SlerpArc(const glm::dvec3& na, const glm::dvec3& nb);
+    glm::dvec3 operator()(double t) const;
+
+  private:
+    glm::dvec3 na_, nb_;
+    double c_, theta_, s_;
+};
+
 } // namespace snaxels

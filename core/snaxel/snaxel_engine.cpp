@@ -130,7 +130,8 @@ double polish_root(const MeshTopology& topo, const ContourFunction& f, std::int3
                    int scan_samples) {
     const glm::dvec3 pa = topo.positions[inside], pb = topo.positions[outside];
     const glm::dvec3 na = topo.normals[inside], nb = topo.normals[outside];
-    auto g = [&](double t) { return f((1.0 - t) * pa + t * pb, slerp_normal(na, nb, t)); };
+    const SlerpArc arc(na, nb);
+    auto g = [&](double t) { return f((1.0 - t) * pa + t * pb, arc(t)); };
     double t0 = 0.0, t1 = 1.0, g0 = f_inside, g1 = f_outside;
     // f may cross zero more than once on an edge (isophotes and gleams are
     // minima of sinusoids): bracket the crossing nearest the inside end.
