@@ -150,6 +150,13 @@ SceneOptions parse_scene_options(const Args& args) {
 }
 
 void complete_scene(SceneOptions& o, const MeshReport& report) {
+    if (o.refine > 0 && refine_levels(report.faces, o.refine) < o.refine) {
+        const int levels = refine_levels(report.faces, o.refine);
+        std::cerr << "snaxels-cli: warning: --refine " << o.refine << " would make "
+                  << report.faces * (std::size_t(1) << (2 * o.refine)) << " faces; refining by " << levels
+                  << (levels == 1 ? " level" : " levels") << " (at most " << kMaxRefinedFaces << " faces)\n";
+        o.refine = levels;
+    }
     const glm::dvec3 centre = 0.5 * (report.bbox_min + report.bbox_max);
     if (!o.camera.orthographic()) {
         o.camera.target = o.target.value_or(centre);

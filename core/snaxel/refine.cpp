@@ -14,8 +14,9 @@ int auto_refine_levels(std::size_t faces) {
 }
 
 int refine_levels(std::size_t faces, int requested) {
-    if (requested < 0) return auto_refine_levels(faces);
-    return std::min(requested, kMaxRefineLevels);
+    int levels = requested < 0 ? auto_refine_levels(faces) : std::min(requested, kMaxRefineLevels);
+    while (levels > 0 && faces * (std::size_t(1) << (2 * levels)) > kMaxRefinedFaces) --levels;
+    return levels;
 }
 
 MeshTopology engine_topology(const Mesh& mesh, int levels) {

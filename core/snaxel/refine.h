@@ -35,6 +35,8 @@ struct MeshRefinement {
 /// of a mesh filling a 512 x 512 view.
 constexpr std::size_t kRefineTargetFaces = 20000;
 constexpr int kMaxRefineLevels = 3;
+/// No refinement makes more faces than this (levels asked for are lowered).
+constexpr std::size_t kMaxRefinedFaces = 2000000;
 
 /// The levels that bring @p faces to kRefineTargetFaces (0 for a mesh that
 /// has them already; at most kMaxRefineLevels).
@@ -47,7 +49,8 @@ int auto_refine_levels(std::size_t faces);
 MeshTopology refine_topology(const MeshTopology& topology, int levels);
 
 /// The levels to refine @p faces by when asked for @p requested (a level
-/// count, or kAutoRefine), capped so the mesh stays within reach.
+/// count, or kAutoRefine), capped so the mesh stays within reach: at most
+/// kMaxRefineLevels, and no more than kMaxRefinedFaces faces.
 constexpr int kAutoRefine = -1;
 int refine_levels(std::size_t faces, int requested);
 

@@ -95,6 +95,8 @@ TEST(Refine, AutomaticLevelsReachTheTarget) {
     EXPECT_EQ(refine_levels(968, 1), 1);
     EXPECT_EQ(refine_levels(968, 9), kMaxRefineLevels);
     EXPECT_EQ(refine_levels(100000, 2), 2);   // asked for, even on a dense mesh
+    EXPECT_EQ(refine_levels(100000, 3), 2);   // but not past 2 million faces
+    EXPECT_EQ(refine_levels(3000000, 1), 0);
 }
 
 // Refining splits every face into 4^L on its own plane: the original
