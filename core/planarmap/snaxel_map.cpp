@@ -218,16 +218,19 @@ SnaxelMap build_snaxel_map(const SnaxelEngine& engine, const SnaxelMapInput& in,
         std::vector<int> size(comp_label.size(), 0);
         for (const std::int32_t r : comp)
             if (r >= 0) ++size[std::size_t(r)];
-        std::vector<double> image_area(comp_label.size(), 0.0);
+        // Only the vertices of regions of few vertices can be flecks.
+        std::vector<std::int32_t> small;
         for (std::int32_t v = 0; v < V; ++v) {
             const std::int32_t r = comp[std::size_t(v)];
-            if (r >= 0 && size[std::size_t(r)] < in.min_unsupported_vertices) image_area[std::size_t(r)] += vertex_area(v);
+            if (r >= 0 && size[std::size_t(r)] < in.min_unsupported_vertices) small.push_back(v);
         }
+        std::vector<double> image_area(comp_label.size(), 0.0);
+        for (const std::int32_t v : small) image_area[std::size_t(comp[std::size_t(v)])] += vertex_area(v);
         for (std::size_t r = 0; r < size.size(); ++r)
             supported[r] = size[r] >= in.min_unsupported_vertices || image_area[r] >= in.min_fleck_area_px;
-        for (std::int32_t v = 0; v < V; ++v) {
+        for (const std::int32_t v : small) {
             const std::int32_t r = comp[std::size_t(v)];
-            if (r < 0 || supported[std::size_t(r)]) continue;
+            if (supported[std::size_t(r)]) continue;
             bool interior = topo.ring_start[v + 1] > topo.ring_start[v];
             for (std::int32_t i = topo.ring_start[v]; i < topo.ring_start[v + 1] && interior; ++i)
                 interior = label[std::size_t(topo.ring[i])] == label[std::size_t(v)];
@@ -236,9 +239,9 @@ SnaxelMap build_snaxel_map(const SnaxelEngine& engine, const SnaxelMapInput& in,
         // Each fleck vertex takes the label most of its neighbours outside
         // the fleck carry.
         std::vector<std::pair<std::int32_t, int>> moves;
-        for (std::int32_t v = 0; v < V; ++v) {
+        for (const std::int32_t v : small) {
             const std::int32_t r = comp[std::size_t(v)];
-            if (r < 0 || supported[std::size_t(r)]) continue;
+            if (supported[std::size_t(r)]) continue;
             int best = label[std::size_t(v)], best_count = 0;
             for (std::int32_t i = topo.ring_start[v]; i < topo.ring_start[v + 1]; ++i) {
                 const std::int32_t w = topo.ring[i];
