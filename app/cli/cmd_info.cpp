@@ -5,6 +5,7 @@
 #include "app/cli/args.h"
 #include "app/cli/commands.h"
 #include "core/mesh/import.h"
+#include "core/snaxel/refine.h"
 
 namespace snaxels::cli {
 
@@ -13,7 +14,7 @@ int run_info(const std::vector<std::string>& argv) {
               std::string("Reads MESH, welds and repairs it as the engine sees it, and prints a "
                           "report:\nvertices, faces, edges, boundary and non-manifold edges of the "
                           "input, vertices\nsplit and faces dropped by the repair, connected "
-                          "components and bounding box.\n\n") +
+                          "components and bounding box,\nand how far the engine refines it (--refine auto).\n\n") +
                   kMeshArgumentHelp,
               {{"json", "", "print one JSON object instead of text"}}, {"MESH"});
     if (!args.parse(argv)) {
@@ -21,10 +22,19 @@ int run_info(const std::vector<std::string>& argv) {
         return 0;
     }
     const LoadedMesh loaded = load_mesh(args.positional()[0]);
-    if (args.flag("json"))
-        std::cout << to_json(loaded.report).dump(2) << '\n';
-    else
+    // What the engine works on by default (--refine auto): docs/engine.md.
+    const int levels = refine_levels(loaded.report.faces, kAutoRefine);
+    const std::size_t engine_faces = loaded.report.faces * (std::size_t(1) << (2 * levels));
+    if (args.flag("json")) {
+        nlohmann::json doc = to_json(loaded.report);
+        doc["engine"] = {{"refine_levels", levels}, {"faces", engine_faces}};
+        std::cout << doc.dump(2) << '\n';
+    } else {
         std::cout << to_text(loaded.report);
+        if (levels > 0)
+            std::cout << "refined for contours: " << levels << (levels == 1 ? " level, " : " levels, ") << engine_faces
+                      << " faces\n";
+    }
     return 0;
 }
 
