@@ -164,7 +164,7 @@ AnimationOutput run_animation(const LoadedMesh& mesh, const std::string& mesh_pa
             for (std::size_t l = 0; l < phases.size(); ++l) frame.drawing.contours[c].loops[l].dash_phase = phases[l];
         }
         for (auto& contour : frame.drawing.contours)
-            for (auto& loop : contour.loops) loop.p.clear(); // 3-D positions are not exported
+            for (auto& loop : contour.loops) std::vector<glm::dvec3>().swap(loop.p); // not exported: memory freed
         if (!job.frames_dir.empty()) {
             char name[64];
             std::snprintf(name, sizeof name, "frame_%05d.svg", k);
