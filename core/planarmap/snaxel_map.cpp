@@ -317,12 +317,6 @@ SnaxelMap build_snaxel_map(const SnaxelEngine& engine, const SnaxelMapInput& in,
         if (l == kOccluded) ++map.stats.occluded_vertices;
     }
 
-    auto facing = [&](std::int32_t f) {
-        const auto& fv = topo.face_vertices[std::size_t(f)];
-        const glm::dvec3 &p0 = topo.positions[std::size_t(fv[0])], &p1 = topo.positions[std::size_t(fv[1])],
-                         &p2 = topo.positions[std::size_t(fv[2])];
-        return glm::dot(glm::cross(p1 - p0, p2 - p0), camera.to_viewer((p0 + p1 + p2) / 3.0)) > 0.0;
-    };
     // Where fronts stop on edges whose labels differ (rules 3 and 4).
     std::vector<std::int32_t> cut_edges;
     for (std::int32_t e = 0; e < E; ++e) {
@@ -333,8 +327,14 @@ SnaxelMap build_snaxel_map(const SnaxelEngine& engine, const SnaxelMapInput& in,
     auto depth_of = [&](const glm::dvec3& p) {
         return camera.orthographic() ? glm::dot(p, camera.forward()) : glm::dot(p - camera.eye, camera.forward());
     };
+    // Which faces are turned to the viewer (by their own winding).
     std::vector<char> front_face(topo.n_faces(), 0);
-    parallel_for(topo.n_faces(), [&](std::size_t f) { front_face[f] = facing(std::int32_t(f)); }, 4096);
+    parallel_for(topo.n_faces(), [&](std::size_t f) {
+        const auto& fv = topo.face_vertices[f];
+        const glm::dvec3 &p0 = topo.positions[std::size_t(fv[0])], &p1 = topo.positions[std::size_t(fv[1])],
+                         &p2 = topo.positions[std::size_t(fv[2])];
+        front_face[f] = glm::dot(glm::cross(p1 - p0, p2 - p0), camera.to_viewer((p0 + p1 + p2) / 3.0)) > 0.0;
+    }, 4096);
     const ContourImage occluder(engine, visual, projection, depth_of);
     auto snaxel_point = [&](const ContourResult& r, std::int32_t e, int a, int b) {
         const std::int32_t s = r.fronts.edge_snaxel.empty() ? MeshTopology::kNone : r.fronts.edge_snaxel[std::size_t(e)];
@@ -583,7 +583,7 @@ SnaxelMap build_snaxel_map(const SnaxelEngine& engine, const SnaxelMapInput& in,
             if (count > most) most = count, region = c[k];
         }
         if (away == 0 || front == 0 || away + front != 3) continue; // no hidden corner
-        if (away == 0 || region < 0 || !facing(f)) continue;
+        if (away == 0 || region < 0 || !front_face[std::size_t(f)]) continue;
         {
             // Only where the face itself is seen (past a fold it may lie behind the nearer sheet).
             const glm::dvec3 centroid = (topo.positions[std::size_t(fv[0])] + topo.positions[std::size_t(fv[1])] +
@@ -655,7 +655,7 @@ SnaxelMap build_snaxel_map(const SnaxelEngine& engine, const SnaxelMapInput& in,
                         if (g == MeshTopology::kNone || taken.count(g)) continue;
                         const auto& gv = topo.face_vertices[std::size_t(g)];
                         if (label[std::size_t(gv[0])] != kAway || label[std::size_t(gv[1])] != kAway ||
-                            label[std::size_t(gv[2])] != kAway || !facing(g))
+                            label[std::size_t(gv[2])] != kAway || !front_face[std::size_t(g)])
                             continue;
                         const glm::dvec3 &p0 = topo.positions[std::size_t(gv[0])], &p1 = topo.positions[std::size_t(gv[1])],
                                          &p2 = topo.positions[std::size_t(gv[2])];

@@ -51,14 +51,13 @@ std::optional<SequenceFiles> find_sequence(const std::string& file) {
     // Numbers written without leading zeros (frame_7, frame_10) use %d.
     const bool padded = width > 1 && stem[begin] == '0';
     const std::string marker = padded ? std::string(width, '#') : std::string("%d");
-    auto file_of = [&](int k) {
-        std::string digits = std::to_string(k);
-        if (padded && digits.size() < width) digits.insert(0, width - digits.size(), '0');
-        return (path.parent_path() / (prefix + digits + suffix)).string();
-    };
     std::error_code ec;
     SequenceFiles s;
     s.pattern = (path.parent_path() / (prefix + marker + suffix)).string();
+    AnimationSpec numbered; // file k of the series is frame k counted from 0
+    numbered.pattern = s.pattern;
+    numbered.first_file = 0;
+    auto file_of = [&](int k) { return sequence_file(numbered, k); };
     s.first_file = number;
     while (s.first_file > 0 && std::filesystem::is_regular_file(file_of(s.first_file - 1), ec)) --s.first_file;
     int last = number;

@@ -59,10 +59,15 @@ QByteArray readAll(const QString& path) {
 
 /// Shows @p window at @p size and loads @p mesh into it; true once its
 /// first contours are drawn.
-bool showWithMesh(MainWindow& window, const QString& mesh, QSize size = {1000, 700}) {
+/// Shows @p window at @p size and waits until it is on screen.
+bool showWindow(MainWindow& window, QSize size) {
     window.resize(size);
     window.show();
-    if (!QTest::qWaitForWindowExposed(&window)) return false;
+    return QTest::qWaitForWindowExposed(&window);
+}
+
+bool showWithMesh(MainWindow& window, const QString& mesh, QSize size = {1000, 700}) {
+    if (!showWindow(window, size)) return false;
     QSignalSpy contours(&window, &MainWindow::contoursUpdated);
     window.openMesh(mesh);
     return contours.wait(60000);
@@ -81,9 +86,7 @@ class TestMainWindow : public QObject {
 
     void showsTheDefaultSceneShaded() {
         MainWindow window;
-        window.resize(900, 700);
-        window.show();
-        QVERIFY(QTest::qWaitForWindowExposed(&window));
+        QVERIFY(showWindow(window, {900, 700}));
         QSignalSpy loaded(&window, &MainWindow::meshLoaded);
         QSignalSpy contours(&window, &MainWindow::contoursUpdated);
         window.openMesh(snaxels::ui::defaultScenePath());
@@ -221,9 +224,7 @@ class TestMainWindow : public QObject {
     // stalls for 200 ms or more while the mesh loads and its contours come.
     void loadsAMillionFacesWithoutFreezing() {
         MainWindow window;
-        window.resize(1000, 700);
-        window.show();
-        QVERIFY(QTest::qWaitForWindowExposed(&window));
+        QVERIFY(showWindow(window, {1000, 700}));
         QSignalSpy loaded(&window, &MainWindow::meshLoaded);
         QSignalSpy contours(&window, &MainWindow::contoursUpdated);
         QElapsedTimer clock;
@@ -259,9 +260,7 @@ class TestMainWindow : public QObject {
         QByteArray exported;
         {
             MainWindow window;
-            window.resize(1200, 800);
-            window.show();
-            QVERIFY(QTest::qWaitForWindowExposed(&window));
+            QVERIFY(showWindow(window, {1200, 800}));
             QSignalSpy contours(&window, &MainWindow::contoursUpdated);
             window.openMesh(dir.filePath("meshes/spot.obj"));
             QVERIFY(contours.wait(60000));
@@ -342,9 +341,7 @@ class TestMainWindow : public QObject {
         QVERIFY(readAll(projectFile).contains("\"mesh\": \"../meshes/spot.obj\""));
 
         MainWindow reopened;
-        reopened.resize(900, 700); // another window size: the export must not care
-        reopened.show();
-        QVERIFY(QTest::qWaitForWindowExposed(&reopened));
+        QVERIFY(showWindow(reopened, {900, 700})); // another window size: the export must not care
         QSignalSpy opened(&reopened, &MainWindow::projectOpened);
         QSignalSpy contours(&reopened, &MainWindow::contoursUpdated);
         reopened.openFile(projectFile);
@@ -566,9 +563,7 @@ class TestMainWindow : public QObject {
             for (const auto& t : base.triangles) s << "f " << t[0] + 1 << ' ' << t[1] + 1 << ' ' << t[2] + 1 << '\n';
         }
         MainWindow window;
-        window.resize(1000, 700);
-        window.show();
-        QVERIFY(QTest::qWaitForWindowExposed(&window));
+        QVERIFY(showWindow(window, {1000, 700}));
         QSignalSpy contours(&window, &MainWindow::contoursUpdated);
         QVERIFY(window.openSequence(dir.filePath("shots/blob/blob_0003.obj"))); // any of its files
         QVERIFY(contours.wait(60000));
@@ -601,9 +596,7 @@ class TestMainWindow : public QObject {
         QVERIFY(exported.contains("<animate attributeName=\"d\""));
 
         MainWindow reopened;
-        reopened.resize(900, 600);
-        reopened.show();
-        QVERIFY(QTest::qWaitForWindowExposed(&reopened));
+        QVERIFY(showWindow(reopened, {900, 600}));
         QSignalSpy opened(&reopened, &MainWindow::projectOpened);
         QSignalSpy reopenedContours(&reopened, &MainWindow::contoursUpdated);
         reopened.openProject(projectFile);
