@@ -1,17 +1,26 @@
 #!/usr/bin/env bash
 # Installs every Debian 12 package snaxels needs to build, run and test.
 # Safe to run repeatedly: apt skips what is already installed.
+#   scripts/install-deps.sh          install the packages that are missing
+#   scripts/install-deps.sh --list   print the package list, one a line
+# The test deps.packages checks that every system file the build reads comes
+# from these packages or their dependencies.
 set -euo pipefail
 
 PACKAGES=(
   build-essential cmake ninja-build pkg-config git
   qt6-base-dev libqt6opengl6-dev qt6-svg-dev libgl-dev libglx-dev
-  libopenmesh-dev libglm-dev libassimp-dev
+  libopenmesh-dev libglm-dev libassimp-dev zlib1g-dev
   libembree-dev libpolyclipping-dev libpugixml-dev nlohmann-json3-dev
   libgtest-dev libgmock-dev libbenchmark-dev
   xvfb xauth libgl1-mesa-dri mesa-utils
-  chromium fonts-dejavu-core
+  chromium fonts-dejavu-core librsvg2-bin
 )
+
+if [ "${1:-}" = --list ]; then
+  printf '%s\n' "${PACKAGES[@]}"
+  exit 0
+fi
 
 missing=()
 for p in "${PACKAGES[@]}"; do
