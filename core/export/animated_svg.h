@@ -1,14 +1,15 @@
 #pragma once
 /// Animated SVG whose paths move (the paper's "3-D SVG Animation"): one
-/// <path> per contour sequence and visibility run, its vertex list fixed for
-/// the sequence and its geometry animated with SMIL <animate> (values,
-/// keyTimes, calcMode="linear"), shown only while its sequence lives.
-/// Snaxel identities give the correspondence: a snaxel not yet born or
-/// already gone sits on its predecessor along the loop, so every keyframe
-/// has the same commands and browsers interpolate between them.
-/// Region fills animate the same way: one <path> per region track and run
-/// of frames with the same number of loops (a topology event starts the
-/// next), each loop resampled by arc length from an anchor that follows it.
+/// visible and one hidden <path> per contour sequence, shown for the
+/// sequence's whole life, its geometry animated with SMIL <animate>
+/// (values, keyTimes, calcMode="linear"). Each loop is parameterized by arc
+/// length with u = 0 carried by the snaxel identities; visibility runs are
+/// the path's subpaths, on a grid fixed in u. A path's life is a chain of
+/// segments of one vertex set each, joined by keys a thousandth of a frame
+/// apart that draw the same shape (core/export/path_keys.h).
+/// Region fills animate the same way: one <path> per region track for the
+/// region's whole life, its loops (outlines and holes) growing from and
+/// shrinking to points as they appear and close.
 
 #include <cstdint>
 #include <string>
@@ -39,16 +40,25 @@ struct AnimatedSvgOptions {
     /// Pixels: path vertices, and keyframes, that linear interpolation
     /// reproduces within this distance in every frame are dropped.
     double tolerance_px = 0.25;
-    /// A path serves at most this many frames; longer sequences are handed
-    /// from path to path without a visible seam.
-    std::size_t max_chunk_frames = 12;
     /// Visible or hidden stretches shorter than this (pixels) take their
     /// neighbour's visibility: flicker at T-junctions, not lines.
     double min_run_px = 3.0;
-    /// Where a visible or hidden stretch's end moves along a bend of the
-    /// curve deeper than this (pixels) in one frame, the stretch is cut there
-    /// instead of interpolated (interpolation would sweep across the bend).
+    /// Where a visibility run's end glides along a bend of the curve, keys
+    /// are added between frames (down to an eighth of a frame) until the
+    /// interpolated stroke stays within this distance (pixels) of the curve.
     double max_sweep_px = 1.0;
+};
+
+/// One path of the animated SVG, for --stats.
+struct PathStats {
+    std::string kind;  ///< "stroke" or "fill"
+    std::string label; ///< the contour kind's label (strokes) or the region class (fills)
+    std::string part;  ///< "visible", "hidden" or "fill"
+    int first = 0, last = 0;      ///< frames shown
+    std::size_t frames_shown = 0;
+    std::size_t vertices = 0;     ///< the most any of its keyframes has
+    std::size_t keyframes = 0;
+    std::size_t segments = 0;     ///< stretches of one vertex set
 };
 
 struct AnimatedSvgStats {
@@ -56,6 +66,7 @@ struct AnimatedSvgStats {
     std::size_t keyframes = 0;        ///< kept, over all paths
     std::size_t frames_spanned = 0;   ///< frames the paths are shown in, summed
     std::size_t vertices = 0;         ///< path vertices, summed over paths
+    std::vector<PathStats> path_stats;
 };
 
 /// The animated SVG of @p frames played at @p fps, looping, drawn as @p style says.

@@ -87,10 +87,12 @@ void append_compact_path_data(std::string& out, const std::vector<glm::dvec2>& q
     out += d;
 }
 
-std::string document_start(int width, int height, const std::string& background) {
+std::string document_start(int width, int height, const std::string& background, bool inkscape) {
     const std::string w = std::to_string(width), h = std::to_string(height);
     std::string out = "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n"
-                      "<svg xmlns=\"http://www.w3.org/2000/svg\" version=\"1.1\" width=\"" + w + "\" height=\"" + h +
+                      "<svg xmlns=\"http://www.w3.org/2000/svg\"" +
+                      std::string(inkscape ? " xmlns:inkscape=\"http://www.inkscape.org/namespaces/inkscape\"" : "") +
+                      " version=\"1.1\" width=\"" + w + "\" height=\"" + h +
                       "\" viewBox=\"0 0 " + w + " " + h + "\">\n";
     // Sizes in user units, not percentages: some renderers (QtSvg) resolve
     // percentages against the widget rather than the viewBox.
@@ -99,8 +101,8 @@ std::string document_start(int width, int height, const std::string& background)
     return out;
 }
 
-std::string kind_group(const ContourSpec& spec, const StrokeStyle& stroke) {
-    std::string out = "<g class=\"contour\" data-kind=\"" + spec.kind_name() + "\" data-label=\"" + spec.label() +
+std::string kind_group(const ContourSpec& spec, const StrokeStyle& stroke, const std::string& attributes) {
+    std::string out = "<g" + attributes + " class=\"contour\" data-kind=\"" + spec.kind_name() + "\" data-label=\"" + spec.label() +
                       "\" fill=\"none\" stroke=\"" + stroke.colour + "\" stroke-width=\"";
     append_number(out, stroke.width);
     out += "\"";
@@ -140,13 +142,14 @@ void append_chain_data(std::string& out, const BezierChain& chain) {
     if (chain.closed) out += " Z";
 }
 
-void append_compact_chain_data(std::string& out, const BezierChain& chain) {
+void append_compact_chain_data(std::string& out, const BezierChain& chain, glm::dvec2 from) {
     if (chain.knots.empty()) return;
     std::string d = "m";
     auto tenths = [](const glm::dvec2& p) { return std::pair{std::lround(p.x * 10.0), std::lround(p.y * 10.0)}; };
+    const auto [fx, fy] = tenths(from);
     auto [px, py] = tenths(chain.knots[0]);
-    append_joined(d, px);
-    append_joined(d, py);
+    append_joined(d, px - fx);
+    append_joined(d, py - fy);
     const std::size_t m = chain.knots.size();
     for (std::size_t s = 0; s < chain.c1.size(); ++s) {
         if (s == 0) d += 'c';

@@ -29,11 +29,13 @@ void append_compact_path_data(std::string& out, const std::vector<glm::dvec2>& q
 /// A Bézier chain as absolute path data "M x,y C x,y x,y x,y ... [Z]".
 void append_chain_data(std::string& out, const BezierChain& chain);
 /// The compact, relative form of a Bézier chain (see append_compact_path_data).
-void append_compact_chain_data(std::string& out, const BezierChain& chain);
+void append_compact_chain_data(std::string& out, const BezierChain& chain, glm::dvec2 from = glm::dvec2(0.0));
 
-/// XML declaration, <svg> start tag and the background (unless "none").
-std::string document_start(int width, int height, const std::string& background);
-/// Start tag of the group of one contour kind, drawn with @p stroke.
-std::string kind_group(const ContourSpec& spec, const StrokeStyle& stroke);
+/// XML declaration, <svg> start tag and the background (unless "none");
+/// with @p inkscape, the namespace of Inkscape's layer attributes.
+std::string document_start(int width, int height, const std::string& background, bool inkscape = false);
+/// Start tag of the group of one contour kind, drawn with @p stroke, with
+/// @p attributes (" name=\"value\" ...") added.
+std::string kind_group(const ContourSpec& spec, const StrokeStyle& stroke, const std::string& attributes = {});
 
 } // namespace snaxels::svg

@@ -32,12 +32,21 @@ std::vector<std::uint64_t> RegionTracker::step(const PlanarMap& map) {
             if (r < now.size() && p < prev_.size() && compatible(r, p)) candidates.emplace_back(-double(count), r, p);
         }
     }
-    std::sort(candidates.begin(), candidates.end());
+    // Where regions merge, the oldest track goes on (the region that has
+    // been followed longest keeps its path); a previous region counts for a
+    // region when it gives it at least a quarter of the vertices its best
+    // one does. Where a region splits, the part with most of it goes on.
+    std::vector<double> best(now.size(), 0.0);
+    for (const auto& [score, r, p] : candidates) best[r] = std::max(best[r], -score);
+    std::vector<std::tuple<std::uint64_t, double, std::size_t, std::size_t>> merges; // (track, -count, r, p)
+    for (const auto& [score, r, p] : candidates)
+        if (-score >= 0.25 * best[r]) merges.emplace_back(prev_tracks_[p], score, r, p);
+    std::sort(merges.begin(), merges.end());
     std::vector<std::uint64_t> tracks(now.size(), 0);
     std::vector<char> assigned(now.size(), 0), taken(prev_.size(), 0);
-    for (const auto& [score, r, p] : candidates) {
+    for (const auto& [track, score, r, p] : merges) {
         if (assigned[r] || taken[p]) continue;
-        tracks[r] = prev_tracks_[p];
+        tracks[r] = track;
         assigned[r] = taken[p] = 1;
     }
     // The rest (the post-processed map's regions, or regions that hold no

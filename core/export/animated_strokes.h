@@ -1,0 +1,38 @@
+#pragma once
+// Internal to core/export: the animated strokes of one contour kind (see
+// animated_svg.h). One visible and one hidden path per contour sequence,
+// each shown for the sequence's whole life; its visibility runs are the
+// path's subpaths, which grow from and shrink to points as runs appear and
+// vanish. Styles with surface-fastened dashes give each run its own path
+// instead (a path has one dash offset; SVG restarts dashes at every subpath).
+
+#include <string>
+#include <vector>
+
+#include "core/export/animated_svg.h"
+#include "core/export/smil.h"
+
+namespace snaxels {
+
+/// A stretch of a loop's arc-length parameter u of one visibility class
+/// (0 visible, 1 hidden): [u0, u1] (u1 may pass 1 on closed loops), or the
+/// whole closed loop.
+struct ClassSpan {
+    int cls = 0;
+    bool whole = false;
+    double u0 = 0.0, u1 = 1.0;
+};
+
+/// The class spans of one loop from its visibility changes (u, class after
+/// it; sorted), @p cls0 holding at u = 0. Stretches shorter than
+/// @p min_u (QI flicker at T-junctions) take their longer neighbour's class.
+std::vector<ClassSpan> class_spans(const std::vector<std::pair<double, int>>& changes, int cls0, bool closed,
+                                   double min_u);
+
+/// Appends the paths of contour @p c of @p frames to @p hidden_out and
+/// @p visible_out, and their statistics to @p stats.
+void write_strokes(const std::vector<AnimationFrame>& frames, std::size_t c, const Style& style,
+                   const AnimatedSvgOptions& options, const smil::Clock& clock, std::string& hidden_out,
+                   std::string& visible_out, AnimatedSvgStats& stats);
+
+} // namespace snaxels
