@@ -19,6 +19,31 @@
 
 namespace snaxels::cli {
 
+namespace {
+
+/// --stats: every path of the animated SVG, and totals.
+nlohmann::json stats_json(const AnimationOutput& result) {
+    const AnimatedSvgStats& st = result.stats;
+    nlohmann::json paths = nlohmann::json::array();
+    std::size_t one_frame = 0;
+    for (const PathStats& p : st.path_stats) {
+        paths.push_back({{"kind", p.kind}, {"label", p.label}, {"part", p.part}, {"first_frame", p.first},
+                         {"last_frame", p.last}, {"frames_shown", p.frames_shown}, {"vertices", p.vertices},
+                         {"keyframes", p.keyframes}, {"segments", p.segments}});
+        one_frame += p.frames_shown == 1;
+    }
+    return {{"frames", result.frames},
+            {"bytes", result.svg.size()},
+            {"paths", st.paths},
+            {"paths_shown_one_frame", one_frame},
+            {"keyframes", st.keyframes},
+            {"path_frames", st.frames_spanned},
+            {"vertices", st.vertices},
+            {"path_list", paths}};
+}
+
+} // namespace
+
 int run_animate(const std::vector<std::string>& argv) {
     auto specs = scene_option_specs();
     specs.insert(specs.begin(),
@@ -32,11 +57,12 @@ int run_animate(const std::vector<std::string>& argv) {
                   {"tolerance", "PX", "drop path vertices and keyframes reproduced within PX pixels (default 0.25)"},
                   {"output", "OUT.svg", "the animated SVG to write", false, 'o'},
                   {"frames-dir", "DIR", "also write every frame as a static SVG into DIR (a flipbook, for comparison)"},
-                  {"events", "OUT.json", "write the visual events (creation, annihilation, split, merge)"}});
+                  {"events", "OUT.json", "write the visual events (creation, annihilation, split, merge)"},
+                  {"stats", "OUT.json", "write the animated SVG's paths: frames shown, vertices, keyframes"}});
     Args args("animate",
               "animate MESH (--turntable DEG | --light-orbit DEG | --clip NAME | --sequence PATTERN)\n"
               "       --frames N [--fps F] [view, light and kind options as in contours]\n"
-              "       [--tolerance PX] -o OUT.svg [--frames-dir DIR] [--events OUT.json]",
+              "       [--tolerance PX] -o OUT.svg [--frames-dir DIR] [--events OUT.json] [--stats OUT.json]",
               std::string("Tracks contours through an animation and writes an animated SVG in which every\n"
                           "contour is one path whose vertices move (SMIL), keyframed only where needed.\n"
                           "With --sequence, MESH is ignored if it is '-'; the first file of the sequence\n"
@@ -85,6 +111,7 @@ int run_animate(const std::vector<std::string>& argv) {
     if (!output) throw UsageError("-o OUT.svg is required");
     const std::string frames_dir = args.value("frames-dir").value_or("");
     const std::string events_out = args.value("events").value_or("");
+    const std::string stats_out = args.value("stats").value_or("");
 
     std::string mesh_path = args.positional()[0];
     if (anim.kind == AnimationSpec::Kind::Sequence && mesh_path == "-") mesh_path.clear();
@@ -115,6 +142,7 @@ int run_animate(const std::vector<std::string>& argv) {
     const AnimationOutput result = run_animation_with_progress(loaded, mesh_path, job);
     write_file_atomically(*output, result.svg);
     if (!events_out.empty()) write_file_atomically(events_out, result.events.dump(1) + "\n");
+    if (!stats_out.empty()) write_file_atomically(stats_out, stats_json(result).dump(1) + "\n");
     const double total_ms =
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t_start).count();
     double tracking = 0.0;

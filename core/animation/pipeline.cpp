@@ -43,14 +43,25 @@ AnimationOutput run_animation(const LoadedMesh& mesh, const std::string& mesh_pa
     frames = std::max(frames, 1);
     out.frames = frames;
 
-    // The image frame: the mesh's bounding sphere over every frame.
+    // The image frame: the mesh's bounding sphere over every frame; a mesh
+    // that moves is framed on the union of its poses over the animation (its
+    // rest pose, as loaded, may stand elsewhere and at another scale).
     glm::dvec3 lo = mesh.report.bbox_min, hi = mesh.report.bbox_max;
+    Camera job_camera = job.camera;
     if (driver.mesh_moves()) {
+        lo = glm::dvec3(1e300), hi = glm::dvec3(-1e300);
         Camera c;
         Light l;
         for (int k = 0; k < frames; ++k) {
             driver.apply(k, c, l);
             for (const auto& p : topology.positions) lo = glm::min(lo, p), hi = glm::max(hi, p);
+        }
+        // A perspective camera aimed at the loaded mesh's centre (the
+        // default) follows it to the poses' centre.
+        const glm::dvec3 shift = 0.5 * (lo + hi) - mesh_centre;
+        if (!job_camera.orthographic() && glm::length(job_camera.target - mesh_centre) <= 1e-9 * (1.0 + glm::length(mesh_centre))) {
+            job_camera.target += shift;
+            job_camera.eye += shift;
         }
     }
     const glm::dvec3 centre = 0.5 * (lo + hi);
@@ -94,6 +105,7 @@ AnimationOutput run_animation(const LoadedMesh& mesh, const std::string& mesh_pa
         Camera camera;
         Light light;
         driver.apply(k, camera, light);
+        if (driver.mesh_moves()) camera = job_camera; // a moving mesh's camera stays (framed on its poses)
         const bool need_rays = job.visibility || (fills && job.map_kind == PlanarMapKind::Snaxel);
         if (need_rays) {
             if (!rays) rays = std::make_unique<RayScene>(topology);

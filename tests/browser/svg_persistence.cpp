@@ -12,6 +12,9 @@
 //   --one-frame MAX_SHARE        stroke paths shown one frame only: at most MAX_SHARE of them
 //   --fills MIN_FRAMES SHARE     fills: at least SHARE of area x frames likewise
 //   --frame0-only                only paths shown at frame 0 are visible without SMIL
+//   --framed MIN_SPAN            what the strokes draw over all frames is centred on the
+//                                canvas (within 5% of its size) and spans at least MIN_SPAN
+//                                of it across or down
 // Fill paths are those inside <g id="fills">; stroke paths every other path.
 
 #include <algorithm>
@@ -166,6 +169,7 @@ std::vector<std::string> split(const std::string& s, char sep) {
 }
 
 struct PathInfo {
+    double lo_x = 1e300, lo_y = 1e300, hi_x = -1e300, hi_y = -1e300; // drawn extent over the frames shown
     bool fill = false;
     std::vector<int> shown; // frames
     double measure = 0;     // length or area, summed over the frames shown
@@ -229,7 +233,13 @@ PathInfo measure(pugi::xml_node path, bool fill, int frames) {
             shape = tokenize(path.attribute("d").value());
         }
         const auto subs = flatten(shape);
-        info.measure += fill ? area_of(subs) : length_of(subs);
+        const double m = fill ? area_of(subs) : length_of(subs);
+        info.measure += m;
+        if (m > 0)
+            for (const auto& sp : subs)
+                for (const Pt& p : sp)
+                    info.lo_x = std::min(info.lo_x, p.x), info.lo_y = std::min(info.lo_y, p.y),
+                    info.hi_x = std::max(info.hi_x, p.x), info.hi_y = std::max(info.hi_y, p.y);
     }
     return info;
 }
@@ -314,6 +324,18 @@ int main(int argc, char** argv) {
             }
             std::printf("paths whose SMIL-less visibility differs from frame 0: %zu %s\n", wrong, wrong ? "FAIL" : "ok");
             failures += wrong != 0;
+        } else if (opt == "--framed" && i + 1 < argc) {
+            const double min_span = std::atof(argv[++i]);
+            const double w = doc.child("svg").attribute("width").as_double(), h = doc.child("svg").attribute("height").as_double();
+            double lx = 1e300, ly = 1e300, hx = -1e300, hy = -1e300;
+            for (const auto& p : paths)
+                if (!p.fill) lx = std::min(lx, p.lo_x), ly = std::min(ly, p.lo_y), hx = std::max(hx, p.hi_x), hy = std::max(hy, p.hi_y);
+            const double cx = 0.5 * (lx + hx) / w - 0.5, cy = 0.5 * (ly + hy) / h - 0.5;
+            const double span = std::max((hx - lx) / w, (hy - ly) / h);
+            const bool ok = w > 0 && h > 0 && std::abs(cx) <= 0.05 && std::abs(cy) <= 0.05 && span >= min_span;
+            std::printf("drawn extent over all frames: x %.0f..%.0f, y %.0f..%.0f of %gx%g (centre off by %.1f%%, %.1f%%; spans %.0f%%, need %.0f%%) %s\n",
+                        lx, hx, ly, hy, w, h, 100 * cx, 100 * cy, 100 * span, 100 * min_span, ok ? "ok" : "FAIL");
+            failures += !ok;
         } else {
             std::fprintf(stderr, "unknown or incomplete check '%s'\n", opt.c_str());
             return 2;

@@ -6,9 +6,10 @@
 set -uo pipefail
 package=$1; file_regex=$2; shift 2
 src=$3
-list=$(bash "$src/scripts/install-deps.sh" --list | grep -vx "$package" | tr '\n' ' ')
-bash "$src/scripts/install-deps.sh" --list | grep -qx "$package" ||
+all=$(bash "$src/scripts/install-deps.sh" --list)
+grep -qx "$package" <<<"$all" ||
   { echo "FAIL: $package is not in install-deps.sh's list, so leaving it out shows nothing"; exit 1; }
+list=$(grep -vx "$package" <<<"$all" | tr '\n' ' ')
 out=$(SNAXELS_DEPS_PACKAGES="$list" bash "$@" 2>&1); rc=$?
 echo "$out"
 [ $rc -ne 0 ] || { echo "FAIL: the check passed with $package left out of the list"; exit 1; }

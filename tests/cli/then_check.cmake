@@ -1,0 +1,15 @@
+# Runs a command, then a checker on what it wrote; both must exit 0.
+#   cmake "-DCMD=prog|arg|..." "-DCHECK=checker|arg|..." -P then_check.cmake
+# (arguments joined by '|': a ';' list does not survive add_test intact)
+string(REPLACE "|" ";" cmd "${CMD}")
+string(REPLACE "|" ";" check "${CHECK}")
+execute_process(COMMAND ${cmd} RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err TIMEOUT 600)
+message("${out}${err}")
+if(NOT rc EQUAL 0)
+  message(FATAL_ERROR "the command failed (${rc})")
+endif()
+execute_process(COMMAND ${check} RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err TIMEOUT 600)
+message("${out}${err}")
+if(NOT rc EQUAL 0)
+  message(FATAL_ERROR "the check failed (${rc})")
+endif()
