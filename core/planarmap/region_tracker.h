@@ -2,8 +2,9 @@
 /// Region identities across frames, for animated fills: a region continues
 /// the previous frame's region of its class with which it shares the most
 /// vertices (snaxel map) or, for the post-processed map, whose centre is
-/// nearest. A region that continues none starts a new track (the animated
-/// SVG also starts a new path where a track's number of loops changes).
+/// nearest. Where regions merge the oldest track goes on. A region that
+/// continues none starts a new track; the animated SVG draws each track as
+/// one path.
 
 #include <cstdint>
 #include <vector>
