@@ -7,6 +7,8 @@
 set -euo pipefail
 cli=$1; compare=$2; outdir=$3; name=$4; mesh=$5; frames=$6; fps=$7; shift 8
 here=$(dirname "$0")
+# shellcheck source=grid_pages.sh
+. "$here/grid_pages.sh"
 dir="$outdir/$name"
 rm -rf "$dir"; mkdir -p "$dir"
 cell=400; cols=4; rows=3; shots=$((cols * rows))
@@ -18,18 +20,8 @@ picks=()
 for ((i = 0; i < shots; i++)); do picks+=($(( i * (frames - 1) / (shots - 1) ))); done
 
 # One page with the animated SVG inlined once per cell, each seeked to its frame.
-{
-  echo '<!DOCTYPE html><html><head><style>body{margin:0;background:#fff}div{display:grid;grid-template-columns:repeat('$cols','${cell}'px);}svg{display:block}</style></head><body><div>'
-  for f in "${picks[@]}"; do sed '1d' "$dir/anim.svg" | sed "s/<svg /<svg data-frame=\"$f\" /"; done
-  echo '</div><script>'
-  echo "for (const s of document.querySelectorAll('svg[data-frame]')) { s.pauseAnimations(); s.setCurrentTime((Number(s.dataset.frame) + 0.02) / $fps); }"
-  echo '</script></body></html>'
-} > "$dir/animated.html"
-{
-  echo '<!DOCTYPE html><html><head><style>body{margin:0;background:#fff}div{display:grid;grid-template-columns:repeat('$cols','${cell}'px);}img{display:block}</style></head><body><div>'
-  for f in "${picks[@]}"; do printf '<img src="frames/frame_%05d.svg" width="%d" height="%d">\n' "$f" $cell $cell; done
-  echo '</div></body></html>'
-} > "$dir/static.html"
+seek_page "$dir/animated.html" "$dir/anim.svg" $cols $cell "$fps" 0.02 "${picks[@]}"
+frames_page "$dir/static.html" $cols $cell frames "${picks[@]}"
 
 bash "$here/render_svg.sh" "$dir/animated.html" "$dir/animated.png" $((cols * cell)) $((rows * cell))
 bash "$here/render_svg.sh" "$dir/static.html" "$dir/static.png" $((cols * cell)) $((rows * cell))
@@ -40,19 +32,13 @@ QT_QPA_PLATFORM=offscreen "$compare" "$dir/animated.png" "$dir/static.png" $cols
 # Fills half way between frames: within what the two frames cover, and
 # covering what both do (interpolated outlines must not bleed or tear).
 if [ -n "${FILLS:-}" ]; then
-  {
-    echo '<!DOCTYPE html><html><head><style>body{margin:0;background:#fff}div{display:grid;grid-template-columns:repeat('$cols','${cell}'px);}svg{display:block}</style></head><body><div>'
-    for f in "${picks[@]}"; do g=$(( f < frames - 1 ? f : frames - 2 )); sed '1d' "$dir/anim.svg" | sed "s/<svg /<svg data-frame=\"$g\" /"; done
-    echo '</div><script>'
-    echo "for (const s of document.querySelectorAll('svg[data-frame]')) { s.pauseAnimations(); s.setCurrentTime((Number(s.dataset.frame) + 0.5) / $fps); }"
-    echo '</script></body></html>'
-  } > "$dir/between.html"
+  between=()
+  for f in "${picks[@]}"; do between+=($(( f < frames - 1 ? f : frames - 2 ))); done
+  seek_page "$dir/between.html" "$dir/anim.svg" $cols $cell "$fps" 0.5 "${between[@]}"
   for which in 0 1; do
-    {
-      echo '<!DOCTYPE html><html><head><style>body{margin:0;background:#fff}div{display:grid;grid-template-columns:repeat('$cols','${cell}'px);}img{display:block}</style></head><body><div>'
-      for f in "${picks[@]}"; do g=$(( f < frames - 1 ? f : frames - 2 )); printf '<img src="frames/frame_%05d.svg" width="%d" height="%d">\n' $((g + which)) $cell $cell; done
-      echo '</div></body></html>'
-    } > "$dir/static$which.html"
+    shifted=()
+    for g in "${between[@]}"; do shifted+=($((g + which))); done
+    frames_page "$dir/static$which.html" $cols $cell frames "${shifted[@]}"
     bash "$here/render_svg.sh" "$dir/static$which.html" "$dir/static$which.png" $((cols * cell)) $((rows * cell))
   done
   bash "$here/render_svg.sh" "$dir/between.html" "$dir/between.png" $((cols * cell)) $((rows * cell))

@@ -16,6 +16,8 @@ set -euo pipefail
 cli=$1; compare=$2; persistence=$3; outdir=$4; name=$5; mesh=$6; frames=$7; fps=$8; source=$9; step=${10}; min=${11}
 shift 12
 here=$(dirname "$0")
+# shellcheck source=grid_pages.sh
+. "$here/grid_pages.sh"
 dir="$outdir/$name"
 rm -rf "$dir"; mkdir -p "$dir"
 cell=400; cols=4; rows=3; shots=$((cols * rows))
@@ -38,26 +40,12 @@ fps_used=$(sed -n 's/.* frames at \([0-9.]*\) fps.*/\1/p' "$dir/coarse.txt")
 picks=()
 for ((i = 0; i < shots; i++)); do picks+=($(( i * (frames - 2) / (shots - 1) ))); done
 
-page() { # page OUT.html OFFSET: the coarse SVG once per cell, seeked to pick + OFFSET frames
-  {
-    echo '<!DOCTYPE html><html><head><style>body{margin:0;background:#fff}div{display:grid;grid-template-columns:repeat('$cols','${cell}'px);}svg{display:block}</style></head><body><div>'
-    for f in "${picks[@]}"; do sed '1d' "$dir/coarse.svg" | sed "s/<svg /<svg data-frame=\"$f\" /"; done
-    echo '</div><script>'
-    echo "for (const s of document.querySelectorAll('svg[data-frame]')) { s.pauseAnimations(); s.setCurrentTime((Number(s.dataset.frame) + $2) / $fps_used); }"
-    echo '</script></body></html>'
-  } > "$1"
-}
-statics() { # statics OUT.html OFFSET: fine frame 2 x pick + OFFSET per cell
-  {
-    echo '<!DOCTYPE html><html><head><style>body{margin:0;background:#fff}div{display:grid;grid-template-columns:repeat('$cols','${cell}'px);}img{display:block}</style></head><body><div>'
-    for f in "${picks[@]}"; do printf '<img src="frames/frame_%05d.svg" width="%d" height="%d">\n' $((2 * f + $2)) $cell $cell; done
-    echo '</div></body></html>'
-  } > "$1"
-}
-page "$dir/half.html" 0.5
-statics "$dir/half-static.html" 1
-page "$dir/at.html" 0.02
-statics "$dir/at-static.html" 0
+odd=(); even=()
+for f in "${picks[@]}"; do odd+=($((2 * f + 1))); even+=($((2 * f))); done
+seek_page "$dir/half.html" "$dir/coarse.svg" $cols $cell "$fps_used" 0.5 "${picks[@]}"
+frames_page "$dir/half-static.html" $cols $cell frames "${odd[@]}"
+seek_page "$dir/at.html" "$dir/coarse.svg" $cols $cell "$fps_used" 0.02 "${picks[@]}"
+frames_page "$dir/at-static.html" $cols $cell frames "${even[@]}"
 for p in half half-static at at-static; do
   bash "$here/render_svg.sh" "$dir/$p.html" "$dir/$p.png" $((cols * cell)) $((rows * cell))
 done
