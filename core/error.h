@@ -12,4 +12,17 @@ class Error : public std::runtime_error {
     explicit Error(const std::string& message) : std::runtime_error(message) {}
 };
 
+/// A fault of the program rather than of its input: a broken invariant
+/// (under --check), or a fault injected for a test (fault_injected). The
+/// command line exits 3 on it, the application says so in a message box.
+class InternalError : public Error {
+  public:
+    explicit InternalError(const std::string& message) : Error(message) {}
+};
+
+/// Test seam: true when the environment variable SNAXELS_FAULT names
+/// @p site with this @p count ("tracker-step:3" faults the fourth tracked
+/// frame of every contour kind). Unset in normal use.
+bool fault_injected(const char* site, long count);
+
 } // namespace snaxels

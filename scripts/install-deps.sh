@@ -11,7 +11,7 @@ PACKAGES=(
   build-essential cmake ninja-build pkg-config git
   qt6-base-dev libqt6opengl6-dev qt6-svg-dev libgl-dev libglx-dev
   libopenmesh-dev libglm-dev libassimp-dev zlib1g-dev
-  libembree-dev libpolyclipping-dev libpugixml-dev nlohmann-json3-dev
+  libembree-dev libtbb-dev libpolyclipping-dev libpugixml-dev nlohmann-json3-dev
   libgtest-dev libgmock-dev libbenchmark-dev
   xvfb xauth libgl1-mesa-dri mesa-utils
   chromium fonts-dejavu-core librsvg2-bin

@@ -290,6 +290,12 @@ void MainWindow::exportAnimation(const QString& path) {
             emit exportFinished(path);
         } else {
             statusBar()->showMessage(error, 8000);
+            if (error != exportCancelledMessage()) { // a failure is said in a box; a cancel the user asked for is not
+                auto* box = new QMessageBox(QMessageBox::Warning, tr("Export Animation"),
+                                            tr("The animation was not exported: %1").arg(error), QMessageBox::Ok, this);
+                box->setAttribute(Qt::WA_DeleteOnClose);
+                box->open();
+            }
             emit exportFailed(error);
         }
     });
@@ -299,13 +305,17 @@ void MainWindow::exportAnimation(const QString& path) {
             write_file_atomically(path.toStdString(), out.svg); // only now: a cancel leaves nothing
             return {};
         } catch (const AnimationCancelled&) {
-            return QObject::tr("Export cancelled; nothing was written");
+            return exportCancelledMessage();
+        } catch (const InternalError& e) {
+            return QObject::tr("internal error: %1").arg(QString::fromStdString(e.what()));
         } catch (const std::exception& e) {
             return QString::fromStdString(e.what());
         }
     });
     watcher->setFuture(exportFuture_);
 }
+
+QString MainWindow::exportCancelledMessage() { return tr("Export cancelled; nothing was written"); }
 
 void MainWindow::scheduleContours() {
     if (scene_) contourTimer_->start();

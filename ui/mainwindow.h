@@ -107,6 +107,7 @@ class MainWindow : public QMainWindow {
     void dropEvent(QDropEvent* event) override;
 
   private:
+    static QString exportCancelledMessage();
     /// Asks to save unsaved changes: false when the user cancels.
     bool maybeSave();
     bool saveProjectInteractive(bool ask_path);

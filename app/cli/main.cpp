@@ -88,6 +88,9 @@ int main(int argc, char** argv) {
             std::cerr << "snaxels-cli " << name << ": " << e.what() << " (see 'snaxels-cli "
                       << name << " --help')\n";
             return 2;
+        } catch (const snaxels::InternalError& e) {
+            std::cerr << "snaxels-cli: internal error: " << e.what() << "; please report it with the input\n";
+            return 3;
         } catch (const snaxels::Error& e) {
             std::cerr << "snaxels-cli: " << e.what() << '\n';
             return 1;

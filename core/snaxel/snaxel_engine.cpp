@@ -108,7 +108,7 @@ class Sweep {
             swept[v] = label_[v] != kNone && on_side(static_cast<std::int32_t>(v));
         const Fronts fronts = extract_fronts(topo_, swept);
         if (const std::string problem = check_fronts(topo_, fronts, swept); !problem.empty())
-            throw Error("snaxel invariant broken after iteration " +
+            throw InternalError("snaxel invariant broken after iteration " +
                         std::to_string(stats_.iterations) + ": " + problem);
     }
 
@@ -191,7 +191,7 @@ ContourResult SnaxelEngine::compute(const ContourSpec& spec, const Camera& camer
     result.vertex_region.resize(nv);
     for (std::size_t v = 0; v < nv; ++v) {
         if (label[v] == kNone)
-            throw Error("snaxel sweep left vertex " + std::to_string(v) + " unlabelled");
+            throw InternalError("snaxel sweep left vertex " + std::to_string(v) + " unlabelled");
         const std::int32_t root = regions.find(label[v]);
         if (compact[root] == kNone) {
             compact[root] = static_cast<std::int32_t>(result.regions.size());
@@ -212,10 +212,10 @@ ContourResult SnaxelEngine::compute(const ContourSpec& spec, const Camera& camer
                           result.vertex_f[s.outside], options.polish_tolerance, scan);
     if (options.check_invariants) {
         if (const std::string problem = check_fronts(topo_, result.fronts, inside); !problem.empty())
-            throw Error("snaxel invariant broken after convergence: " + problem);
+            throw InternalError("snaxel invariant broken after convergence: " + problem);
         for (std::size_t v = 0; v < nv; ++v)
             if (bool(inside[v]) != (result.vertex_f[v] >= 0.0))
-                throw Error("region label of vertex " + std::to_string(v) + " disagrees with f");
+                throw InternalError("region label of vertex " + std::to_string(v) + " disagrees with f");
     }
     result.stats.ms =
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();

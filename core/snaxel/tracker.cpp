@@ -54,6 +54,8 @@ ContourTracker::ContourTracker(const MeshTopology& topology, const ContourSpec& 
 
 const TrackedFrame& ContourTracker::step(const Camera& camera, const Light& light) {
     ++frame_number_;
+    if (fault_injected("tracker-step", frame_number_))
+        throw InternalError("fault injected in the tracker at frame " + std::to_string(frame_number_) + " (SNAXELS_FAULT)");
     if (frame_number_ == 0) start(camera, light);
     else track(camera, light);
     return frame_;
@@ -158,7 +160,7 @@ void ContourTracker::track(const Camera& camera, const Light& light) {
     }
     if (options_.check_invariants) {
         if (const std::string problem = check_fronts(topo_, fronts, inside_); !problem.empty())
-            throw Error("tracked fronts broken at frame " + std::to_string(frame_number_) + ": " + problem);
+            throw InternalError("tracked fronts broken at frame " + std::to_string(frame_number_) + ": " + problem);
     }
 
     // 4. Identities. `source[s]` is the old snaxel this one continues or was born from.

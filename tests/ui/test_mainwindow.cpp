@@ -220,6 +220,45 @@ class TestMainWindow : public QObject {
         QVERIFY(!QFile::exists(nowhere));
     }
 
+    // A fault inside the tracker while the contour kinds are tracked in
+    // parallel (the toon preset tracks the visual and the shadow contour)
+    // ends the export with a message box naming it; nothing is written and
+    // the document is as it was.
+    void faultInParallelTrackingShowsAMessage() {
+        MainWindow window;
+        QVERIFY(showWithMesh(window, QString(SNAXELS_TEST_ASSETS) + "/spot.obj"));
+        QFile toon(snaxels::ui::dataDirectory() + "/styles/toon.xml");
+        QVERIFY(toon.open(QIODevice::ReadOnly));
+        window.styleEditor()->setText(QString::fromUtf8(toon.readAll()), "toon.xml");
+        window.timeline()->setFrameCount(6);
+        const int steps = window.undoStack()->count();
+        const QString style = window.styleEditor()->text();
+        QTemporaryDir dir;
+        const QString path = dir.filePath("faulted.svg");
+        QSignalSpy failed(&window, &MainWindow::exportFailed);
+        qputenv("SNAXELS_FAULT", "tracker-step:3");
+        window.exportAnimation(path);
+        const bool reported = failed.wait(120000);
+        qunsetenv("SNAXELS_FAULT");
+        QVERIFY(reported);
+        const QString message = failed.last().first().toString();
+        QVERIFY2(message.contains("internal error") && message.contains("fault injected in the tracker"), qPrintable(message));
+        QMessageBox* box = nullptr;
+        for (QMessageBox* b : window.findChildren<QMessageBox*>())
+            if (b->isVisible()) box = b;
+        QVERIFY(box);
+        QVERIFY2(box->text().contains("fault injected in the tracker"), qPrintable(box->text()));
+        QVERIFY(!QFile::exists(path));
+        QCOMPARE(window.undoStack()->count(), steps);
+        QCOMPARE(window.styleEditor()->text(), style);
+        box->close();
+        // The document still works: the same export without the fault succeeds.
+        QSignalSpy finished(&window, &MainWindow::exportFinished);
+        window.exportAnimation(path);
+        QVERIFY(finished.wait(120000));
+        QVERIFY(QFile::exists(path));
+    }
+
     // Loading a million faces runs off the GUI thread: the event loop never
     // stalls for 200 ms or more while the mesh loads and its contours come.
     void loadsAMillionFacesWithoutFreezing() {

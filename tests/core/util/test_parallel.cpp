@@ -1,0 +1,37 @@
+#include <gtest/gtest.h>
+
+#include <atomic>
+#include <stdexcept>
+#include <vector>
+
+#include "core/error.h"
+#include "core/util/parallel.h"
+
+using namespace snaxels;
+
+// Every index is visited once, in blocks or inline.
+TEST(ParallelFor, VisitsEveryIndexOnce) {
+    for (const std::size_t n : {0u, 1u, 7u, 512u, 513u, 100000u}) {
+        std::vector<std::atomic<int>> seen(n);
+        parallel_for(n, [&](std::size_t i) { seen[i].fetch_add(1); }, 64);
+        for (std::size_t i = 0; i < n; ++i) ASSERT_EQ(seen[i].load(), 1) << "n " << n << " index " << i;
+    }
+}
+
+// An exception thrown by an iteration on a worker thread reaches the
+// caller, type and message intact, and the process goes on.
+TEST(ParallelFor, PropagatesAnExceptionToTheCaller) {
+    for (int round = 0; round < 20; ++round) {
+        try {
+            parallel_for(100000, [](std::size_t i) {
+                if (i == 77777) throw InternalError("broken at 77777");
+            }, 16);
+            FAIL() << "no exception reached the caller";
+        } catch (const InternalError& e) {
+            EXPECT_STREQ(e.what(), "broken at 77777");
+        }
+    }
+    // Grain 1 over a few items: each on its own task (as the contour kinds are tracked).
+    EXPECT_THROW(parallel_for(3, [](std::size_t i) { if (i == 2) throw std::runtime_error("third"); }, 1),
+                 std::runtime_error);
+}
