@@ -47,8 +47,9 @@ StillOutput render_still(const LoadedMesh& mesh, const MeshTopology& topology, c
     const ImageProjection projection(job.camera, centre, radius, job.style.width, job.style.height, job.style.margin);
     out.drawing = make_drawing(engine, out.results, projection, job.visibility ? &out.visibility : nullptr);
 
-    // Fills: the post-processed planar map of the contours the style's
-    // region classes need (computed here if they are not drawn).
+    // Fills: the planar map (job.map_kind: the snaxel-defined map unless the
+    // job asks for the post-processed one) of the contours the style's region
+    // classes need (computed here if they are not drawn).
     if (!job.style.regions.empty() || job.planar_map) {
         std::vector<ContourResult> fill_results;
         auto same = [](const ContourSpec& a, const ContourSpec& b) { return a.kind == b.kind && std::abs(a.k - b.k) < 1e-9; };
