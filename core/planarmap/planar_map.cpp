@@ -19,20 +19,20 @@ PlanarMap build_planar_map(PlanarMapKind kind, const SnaxelEngine& engine, const
                            const Light& light) {
     const ContourResult* visual = nullptr;
     const ContourResult* shadow = nullptr;
-    const ContourResult* gleam = nullptr;
-    std::vector<const ContourResult*> isophotes;
+    std::vector<const ContourResult*> isophotes, gleams;
     for (const ContourResult* r : contours) {
         if (r->spec.kind == ContourKind::Visual) visual = r;
         if (r->spec.kind == ContourKind::Shadow) shadow = r;
         if (r->spec.kind == ContourKind::Isophote) isophotes.push_back(r);
-        if (r->spec.kind == ContourKind::Gleam) gleam = r;
+        if (r->spec.kind == ContourKind::Gleam) gleams.push_back(r);
     }
     if (!visual) throw Error("a planar map needs the visual contour");
-    std::sort(isophotes.begin(), isophotes.end(),
-              [](const ContourResult* a, const ContourResult* b) { return a->spec.k < b->spec.k; });
+    auto by_k = [](const ContourResult* a, const ContourResult* b) { return a->spec.k < b->spec.k; };
+    std::sort(isophotes.begin(), isophotes.end(), by_k);
+    std::sort(gleams.begin(), gleams.end(), by_k);
     PlanarMap map;
     if (kind == PlanarMapKind::Post) {
-        map.regions = build_post_map(engine, {visual, shadow, isophotes, gleam}, projection, camera, light);
+        map.regions = build_post_map(engine, {visual, shadow, isophotes, gleams}, projection, camera, light);
         return map;
     }
     if (!rays) throw Error("the snaxel planar map needs the ray-tracing scene");
@@ -40,7 +40,7 @@ PlanarMap build_planar_map(PlanarMapKind kind, const SnaxelEngine& engine, const
     in.visual = visual;
     in.shadow = shadow;
     in.isophotes = isophotes;
-    in.gleam = gleam;
+    in.gleams = gleams;
     SnaxelMap built = build_snaxel_map(engine, in, *rays, projection, camera, light);
     map.regions = std::move(built.regions);
     map.vertex_region = std::move(built.vertex_region);

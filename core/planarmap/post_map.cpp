@@ -115,11 +115,12 @@ std::vector<MapRegion> build_post_map(const SnaxelEngine& engine, const PostMapI
     }
     std::sort(order.begin(), order.end());
 
-    std::map<std::int32_t, Paths> lit, highlight;
+    std::map<std::int32_t, Paths> lit;
     if (in.shadow) lit = regions_by_patch(engine, *in.shadow, patch_of, projection);
     std::vector<std::map<std::int32_t, Paths>> bands;
     for (const ContourResult* iso : in.isophotes) bands.push_back(regions_by_patch(engine, *iso, patch_of, projection));
-    if (in.gleam) highlight = regions_by_patch(engine, *in.gleam, patch_of, projection);
+    std::vector<std::map<std::int32_t, Paths>> highlights;
+    for (const ContourResult* g : in.gleams) highlights.push_back(regions_by_patch(engine, *g, patch_of, projection));
     auto of = [](const std::map<std::int32_t, Paths>& m, std::int32_t patch) {
         const auto it = m.find(patch);
         return it == m.end() ? Paths{} : it->second;
@@ -138,7 +139,11 @@ std::vector<MapRegion> build_post_map(const SnaxelEngine& engine, const PostMapI
         std::vector<Paths> levels;
         levels.push_back(in.shadow ? clip(visible, of(lit, patch), ClipperLib::ctIntersection) : visible);
         for (const auto& band : bands) levels.push_back(clip(levels.back(), of(band, patch), ClipperLib::ctIntersection));
-        const Paths glints = in.gleam ? clip(visible, of(highlight, patch), ClipperLib::ctIntersection) : Paths{};
+        // Highlight levels nest too: each clipped to the one before.
+        std::vector<Paths> glint_levels;
+        for (const auto& h : highlights)
+            glint_levels.push_back(clip(glint_levels.empty() ? visible : glint_levels.back(), of(h, patch), ClipperLib::ctIntersection));
+        const Paths glints = glint_levels.empty() ? Paths{} : glint_levels.front();
         auto emit = [&](RegionClass cls, double k, const Paths& paths) {
             const Paths kept = glints.empty() ? paths : clip(paths, glints, ClipperLib::ctDifference);
             const double a = area(kept);
@@ -152,7 +157,13 @@ std::vector<MapRegion> build_post_map(const SnaxelEngine& engine, const PostMapI
             if (i == 0) emit(RegionClass::Lit, 0.0, part);
             else emit(RegionClass::Band, in.isophotes[i - 1]->spec.k, part);
         }
-        if (!glints.empty()) regions.push_back({RegionClass::Highlight, in.gleam->spec.k, depth, from_paths(glints), area(glints)});
+        for (std::size_t g = 0; g < glint_levels.size(); ++g) {
+            const Paths part = g + 1 < glint_levels.size() && !glint_levels[g + 1].empty()
+                                   ? clip(glint_levels[g], glint_levels[g + 1], ClipperLib::ctDifference)
+                                   : glint_levels[g];
+            const double a = area(part);
+            if (a > 0.0) regions.push_back({RegionClass::Highlight, in.gleams[g]->spec.k, depth, from_paths(part), a});
+        }
         ++depth;
     }
 

@@ -35,7 +35,7 @@ struct PostMapInput {
     const ContourResult* visual = nullptr;              ///< required: its regions are the patches
     const ContourResult* shadow = nullptr;              ///< lit where f >= 0; none: the patch is lit
     std::vector<const ContourResult*> isophotes;        ///< ascending k
-    const ContourResult* gleam = nullptr;               ///< highlights
+    std::vector<const ContourResult*> gleams;          ///< ascending k: nested highlight levels
 };
 
 /// The regions of the map; they do not overlap and cover the projection of

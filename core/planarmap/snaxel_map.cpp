@@ -131,7 +131,8 @@ SnaxelMap build_snaxel_map(const SnaxelEngine& engine, const SnaxelMapInput& in,
     const auto V = std::int32_t(topo.n_vertices());
     const auto E = std::int32_t(topo.n_edges());
     const int bands = int(in.isophotes.size());
-    const int highlight = 2 + bands; // classes: 0 shadow, 1 lit, 2.. bands, then highlight
+    const int highlight = 2 + bands; // classes: 0 shadow, 1 lit, 2.. bands, then the highlight levels
+    const int gleams = int(in.gleams.size());
     // Labels are decided at the refined mesh's own scale: a vertex near a
     // fold of a large face is hidden by the refined faces next to it.
     VisibilityOptions ray_options;
@@ -178,7 +179,8 @@ SnaxelMap build_snaxel_map(const SnaxelEngine& engine, const SnaxelMapInput& in,
         int cls = in.shadow && in.shadow->vertex_f[i] < 0.0 ? 0 : 1;
         for (int k = 0; k < bands; ++k)
             if (cls != 0 && in.isophotes[std::size_t(k)]->vertex_f[i] >= 0.0) cls = 2 + k; // brighter wins
-        if (in.gleam && in.gleam->vertex_f[i] >= 0.0) cls = highlight;
+        for (int g = 0; g < gleams; ++g)
+            if (in.gleams[std::size_t(g)]->vertex_f[i] >= 0.0) cls = highlight + g; // the highest threshold met
         label[i] = cls;
     }, 256);
 
@@ -385,7 +387,9 @@ SnaxelMap build_snaxel_map(const SnaxelEngine& engine, const SnaxelMapInput& in,
         } else {
             // Two shading classes: the front of the brighter one's kind.
             const int top = std::max(la, lb);
-            const ContourResult* kind = top == highlight ? in.gleam : top >= 2 ? in.isophotes[std::size_t(top - 2)] : in.shadow;
+            const ContourResult* kind = top >= highlight ? in.gleams[std::size_t(top - highlight)]
+                                        : top >= 2       ? in.isophotes[std::size_t(top - 2)]
+                                                         : in.shadow;
             out = kind ? snaxel_point(*kind, e, a, b)
                        : 0.5 * (topo.positions[std::size_t(a)] + topo.positions[std::size_t(b)]);
         }
@@ -738,8 +742,10 @@ SnaxelMap build_snaxel_map(const SnaxelEngine& engine, const SnaxelMapInput& in,
     for (std::size_t r = 0; r < regions.size(); ++r) {
         const int cls = comp_label[r] >= kBack ? comp_label[r] - kBack : comp_label[r];
         MapRegion& region = regions[r];
-        region.cls = cls == 0 ? RegionClass::Shadow : cls == 1 ? RegionClass::Lit : cls == highlight ? RegionClass::Highlight : RegionClass::Band;
-        region.k = cls == highlight ? in.gleam->spec.k : cls >= 2 ? in.isophotes[std::size_t(cls - 2)]->spec.k : 0.0;
+        region.cls = cls == 0 ? RegionClass::Shadow : cls == 1 ? RegionClass::Lit : cls >= highlight ? RegionClass::Highlight : RegionClass::Band;
+        region.k = cls >= highlight ? in.gleams[std::size_t(cls - highlight)]->spec.k
+                   : cls >= 2      ? in.isophotes[std::size_t(cls - 2)]->spec.k
+                                   : 0.0;
         double signed_area = 0.0;
         for (const auto& poly : region.polygons)
             for (std::size_t j = 0; j < poly.size(); ++j) {

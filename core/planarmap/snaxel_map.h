@@ -42,7 +42,7 @@ struct SnaxelMapInput {
     const ContourResult* visual = nullptr;       ///< required: the two sides of the surface
     const ContourResult* shadow = nullptr;       ///< none: everything visible is lit
     std::vector<const ContourResult*> isophotes; ///< ascending k
-    const ContourResult* gleam = nullptr;
+    std::vector<const ContourResult*> gleams;    ///< ascending k: each a highlight level inside the one before
     /// Locating an occlusion boundary on an edge: bisection until the step
     /// projects under tolerance_px, at most bisection_steps times.
     double tolerance_px = 0.25;

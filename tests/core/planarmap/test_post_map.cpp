@@ -63,7 +63,7 @@ TEST(PostMap, RegionsPartitionTheSilhouette) {
             const ContourResult gleam = engine.compute({ContourKind::Gleam, 0.9}, cam, light);
             const glm::dvec3 centre = 0.5 * (m.report.bbox_min + m.report.bbox_max);
             const ImageProjection proj(cam, centre, 0.5 * glm::length(m.report.bbox_max - m.report.bbox_min), 800, 800);
-            PostMapInput input{&visual, &shadow, {&iso}, &gleam};
+            PostMapInput input{&visual, &shadow, {&iso}, {&gleam}};
             const std::vector<MapRegion> regions = build_post_map(engine, input, proj, cam, light);
             ASSERT_FALSE(regions.empty());
             double total = 0.0;

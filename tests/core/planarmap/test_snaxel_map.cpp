@@ -42,7 +42,7 @@ Maps build_maps(const Scene& s, const SnaxelEngine& engine, const RayScene& rays
     in.shadow = &m.shadow;
     in.isophotes = {&m.iso};
     m.snaxel = build_snaxel_map(engine, in, rays, proj, cam, light);
-    PostMapInput post{&m.visual, &m.shadow, {&m.iso}, nullptr};
+    PostMapInput post{&m.visual, &m.shadow, {&m.iso}, {}};
     m.post = build_post_map(engine, post, proj, cam, light);
     (void)s;
     return m;
@@ -187,7 +187,7 @@ TEST(SnaxelMap, OutlinesCloseOnEveryMesh) {
             in.visual = &visual;
             in.shadow = &shadow;
             in.isophotes = {&iso1, &iso2};
-            in.gleam = &gleam;
+            in.gleams = {&gleam};
             const SnaxelMap map = build_snaxel_map(engine, in, rays, proj, cam, light);
             EXPECT_EQ(map.stats.open_outlines, 0u) << file << " view " << view;
             EXPECT_FALSE(map.regions.empty()) << file << " view " << view;
@@ -197,5 +197,60 @@ TEST(SnaxelMap, OutlinesCloseOnEveryMesh) {
                         ASSERT_TRUE(std::isfinite(p.x) && std::isfinite(p.y)) << file;
                     }
         }
+    }
+}
+
+// Several band and highlight levels all reach both maps: each level is a
+// region class of its own, brighter levels inside dimmer ones. A sphere lit
+// from the viewer's side: its shading is concentric rings.
+TEST(PlanarMaps, EveryBandAndHighlightLevelFills) {
+    const LoadedMesh mesh = load_mesh("proc:sphere:40000");
+    const MeshTopology topo = build_topology(mesh.mesh);
+    const SnaxelEngine engine(topo);
+    const RayScene rays(topo);
+    Camera cam;
+    cam.view_dir = glm::dvec3(0, 0, -1);
+    Light light = default_light(cam);
+    light.dir = glm::normalize(glm::dvec3(0.2, 0.3, 1.0));
+    const glm::dvec3 centre = 0.5 * (mesh.report.bbox_min + mesh.report.bbox_max);
+    const double radius = 0.5 * glm::length(mesh.report.bbox_max - mesh.report.bbox_min);
+    const ImageProjection proj(cam, centre, radius, 400, 400);
+    const ContourResult visual = engine.compute({}, cam, light);
+    const ContourResult shadow = engine.compute({ContourKind::Shadow, 0.0}, cam, light);
+    const ContourResult iso1 = engine.compute({ContourKind::Isophote, 0.3}, cam, light);
+    const ContourResult iso2 = engine.compute({ContourKind::Isophote, 0.6}, cam, light);
+    const ContourResult gleam1 = engine.compute({ContourKind::Gleam, 0.8}, cam, light);
+    const ContourResult gleam2 = engine.compute({ContourKind::Gleam, 0.95}, cam, light);
+    SnaxelMapInput in;
+    in.visual = &visual;
+    in.shadow = &shadow;
+    in.isophotes = {&iso1, &iso2};
+    in.gleams = {&gleam1, &gleam2};
+    const std::vector<MapRegion> snaxel = build_snaxel_map(engine, in, rays, proj, cam, light).regions;
+    const std::vector<MapRegion> post = build_post_map(engine, {&visual, &shadow, {&iso1, &iso2}, {&gleam1, &gleam2}}, proj, cam, light);
+    for (const auto* regions : {&snaxel, &post}) {
+        const char* which = regions == &snaxel ? "snaxel map" : "post-processed map";
+        auto area = [&](RegionClass cls, double k) {
+            double a = 0.0;
+            for (const MapRegion& r : *regions)
+                if (r.cls == cls && std::abs(r.k - k) < 1e-9) a += r.area;
+            return a;
+        };
+        auto box = [&](RegionClass cls, double k) {
+            glm::dvec2 lo(1e300), hi(-1e300);
+            for (const MapRegion& r : *regions)
+                if (r.cls == cls && std::abs(r.k - k) < 1e-9)
+                    for (const auto& loop : r.polygons)
+                        for (const glm::dvec2& p : loop) lo = glm::min(lo, p), hi = glm::max(hi, p);
+            return std::pair{lo, hi};
+        };
+        EXPECT_GT(area(RegionClass::Band, 0.3), 100.0) << which;
+        EXPECT_GT(area(RegionClass::Band, 0.6), 100.0) << which;
+        EXPECT_GT(area(RegionClass::Highlight, 0.8), 20.0) << which;
+        EXPECT_GT(area(RegionClass::Highlight, 0.95), 5.0) << which;
+        // The stricter gleam's disc lies inside the other's ring.
+        const auto [lo8, hi8] = box(RegionClass::Highlight, 0.8);
+        const auto [lo95, hi95] = box(RegionClass::Highlight, 0.95);
+        EXPECT_TRUE(lo95.x > lo8.x && lo95.y > lo8.y && hi95.x < hi8.x && hi95.y < hi8.y) << which;
     }
 }
