@@ -1,5 +1,7 @@
 #include "core/planarmap/map_timing.h"
 
+#include "core/planarmap/planar_map.h"
+
 #include <algorithm>
 #include <chrono>
 
@@ -38,12 +40,11 @@ TrackedMapTiming time_tracked_snaxel_map(const MeshTopology& topo, const MeshRep
         const TrackedFrame* tracked[3] = {};
         parallel_for(3, [&](std::size_t i) { tracked[i] = &trackers[i]->step(cam, light); }, 1);
         const auto t1 = std::chrono::steady_clock::now();
-        SnaxelMapInput in;
-        in.visual = &tracked[0]->contour;
-        in.shadow = &tracked[1]->contour;
-        in.isophotes = {&tracked[2]->contour};
+        // The map as the product builds it: the snaxel map made a partition.
         const ImageProjection proj(cam, centre, radius, size, size);
-        const SnaxelMap map = build_snaxel_map(engine, in, rays, proj, cam, light);
+        const PlanarMap map = build_planar_map(PlanarMapKind::Snaxel, engine,
+                                               {&tracked[0]->contour, &tracked[1]->contour, &tracked[2]->contour},
+                                               &rays, proj, cam, light);
         const auto t2 = std::chrono::steady_clock::now();
         out.regions += map.regions.size();
         if (f == 0) continue; // tracking from scratch
