@@ -43,9 +43,10 @@ struct AnimatedSvgOptions {
     /// Visible or hidden stretches shorter than this (pixels) take their
     /// neighbour's visibility: flicker at T-junctions, not lines.
     double min_run_px = 3.0;
-    /// Where a visibility run's end glides along a bend of the curve, keys
-    /// are added between frames (down to an eighth of a frame) until the
-    /// interpolated stroke stays within this distance (pixels) of the curve.
+    /// Where a visibility run's end glides between two frames along a bend of
+    /// the curve deeper than this (pixels), interpolating would cut across
+    /// the bend: the path holds its shape until the next frame and switches
+    /// then instead.
     double max_sweep_px = 1.0;
 };
 
