@@ -131,7 +131,7 @@ struct FillFrame {
 };
 
 struct FillPlan {
-    std::vector<int> ids;         ///< loops (-1: the empty placeholder)
+    std::vector<int> ids;         ///< loops (-1: a lone move, for frames without loops)
     std::vector<std::size_t> at;  ///< life frames of the keys
     std::vector<double> times;    ///< key times (frames)
     bool transition = false;      ///< two keys, from life frame at[0] to the next
@@ -189,7 +189,7 @@ class FillWriter {
         for (std::size_t j = 0; j < plan.ids.size(); ++j) {
             const int id = plan.ids[j];
             if (id < 0) { // a frame without loops: a lone move draws nothing
-                for (anim::Shape& s : seg.shapes) s[j] = {{placeholder(plan.at[0])}, false};
+                for (anim::Shape& s : seg.shapes) s[j] = {{lone_move_at(plan.at[0])}, false};
                 continue;
             }
             // The loop at each key: its outline in that frame (or, in a
@@ -235,7 +235,7 @@ class FillWriter {
             if (life_[i].ids[l] == id) return &life_[i].loops[l];
         return nullptr;
     }
-    glm::dvec2 placeholder(std::size_t i) const {
+    glm::dvec2 lone_move_at(std::size_t i) const {
         for (std::size_t k = i + 1; k-- > 0;)
             if (!life_[k].loops.empty()) return life_[k].loops[0][0];
         for (std::size_t k = i; k < life_.size(); ++k)

@@ -261,8 +261,8 @@ struct Key {
     std::vector<ClassSpan> spans;
 };
 
-/// Keys of one structure (a segment): subpaths `ids` (run ids; -1 is the
-/// empty placeholder of a frame without runs), whole rings or open.
+/// Keys of one structure (a segment): subpaths `ids` (run ids; -1 is a
+/// lone move, for frames without runs), whole rings or open.
 struct Plan {
     std::vector<int> ids;
     std::vector<Key> keys;
@@ -419,7 +419,7 @@ class StrokeWriter {
             for (auto g = std::int64_t(std::floor(lo * steps)) + 1; double(g) < hi * steps; ++g)
                 grid[j].push_back(double(g) / steps);
         }
-        const glm::dvec2 placeholder = life_[plan.keys.front().i].loop->at(0.0);
+        const glm::dvec2 lone_move = life_[plan.keys.front().i].loop->at(0.0);
         auto shape_at = [&](const Key& k) {
             const ParamLoop& a = *life_[k.i].loop;
             const ParamLoop& b = *life_[std::min(k.i + 1, life_.size() - 1)].loop;
@@ -428,7 +428,7 @@ class StrokeWriter {
             for (std::size_t j = 0; j < n; ++j) {
                 anim::Subpath& sp = shape[j];
                 if (plan.ids[j] < 0) {
-                    sp.pts = {placeholder};
+                    sp.pts = {lone_move};
                     continue;
                 }
                 sp.closed = ring[j];
