@@ -77,7 +77,6 @@ double wrap01(double u) { return u - std::floor(u); }
 /// One loop of one frame, parameterized by arc length: u in [0, 1) runs
 /// round the loop from an anchor that follows the snaxels' identities.
 struct ParamLoop {
-    int frame = 0;
     bool closed = true;
     std::vector<glm::dvec2> pts;
     std::vector<double> cum; ///< arc length at each point from point 0
@@ -109,9 +108,8 @@ struct ParamLoop {
     glm::dvec2 at(double u) const { return at_arc(arc_of_u(u)); }
 };
 
-ParamLoop parameterize(int frame, const DrawnLoop& dl, const AnimatedLoop& al) {
+ParamLoop parameterize(const DrawnLoop& dl, const AnimatedLoop& al) {
     ParamLoop p;
-    p.frame = frame;
     p.closed = dl.closed;
     p.dash_phase = dl.dash_phase;
     p.pts = dl.q;
@@ -609,7 +607,7 @@ void write_strokes(const std::vector<AnimationFrame>& frames, std::size_t c, con
             for (std::size_t m = start; m < end; ++m) {
                 const auto [f, l] = members[m];
                 const DrawnLoop& dl = frames[std::size_t(f)].drawing.contours[c].loops[l];
-                ParamLoop p = parameterize(f, dl, frames[std::size_t(f)].loops[c][l]);
+                ParamLoop p = parameterize(dl, frames[std::size_t(f)].loops[c][l]);
                 if (p.pts.empty()) {
                     empty = true;
                     break;
