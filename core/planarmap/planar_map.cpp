@@ -1,8 +1,12 @@
 #include "core/planarmap/planar_map.h"
 
 #include <algorithm>
+#include <cmath>
+#include <limits>
 
 #include "core/error.h"
+#include "core/planarmap/clip.h"
+#include "core/util/parallel.h"
 
 namespace snaxels {
 
@@ -33,6 +37,7 @@ PlanarMap build_planar_map(PlanarMapKind kind, const SnaxelEngine& engine, const
     PlanarMap map;
     if (kind == PlanarMapKind::Post) {
         map.regions = build_post_map(engine, {visual, shadow, isophotes, gleams}, projection, camera, light);
+        subtract_nearer_regions(map);
         return map;
     }
     if (!rays) throw Error("the snaxel planar map needs the ray-tracing scene");
@@ -44,7 +49,107 @@ PlanarMap build_planar_map(PlanarMapKind kind, const SnaxelEngine& engine, const
     SnaxelMap built = build_snaxel_map(engine, in, *rays, projection, camera, light);
     map.regions = std::move(built.regions);
     map.vertex_region = std::move(built.vertex_region);
+    subtract_nearer_regions(map);
     return map;
+}
+
+namespace {
+
+/// @p path cut to the box [lo, hi] (Sutherland-Hodgman): under non-zero
+/// fill the result covers exactly the part of the path's area in the box.
+ClipperLib::Path crop(const ClipperLib::Path& path, const ClipperLib::IntPoint& lo, const ClipperLib::IntPoint& hi) {
+    ClipperLib::Path in = path, out;
+    for (int side = 0; side < 4; ++side) {
+        out.clear();
+        const bool x_axis = side < 2;
+        const ClipperLib::cInt bound = side == 0 ? lo.X : side == 1 ? hi.X : side == 2 ? lo.Y : hi.Y;
+        auto value = [&](const ClipperLib::IntPoint& p) { return x_axis ? p.X : p.Y; };
+        auto inside = [&](const ClipperLib::IntPoint& p) { return side % 2 == 0 ? value(p) >= bound : value(p) <= bound; };
+        for (std::size_t i = 0; i < in.size(); ++i) {
+            const ClipperLib::IntPoint& a = in[i];
+            const ClipperLib::IntPoint& b = in[(i + 1) % in.size()];
+            if (inside(a)) out.push_back(a);
+            if (inside(a) == inside(b)) continue;
+            const double t = double(bound - value(a)) / double(value(b) - value(a));
+            const auto other = [&](ClipperLib::cInt u, ClipperLib::cInt v) { return ClipperLib::cInt(std::llround(double(u) + t * double(v - u))); };
+            out.push_back(x_axis ? ClipperLib::IntPoint(bound, other(a.Y, b.Y)) : ClipperLib::IntPoint(other(a.X, b.X), bound));
+        }
+        std::swap(in, out);
+        if (in.size() < 3) return {};
+    }
+    return in;
+}
+
+} // namespace
+
+void subtract_nearer_regions(PlanarMap& map) {
+    const std::size_t n = map.regions.size();
+    std::vector<std::size_t> order(n);
+    for (std::size_t i = 0; i < n; ++i) order[i] = i;
+    std::stable_sort(order.begin(), order.end(),
+                     [&](std::size_t a, std::size_t b) { return map.regions[a].depth < map.regions[b].depth; });
+    struct Box {
+        ClipperLib::IntPoint lo{std::numeric_limits<ClipperLib::cInt>::max(), std::numeric_limits<ClipperLib::cInt>::max()};
+        ClipperLib::IntPoint hi{std::numeric_limits<ClipperLib::cInt>::min(), std::numeric_limits<ClipperLib::cInt>::min()};
+        void add(const ClipperLib::IntPoint& p) {
+            lo = {std::min(lo.X, p.X), std::min(lo.Y, p.Y)};
+            hi = {std::max(hi.X, p.X), std::max(hi.Y, p.Y)};
+        }
+        bool meets(const Box& o) const { return lo.X <= o.hi.X && o.lo.X <= hi.X && lo.Y <= o.hi.Y && o.lo.Y <= hi.Y; }
+    };
+    std::vector<clip::Paths> paths(n);
+    std::vector<std::vector<Box>> boxes(n); // per polygon
+    std::vector<Box> box(n);                // per region
+    // Each region's loops filled on their own (non-zero) first: loops of two
+    // regions winding opposite ways would cancel in one clip set.
+    parallel_for(n, [&](std::size_t i) { paths[i] = clip::op(clip::to_paths(map.regions[i].polygons), {}, ClipperLib::ctUnion); }, 1);
+    for (std::size_t i = 0; i < n; ++i) {
+        for (const auto& path : paths[i]) {
+            Box b;
+            for (const auto& p : path) b.add(p);
+            boxes[i].push_back(b);
+            box[i].add(b.lo), box[i].add(b.hi);
+        }
+    }
+    // Each region against the nearer ones as they were (their union is the
+    // union of what they keep), cut to its own box (two units wider, so the
+    // cut runs clear of the region).
+    std::vector<char> keep(n, 1);
+    parallel_for(n, [&](std::size_t at) {
+        const std::size_t r = order[at];
+        if (paths[r].empty()) {
+            keep[r] = 0;
+            return;
+        }
+        Box wide = box[r];
+        wide.lo = {wide.lo.X - 2, wide.lo.Y - 2};
+        wide.hi = {wide.hi.X + 2, wide.hi.Y + 2};
+        clip::Paths nearer;
+        for (std::size_t before = 0; before < at; ++before) {
+            const std::size_t q = order[before];
+            if (!box[q].meets(wide)) continue;
+            for (std::size_t k = 0; k < paths[q].size(); ++k) {
+                if (!boxes[q][k].meets(wide)) continue;
+                const Box& b = boxes[q][k];
+                const bool within = b.lo.X >= wide.lo.X && b.lo.Y >= wide.lo.Y && b.hi.X <= wide.hi.X && b.hi.Y <= wide.hi.Y;
+                ClipperLib::Path part = within ? paths[q][k] : crop(paths[q][k], wide.lo, wide.hi);
+                if (part.size() >= 3) nearer.push_back(std::move(part));
+            }
+        }
+        if (nearer.empty()) return;
+        const clip::Paths rest = clip::op(paths[r], nearer, ClipperLib::ctDifference);
+        MapRegion& region = map.regions[r];
+        region.area = clip::area(rest);
+        region.polygons = clip::from_paths(rest);
+        keep[r] = region.area > 0.0;
+    }, 1);
+    std::vector<std::int32_t> index(n, -1);
+    std::vector<MapRegion> kept;
+    for (std::size_t i = 0; i < n; ++i)
+        if (keep[i]) index[i] = std::int32_t(kept.size()), kept.push_back(std::move(map.regions[i]));
+    map.regions = std::move(kept);
+    for (std::int32_t& r : map.vertex_region)
+        if (r >= 0) r = index[std::size_t(r)];
 }
 
 } // namespace snaxels

@@ -22,11 +22,18 @@ struct PlanarMap {
     std::vector<std::int32_t> vertex_region; ///< snaxel map: each vertex's region (-1: none); empty for post
 };
 
-/// The map of @p kind from @p contours, which must hold the visual contour
+/// The map of @p kind from @p contours, a partition of the image: nearer
+/// regions (by depth, then by index) are subtracted from farther ones, so
+/// no two regions cover the same point and paint order does not matter, which must hold the visual contour
 /// and may hold shadow, isophotes (any order) and a gleam. @p rays is
 /// needed for the snaxel map.
 PlanarMap build_planar_map(PlanarMapKind kind, const SnaxelEngine& engine, const std::vector<const ContourResult*>& contours,
                            const RayScene* rays, const ImageProjection& projection, const Camera& camera,
                            const Light& light);
+
+/// Makes @p map a partition: each region loses what nearer ones (smaller
+/// depth; equal depth: smaller index) cover; regions left empty are
+/// removed (and vertex_region renumbered).
+void subtract_nearer_regions(PlanarMap& map);
 
 } // namespace snaxels

@@ -6,50 +6,15 @@
 #include <unordered_map>
 #include <unordered_set>
 
-#include <polyclipping/clipper.hpp>
+#include "core/planarmap/clip.h"
 
 namespace snaxels {
 namespace {
 
-using ClipperLib::Paths;
-
-constexpr double kScale = 1024.0; // Clipper works in integers: 1/1024 pixel
-
-Paths to_paths(const std::vector<std::vector<glm::dvec2>>& polygons) {
-    Paths out;
-    for (const auto& poly : polygons) {
-        ClipperLib::Path path;
-        for (const glm::dvec2& p : poly)
-            path.push_back({ClipperLib::cInt(std::llround(p.x * kScale)), ClipperLib::cInt(std::llround(p.y * kScale))});
-        if (path.size() >= 3) out.push_back(std::move(path));
-    }
-    return out;
-}
-
-std::vector<std::vector<glm::dvec2>> from_paths(const Paths& paths) {
-    std::vector<std::vector<glm::dvec2>> out;
-    for (const auto& path : paths) {
-        std::vector<glm::dvec2> poly;
-        for (const auto& p : path) poly.push_back({double(p.X) / kScale, double(p.Y) / kScale});
-        out.push_back(std::move(poly));
-    }
-    return out;
-}
-
-Paths clip(const Paths& a, const Paths& b, ClipperLib::ClipType op) {
-    ClipperLib::Clipper c;
-    c.AddPaths(a, ClipperLib::ptSubject, true);
-    c.AddPaths(b, ClipperLib::ptClip, true);
-    Paths out;
-    c.Execute(op, out, ClipperLib::pftNonZero, ClipperLib::pftNonZero);
-    return out;
-}
-
-double area(const Paths& paths) {
-    double a = 0.0;
-    for (const auto& p : paths) a += ClipperLib::Area(p);
-    return std::abs(a) / (kScale * kScale);
-}
+using clip::area;
+using clip::from_paths;
+using clip::Paths;
+using clip::to_paths;
 
 // The region of the visual contour every vertex lies in: the engine's own
 // labels, or (for tracked contours, which carry none) the connected sets of
@@ -76,7 +41,7 @@ std::map<std::int32_t, Paths> regions_by_patch(const SnaxelEngine& engine, const
         loops[patch].push_back(std::move(poly));
     }
     std::map<std::int32_t, Paths> out;
-    for (auto& [patch, polys] : loops) out[patch] = clip(to_paths(polys), {}, ClipperLib::ctUnion);
+    for (auto& [patch, polys] : loops) out[patch] = clip::op(to_paths(polys), {}, ClipperLib::ctUnion);
     return out;
 }
 
@@ -130,36 +95,36 @@ std::vector<MapRegion> build_post_map(const SnaxelEngine& engine, const PostMapI
     int depth = 0;
     for (const auto& [d, patch] : order) {
         const Paths& shape = patches.at(patch);
-        Paths visible = clip(shape, covered, ClipperLib::ctDifference);
-        covered = clip(covered, shape, ClipperLib::ctUnion);
+        Paths visible = clip::op(shape, covered, ClipperLib::ctDifference);
+        covered = clip::op(covered, shape, ClipperLib::ctUnion);
         if (visible.empty()) continue;
         // Nested class sets inside the visible part: lit ⊇ band 1 ⊇ band 2 ...
         // Each level is clipped to the one before: on the surface they nest,
         // but their projected polylines are separate discretizations.
         std::vector<Paths> levels;
-        levels.push_back(in.shadow ? clip(visible, of(lit, patch), ClipperLib::ctIntersection) : visible);
-        for (const auto& band : bands) levels.push_back(clip(levels.back(), of(band, patch), ClipperLib::ctIntersection));
+        levels.push_back(in.shadow ? clip::op(visible, of(lit, patch), ClipperLib::ctIntersection) : visible);
+        for (const auto& band : bands) levels.push_back(clip::op(levels.back(), of(band, patch), ClipperLib::ctIntersection));
         // Highlight levels nest too: each clipped to the one before.
         std::vector<Paths> glint_levels;
         for (const auto& h : highlights)
-            glint_levels.push_back(clip(glint_levels.empty() ? visible : glint_levels.back(), of(h, patch), ClipperLib::ctIntersection));
+            glint_levels.push_back(clip::op(glint_levels.empty() ? visible : glint_levels.back(), of(h, patch), ClipperLib::ctIntersection));
         const Paths glints = glint_levels.empty() ? Paths{} : glint_levels.front();
         auto emit = [&](RegionClass cls, double k, const Paths& paths) {
-            const Paths kept = glints.empty() ? paths : clip(paths, glints, ClipperLib::ctDifference);
+            const Paths kept = glints.empty() ? paths : clip::op(paths, glints, ClipperLib::ctDifference);
             const double a = area(kept);
             if (a <= 0.0) return;
             regions.push_back({cls, k, depth, from_paths(kept), a});
         };
-        emit(RegionClass::Shadow, 0.0, clip(visible, levels[0], ClipperLib::ctDifference));
+        emit(RegionClass::Shadow, 0.0, clip::op(visible, levels[0], ClipperLib::ctDifference));
         for (std::size_t i = 0; i < levels.size(); ++i) {
             const Paths next = i + 1 < levels.size() ? levels[i + 1] : Paths{};
-            const Paths part = next.empty() ? levels[i] : clip(levels[i], next, ClipperLib::ctDifference);
+            const Paths part = next.empty() ? levels[i] : clip::op(levels[i], next, ClipperLib::ctDifference);
             if (i == 0) emit(RegionClass::Lit, 0.0, part);
             else emit(RegionClass::Band, in.isophotes[i - 1]->spec.k, part);
         }
         for (std::size_t g = 0; g < glint_levels.size(); ++g) {
             const Paths part = g + 1 < glint_levels.size() && !glint_levels[g + 1].empty()
-                                   ? clip(glint_levels[g], glint_levels[g + 1], ClipperLib::ctDifference)
+                                   ? clip::op(glint_levels[g], glint_levels[g + 1], ClipperLib::ctDifference)
                                    : glint_levels[g];
             const double a = area(part);
             if (a > 0.0) regions.push_back({RegionClass::Highlight, in.gleams[g]->spec.k, depth, from_paths(part), a});
@@ -254,8 +219,8 @@ std::vector<MapRegion> build_post_map(const SnaxelEngine& engine, const PostMapI
     for (int cls = classes - 1; cls >= 0; --cls) { // brighter classes first
         if (band_faces[std::size_t(cls)].empty()) continue;
         const Paths& united = band_faces[std::size_t(cls)];
-        const Paths rest = clip(united, covered, ClipperLib::ctDifference);
-        covered = clip(covered, united, ClipperLib::ctUnion);
+        const Paths rest = clip::op(united, covered, ClipperLib::ctDifference);
+        covered = clip::op(covered, united, ClipperLib::ctUnion);
         const double a = area(rest);
         if (a <= 0.0) continue;
         const RegionClass rc = cls == 0 ? RegionClass::Shadow : cls == 1 ? RegionClass::Lit : RegionClass::Band;
@@ -270,7 +235,7 @@ std::vector<std::vector<glm::dvec2>> erode(const std::vector<std::vector<glm::dv
     ClipperLib::ClipperOffset offset;
     offset.AddPaths(to_paths(polygons), ClipperLib::jtRound, ClipperLib::etClosedPolygon);
     Paths out;
-    offset.Execute(out, -pixels * kScale);
+    offset.Execute(out, -pixels * clip::kScale);
     return from_paths(out);
 }
 
