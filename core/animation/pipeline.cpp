@@ -106,7 +106,7 @@ AnimationOutput run_animation(const LoadedMesh& mesh, const std::string& mesh_pa
         Light light;
         driver.apply(k, camera, light);
         if (driver.mesh_moves()) camera = job_camera; // a moving mesh's camera stays (framed on its poses)
-        const bool need_rays = job.visibility || (fills && job.map_kind == PlanarMapKind::Snaxel);
+        const bool need_rays = job.visibility || fills;
         if (need_rays) {
             if (!rays) rays = std::make_unique<RayScene>(topology);
             else if (driver.mesh_moves()) rays->refit();

@@ -68,7 +68,7 @@ StillOutput render_still(const LoadedMesh& mesh, const MeshTopology& topology, c
             if (!result_of(spec)) fill_results.push_back(engine.compute(spec, job.camera, job.light, job.engine));
         std::vector<const ContourResult*> contours;
         for (const ContourSpec& spec : needed) contours.push_back(result_of(spec));
-        if (job.map_kind == PlanarMapKind::Snaxel && !rays) rays = (own_rays = std::make_unique<RayScene>(topology)).get();
+        if (!rays) rays = (own_rays = std::make_unique<RayScene>(topology)).get();
         out.regions = build_planar_map(job.map_kind, engine, contours, rays, projection, job.camera, job.light).regions;
     }
     out.svg = to_svg(out.drawing, job.style, out.regions.empty() ? nullptr : &out.regions);

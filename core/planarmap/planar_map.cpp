@@ -35,12 +35,12 @@ PlanarMap build_planar_map(PlanarMapKind kind, const SnaxelEngine& engine, const
     std::sort(isophotes.begin(), isophotes.end(), by_k);
     std::sort(gleams.begin(), gleams.end(), by_k);
     PlanarMap map;
+    if (!rays) throw Error("a planar map needs the ray-tracing scene");
     if (kind == PlanarMapKind::Post) {
-        map.regions = build_post_map(engine, {visual, shadow, isophotes, gleams}, projection, camera, light);
+        map.regions = build_post_map(engine, {visual, shadow, isophotes, gleams}, *rays, projection, camera, light);
         subtract_nearer_regions(map);
         return map;
     }
-    if (!rays) throw Error("the snaxel planar map needs the ray-tracing scene");
     SnaxelMapInput in;
     in.visual = visual;
     in.shadow = shadow;
@@ -136,8 +136,9 @@ void subtract_nearer_regions(PlanarMap& map) {
                 if (part.size() >= 3) nearer.push_back(std::move(part));
             }
         }
-        if (nearer.empty()) return;
-        const clip::Paths rest = clip::op(paths[r], nearer, ClipperLib::ctDifference);
+        // Every region leaves normalized: outlines wound one way, holes the
+        // other (the animated fills tell holes by their winding).
+        const clip::Paths rest = nearer.empty() ? paths[r] : clip::op(paths[r], nearer, ClipperLib::ctDifference);
         MapRegion& region = map.regions[r];
         region.area = clip::area(rest);
         region.polygons = clip::from_paths(rest);

@@ -22,11 +22,12 @@ struct PlanarMap {
     std::vector<std::int32_t> vertex_region; ///< snaxel map: each vertex's region (-1: none); empty for post
 };
 
-/// The map of @p kind from @p contours, a partition of the image: nearer
+/// The map of @p kind from @p contours, which must hold the visual contour
+/// and may hold shadow, isophotes and gleams (any order). @p rays, the BVH
+/// of the engine's topology at its current positions, is required (a null
+/// one throws snaxels::Error). The map is a partition of the image: nearer
 /// regions (by depth, then by index) are subtracted from farther ones, so
-/// no two regions cover the same point and paint order does not matter, which must hold the visual contour
-/// and may hold shadow, isophotes (any order) and a gleam. @p rays is
-/// needed for the snaxel map.
+/// no two regions cover the same point and paint order does not matter.
 PlanarMap build_planar_map(PlanarMapKind kind, const SnaxelEngine& engine, const std::vector<const ContourResult*>& contours,
                            const RayScene* rays, const ImageProjection& projection, const Camera& camera,
                            const Light& light);

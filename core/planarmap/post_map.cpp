@@ -7,6 +7,8 @@
 #include <unordered_set>
 
 #include "core/planarmap/clip.h"
+#include "core/util/parallel.h"
+#include "core/visibility/visibility.h"
 
 namespace snaxels {
 namespace {
@@ -57,10 +59,124 @@ const char* region_class_name(RegionClass cls) {
     return "lit";
 }
 
-std::vector<MapRegion> build_post_map(const SnaxelEngine& engine, const PostMapInput& in,
+std::vector<MapRegion> build_post_map(const SnaxelEngine& engine, const PostMapInput& in, const RayScene& rays,
                                       const ImageProjection& projection, const Camera& camera, const Light& light) {
     std::vector<MapRegion> regions;
     const ContourResult& visual = *in.visual;
+    const MeshTopology& topo = engine.topology();
+    auto facing = [&](const std::array<std::int32_t, 3>& f) {
+        const glm::dvec3 &a = topo.positions[f[0]], &b = topo.positions[f[1]], &c = topo.positions[f[2]];
+        return glm::dot(glm::cross(b - a, c - a), camera.to_viewer((a + b + c) / 3.0)) > 0.0;
+    };
+    // Classes: 0 shadow, 1 lit, 2.. bands, then the highlight levels.
+    const int bands_n = int(in.isophotes.size());
+    const int highlight = 2 + bands_n;
+    const int classes = highlight + int(in.gleams.size());
+    auto region_class = [&](int cls) { return cls == 0 ? RegionClass::Shadow : cls == 1 ? RegionClass::Lit : cls < highlight ? RegionClass::Band : RegionClass::Highlight; };
+    auto class_k = [&](int cls) { return cls >= highlight ? in.gleams[std::size_t(cls - highlight)]->spec.k : cls >= 2 ? in.isophotes[std::size_t(cls - 2)]->spec.k : 0.0; };
+    // The faces that show: turned to the viewer (by their winding) and not
+    // hidden at their centre. Their class is the contours' own: the mean of
+    // each kind's function at their corners.
+    const VisibilitySampler sampler(rays, camera);
+    enum : char { kHidden = 0, kShown = 1, kUnder = 2, kBackShown = 3 }; // kUnder: inside a patch, hidden
+    std::vector<char> shows(topo.n_faces(), kHidden);
+    std::vector<int> face_class(topo.n_faces(), 1);
+    auto mean_f = [&](const ContourResult& r, const std::array<std::int32_t, 3>& f) {
+        return (r.vertex_f[std::size_t(f[0])] + r.vertex_f[std::size_t(f[1])] + r.vertex_f[std::size_t(f[2])]) / 3.0;
+    };
+    bool open = false;
+    for (std::size_t e = 0; e < topo.n_edges() && !open; ++e) open = topo.is_boundary_edge(std::int32_t(e));
+    parallel_for(topo.n_faces(), [&](std::size_t i) {
+        const auto& f = topo.face_vertices[i];
+        const glm::dvec3 &a = topo.positions[f[0]], &b = topo.positions[f[1]], &c = topo.positions[f[2]];
+        const glm::dvec3 n = glm::normalize(glm::cross(b - a, c - a));
+        if (!facing(f)) {
+            // Turned away, seen from behind through a hole of an open mesh:
+            // classed by N.L alone, as the snaxel map does.
+            if (!open || rays.occluded(sampler.face_ray(std::int32_t(i), (a + b + c) / 3.0, -n))) return;
+            shows[i] = kBackShown;
+            double nl = 0.0;
+            for (const auto v : f) nl += glm::dot(topo.normals[v], light.to_light(topo.positions[v]));
+            nl /= 3.0;
+            int cls = in.shadow && nl < 0.0 ? 0 : 1;
+            for (int k = 0; k < bands_n; ++k)
+                if (cls != 0 && nl >= in.isophotes[std::size_t(k)]->spec.k) cls = 2 + k;
+            face_class[i] = cls;
+            return;
+        }
+        const bool hidden = rays.occluded(sampler.face_ray(std::int32_t(i), (a + b + c) / 3.0, n));
+        if (hidden) {
+            const bool in_patch = visual.vertex_f[std::size_t(f[0])] >= 0.0 && visual.vertex_f[std::size_t(f[1])] >= 0.0 &&
+                                  visual.vertex_f[std::size_t(f[2])] >= 0.0;
+            shows[i] = in_patch ? kUnder : kHidden;
+            return;
+        }
+        shows[i] = kShown;
+        int cls = in.shadow && mean_f(*in.shadow, f) < 0.0 ? 0 : 1;
+        for (int k = 0; k < bands_n; ++k)
+            if (cls != 0 && mean_f(*in.isophotes[std::size_t(k)], f) >= 0.0) cls = 2 + k;
+        for (std::size_t g = 0; g < in.gleams.size(); ++g)
+            if (mean_f(*in.gleams[g], f) >= 0.0) cls = highlight + int(g);
+        face_class[i] = cls;
+    }, 1024);
+    // The image of a set of faces all turned to the viewer: the outline of
+    // the set (its edges no other face of the set shares) fills the same
+    // as the triangles, at a fraction of the clipping cost.
+    auto outline_of = [&](auto&& take) {
+        std::unordered_map<std::uint64_t, int> edges; // directed edge -> how many times it is walked
+        auto key = [](std::int32_t u, std::int32_t v) { return (std::uint64_t(std::uint32_t(u)) << 32) | std::uint32_t(v); };
+        for (std::size_t i = 0; i < topo.n_faces(); ++i) {
+            if (!take(i)) continue;
+            auto f = topo.face_vertices[i];
+            if (shows[i] == kBackShown) std::swap(f[1], f[2]); // seen from behind: walked the way it winds in the image
+            for (int k = 0; k < 3; ++k) {
+                const std::int32_t u = f[std::size_t(k)], v = f[std::size_t((k + 1) % 3)];
+                const auto back = edges.find(key(v, u));
+                if (back != edges.end() && back->second > 0) --back->second;
+                else ++edges[key(u, v)];
+            }
+        }
+        // Chain the edges into closed loops (any pairing at a vertex where
+        // several meet gives the same winding numbers).
+        std::unordered_multimap<std::int32_t, std::int32_t> next;
+        for (const auto& [e, count] : edges)
+            for (int c = 0; c < count; ++c) next.emplace(std::int32_t(e >> 32), std::int32_t(e & 0xffffffffu));
+        std::vector<std::vector<glm::dvec2>> loops;
+        while (!next.empty()) {
+            auto it = next.begin();
+            const std::int32_t start = it->first;
+            std::vector<glm::dvec2> loop;
+            std::int32_t v = start;
+            while (it != next.end()) {
+                loop.push_back(projection.project(topo.positions[v]));
+                v = it->second;
+                next.erase(it);
+                if (v == start) break;
+                it = next.find(v);
+            }
+            loops.push_back(std::move(loop));
+        }
+        return clip::op(to_paths(loops), {}, ClipperLib::ctUnion);
+    };
+    // Where a patch hides part of itself (or of another patch), the classes
+    // of its projected regions may come from the hidden sheet: there the
+    // shown faces' classes replace them.
+    // So does the inside of an open mesh seen through a hole in a patch.
+    auto shown = [&](std::size_t i) { return shows[i] == kShown || shows[i] == kBackShown; };
+    const Paths under = outline_of([&](std::size_t i) { return shows[i] == kUnder; });
+    Paths back = outline_of([&](std::size_t i) { return shows[i] == kBackShown; });
+    std::vector<Paths> shown_class(static_cast<std::size_t>(classes));
+    Paths replaced;
+    if (!under.empty() || !back.empty()) {
+        const Paths shown_all = outline_of(shown);
+        // A hole is where faces seen from behind show and no face turned to
+        // the viewer does (at the contour, hidden sides graze it).
+        const Paths front = back.empty() ? shown_all : outline_of([&](std::size_t i) { return shows[i] == kShown; });
+        replaced = clip::op(clip::op(under, shown_all, ClipperLib::ctIntersection),
+                            clip::op(back, front, ClipperLib::ctDifference), ClipperLib::ctUnion);
+        for (int cls = 0; cls < classes; ++cls)
+            shown_class[std::size_t(cls)] = outline_of([&](std::size_t i) { return shown(i) && face_class[i] == cls; });
+    }
     const std::vector<std::int32_t> patch_of = patch_labels(engine.topology(), visual);
     const std::map<std::int32_t, Paths> patches = regions_by_patch(engine, visual, patch_of, projection);
     // Nearest first, by the mean depth of each patch's contour.
@@ -109,25 +225,31 @@ std::vector<MapRegion> build_post_map(const SnaxelEngine& engine, const PostMapI
         for (const auto& h : highlights)
             glint_levels.push_back(clip::op(glint_levels.empty() ? visible : glint_levels.back(), of(h, patch), ClipperLib::ctIntersection));
         const Paths glints = glint_levels.empty() ? Paths{} : glint_levels.front();
-        auto emit = [&](RegionClass cls, double k, const Paths& paths) {
-            const Paths kept = glints.empty() ? paths : clip::op(paths, glints, ClipperLib::ctDifference);
-            const double a = area(kept);
-            if (a <= 0.0) return;
-            regions.push_back({cls, k, depth, from_paths(kept), a});
+        std::vector<Paths> parts(static_cast<std::size_t>(classes)); // per class
+        auto emit = [&](int cls, const Paths& paths) {
+            parts[std::size_t(cls)] = glints.empty() || cls >= highlight ? paths : clip::op(paths, glints, ClipperLib::ctDifference);
         };
-        emit(RegionClass::Shadow, 0.0, clip::op(visible, levels[0], ClipperLib::ctDifference));
+        emit(0, clip::op(visible, levels[0], ClipperLib::ctDifference));
         for (std::size_t i = 0; i < levels.size(); ++i) {
             const Paths next = i + 1 < levels.size() ? levels[i + 1] : Paths{};
-            const Paths part = next.empty() ? levels[i] : clip::op(levels[i], next, ClipperLib::ctDifference);
-            if (i == 0) emit(RegionClass::Lit, 0.0, part);
-            else emit(RegionClass::Band, in.isophotes[i - 1]->spec.k, part);
+            emit(int(i) + 1, next.empty() ? levels[i] : clip::op(levels[i], next, ClipperLib::ctDifference));
         }
-        for (std::size_t g = 0; g < glint_levels.size(); ++g) {
-            const Paths part = g + 1 < glint_levels.size() && !glint_levels[g + 1].empty()
-                                   ? clip::op(glint_levels[g], glint_levels[g + 1], ClipperLib::ctDifference)
-                                   : glint_levels[g];
+        for (std::size_t g = 0; g < glint_levels.size(); ++g)
+            emit(highlight + int(g), g + 1 < glint_levels.size() && !glint_levels[g + 1].empty()
+                                         ? clip::op(glint_levels[g], glint_levels[g + 1], ClipperLib::ctDifference)
+                                         : glint_levels[g]);
+        // Occlusion within the patch: where it covers hidden faces, the
+        // shown faces decide the class.
+        const Paths here = replaced.empty() ? Paths{} : clip::op(replaced, visible, ClipperLib::ctIntersection);
+        for (int cls = 0; cls < classes; ++cls) {
+            Paths part = std::move(parts[std::size_t(cls)]);
+            if (!here.empty()) {
+                part = clip::op(part, here, ClipperLib::ctDifference);
+                const Paths seen = clip::op(shown_class[std::size_t(cls)], here, ClipperLib::ctIntersection);
+                if (!seen.empty()) part = clip::op(part, seen, ClipperLib::ctUnion);
+            }
             const double a = area(part);
-            if (a > 0.0) regions.push_back({RegionClass::Highlight, in.gleams[g]->spec.k, depth, from_paths(part), a});
+            if (a > 0.0) regions.push_back({region_class(cls), class_k(cls), depth, from_paths(part), a});
         }
         ++depth;
     }
@@ -141,11 +263,6 @@ std::vector<MapRegion> build_post_map(const SnaxelEngine& engine, const PostMapI
     // whose vertices all face the viewer lies inside a patch) or lies
     // within two rings of the contour or of a fold; what of it no patch
     // covers joins the map, classed by the face's own N.L.
-    const MeshTopology& topo = engine.topology();
-    auto facing = [&](const std::array<std::int32_t, 3>& f) {
-        const glm::dvec3 &a = topo.positions[f[0]], &b = topo.positions[f[1]], &c = topo.positions[f[2]];
-        return glm::dot(glm::cross(b - a, c - a), camera.to_viewer((a + b + c) / 3.0)) > 0.0;
-    };
     std::vector<char> fold(topo.n_vertices(), 0);
     std::vector<std::int32_t> frontier;
     auto mark = [&](std::int32_t v) {
@@ -167,14 +284,10 @@ std::vector<MapRegion> build_post_map(const SnaxelEngine& engine, const PostMapI
                 if (!fold[topo.ring[i]]) fold[topo.ring[i]] = 1, next.push_back(topo.ring[i]);
         frontier = std::move(next);
     }
-    const int classes = 2 + int(in.isophotes.size());
-    // Each class's faces all face the viewer, so they wind one way in the
-    // image: the outline of the set (its edges that no other face of the
-    // set shares) has the same non-zero fill as the triangles, at a
-    // fraction of the clipping cost.
-    std::vector<std::unordered_set<std::uint64_t>> outline(static_cast<std::size_t>(classes));
-    auto key = [](std::int32_t u, std::int32_t v) { return (std::uint64_t(std::uint32_t(u)) << 32) | std::uint32_t(v); };
-    for (const auto& f : topo.face_vertices) {
+    const int shading = 2 + bands_n; // the band's classes: shadow, lit, bands
+    std::vector<int> nl_class(topo.n_faces(), -1);
+    for (std::size_t i = 0; i < topo.n_faces(); ++i) {
+        const auto& f = topo.face_vertices[i];
         const bool outside = visual.vertex_f[f[0]] < 0.0 || visual.vertex_f[f[1]] < 0.0 || visual.vertex_f[f[2]] < 0.0;
         if (!outside && !fold[f[0]] && !fold[f[1]] && !fold[f[2]]) continue;
         if (!facing(f)) continue; // turned away: hidden on closed meshes
@@ -184,58 +297,53 @@ std::vector<MapRegion> build_post_map(const SnaxelEngine& engine, const PostMapI
             for (const auto v : f) nl += glm::dot(topo.normals[v], light.to_light(topo.positions[v]));
             nl /= 3.0;
             cls = nl < 0.0 ? 0 : 1;
-            for (std::size_t i = 0; i < in.isophotes.size(); ++i)
-                if (nl >= in.isophotes[i]->spec.k) cls = 2 + int(i);
+            for (std::size_t k = 0; k < in.isophotes.size(); ++k)
+                if (nl >= in.isophotes[k]->spec.k) cls = 2 + int(k);
         }
-        auto& edges = outline[std::size_t(cls)];
-        for (int k = 0; k < 3; ++k) {
-            const std::int32_t u = f[k], v = f[(k + 1) % 3];
-            if (!edges.erase(key(v, u))) edges.insert(key(u, v));
-        }
+        nl_class[i] = cls;
     }
-    std::vector<Paths> band_faces(static_cast<std::size_t>(classes)); // shadow, lit, band 1, band 2, ...
-    for (std::size_t cls = 0; cls < outline.size(); ++cls) {
-        // Chain the outline's edges into closed loops (any pairing at a
-        // vertex where several meet gives the same winding numbers).
-        std::unordered_multimap<std::int32_t, std::int32_t> next;
-        for (const std::uint64_t e : outline[cls]) next.emplace(std::int32_t(e >> 32), std::int32_t(e & 0xffffffffu));
-        std::vector<std::vector<glm::dvec2>> loops;
-        while (!next.empty()) {
-            auto it = next.begin();
-            const std::int32_t start = it->first;
-            std::vector<glm::dvec2> loop;
-            std::int32_t v = start;
-            while (it != next.end()) {
-                loop.push_back(projection.project(topo.positions[v]));
-                v = it->second;
-                next.erase(it);
-                if (v == start) break;
-                it = next.find(v);
-            }
-            loops.push_back(std::move(loop));
-        }
-        band_faces[cls] = to_paths(loops);
-    }
-    for (int cls = classes - 1; cls >= 0; --cls) { // brighter classes first
-        if (band_faces[std::size_t(cls)].empty()) continue;
-        const Paths& united = band_faces[std::size_t(cls)];
+    for (int cls = shading - 1; cls >= 0; --cls) { // brighter classes first
+        const Paths united = outline_of([&](std::size_t i) { return nl_class[i] == cls; });
+        if (united.empty()) continue;
         const Paths rest = clip::op(united, covered, ClipperLib::ctDifference);
         covered = clip::op(covered, united, ClipperLib::ctUnion);
         const double a = area(rest);
-        if (a <= 0.0) continue;
-        const RegionClass rc = cls == 0 ? RegionClass::Shadow : cls == 1 ? RegionClass::Lit : RegionClass::Band;
-        const double k = cls >= 2 ? in.isophotes[std::size_t(cls - 2)]->spec.k : 0.0;
-        regions.push_back({rc, k, depth, from_paths(rest), a});
+        if (a > 0.0) regions.push_back({region_class(cls), class_k(cls), depth, from_paths(rest), a});
+    }
+    // Shown faces that no patch bounds (a part of an open mesh turned to the
+    // viewer with no contour of its own) fill with their own classes.
+    ++depth;
+    for (int cls = classes - 1; cls >= 0; --cls) {
+        const Paths faces = replaced.empty() ? outline_of([&](std::size_t i) { return shown(i) && face_class[i] == cls; })
+                                             : shown_class[std::size_t(cls)];
+        if (faces.empty()) continue;
+        const Paths rest = clip::op(faces, covered, ClipperLib::ctDifference);
+        const double a = area(rest);
+        if (a > 0.0) regions.push_back({region_class(cls), class_k(cls), depth, from_paths(rest), a});
     }
     return regions;
 }
 
 std::vector<std::vector<glm::dvec2>> erode(const std::vector<std::vector<glm::dvec2>>& polygons, double pixels) {
     if (pixels <= 0.0) return polygons;
-    ClipperLib::ClipperOffset offset;
-    offset.AddPaths(to_paths(polygons), ClipperLib::jtRound, ClipperLib::etClosedPolygon);
+    // Clipper's offset takes the winding of the lowest loop it is given as
+    // that of outlines: a sliver hole lowest of all would turn erosion into
+    // growth. So the region is filled (non-zero) into outlines with their
+    // holes first, and each outline is shrunk with its own holes.
+    ClipperLib::Clipper c;
+    c.AddPaths(to_paths(polygons), ClipperLib::ptSubject, true);
+    ClipperLib::PolyTree tree;
+    c.Execute(ClipperLib::ctUnion, tree, ClipperLib::pftNonZero, ClipperLib::pftNonZero);
     Paths out;
-    offset.Execute(out, -pixels * clip::kScale);
+    for (ClipperLib::PolyNode* node = tree.GetFirst(); node; node = node->GetNext()) {
+        if (node->IsHole()) continue;
+        ClipperLib::ClipperOffset offset;
+        offset.AddPath(node->Contour, ClipperLib::jtRound, ClipperLib::etClosedPolygon);
+        for (const ClipperLib::PolyNode* hole : node->Childs) offset.AddPath(hole->Contour, ClipperLib::jtRound, ClipperLib::etClosedPolygon);
+        Paths part;
+        offset.Execute(part, -pixels * clip::kScale);
+        out.insert(out.end(), part.begin(), part.end());
+    }
     return from_paths(out);
 }
 

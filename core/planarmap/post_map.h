@@ -16,6 +16,7 @@
 
 #include "core/scene/camera.h"
 #include "core/snaxel/snaxel_engine.h"
+#include "core/visibility/ray_scene.h"
 
 namespace snaxels {
 
@@ -43,7 +44,7 @@ struct PostMapInput {
 /// the silhouette band of faces turned to the viewer that the contour of
 /// interpolated normals leaves out (classed by their own N.L, depth after
 /// every patch). @p light classes that band.
-std::vector<MapRegion> build_post_map(const SnaxelEngine& engine, const PostMapInput& input,
+std::vector<MapRegion> build_post_map(const SnaxelEngine& engine, const PostMapInput& input, const RayScene& rays,
                                       const ImageProjection& projection, const Camera& camera, const Light& light);
 
 /// Shrinks a region's polygons by @p pixels (morphological erosion, round joins).

@@ -6,7 +6,7 @@
 #include <polyclipping/clipper.hpp>
 
 #include "core/mesh/import.h"
-#include "core/planarmap/post_map.h"
+#include "core/planarmap/planar_map.h"
 #include "core/snaxel/refine.h"
 #include "tests/support/assets.h"
 #include "tests/support/views.h"
@@ -42,7 +42,7 @@ ClipperLib::Paths op(const ClipperLib::Paths& a, const ClipperLib::Paths& b, Cli
 
 } // namespace
 
-// The post-processed map's regions do not overlap (pairwise intersection
+// The post-processed map's regions, as the product builds them, do not overlap (pairwise intersection
 // under 1e-6 of the total), and together they cover the projected
 // silhouette of the mesh's own triangles within 0.5%, creased fandisk too
 // (the map built on the topology the engine works on, coarse meshes
@@ -63,8 +63,9 @@ TEST(PostMap, RegionsPartitionTheSilhouette) {
             const ContourResult gleam = engine.compute({ContourKind::Gleam, 0.9}, cam, light);
             const glm::dvec3 centre = 0.5 * (m.report.bbox_min + m.report.bbox_max);
             const ImageProjection proj(cam, centre, 0.5 * glm::length(m.report.bbox_max - m.report.bbox_min), 800, 800);
-            PostMapInput input{&visual, &shadow, {&iso}, {&gleam}};
-            const std::vector<MapRegion> regions = build_post_map(engine, input, proj, cam, light);
+            const RayScene rays(engine.topology());
+            const std::vector<MapRegion> regions =
+                build_planar_map(PlanarMapKind::Post, engine, {&visual, &shadow, &iso, &gleam}, &rays, proj, cam, light).regions;
             ASSERT_FALSE(regions.empty());
             double total = 0.0;
             ClipperLib::Paths all;

@@ -43,7 +43,7 @@ Maps build_maps(const Scene& s, const SnaxelEngine& engine, const RayScene& rays
     in.isophotes = {&m.iso};
     m.snaxel = build_snaxel_map(engine, in, rays, proj, cam, light);
     PostMapInput post{&m.visual, &m.shadow, {&m.iso}, {}};
-    m.post = build_post_map(engine, post, proj, cam, light);
+    m.post = build_post_map(engine, post, rays, proj, cam, light);
     (void)s;
     return m;
 }
@@ -58,72 +58,6 @@ Light random_light(std::mt19937& rng, const Camera& cam) {
 }
 
 } // namespace
-
-// Rasterized at 512 x 512, the snaxel-defined map's class agrees with the
-// class found directly at the pixel (a ray cast against the mesh as loaded,
-// N.L of the interpolated normal at the hit) on at least 98% of the pixels
-// the mesh covers. The map is built on the topology the engine works on:
-// coarse meshes refined (core/snaxel/refine.h), as the CLI and the
-// application do by default; the last view is in perspective. Over 10
-// orthographic views (SNAXELS_MAP_VIEWS=10) the
-// least agreement measured was 98.1% (Suzanne, refined 3 levels; 90-97%
-// unrefined, where N.L of the normalized interpolated normal is far from
-// linear across its 20-40 px faces).
-TEST(SnaxelMap, AgreesWithRayCastClassesPerPixel) {
-    constexpr int kSize = 512;
-    for (const std::string file : {"suzanne.obj", "teapot.obj", "spot.obj", "horse.ply", "fandisk.obj", "stanford-bunny.obj"}) {
-        const Scene s(file);
-        const MeshTopology topo = engine_topology(s.mesh.mesh);
-        const SnaxelEngine engine(topo);
-        const RayScene rays(topo), reference(s.topo);
-        std::mt19937 rng(11);
-        const int views = getenv("SNAXELS_MAP_VIEWS") ? std::atoi(getenv("SNAXELS_MAP_VIEWS")) : 3;
-        for (int view = 0; view <= views; ++view) {
-            Camera cam = random_camera(rng);
-            if (view == views) { // and one in perspective, from close by
-                cam.projection = Camera::Projection::Perspective;
-                cam.target = s.centre;
-                cam.eye = s.centre - 2.5 * s.radius * cam.view_dir;
-            }
-            const Light light = random_light(rng, cam);
-            const ImageProjection proj(cam, s.centre, s.radius, kSize, kSize, 16.0);
-            const double k = 0.55;
-            const Maps m = build_maps(s, engine, rays, cam, light, proj, k);
-            const std::vector<int> image = test::rasterize_regions(m.snaxel.regions, kSize, kSize);
-            std::size_t covered = 0, agree = 0, uncovered = 0;
-            std::vector<unsigned char> debug(std::size_t(kSize) * kSize * 3, 255);
-            for (int y = 0; y < kSize; ++y)
-                for (int x = 0; x < kSize; ++x) {
-                    const int direct = test::direct_class(reference, proj, cam, light, {k}, s.radius, x, y);
-                    if (direct < 0) continue;
-                    ++covered;
-                    const int r = image[std::size_t(y) * kSize + std::size_t(x)];
-                    unsigned char* px = &debug[(std::size_t(y) * kSize + std::size_t(x)) * 3];
-                    if (r < 0) {
-                        ++uncovered;
-                        px[0] = 255, px[1] = 0, px[2] = 0;
-                        continue;
-                    }
-                    const bool same = test::region_class_index(m.snaxel.regions[std::size_t(r)], {k}) == direct;
-                    agree += same;
-                    const unsigned char shade = (unsigned char)(60 + 60 * direct);
-                    if (same) px[0] = px[1] = px[2] = shade;
-                    else px[0] = 0, px[1] = 0, px[2] = 255;
-                }
-            const double fraction = double(agree) / double(covered);
-            std::printf("%s (%zu faces) view %d: %zu regions, %zu covered pixels, %.2f%% agree, %.2f%% outside every region, %.1f ms\n",
-                        file.c_str(), topo.n_faces(), view, m.snaxel.regions.size(), covered, 100.0 * fraction,
-                        100.0 * double(uncovered) / double(covered), m.snaxel.stats.ms);
-            EXPECT_GE(fraction, 0.98) << file << " view " << view;
-            if (const char* dir = getenv("SNAXELS_DEBUG_MAP_DIR")) {
-                FILE* out = std::fopen((std::string(dir) + "/" + file + "-" + std::to_string(view) + ".ppm").c_str(), "wb");
-                std::fprintf(out, "P6 %d %d 255\n", kSize, kSize);
-                std::fwrite(debug.data(), 1, debug.size(), out);
-                std::fclose(out);
-            }
-        }
-    }
-}
 
 // The snaxel map cannot make regions thinner than the tessellation: it has
 // fewer tiny regions (under 4 square pixels) than the post-processed map.
@@ -227,7 +161,7 @@ TEST(PlanarMaps, EveryBandAndHighlightLevelFills) {
     in.isophotes = {&iso1, &iso2};
     in.gleams = {&gleam1, &gleam2};
     const std::vector<MapRegion> snaxel = build_snaxel_map(engine, in, rays, proj, cam, light).regions;
-    const std::vector<MapRegion> post = build_post_map(engine, {&visual, &shadow, {&iso1, &iso2}, {&gleam1, &gleam2}}, proj, cam, light);
+    const std::vector<MapRegion> post = build_post_map(engine, {&visual, &shadow, {&iso1, &iso2}, {&gleam1, &gleam2}}, rays, proj, cam, light);
     for (const auto* regions : {&snaxel, &post}) {
         const char* which = regions == &snaxel ? "snaxel map" : "post-processed map";
         auto area = [&](RegionClass cls, double k) {
