@@ -11,7 +11,7 @@
 
 #include "core/animation/pipeline.h"
 #include "core/mesh/import.h"
-#include "tests/support/marching_triangles.h"
+#include "bench/brute_force_contour.h"
 
 using namespace snaxels;
 
@@ -68,7 +68,7 @@ static void BM_BruteForceHorseTurntable360(benchmark::State& state) {
         for (int f = 0; f < 360; f += 10) { // every tenth frame: the figure is per frame
             const Camera cam = horse_camera(f);
             const auto t0 = std::chrono::steady_clock::now();
-            auto r = test::marching_triangles(topo, ContourFunction({}, cam, default_light(cam)), 1);
+            auto r = bench::marching_triangles(topo, ContourFunction({}, cam, default_light(cam)), 1);
             benchmark::DoNotOptimize(r.points.data());
             ms.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count());
         }

@@ -7,9 +7,9 @@
 #include <map>
 #include <memory>
 
+#include "bench/brute_force_contour.h"
 #include "core/mesh/import.h"
 #include "core/snaxel/snaxel_engine.h"
-#include "tests/support/marching_triangles.h"
 
 using namespace snaxels;
 
@@ -61,7 +61,7 @@ void oracle_bench(benchmark::State& state, const std::string& spec, ContourSpec 
     const ContourFunction f(kind, cam, default_light(cam));
     for (auto _ : state) {
         // The same 8-step bracketing scan as the engine uses for non-visual kinds.
-        auto r = test::marching_triangles(p.topology, f, kind.kind == ContourKind::Visual ? 1 : 8);
+        auto r = bench::marching_triangles(p.topology, f, kind.kind == ContourKind::Visual ? 1 : 8);
         benchmark::DoNotOptimize(r.points.data());
     }
     state.counters["faces"] = double(p.topology.n_faces());

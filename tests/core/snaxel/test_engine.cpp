@@ -6,7 +6,7 @@
 #include "core/mesh/import.h"
 #include "core/snaxel/snaxel_engine.h"
 #include "tests/support/assets.h"
-#include "tests/support/marching_triangles.h"
+#include "tests/support/oracle_setup.h"
 
 using namespace snaxels;
 
@@ -55,10 +55,12 @@ ViewSetup random_setup(std::mt19937& rng, const MeshTopology& topo, int i) {
     return s;
 }
 
-void expect_matches_oracle(const SnaxelEngine& engine, const MeshTopology& topo,
-                           const ContourResult& r, const ContourFunction& f, bool closed_mesh) {
-    const auto oracle = test::marching_triangles(topo, f);
-    ASSERT_EQ(r.fronts.snaxels.size(), oracle.points.size());
+void expect_matches_oracle(const SnaxelEngine& engine, const MeshTopology& topo, const ContourResult& r,
+                           const test::OracleSetup& setup, bool closed_mesh) {
+    // Only positions and the face list go to the oracle.
+    const auto oracle = test::marching_triangles(topo.positions, topo.face_vertices, setup);
+    ASSERT_EQ(oracle.edges, topo.n_edges());
+    ASSERT_EQ(r.fronts.snaxels.size(), oracle.crossing.size());
     EXPECT_EQ(r.fronts.loops.size(), oracle.loops);
     std::size_t open = 0;
     for (const auto& loop : r.fronts.loops) open += !loop.closed;
@@ -67,12 +69,13 @@ void expect_matches_oracle(const SnaxelEngine& engine, const MeshTopology& topo,
         EXPECT_EQ(open, 0u);
     }
     for (std::size_t e = 0; e < topo.n_edges(); ++e) {
-        const std::int32_t s = r.fronts.edge_snaxel[e], o = oracle.crossing_of_edge[e];
-        ASSERT_EQ(s >= 0, o >= 0) << "edge " << e;
-        if (s < 0) continue;
         const auto [a, b] = topo.edge_vertices[e];
+        const std::int32_t s = r.fronts.edge_snaxel[e];
+        const auto o = oracle.crossing.find({std::min(a, b), std::max(a, b)});
+        ASSERT_EQ(s >= 0, o != oracle.crossing.end()) << "edge " << e;
+        if (s < 0) continue;
         const double len = glm::length(topo.positions[a] - topo.positions[b]);
-        const double d = glm::length(engine.position(r.fronts.snaxels[s]) - oracle.points[o]);
+        const double d = glm::length(engine.position(r.fronts.snaxels[s]) - o->second);
         ASSERT_LE(d, 1e-6 * len) << "edge " << e << " of " << r.spec.label();
     }
     for (std::size_t v = 0; v < topo.n_vertices(); ++v)
@@ -107,8 +110,7 @@ TEST_P(EngineOracle, ConvergedSnaxelsAreTheSignChangesOfF) {
             std::vector<std::uint8_t> inside(topo.n_vertices());
             for (std::size_t v = 0; v < inside.size(); ++v) inside[v] = r.vertex_f[v] >= 0.0;
             EXPECT_EQ(check_fronts(topo, r.fronts, inside), "");
-            expect_matches_oracle(engine, topo, r, ContourFunction(kind, s.camera, s.light),
-                                  GetParam().closed);
+            expect_matches_oracle(engine, topo, r, test::oracle_setup(kind, s.camera, s.light), GetParam().closed);
             if (HasFatalFailure()) return;
         }
     }

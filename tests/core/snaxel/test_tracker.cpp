@@ -9,7 +9,7 @@
 #include "core/mesh/import.h"
 #include "core/snaxel/tracker.h"
 #include "tests/support/assets.h"
-#include "tests/support/marching_triangles.h"
+#include "tests/support/oracle_setup.h"
 
 using namespace snaxels;
 
@@ -46,14 +46,14 @@ TEST_P(TurntableTracking, EqualsRecomputationAtEveryFrame) {
         const TrackedFrame& tf = tracker.step(cam, light);
         const Fronts& fronts = tf.contour.fronts;
         // Visual contours have one crossing per edge: no scan needed.
-        const auto oracle = test::marching_triangles(topo, ContourFunction({}, cam, light), 1);
-        ASSERT_EQ(fronts.snaxels.size(), oracle.points.size()) << "frame " << frame;
+        const auto oracle = test::marching_triangles(topo.positions, topo.face_vertices, test::oracle_setup({}, cam, light), 1);
+        ASSERT_EQ(fronts.snaxels.size(), oracle.crossing.size()) << "frame " << frame;
         ASSERT_EQ(fronts.loops.size(), oracle.loops) << "frame " << frame;
         for (const Snaxel& s : fronts.snaxels) {
-            const std::int32_t o = oracle.crossing_of_edge[s.edge];
-            ASSERT_GE(o, 0) << "frame " << frame;
+            const auto o = oracle.crossing.find({std::min(s.inside, s.outside), std::max(s.inside, s.outside)});
+            ASSERT_TRUE(o != oracle.crossing.end()) << "frame " << frame;
             const double len = glm::length(topo.positions[s.inside] - topo.positions[s.outside]);
-            ASSERT_LE(glm::length(engine.position(s) - oracle.points[o]), 1e-6 * len) << "frame " << frame;
+            ASSERT_LE(glm::length(engine.position(s) - o->second), 1e-6 * len) << "frame " << frame;
         }
         // Identities are unique within a frame.
         std::set<std::uint64_t> ids(tf.snaxel_id.begin(), tf.snaxel_id.end());
