@@ -165,7 +165,165 @@ std::vector<MapRegion> build_post_map(const SnaxelEngine& engine, const PostMapI
     auto shown = [&](std::size_t i) { return shows[i] == kShown || shows[i] == kBackShown; };
     const Paths under = outline_of([&](std::size_t i) { return shows[i] == kUnder; });
     Paths back = outline_of([&](std::size_t i) { return shows[i] == kBackShown; });
+    // The shown faces' parts of each class: faces turned to the viewer are
+    // cut along the lines where each kind's function (linear between the
+    // face's corners) crosses zero, as a marching-triangles pass would;
+    // faces seen from behind keep their own N.L class whole. Cut points on
+    // a mesh edge are shared by its two faces, so the parts' outlines
+    // cancel between neighbours as whole faces' do.
+    // The functions are the kinds' own without the N.V clamp (faces past the
+    // contour of interpolated normals can show): N.L for the shadow, N.L - k
+    // for an isophote, V.R - k for a gleam; per vertex, in class order.
+    std::vector<std::vector<double>> value; // [function][vertex]
+    {
+        std::vector<double> nl(topo.n_vertices()), rv(topo.n_vertices());
+        for (std::size_t v = 0; v < topo.n_vertices(); ++v) {
+            const glm::dvec3& n = topo.normals[v];
+            const glm::dvec3 l = light.to_light(topo.positions[v]);
+            nl[v] = glm::dot(n, l);
+            rv[v] = glm::dot(camera.to_viewer(topo.positions[v]), 2.0 * nl[v] * n - l);
+        }
+        auto minus = [](const std::vector<double>& x, double k) {
+            std::vector<double> out(x.size());
+            for (std::size_t i = 0; i < x.size(); ++i) out[i] = x[i] - k;
+            return out;
+        };
+        if (in.shadow) value.push_back(nl);
+        for (const ContourResult* r : in.isophotes) value.push_back(minus(nl, r->spec.k));
+        for (const ContourResult* r : in.gleams) value.push_back(minus(rv, r->spec.k));
+    }
+    const auto K = std::int64_t(value.size());
+    const auto V = std::int64_t(topo.n_vertices()), E = std::int64_t(topo.n_edges());
+    struct Corner {
+        std::int64_t id;
+        int along; // the face edge it leads along (-1: across the face)
+        glm::dvec3 p;
+        std::vector<double> f;
+    };
+    auto class_at = [&](const std::vector<double>& f) {
+        std::size_t j = 0;
+        int cls = 1;
+        if (in.shadow) cls = f[j++] < 0.0 ? 0 : 1;
+        for (int k = 0; k < bands_n; ++k, ++j)
+            if (cls != 0 && f[j] >= 0.0) cls = 2 + k;
+        for (std::size_t g = 0; g < in.gleams.size(); ++g, ++j)
+            if (f[j] >= 0.0) cls = highlight + int(g);
+        return cls;
+    };
     std::vector<Paths> shown_class(static_cast<std::size_t>(classes));
+    bool shown_classes = false;
+    auto need_shown_classes = [&] {
+        if (shown_classes) return;
+        shown_classes = true;
+        std::unordered_map<std::int64_t, glm::dvec3> point;
+        std::int64_t inner = V + E * K; // ids of cut points inside faces
+        // Directed steps between point ids, per class: (from, to) -> count.
+        std::vector<std::map<std::pair<std::int64_t, std::int64_t>, int>> steps(static_cast<std::size_t>(classes));
+        auto add_piece = [&](int cls, const std::vector<Corner>& piece) {
+            auto& set = steps[std::size_t(cls)];
+            for (std::size_t k = 0; k < piece.size(); ++k) {
+                const std::int64_t u = piece[k].id, w = piece[(k + 1) % piece.size()].id;
+                point.emplace(u, piece[k].p);
+                const auto rev = set.find({w, u});
+                if (rev != set.end() && rev->second > 0) {
+                    if (--rev->second == 0) set.erase(rev);
+                } else {
+                    ++set[{u, w}];
+                }
+            }
+        };
+        for (std::size_t i = 0; i < topo.n_faces(); ++i) {
+            if (shows[i] == kBackShown) {
+                auto f = topo.face_vertices[i];
+                std::swap(f[1], f[2]); // seen from behind: walked the way it winds in the image
+                std::vector<Corner> piece;
+                for (const auto v : f) piece.push_back({v, -1, topo.positions[std::size_t(v)], {}});
+                add_piece(face_class[i], piece);
+                continue;
+            }
+            if (shows[i] != kShown) continue;
+            const auto& fv = topo.face_vertices[i];
+            const auto& fe = topo.face_edges[i];
+            std::vector<Corner> poly;
+            for (int k = 0; k < 3; ++k) {
+                Corner c{fv[std::size_t(k)], k, topo.positions[std::size_t(fv[std::size_t(k)])], {}};
+                for (const auto& fn : value) c.f.push_back(fn[std::size_t(fv[std::size_t(k)])]);
+                poly.push_back(std::move(c));
+            }
+            std::vector<std::vector<Corner>> parts{std::move(poly)};
+            for (std::int64_t j = 0; j < K; ++j) {
+                std::vector<std::vector<Corner>> next;
+                for (const auto& part : parts) {
+                    std::vector<Corner> below, above;
+                    const std::size_t n = part.size();
+                    for (std::size_t k = 0; k < n; ++k) {
+                        const Corner& a = part[k];
+                        const Corner& b = part[(k + 1) % n];
+                        (a.f[std::size_t(j)] < 0.0 ? below : above).push_back(a);
+                        if ((a.f[std::size_t(j)] < 0.0) == (b.f[std::size_t(j)] < 0.0)) continue;
+                        Corner q;
+                        q.along = a.along;
+                        if (a.along >= 0) {
+                            // On a mesh edge: the edge's own root, the same for both faces.
+                            const std::int32_t e = fe[std::size_t(a.along)];
+                            const std::int32_t u = topo.edge_vertices[e][0], w = topo.edge_vertices[e][1];
+                            const double fu = value[std::size_t(j)][std::size_t(u)], fw = value[std::size_t(j)][std::size_t(w)];
+                            const double t = fu == fw ? 0.5 : std::clamp(fu / (fu - fw), 0.0, 1.0);
+                            q.id = V + std::int64_t(e) * K + j;
+                            q.p = glm::mix(topo.positions[std::size_t(u)], topo.positions[std::size_t(w)], t);
+                            q.f.resize(std::size_t(K));
+                            for (std::int64_t m = 0; m < K; ++m)
+                                q.f[std::size_t(m)] = glm::mix(value[std::size_t(m)][std::size_t(u)], value[std::size_t(m)][std::size_t(w)], t);
+                            q.f[std::size_t(j)] = 0.0;
+                        } else {
+                            const double fa = a.f[std::size_t(j)], fb = b.f[std::size_t(j)];
+                            const double t = std::clamp(fa / (fa - fb), 0.0, 1.0);
+                            q.id = inner++;
+                            q.p = glm::mix(a.p, b.p, t);
+                            q.f.resize(std::size_t(K));
+                            for (std::int64_t m = 0; m < K; ++m) q.f[std::size_t(m)] = glm::mix(a.f[std::size_t(m)], b.f[std::size_t(m)], t);
+                            q.f[std::size_t(j)] = 0.0;
+                        }
+                        below.push_back(q);
+                        above.push_back(q);
+                        // The cut runs across the face between the two new points.
+                        below.back().along = (a.f[std::size_t(j)] < 0.0) ? -1 : a.along;
+                        above.back().along = (a.f[std::size_t(j)] < 0.0) ? a.along : -1;
+                    }
+                    if (below.size() >= 3) next.push_back(std::move(below));
+                    if (above.size() >= 3) next.push_back(std::move(above));
+                }
+                parts = std::move(next);
+            }
+            for (const auto& part : parts) {
+                std::vector<double> mid(std::size_t(K), 0.0);
+                for (const Corner& c : part)
+                    for (std::int64_t m = 0; m < K; ++m) mid[std::size_t(m)] += c.f[std::size_t(m)] / double(part.size());
+                add_piece(class_at(mid), part);
+            }
+        }
+        for (int cls = 0; cls < classes; ++cls) {
+            std::multimap<std::int64_t, std::int64_t> next;
+            for (const auto& [step, count] : steps[std::size_t(cls)])
+                for (int c = 0; c < count; ++c) next.emplace(step.first, step.second);
+            std::vector<std::vector<glm::dvec2>> loops;
+            while (!next.empty()) {
+                auto it = next.begin();
+                const std::int64_t start = it->first;
+                std::vector<glm::dvec2> loop;
+                std::int64_t v = start;
+                while (it != next.end()) {
+                    loop.push_back(projection.project(point.at(v)));
+                    v = it->second;
+                    next.erase(it);
+                    if (v == start) break;
+                    it = next.find(v);
+                }
+                loops.push_back(std::move(loop));
+            }
+            shown_class[std::size_t(cls)] = clip::op(to_paths(loops), {}, ClipperLib::ctUnion);
+        }
+    };
     Paths replaced;
     if (!under.empty() || !back.empty()) {
         const Paths shown_all = outline_of(shown);
@@ -174,11 +332,27 @@ std::vector<MapRegion> build_post_map(const SnaxelEngine& engine, const PostMapI
         const Paths front = back.empty() ? shown_all : outline_of([&](std::size_t i) { return shows[i] == kShown; });
         replaced = clip::op(clip::op(under, shown_all, ClipperLib::ctIntersection),
                             clip::op(back, front, ClipperLib::ctDifference), ClipperLib::ctUnion);
-        for (int cls = 0; cls < classes; ++cls)
-            shown_class[std::size_t(cls)] = outline_of([&](std::size_t i) { return shown(i) && face_class[i] == cls; });
+        need_shown_classes();
     }
     const std::vector<std::int32_t> patch_of = patch_labels(engine.topology(), visual);
     const std::map<std::int32_t, Paths> patches = regions_by_patch(engine, visual, patch_of, projection);
+    // Patches where a contour ends on the mesh's boundary (open meshes): an
+    // open loop's polygon closes across the patch, not along the boundary,
+    // so there the shown faces give the classes, and where the visual
+    // contour itself is open, the patch's faces give its outline.
+    std::map<std::int32_t, char> open_patch; // 1: a shading loop open, 2: the visual contour open
+    auto mark_open = [&](const ContourResult& r, char how) {
+        for (const FrontLoop& loop : r.fronts.loops)
+            if (!loop.closed) {
+                char& o = open_patch[patch_of[std::size_t(r.fronts.snaxels[loop.first].inside)]];
+                o = std::max(o, how);
+            }
+    };
+    mark_open(visual, 2);
+    if (in.shadow) mark_open(*in.shadow, 1);
+    for (const ContourResult* r : in.isophotes) mark_open(*r, 1);
+    for (const ContourResult* r : in.gleams) mark_open(*r, 1);
+    if (!open_patch.empty()) need_shown_classes();
     // Nearest first, by the mean depth of each patch's contour.
     std::vector<std::pair<double, std::int32_t>> order;
     for (const auto& [patch, paths] : patches) {
@@ -210,7 +384,13 @@ std::vector<MapRegion> build_post_map(const SnaxelEngine& engine, const PostMapI
     Paths covered;
     int depth = 0;
     for (const auto& [d, patch] : order) {
-        const Paths& shape = patches.at(patch);
+        const auto found = open_patch.find(patch);
+        const char how = found == open_patch.end() ? 0 : found->second;
+        const Paths shape = how == 2 ? outline_of([&](std::size_t i) {
+            const auto& f = topo.face_vertices[i];
+            return facing(f) && patch_of[std::size_t(f[0])] == patch && patch_of[std::size_t(f[1])] == patch &&
+                   patch_of[std::size_t(f[2])] == patch;
+        }) : patches.at(patch);
         Paths visible = clip::op(shape, covered, ClipperLib::ctDifference);
         covered = clip::op(covered, shape, ClipperLib::ctUnion);
         if (visible.empty()) continue;
@@ -240,7 +420,7 @@ std::vector<MapRegion> build_post_map(const SnaxelEngine& engine, const PostMapI
                                          : glint_levels[g]);
         // Occlusion within the patch: where it covers hidden faces, the
         // shown faces decide the class.
-        const Paths here = replaced.empty() ? Paths{} : clip::op(replaced, visible, ClipperLib::ctIntersection);
+        const Paths here = how ? visible : replaced.empty() ? Paths{} : clip::op(replaced, visible, ClipperLib::ctIntersection);
         for (int cls = 0; cls < classes; ++cls) {
             Paths part = std::move(parts[std::size_t(cls)]);
             if (!here.empty()) {
@@ -254,7 +434,21 @@ std::vector<MapRegion> build_post_map(const SnaxelEngine& engine, const PostMapI
         ++depth;
     }
 
-    // The silhouette band. The visual contour follows the interpolated
+    // Shown faces that no patch covers (a part of an open mesh turned to the
+    // viewer with no contour of its own, the strip between the contour of
+    // interpolated normals and the mesh's own outline) fill with the classes
+    // of their parts.
+    need_shown_classes();
+    for (int cls = classes - 1; cls >= 0; --cls) {
+        const Paths& faces = shown_class[std::size_t(cls)];
+        if (faces.empty()) continue;
+        const Paths rest = clip::op(faces, covered, ClipperLib::ctDifference);
+        covered = clip::op(covered, faces, ClipperLib::ctUnion);
+        const double a = area(rest);
+        if (a > 0.0) regions.push_back({region_class(cls), class_k(cls), depth, from_paths(rest), a});
+    }
+    // What is left of the silhouette band (faces hidden at their centre but
+    // seen in part). The visual contour follows the interpolated
     // normals, the mesh's outline its faces: where they differ (creases,
     // coarse meshes) faces turned to the viewer reach past the contour, and
     // faces turned away inside a patch fold its outline over itself, so
@@ -307,17 +501,6 @@ std::vector<MapRegion> build_post_map(const SnaxelEngine& engine, const PostMapI
         if (united.empty()) continue;
         const Paths rest = clip::op(united, covered, ClipperLib::ctDifference);
         covered = clip::op(covered, united, ClipperLib::ctUnion);
-        const double a = area(rest);
-        if (a > 0.0) regions.push_back({region_class(cls), class_k(cls), depth, from_paths(rest), a});
-    }
-    // Shown faces that no patch bounds (a part of an open mesh turned to the
-    // viewer with no contour of its own) fill with their own classes.
-    ++depth;
-    for (int cls = classes - 1; cls >= 0; --cls) {
-        const Paths faces = replaced.empty() ? outline_of([&](std::size_t i) { return shown(i) && face_class[i] == cls; })
-                                             : shown_class[std::size_t(cls)];
-        if (faces.empty()) continue;
-        const Paths rest = clip::op(faces, covered, ClipperLib::ctDifference);
         const double a = area(rest);
         if (a > 0.0) regions.push_back({region_class(cls), class_k(cls), depth, from_paths(rest), a});
     }

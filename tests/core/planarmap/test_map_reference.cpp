@@ -2,6 +2,7 @@
 
 #include <cstdio>
 #include <filesystem>
+#include <map>
 #include <random>
 
 #include "core/mesh/import.h"
@@ -92,6 +93,7 @@ TEST(PlanarMaps, AgreeWithAnIndependentZBuffer) {
                 const PlanarMap map = build_planar_map(kind, engine, {&visual, &shadow, &iso}, &rays, proj, cam, light);
                 const std::vector<int> image = test::rasterize_regions(map.regions, kSize, kSize);
                 Agreement a;
+                std::map<std::pair<int, int>, int> confusion;
                 std::vector<unsigned char> debug(std::size_t(kSize) * kSize * 3, 255);
                 for (std::size_t at = 0; at < truth.size(); ++at) {
                     if (truth[at] < 0) continue;
@@ -103,13 +105,18 @@ TEST(PlanarMaps, AgreeWithAnIndependentZBuffer) {
                     if (same) px[0] = px[1] = px[2] = (unsigned char)(60 + 60 * truth[at]);
                     else if (r < 0) px[0] = 255, px[1] = px[2] = 0;
                     else px[0] = px[1] = 0, px[2] = 255;
+                    if (!same && r >= 0 && getenv("SNAXELS_DEBUG_MAP_DIR"))
+                        ++confusion[{truth[at], test::region_class_index(map.regions[std::size_t(r)], {k})}];
                 }
+                if (getenv("SNAXELS_DEBUG_MAP_DIR"))
+                    for (const auto& [pair, count] : confusion)
+                        std::printf("  %s view %d %s: truth %d, map %d: %d px\n", name.c_str(), view, planar_map_kind_name(kind), pair.first, pair.second, count);
                 const int which = kind == PlanarMapKind::Snaxel ? 0 : 1;
                 least[which] = std::min(least[which], a.fraction());
-                // Known shortfall: the post-processed map on the teapot, whose
-                // body is open at the lid (its patches' loops are closed
-                // across the opening): 94.8% at least, measured.
-                const double floor = kind == PlanarMapKind::Post && name == "teapot.obj" ? 0.945 : 0.97;
+                // Known shortfall (issue 15): the post-processed map on
+                // Suzanne seen from behind and close by (view 5), darker than
+                // the reference on the crown and in the ears: 95.8%, measured.
+                const double floor = kind == PlanarMapKind::Post && name == "suzanne.obj" ? 0.955 : 0.97;
                 EXPECT_GE(a.fraction(), floor) << name << " view " << view << " " << planar_map_kind_name(kind)
                                               << (v.orthographic ? " orthographic" : " perspective");
                 if (const char* dir = getenv("SNAXELS_DEBUG_MAP_DIR")) {
