@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
+#include <tuple>
 #include <unordered_map>
 
 #include "core/export/path_keys.h"
@@ -286,6 +288,17 @@ void write_fills(const std::vector<AnimationFrame>& frames, const Style& style, 
             track.push_back({int(f), &frames[f].regions[r]});
         }
     if (order.empty()) return;
+    // Every region's outlines of one class in one frame (all tracks).
+    std::map<std::tuple<int, int, double>, std::vector<Loop>> by_class;
+    auto class_loops = [&](int frame, const MapRegion& like) -> const std::vector<Loop>& {
+        const auto key = std::make_tuple(frame, int(like.cls), like.k);
+        const auto it = by_class.find(key);
+        if (it != by_class.end()) return it->second;
+        std::vector<Loop>& loops = by_class[key];
+        for (const MapRegion& r : frames[std::size_t(frame)].regions)
+            if (r.cls == like.cls && std::abs(r.k - like.k) < 1e-9) loops.insert(loops.end(), r.polygons.begin(), r.polygons.end());
+        return loops;
+    };
     out += "<g id=\"fills\" stroke=\"none\" fill-rule=\"nonzero\">\n";
     for (const std::uint64_t id : order) {
         const auto& track = tracks[id];
@@ -326,10 +339,15 @@ void write_fills(const std::vector<AnimationFrame>& frames, const Style& style, 
                     // what both frames cover: the path jumps there instead.
                     std::vector<char> old_matched(prev.loops.size(), 0), new_matched(ff.loops.size(), 0);
                     for (const auto& [i, j] : pairs) old_matched[i] = new_matched[j] = 1;
+                    // Nor where the other frame has the same class there in
+                    // another region's path (a region that split or changed
+                    // hands): growing from a point would uncover it.
                     for (std::size_t i = 0; i < prev.loops.size() && !ff.jump; ++i)
-                        if (!old_matched[i]) ff.jump = !changes_cover(prev.loops[i], ff.loops);
+                        if (!old_matched[i])
+                            ff.jump = !changes_cover(prev.loops[i], ff.loops) || !changes_cover(prev.loops[i], class_loops(ff.frame, r0));
                     for (std::size_t j = 0; j < ff.loops.size() && !ff.jump; ++j)
-                        if (!new_matched[j]) ff.jump = !changes_cover(ff.loops[j], prev.loops);
+                        if (!new_matched[j])
+                            ff.jump = !changes_cover(ff.loops[j], prev.loops) || !changes_cover(ff.loops[j], class_loops(prev.frame, r0));
                     for (std::size_t i = 0; i < prev.loops.size() && !ff.jump; ++i)
                         for (std::size_t j = 0; j < ff.loops.size() && !ff.jump; ++j)
                             ff.jump = !old_matched[i] && !new_matched[j] && boxes_meet(prev.loops[i], ff.loops[j]);

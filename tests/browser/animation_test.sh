@@ -43,5 +43,5 @@ if [ -n "${FILLS:-}" ]; then
   done
   bash "$here/render_svg.sh" "$dir/between.html" "$dir/between.png" $((cols * cell)) $((rows * cell))
   # shellcheck disable=SC2086
-  QT_QPA_PLATFORM=offscreen "$compare" --between "$dir/between.png" "$dir/static0.png" "$dir/static1.png" $cols $rows $cell 2 "${BETWEEN_MIN:-0.97}" $FILLS
+  QT_QPA_PLATFORM=offscreen "$compare" --between "$dir/between.png" "$dir/static0.png" "$dir/static1.png" $cols $rows $cell 2 0.97 $FILLS
 fi
