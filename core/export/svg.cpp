@@ -6,6 +6,7 @@
 
 #include "core/export/polyline.h"
 #include "core/export/svg_writer.h"
+#include "core/planarmap/planar_map.h"
 
 namespace snaxels {
 namespace svg {
@@ -226,12 +227,24 @@ double arc_to(const std::vector<glm::dvec2>& loop, bool closed, const glm::dvec2
 std::string to_svg(const Drawing& drawing, const Style& style, const std::vector<MapRegion>* regions) {
     std::string out = svg::document_start(drawing.width, drawing.height, style.background);
     if (regions && !style.regions.empty()) {
-        out += "<g id=\"fills\" stroke=\"none\" fill-rule=\"nonzero\">\n";
+        // Region outlines run along mesh edges in straight stretches of many
+        // points: only those that bend them stay. Each region is simplified
+        // on its own, which can open slivers between neighbours, so the
+        // simplified regions are made a partition again.
+        PlanarMap drawn;
         for (const MapRegion& region : *regions) {
             const RegionStyle* rs = style.region(region_class_name(region.cls), region.k);
             if (!rs) continue;
-            const auto polygons = erode(region.polygons, rs->erosion);
-            if (polygons.empty()) continue;
+            MapRegion r = region;
+            r.polygons.clear();
+            for (const auto& poly : erode(region.polygons, rs->erosion)) r.polygons.push_back(simplify_polyline(poly, true, kFillTolerancePx));
+            if (r.polygons.empty()) continue;
+            drawn.regions.push_back(std::move(r));
+        }
+        subtract_nearer_regions(drawn);
+        out += "<g id=\"fills\" stroke=\"none\" fill-rule=\"nonzero\">\n";
+        for (const MapRegion& region : drawn.regions) {
+            const RegionStyle* rs = style.region(region_class_name(region.cls), region.k);
             out += "<path class=\"region\" data-class=\"" + std::string(region_class_name(region.cls)) + "\" fill=\"" +
                    rs->fill + "\"";
             if (rs->opacity < 1.0) {
@@ -240,11 +253,9 @@ std::string to_svg(const Drawing& drawing, const Style& style, const std::vector
                 out += "\"";
             }
             out += " d=\"";
-            for (std::size_t i = 0; i < polygons.size(); ++i) {
+            for (std::size_t i = 0; i < region.polygons.size(); ++i) {
                 if (i) out += ' ';
-                // Region outlines run along mesh edges in straight
-                // stretches of many points: only those that bend it stay.
-                svg::append_path_data(out, simplify_polyline(polygons[i], true, kFillTolerancePx), true);
+                svg::append_path_data(out, region.polygons[i], true);
             }
             out += "\"/>\n";
         }

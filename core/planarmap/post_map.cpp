@@ -78,7 +78,7 @@ std::vector<MapRegion> build_post_map(const SnaxelEngine& engine, const PostMapI
     // hidden at their centre. Their class is the contours' own: the mean of
     // each kind's function at their corners.
     const VisibilitySampler sampler(rays, camera);
-    enum : char { kHidden = 0, kShown = 1, kUnder = 2, kBackShown = 3 }; // kUnder: inside a patch, hidden
+    enum : char { kHidden = 0, kShown = 1, kUnder = 2, kBackShown = 3, kFold = 4 }; // kUnder: inside a patch, hidden
     std::vector<char> shows(topo.n_faces(), kHidden);
     std::vector<int> face_class(topo.n_faces(), 1);
     auto mean_f = [&](const ContourResult& r, const std::array<std::int32_t, 3>& f) {
@@ -91,9 +91,16 @@ std::vector<MapRegion> build_post_map(const SnaxelEngine& engine, const PostMapI
         const glm::dvec3 &a = topo.positions[f[0]], &b = topo.positions[f[1]], &c = topo.positions[f[2]];
         const glm::dvec3 n = glm::normalize(glm::cross(b - a, c - a));
         if (!facing(f)) {
+            // Turned away inside a patch (its corners face the viewer by
+            // their normals): the patch folds over itself there.
+            const bool in_patch = visual.vertex_f[std::size_t(f[0])] >= 0.0 && visual.vertex_f[std::size_t(f[1])] >= 0.0 &&
+                                  visual.vertex_f[std::size_t(f[2])] >= 0.0;
             // Turned away, seen from behind through a hole of an open mesh:
             // classed by N.L alone, as the snaxel map does.
-            if (!open || rays.occluded(sampler.face_ray(std::int32_t(i), (a + b + c) / 3.0, -n))) return;
+            if (!open || rays.occluded(sampler.face_ray(std::int32_t(i), (a + b + c) / 3.0, -n))) {
+                if (in_patch) shows[i] = kFold;
+                return;
+            }
             shows[i] = kBackShown;
             double nl = 0.0;
             for (const auto v : f) nl += glm::dot(topo.normals[v], light.to_light(topo.positions[v]));
@@ -163,7 +170,10 @@ std::vector<MapRegion> build_post_map(const SnaxelEngine& engine, const PostMapI
     // shown faces' classes replace them.
     // So does the inside of an open mesh seen through a hole in a patch.
     auto shown = [&](std::size_t i) { return shows[i] == kShown || shows[i] == kBackShown; };
-    const Paths under = outline_of([&](std::size_t i) { return shows[i] == kUnder; });
+    // (A patch folded over itself, where faces turn away inside it, is
+    // treated as hidden there too: its projected classes may come from
+    // either side of the fold.)
+    const Paths under = outline_of([&](std::size_t i) { return shows[i] == kUnder || shows[i] == kFold; });
     Paths back = outline_of([&](std::size_t i) { return shows[i] == kBackShown; });
     // The shown faces' parts of each class: faces turned to the viewer are
     // cut along the lines where each kind's function (linear between the
@@ -218,7 +228,11 @@ std::vector<MapRegion> build_post_map(const SnaxelEngine& engine, const PostMapI
         std::unordered_map<std::int64_t, glm::dvec3> point;
         std::int64_t inner = V + E * K; // ids of cut points inside faces
         // Directed steps between point ids, per class: (from, to) -> count.
-        std::vector<std::map<std::pair<std::int64_t, std::int64_t>, int>> steps(static_cast<std::size_t>(classes));
+        // Per class, faces turned to the viewer [cls] and faces seen from
+        // behind [classes + cls]: the latter only show where none of the
+        // former do (past an open mesh's outline, a face seen from behind
+        // can pass the ray test beside the nearer sheet).
+        std::vector<std::map<std::pair<std::int64_t, std::int64_t>, int>> steps(static_cast<std::size_t>(2 * classes));
         auto add_piece = [&](int cls, const std::vector<Corner>& piece) {
             auto& set = steps[std::size_t(cls)];
             for (std::size_t k = 0; k < piece.size(); ++k) {
@@ -238,7 +252,7 @@ std::vector<MapRegion> build_post_map(const SnaxelEngine& engine, const PostMapI
                 std::swap(f[1], f[2]); // seen from behind: walked the way it winds in the image
                 std::vector<Corner> piece;
                 for (const auto v : f) piece.push_back({v, -1, topo.positions[std::size_t(v)], {}});
-                add_piece(face_class[i], piece);
+                add_piece(classes + face_class[i], piece);
                 continue;
             }
             if (shows[i] != kShown) continue;
@@ -302,7 +316,8 @@ std::vector<MapRegion> build_post_map(const SnaxelEngine& engine, const PostMapI
                 add_piece(class_at(mid), part);
             }
         }
-        for (int cls = 0; cls < classes; ++cls) {
+        std::vector<Paths> outlines(steps.size());
+        for (std::size_t cls = 0; cls < steps.size(); ++cls) {
             std::multimap<std::int64_t, std::int64_t> next;
             for (const auto& [step, count] : steps[std::size_t(cls)])
                 for (int c = 0; c < count; ++c) next.emplace(step.first, step.second);
@@ -321,7 +336,15 @@ std::vector<MapRegion> build_post_map(const SnaxelEngine& engine, const PostMapI
                 }
                 loops.push_back(std::move(loop));
             }
-            shown_class[std::size_t(cls)] = clip::op(to_paths(loops), {}, ClipperLib::ctUnion);
+            outlines[cls] = clip::op(to_paths(loops), {}, ClipperLib::ctUnion);
+        }
+        Paths front;
+        for (int cls = 0; cls < classes; ++cls) front.insert(front.end(), outlines[std::size_t(cls)].begin(), outlines[std::size_t(cls)].end());
+        for (int cls = 0; cls < classes; ++cls) {
+            const Paths& behind = outlines[std::size_t(classes + cls)];
+            shown_class[std::size_t(cls)] = behind.empty() ? outlines[std::size_t(cls)]
+                                                           : clip::op(outlines[std::size_t(cls)], clip::op(behind, front, ClipperLib::ctDifference),
+                                                                      ClipperLib::ctUnion);
         }
     };
     Paths replaced;

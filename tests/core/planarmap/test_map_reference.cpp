@@ -113,11 +113,7 @@ TEST(PlanarMaps, AgreeWithAnIndependentZBuffer) {
                         std::printf("  %s view %d %s: truth %d, map %d: %d px\n", name.c_str(), view, planar_map_kind_name(kind), pair.first, pair.second, count);
                 const int which = kind == PlanarMapKind::Snaxel ? 0 : 1;
                 least[which] = std::min(least[which], a.fraction());
-                // Known shortfall (issue 15): the post-processed map on
-                // Suzanne seen from behind and close by (view 5), darker than
-                // the reference on the crown and in the ears: 95.8%, measured.
-                const double floor = kind == PlanarMapKind::Post && name == "suzanne.obj" ? 0.955 : 0.97;
-                EXPECT_GE(a.fraction(), floor) << name << " view " << view << " " << planar_map_kind_name(kind)
+                EXPECT_GE(a.fraction(), 0.97) << name << " view " << view << " " << planar_map_kind_name(kind)
                                               << (v.orthographic ? " orthographic" : " perspective");
                 if (const char* dir = getenv("SNAXELS_DEBUG_MAP_DIR")) {
                     const std::string out_path = std::string(dir) + "/" + test::test_name(name) + "-" + std::to_string(view) + "-" +
