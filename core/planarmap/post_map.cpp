@@ -75,15 +75,12 @@ std::vector<MapRegion> build_post_map(const SnaxelEngine& engine, const PostMapI
     auto region_class = [&](int cls) { return cls == 0 ? RegionClass::Shadow : cls == 1 ? RegionClass::Lit : cls < highlight ? RegionClass::Band : RegionClass::Highlight; };
     auto class_k = [&](int cls) { return cls >= highlight ? in.gleams[std::size_t(cls - highlight)]->spec.k : cls >= 2 ? in.isophotes[std::size_t(cls - 2)]->spec.k : 0.0; };
     // The faces that show: turned to the viewer (by their winding) and not
-    // hidden at their centre. Their class is the contours' own: the mean of
-    // each kind's function at their corners.
+    // hidden at their centre, or (open meshes) turned away and seen from
+    // behind; these last are classed whole by their N.L (face_class).
     const VisibilitySampler sampler(rays, camera);
     enum : char { kHidden = 0, kShown = 1, kUnder = 2, kBackShown = 3, kFold = 4 }; // kUnder: inside a patch, hidden
     std::vector<char> shows(topo.n_faces(), kHidden);
     std::vector<int> face_class(topo.n_faces(), 1);
-    auto mean_f = [&](const ContourResult& r, const std::array<std::int32_t, 3>& f) {
-        return (r.vertex_f[std::size_t(f[0])] + r.vertex_f[std::size_t(f[1])] + r.vertex_f[std::size_t(f[2])]) / 3.0;
-    };
     bool open = false;
     for (std::size_t e = 0; e < topo.n_edges() && !open; ++e) open = topo.is_boundary_edge(std::int32_t(e));
     parallel_for(topo.n_faces(), [&](std::size_t i) {
@@ -118,13 +115,7 @@ std::vector<MapRegion> build_post_map(const SnaxelEngine& engine, const PostMapI
             shows[i] = in_patch ? kUnder : kHidden;
             return;
         }
-        shows[i] = kShown;
-        int cls = in.shadow && mean_f(*in.shadow, f) < 0.0 ? 0 : 1;
-        for (int k = 0; k < bands_n; ++k)
-            if (cls != 0 && mean_f(*in.isophotes[std::size_t(k)], f) >= 0.0) cls = 2 + k;
-        for (std::size_t g = 0; g < in.gleams.size(); ++g)
-            if (mean_f(*in.gleams[g], f) >= 0.0) cls = highlight + int(g);
-        face_class[i] = cls;
+        shows[i] = kShown; // classed by its parts (need_shown_classes below)
     }, 1024);
     // The image of a set of faces all turned to the viewer: the outline of
     // the set (its edges no other face of the set shares) fills the same
@@ -174,7 +165,7 @@ std::vector<MapRegion> build_post_map(const SnaxelEngine& engine, const PostMapI
     // treated as hidden there too: its projected classes may come from
     // either side of the fold.)
     const Paths under = outline_of([&](std::size_t i) { return shows[i] == kUnder || shows[i] == kFold; });
-    Paths back = outline_of([&](std::size_t i) { return shows[i] == kBackShown; });
+    const Paths back = outline_of([&](std::size_t i) { return shows[i] == kBackShown; });
     // The shown faces' parts of each class: faces turned to the viewer are
     // cut along the lines where each kind's function (linear between the
     // face's corners) crosses zero, as a marching-triangles pass would;
