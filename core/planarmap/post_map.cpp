@@ -4,7 +4,6 @@
 #include <cmath>
 #include <map>
 #include <unordered_map>
-#include <unordered_set>
 
 #include "core/planarmap/clip.h"
 #include "core/util/parallel.h"
@@ -46,6 +45,49 @@ std::map<std::int32_t, Paths> regions_by_patch(const SnaxelEngine& engine, const
     for (auto& [patch, polys] : loops) out[patch] = clip::op(to_paths(polys), {}, ClipperLib::ctUnion);
     return out;
 }
+
+/// The outline of a set of polygons that all wind one way in the image,
+/// walked step by step between point ids: a step walked back along one
+/// already taken cancels it (an edge two pieces of the set share), so what
+/// remains fills (non-zero) as the pieces do, at a fraction of the
+/// clipping cost.
+class Outline {
+  public:
+    void walk(std::int64_t from, std::int64_t to) {
+        const auto back = steps_.find({to, from});
+        if (back != steps_.end()) {
+            if (--back->second == 0) steps_.erase(back);
+        } else {
+            ++steps_[{from, to}];
+        }
+    }
+    /// Chained into closed loops (any pairing where several steps meet
+    /// gives the same winding numbers), each point placed by @p at.
+    template <class At> Paths paths(At&& at) const {
+        std::multimap<std::int64_t, std::int64_t> next;
+        for (const auto& [step, count] : steps_)
+            for (int c = 0; c < count; ++c) next.emplace(step.first, step.second);
+        std::vector<std::vector<glm::dvec2>> loops;
+        while (!next.empty()) {
+            auto it = next.begin();
+            const std::int64_t start = it->first;
+            std::vector<glm::dvec2> loop;
+            std::int64_t v = start;
+            while (it != next.end()) {
+                loop.push_back(at(v));
+                v = it->second;
+                next.erase(it);
+                if (v == start) break;
+                it = next.find(v);
+            }
+            loops.push_back(std::move(loop));
+        }
+        return clip::op(to_paths(loops), {}, ClipperLib::ctUnion);
+    }
+
+  private:
+    std::map<std::pair<std::int64_t, std::int64_t>, int> steps_;
+};
 
 } // namespace
 
@@ -115,52 +157,24 @@ std::vector<MapRegion> build_post_map(const SnaxelEngine& engine, const PostMapI
             shows[i] = in_patch ? kUnder : kHidden;
             return;
         }
-        shows[i] = kShown; // classed by its parts (need_shown_classes below)
+        shows[i] = kShown; // classed by its parts (shown_class below)
     }, 1024);
-    // The image of a set of faces all turned to the viewer: the outline of
-    // the set (its edges no other face of the set shares) fills the same
-    // as the triangles, at a fraction of the clipping cost.
+    // The image of a set of faces (those seen from behind walked the way
+    // they wind in the image), as its outline.
     auto outline_of = [&](auto&& take) {
-        std::unordered_map<std::uint64_t, int> edges; // directed edge -> how many times it is walked
-        auto key = [](std::int32_t u, std::int32_t v) { return (std::uint64_t(std::uint32_t(u)) << 32) | std::uint32_t(v); };
+        Outline outline;
         for (std::size_t i = 0; i < topo.n_faces(); ++i) {
             if (!take(i)) continue;
             auto f = topo.face_vertices[i];
-            if (shows[i] == kBackShown) std::swap(f[1], f[2]); // seen from behind: walked the way it winds in the image
-            for (int k = 0; k < 3; ++k) {
-                const std::int32_t u = f[std::size_t(k)], v = f[std::size_t((k + 1) % 3)];
-                const auto back = edges.find(key(v, u));
-                if (back != edges.end() && back->second > 0) --back->second;
-                else ++edges[key(u, v)];
-            }
+            if (shows[i] == kBackShown) std::swap(f[1], f[2]);
+            for (int k = 0; k < 3; ++k) outline.walk(f[std::size_t(k)], f[std::size_t((k + 1) % 3)]);
         }
-        // Chain the edges into closed loops (any pairing at a vertex where
-        // several meet gives the same winding numbers).
-        std::unordered_multimap<std::int32_t, std::int32_t> next;
-        for (const auto& [e, count] : edges)
-            for (int c = 0; c < count; ++c) next.emplace(std::int32_t(e >> 32), std::int32_t(e & 0xffffffffu));
-        std::vector<std::vector<glm::dvec2>> loops;
-        while (!next.empty()) {
-            auto it = next.begin();
-            const std::int32_t start = it->first;
-            std::vector<glm::dvec2> loop;
-            std::int32_t v = start;
-            while (it != next.end()) {
-                loop.push_back(projection.project(topo.positions[v]));
-                v = it->second;
-                next.erase(it);
-                if (v == start) break;
-                it = next.find(v);
-            }
-            loops.push_back(std::move(loop));
-        }
-        return clip::op(to_paths(loops), {}, ClipperLib::ctUnion);
+        return outline.paths([&](std::int64_t v) { return projection.project(topo.positions[std::size_t(v)]); });
     };
     // Where a patch hides part of itself (or of another patch), the classes
     // of its projected regions may come from the hidden sheet: there the
     // shown faces' classes replace them.
     // So does the inside of an open mesh seen through a hole in a patch.
-    auto shown = [&](std::size_t i) { return shows[i] == kShown || shows[i] == kBackShown; };
     // (A patch folded over itself, where faces turn away inside it, is
     // treated as hidden there too: its projected classes may come from
     // either side of the fold.)
@@ -211,30 +225,20 @@ std::vector<MapRegion> build_post_map(const SnaxelEngine& engine, const PostMapI
             if (f[j] >= 0.0) cls = highlight + int(g);
         return cls;
     };
+    // Per class, faces turned to the viewer [cls] and faces seen from behind
+    // [classes + cls]: the latter only show where none of the former do
+    // (past an open mesh's outline, a face seen from behind can pass the
+    // ray test beside the nearer sheet).
     std::vector<Paths> shown_class(static_cast<std::size_t>(classes));
-    bool shown_classes = false;
-    auto need_shown_classes = [&] {
-        if (shown_classes) return;
-        shown_classes = true;
+    Paths front; // every shown face turned to the viewer
+    {
         std::unordered_map<std::int64_t, glm::dvec3> point;
         std::int64_t inner = V + E * K; // ids of cut points inside faces
-        // Directed steps between point ids, per class: (from, to) -> count.
-        // Per class, faces turned to the viewer [cls] and faces seen from
-        // behind [classes + cls]: the latter only show where none of the
-        // former do (past an open mesh's outline, a face seen from behind
-        // can pass the ray test beside the nearer sheet).
-        std::vector<std::map<std::pair<std::int64_t, std::int64_t>, int>> steps(static_cast<std::size_t>(2 * classes));
+        std::vector<Outline> steps(static_cast<std::size_t>(2 * classes));
         auto add_piece = [&](int cls, const std::vector<Corner>& piece) {
-            auto& set = steps[std::size_t(cls)];
             for (std::size_t k = 0; k < piece.size(); ++k) {
-                const std::int64_t u = piece[k].id, w = piece[(k + 1) % piece.size()].id;
-                point.emplace(u, piece[k].p);
-                const auto rev = set.find({w, u});
-                if (rev != set.end() && rev->second > 0) {
-                    if (--rev->second == 0) set.erase(rev);
-                } else {
-                    ++set[{u, w}];
-                }
+                point.emplace(piece[k].id, piece[k].p);
+                steps[std::size_t(cls)].walk(piece[k].id, piece[(k + 1) % piece.size()].id);
             }
         };
         for (std::size_t i = 0; i < topo.n_faces(); ++i) {
@@ -308,45 +312,24 @@ std::vector<MapRegion> build_post_map(const SnaxelEngine& engine, const PostMapI
             }
         }
         std::vector<Paths> outlines(steps.size());
-        for (std::size_t cls = 0; cls < steps.size(); ++cls) {
-            std::multimap<std::int64_t, std::int64_t> next;
-            for (const auto& [step, count] : steps[std::size_t(cls)])
-                for (int c = 0; c < count; ++c) next.emplace(step.first, step.second);
-            std::vector<std::vector<glm::dvec2>> loops;
-            while (!next.empty()) {
-                auto it = next.begin();
-                const std::int64_t start = it->first;
-                std::vector<glm::dvec2> loop;
-                std::int64_t v = start;
-                while (it != next.end()) {
-                    loop.push_back(projection.project(point.at(v)));
-                    v = it->second;
-                    next.erase(it);
-                    if (v == start) break;
-                    it = next.find(v);
-                }
-                loops.push_back(std::move(loop));
-            }
-            outlines[cls] = clip::op(to_paths(loops), {}, ClipperLib::ctUnion);
-        }
-        Paths front;
+        for (std::size_t cls = 0; cls < steps.size(); ++cls)
+            outlines[cls] = steps[cls].paths([&](std::int64_t id) { return projection.project(point.at(id)); });
         for (int cls = 0; cls < classes; ++cls) front.insert(front.end(), outlines[std::size_t(cls)].begin(), outlines[std::size_t(cls)].end());
+        front = clip::op(front, {}, ClipperLib::ctUnion);
         for (int cls = 0; cls < classes; ++cls) {
             const Paths& behind = outlines[std::size_t(classes + cls)];
             shown_class[std::size_t(cls)] = behind.empty() ? outlines[std::size_t(cls)]
                                                            : clip::op(outlines[std::size_t(cls)], clip::op(behind, front, ClipperLib::ctDifference),
                                                                       ClipperLib::ctUnion);
         }
-    };
+    }
     Paths replaced;
     if (!under.empty() || !back.empty()) {
-        const Paths shown_all = outline_of(shown);
         // A hole is where faces seen from behind show and no face turned to
         // the viewer does (at the contour, hidden sides graze it).
-        const Paths front = back.empty() ? shown_all : outline_of([&](std::size_t i) { return shows[i] == kShown; });
+        const Paths shown_all = back.empty() ? front : clip::op(front, back, ClipperLib::ctUnion);
         replaced = clip::op(clip::op(under, shown_all, ClipperLib::ctIntersection),
                             clip::op(back, front, ClipperLib::ctDifference), ClipperLib::ctUnion);
-        need_shown_classes();
     }
     const std::vector<std::int32_t> patch_of = patch_labels(engine.topology(), visual);
     const std::map<std::int32_t, Paths> patches = regions_by_patch(engine, visual, patch_of, projection);
@@ -366,7 +349,6 @@ std::vector<MapRegion> build_post_map(const SnaxelEngine& engine, const PostMapI
     if (in.shadow) mark_open(*in.shadow, 1);
     for (const ContourResult* r : in.isophotes) mark_open(*r, 1);
     for (const ContourResult* r : in.gleams) mark_open(*r, 1);
-    if (!open_patch.empty()) need_shown_classes();
     // Nearest first, by the mean depth of each patch's contour.
     std::vector<std::pair<double, std::int32_t>> order;
     for (const auto& [patch, paths] : patches) {
@@ -452,7 +434,6 @@ std::vector<MapRegion> build_post_map(const SnaxelEngine& engine, const PostMapI
     // viewer with no contour of its own, the strip between the contour of
     // interpolated normals and the mesh's own outline) fill with the classes
     // of their parts.
-    need_shown_classes();
     for (int cls = classes - 1; cls >= 0; --cls) {
         const Paths& faces = shown_class[std::size_t(cls)];
         if (faces.empty()) continue;

@@ -1,12 +1,13 @@
 // The four contour kinds on a finely tessellated unit sphere, checked from
-// the paper's formulas written out here (V toward the eye, L toward the
+// the paper's formulas as the tests' oracle writes them out
+// (tests/support/marching_triangles.h; V toward the eye, L toward the
 // light, R = 2(N.L)N - L):
 //   visual   N.V = 0
 //   shadow   min(N.L, N.V) = 0        (the light's terminator: the circle N.L = 0)
 //   isophote min(N.L - k, N.V) = 0    (the circle of centre kL and radius sqrt(1 - k^2))
 //   gleam    min(V.R - k, N.V) = 0
 // Twice: with the mesh's normals as the design defines them (area-weighted
-// face normals at the vertices, slerped along edges), computed here, every
+// face normals at the vertices, slerped along edges), computed by the oracle, every
 // snaxel is a root and every edge whose ends differ in sign holds exactly
 // one snaxel, none other does; with the sphere's exact normals p / |p| the
 // snaxels lie on the closed-form curves within the tessellation's error.
@@ -22,27 +23,10 @@
 
 #include "core/mesh/import.h"
 #include "core/snaxel/snaxel_engine.h"
+#include "tests/support/oracle_setup.h"
 
 using namespace snaxels;
 
-namespace {
-
-struct Formula {
-    ContourSpec spec;
-    glm::dvec3 V, L;
-    double operator()(const glm::dvec3& n) const {
-        const double nv = glm::dot(n, V), nl = glm::dot(n, L);
-        switch (spec.kind) {
-        case ContourKind::Visual: return nv;
-        case ContourKind::Shadow: return std::min(nl, nv);
-        case ContourKind::Isophote: return std::min(nl - spec.k, nv);
-        case ContourKind::Gleam: return std::min(glm::dot(V, 2.0 * nl * n - L) - spec.k, nv);
-        }
-        return nv;
-    }
-};
-
-} // namespace
 
 TEST(ClosedForm, SphereContoursFollowThePapersFormulas) {
     const LoadedMesh mesh = load_mesh("proc:sphere:80000");
@@ -57,18 +41,9 @@ TEST(ClosedForm, SphereContoursFollowThePapersFormulas) {
             edges[{std::min(a, b), std::max(a, b)}] = 0;
         }
     // Vertex normals: area-weighted face normals (the design's definition).
-    std::vector<glm::dvec3> normal(topo.positions.size(), glm::dvec3(0.0));
-    for (const auto& f : topo.face_vertices) {
-        const glm::dvec3 a = topo.positions[std::size_t(f[0])], b = topo.positions[std::size_t(f[1])], c = topo.positions[std::size_t(f[2])];
-        const glm::dvec3 twice_area_n = glm::cross(b - a, c - a);
-        for (int k = 0; k < 3; ++k) normal[std::size_t(f[std::size_t(k)])] += twice_area_n;
-    }
-    for (glm::dvec3& n : normal) n = glm::normalize(n);
-    auto slerp = [](const glm::dvec3& a, const glm::dvec3& b, double t) {
-        const double angle = std::acos(std::clamp(glm::dot(a, b), -1.0, 1.0));
-        if (angle < 1e-12) return a;
-        return (std::sin((1.0 - t) * angle) * a + std::sin(t * angle) * b) / std::sin(angle);
-    };
+    // Vertex normals: area-weighted face normals (the design's definition),
+    // computed by the tests' oracle (tests/support/marching_triangles.h).
+    const std::vector<glm::dvec3> normal = test::oracle_normals(topo.positions, topo.face_vertices);
     const SnaxelEngine engine(topo);
     std::mt19937 rng(5);
     std::normal_distribution<double> nd;
@@ -86,25 +61,26 @@ TEST(ClosedForm, SphereContoursFollowThePapersFormulas) {
         cam.view_dir = unit();
         Light light;
         light.dir = unit();
-        const Formula base{{}, -glm::normalize(cam.view_dir), glm::normalize(light.dir)};
+        const glm::dvec3 V = -glm::normalize(cam.view_dir), L = glm::normalize(light.dir);
         for (const ContourSpec spec : {ContourSpec{ContourKind::Visual, 0.0}, ContourSpec{ContourKind::Shadow, 0.0},
                                        ContourSpec{ContourKind::Isophote, 0.5}, ContourSpec{ContourKind::Isophote, -0.3},
                                        ContourSpec{ContourKind::Gleam, 0.9}, ContourSpec{ContourKind::Gleam, 0.6}}) {
-            Formula f = base;
-            f.spec = spec;
+            const test::OracleSetup setup = test::oracle_setup(spec, cam, light);
+            // Orthographic view and directional light: f depends on the normal alone.
+            auto f = [&](const glm::dvec3& n) { return test::oracle_f(setup, glm::dvec3(0.0), n); };
             const ContourResult r = engine.compute(spec, cam, light);
             for (auto& [e, count] : edges) count = 0;
             double worst_root = 0.0, worst_exact = 0.0, worst_circle = 0.0;
             for (const FrontLoop& loop : r.fronts.loops)
                 r.fronts.for_each_in_loop(loop, [&](std::int32_t s) {
                     const Snaxel& sn = r.fronts.snaxels[std::size_t(s)];
-                    worst_root = std::max(worst_root, std::abs(f(slerp(normal[std::size_t(sn.inside)], normal[std::size_t(sn.outside)], sn.t))));
+                    worst_root = std::max(worst_root, std::abs(f(test::oracle_slerp(normal[std::size_t(sn.inside)], normal[std::size_t(sn.outside)], sn.t))));
                     const glm::dvec3 n = glm::normalize((1.0 - sn.t) * topo.positions[std::size_t(sn.inside)] +
                                                         sn.t * topo.positions[std::size_t(sn.outside)]);
                     worst_exact = std::max(worst_exact, std::abs(f(n)));
                     // Where the curve is the light's circle (not the outline), as a circle.
-                    if ((spec.kind == ContourKind::Shadow || spec.kind == ContourKind::Isophote) && glm::dot(n, f.V) > on_curve)
-                        worst_circle = std::max(worst_circle, std::abs(glm::length(n - spec.k * f.L) - std::sqrt(1.0 - spec.k * spec.k)));
+                    if ((spec.kind == ContourKind::Shadow || spec.kind == ContourKind::Isophote) && glm::dot(n, V) > on_curve)
+                        worst_circle = std::max(worst_circle, std::abs(glm::length(n - spec.k * L) - std::sqrt(1.0 - spec.k * spec.k)));
                     ++edges[{std::min(sn.inside, sn.outside), std::max(sn.inside, sn.outside)}];
                 });
             EXPECT_LE(worst_root, root) << spec.label() << " view " << view;
