@@ -6,9 +6,9 @@
 #include <tuple>
 #include <unordered_map>
 
+#include "core/export/animated_paths.h"
 #include "core/export/path_keys.h"
 #include "core/export/polyline.h"
-#include "core/export/svg_writer.h"
 
 namespace snaxels {
 namespace {
@@ -184,7 +184,7 @@ class FillWriter {
         return plans;
     }
 
-    void emit(const FillPlan& plan, double tolerance, smil::AnimatedPath& path, std::size_t& max_vertices) const {
+    PathSegment emit(const FillPlan& plan, double tolerance) const {
         anim::Segment seg;
         seg.times = plan.times;
         seg.shapes.assign(plan.times.size(), anim::Shape(plan.ids.size()));
@@ -221,14 +221,13 @@ class FillWriter {
         }
         anim::reduce_vertices(seg, tolerance, 0.0);
         const std::vector<std::uint8_t> keep = anim::reduce_keys(seg, tolerance);
-        std::size_t vertices = 0;
-        for (const anim::Subpath& sp : seg.shapes[0]) vertices += sp.pts.size();
-        max_vertices = std::max(max_vertices, vertices);
+        PathSegment out;
         for (std::size_t k = 0; k < seg.times.size(); ++k) {
-            if (!keep[k] || (!path.times.empty() && seg.times[k] <= path.times.back())) continue;
-            path.times.push_back(seg.times[k]);
-            path.values.push_back(anim::path_data(seg.shapes[k]));
+            if (!keep[k]) continue;
+            out.times.push_back(seg.times[k]);
+            out.shapes.push_back(std::move(seg.shapes[k]));
         }
+        return out;
     }
 
   private:
@@ -276,8 +275,8 @@ std::vector<std::pair<std::size_t, std::size_t>> match_loops(const std::vector<s
     return pairs;
 }
 
-void write_fills(const std::vector<AnimationFrame>& frames, const Style& style, const AnimatedSvgOptions& options,
-                 const smil::Clock& clock, std::string& out, AnimatedSvgStats& stats) {
+void fill_paths(const std::vector<AnimationFrame>& frames, const Style& style, const AnimatedSvgOptions& options,
+                std::vector<AnimatedPathData>& out) {
     if (style.regions.empty()) return;
     std::vector<std::uint64_t> order;
     std::unordered_map<std::uint64_t, std::vector<std::pair<int, const MapRegion*>>> tracks;
@@ -299,19 +298,11 @@ void write_fills(const std::vector<AnimationFrame>& frames, const Style& style, 
             if (r.cls == like.cls && std::abs(r.k - like.k) < 1e-9) loops.insert(loops.end(), r.polygons.begin(), r.polygons.end());
         return loops;
     };
-    out += "<g id=\"fills\" stroke=\"none\" fill-rule=\"nonzero\">\n";
     for (const std::uint64_t id : order) {
         const auto& track = tracks[id];
         const MapRegion& r0 = *track.front().second;
         const RegionStyle* rs = style.region(region_class_name(r0.cls), r0.k);
         if (!rs) continue;
-        std::string attributes = " class=\"region\" data-class=\"" + std::string(region_class_name(r0.cls)) +
-                                 "\" fill=\"" + rs->fill + "\"";
-        if (rs->opacity < 1.0) {
-            attributes += " fill-opacity=\"";
-            svg::append_number(attributes, rs->opacity);
-            attributes += "\"";
-        }
         // The track's lives: runs of consecutive frames.
         for (std::size_t start = 0; start < track.size();) {
             std::size_t end = start + 1;
@@ -372,17 +363,16 @@ void write_fills(const std::vector<AnimationFrame>& frames, const Style& style, 
             start = end;
             if (!any) continue;
             const FillWriter writer(life);
-            const std::vector<FillPlan> plans = writer.plan();
-            smil::AnimatedPath path;
-            std::size_t vertices = 0;
-            for (const FillPlan& plan : plans) writer.emit(plan, options.tolerance_px, path, vertices);
-            path.shown = {{first, last}};
-            const std::size_t keys = smil::append_path(out, attributes, path, clock);
-            stats.path_stats.push_back({"fill", region_class_name(r0.cls), "fill", first, last,
-                                        std::size_t(last - first + 1), vertices, keys, plans.size()});
+            AnimatedPathData path;
+            path.fill = true;
+            path.region_class = region_class_name(r0.cls);
+            path.region = rs;
+            path.first = first;
+            path.last = last;
+            for (const FillPlan& plan : writer.plan()) path.segments.push_back(writer.emit(plan, options.tolerance_px));
+            out.push_back(std::move(path));
         }
     }
-    out += "</g>\n";
 }
 
 } // namespace snaxels

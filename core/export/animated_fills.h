@@ -1,15 +1,15 @@
 #pragma once
-// Internal to core/export: animated region fills (see animated_svg.h). One
-// path per region track for as long as the region lives; its loops (outer
-// outlines and holes) are the path's subpaths, resampled by arc length from
-// an anchor that follows them. A loop that appears grows from a point (a
+// Internal to core/export: animated region fills (fill_paths in
+// animated_paths.h). One path per region track for as long as the region
+// lives; its loops (outer outlines and holes) are the path's subpaths,
+// resampled by arc length from an anchor that follows them. A loop that appears grows from a point (a
 // zero-area subpath), one that closes shrinks to one.
 
-#include <string>
+#include <cstddef>
+#include <utility>
 #include <vector>
 
-#include "core/export/animated_svg.h"
-#include "core/export/smil.h"
+#include <glm/vec2.hpp>
 
 namespace snaxels {
 
@@ -20,9 +20,5 @@ namespace snaxels {
 std::vector<std::pair<std::size_t, std::size_t>> match_loops(const std::vector<std::vector<glm::dvec2>>& a,
                                                              const std::vector<std::vector<glm::dvec2>>& b,
                                                              double slack_px);
-
-/// Appends the fill paths of every region track of @p frames to @p out.
-void write_fills(const std::vector<AnimationFrame>& frames, const Style& style, const AnimatedSvgOptions& options,
-                 const smil::Clock& clock, std::string& out, AnimatedSvgStats& stats);
 
 } // namespace snaxels

@@ -5,9 +5,9 @@
 #include <map>
 #include <unordered_map>
 
+#include "core/export/animated_paths.h"
 #include "core/export/path_keys.h"
 #include "core/export/polyline.h"
-#include "core/export/svg_writer.h"
 
 namespace snaxels {
 
@@ -388,10 +388,9 @@ class StrokeWriter {
         return plans;
     }
 
-    /// The segment of @p plan: geometry at every key (with keys added
-    /// between frames where a run end sweeps along a bend), vertices and
-    /// keys reduced; appends the kept keys' times and path data.
-    void emit(const Plan& plan, double smoothing, smil::AnimatedPath& path, std::size_t& max_vertices) const {
+    /// The segment of @p plan: geometry at every key, vertices and keys
+    /// reduced; the kept keys.
+    PathSegment emit(const Plan& plan, double smoothing) const {
         // Each subpath's vertices: a grid fixed in u over the plan, at the
         // loops' own sampling density; grid points outside a key's span fold
         // onto its ends.
@@ -447,18 +446,17 @@ class StrokeWriter {
             seg.times.push_back(plan.keys[k].time);
             seg.shapes.push_back(std::move(here));
         }
-        std::vector<std::vector<std::size_t>> knots;
-        anim::reduce_vertices(seg, options_.tolerance_px, smoothing, &knots);
+        PathSegment out;
+        anim::reduce_vertices(seg, options_.tolerance_px, smoothing, &out.knots);
+        // Without smoothing the vertices left are the polylines themselves.
+        if (smoothing <= 0.0) out.knots.clear();
         const std::vector<std::uint8_t> keep = anim::reduce_keys(seg, options_.tolerance_px);
-        std::size_t vertices = 0;
-        for (const auto& k : knots) vertices += k.size();
-        max_vertices = std::max(max_vertices, vertices);
         for (std::size_t k = 0; k < seg.times.size(); ++k) {
             if (!keep[k]) continue;
-            if (!path.times.empty() && seg.times[k] <= path.times.back()) continue; // never at one time twice
-            path.times.push_back(seg.times[k]);
-            path.values.push_back(anim::path_data(seg.shapes[k], &knots));
+            out.times.push_back(seg.times[k]);
+            out.shapes.push_back(std::move(seg.shapes[k]));
         }
+        return out;
     }
 
   private:
@@ -536,14 +534,13 @@ class StrokeWriter {
     const AnimatedSvgOptions& options_;
 };
 
-/// Surface-fastened dashes: the dash phase where the path starts, per
-/// frame (unwrapped so it interpolates), animated on stroke-dashoffset.
-std::string dash_offset_animation(const std::vector<LifeFrame>& life, int cls, int id, int first_frame,
-                                  const StrokeStyle& stroke, const AnimatedSvgOptions& options,
-                                  const smil::Clock& clock) {
+/// Surface-fastened dashes: the dash phase where run @p id starts, per
+/// frame (unwrapped so it interpolates), keys reduced, into @p path.
+void dash_offsets(const std::vector<LifeFrame>& life, int cls, int id, int first_frame, const StrokeStyle& stroke,
+                  const AnimatedSvgOptions& options, AnimatedPathData& path) {
     double period = 0.0;
     for (const double d : stroke.dash) period += d;
-    if (period <= 0.0) return {};
+    if (period <= 0.0) return;
     anim::Segment offsets; // 1-D values as one-point shapes, for reduce_keys
     double previous = 0.0;
     for (std::size_t i = 0; i < life.size(); ++i)
@@ -556,12 +553,10 @@ std::string dash_offset_animation(const std::vector<LifeFrame>& life, int cls, i
             offsets.times.push_back(double(first_frame + int(i)));
             offsets.shapes.push_back({anim::Subpath{{glm::dvec2(o, 0.0)}, false}});
         }
-    if (offsets.times.empty()) return {};
+    if (offsets.times.empty()) return;
     const std::vector<std::uint8_t> keep = anim::reduce_keys(offsets, options.tolerance_px);
-    std::vector<double> times, values;
     for (std::size_t k = 0; k < keep.size(); ++k)
-        if (keep[k]) times.push_back(offsets.times[k]), values.push_back(offsets.shapes[k][0].pts[0].x);
-    return smil::number_animation("stroke-dashoffset", times, values, clock);
+        if (keep[k]) path.dash_times.push_back(offsets.times[k]), path.dash_values.push_back(offsets.shapes[k][0].pts[0].x);
 }
 
 /// A run of one frame's loop as a polyline at the loop's own density,
@@ -583,9 +578,8 @@ anim::Subpath run_polyline(const ParamLoop& p, const ClassSpan& span, const Anim
 
 } // namespace
 
-void write_strokes(const std::vector<AnimationFrame>& frames, std::size_t c, const Style& style,
-                   const AnimatedSvgOptions& options, const smil::Clock& clock, std::string& hidden_out,
-                   std::string& visible_out, AnimatedSvgStats& stats) {
+void stroke_paths(const std::vector<AnimationFrame>& frames, std::size_t c, const Style& style,
+                  const AnimatedSvgOptions& options, std::vector<AnimatedPathData>& out) {
     const DrawnContour& contour0 = frames[0].drawing.contours[c];
     const ContourStyle cs = style.contour(contour0.spec);
     const StrokeStyle* strokes[2] = {&cs.visible, &cs.hidden};
@@ -633,21 +627,18 @@ void write_strokes(const std::vector<AnimationFrame>& frames, std::size_t c, con
                 for (const LifeFrame& lf : life) any |= !lf.runs[cls].empty();
                 if (!stroke.draw || !any) continue;
                 track_runs(life, cls, next_run);
-                std::string& out = cls ? hidden_out : visible_out;
                 const StrokeWriter writer(life, first, options);
                 double period = 0.0;
                 for (const double d : stroke.dash) period += d;
                 auto write = [&](std::size_t a, std::size_t b, const std::vector<Plan>& plans, int run_id) {
-                    smil::AnimatedPath path;
-                    std::size_t vertices = 0;
-                    for (const Plan& plan : plans) writer.emit(plan, stroke.smoothing, path, vertices);
-                    path.shown = {{first + int(a), first + int(b)}};
-                    const std::string children =
-                        run_id ? dash_offset_animation(life, cls, run_id, first, stroke, options, clock) : std::string();
-                    const std::size_t keys = smil::append_path(out, "", path, clock, children);
-                    stats.path_stats.push_back({"stroke", contour0.spec.label(), cls ? "hidden" : "visible",
-                                                first + int(a), first + int(b), b - a + 1, vertices, keys,
-                                                plans.size()});
+                    AnimatedPathData path;
+                    path.contour = c;
+                    path.cls = cls;
+                    path.first = first + int(a);
+                    path.last = first + int(b);
+                    for (const Plan& plan : plans) path.segments.push_back(writer.emit(plan, stroke.smoothing));
+                    if (run_id) dash_offsets(life, cls, run_id, first, stroke, options, path);
+                    out.push_back(std::move(path));
                 };
                 if (stroke.dash_on_surface && period > 0.0) {
                     // A path has one dash offset and SVG restarts dashes at
@@ -676,32 +667,30 @@ void write_strokes(const std::vector<AnimationFrame>& frames, std::size_t c, con
     // any draw a lone move.
     for (const int cls : {0, 1}) {
         if (brief[cls].empty()) continue;
-        smil::AnimatedPath path;
-        std::size_t vertices = 0;
-        const int first = brief[cls].begin()->first, last = brief[cls].rbegin()->first;
+        AnimatedPathData path;
+        path.contour = c;
+        path.cls = cls;
+        path.brief = true;
+        path.first = brief[cls].begin()->first;
+        path.last = brief[cls].rbegin()->first;
         glm::dvec2 rest = brief[cls].begin()->second.front().pts.front();
-        for (int f = first; f <= last; ++f) {
+        for (int f = path.first; f <= path.last; ++f) {
             const auto it = brief[cls].find(f);
-            if (it == brief[cls].end() && f > first && brief[cls].count(f - 1) == 0) continue; // still empty
+            if (it == brief[cls].end() && f > path.first && brief[cls].count(f - 1) == 0) continue; // still empty
             const anim::Shape shape = it != brief[cls].end() ? it->second : anim::Shape{anim::Subpath{{rest}, false}};
             if (it != brief[cls].end()) rest = shape.front().pts.front();
-            std::size_t n = 0;
-            for (const anim::Subpath& sp : shape) n += sp.pts.size();
-            vertices = std::max(vertices, n);
-            const std::string d = anim::path_data(shape);
             int until = f + 1; // the next frame whose shape differs
-            while (until <= last && it == brief[cls].end() && brief[cls].count(until) == 0) ++until;
-            path.times.push_back(double(f));
-            path.values.push_back(d);
-            if (until <= last) {
-                path.times.push_back(double(until) - anim::kSwitch);
-                path.values.push_back(d);
+            while (until <= path.last && it == brief[cls].end() && brief[cls].count(until) == 0) ++until;
+            PathSegment seg;
+            seg.times.push_back(double(f));
+            seg.shapes.push_back(shape);
+            if (until <= path.last) {
+                seg.times.push_back(double(until) - anim::kSwitch);
+                seg.shapes.push_back(shape);
             }
+            path.segments.push_back(std::move(seg));
         }
-        path.shown = {{first, last}};
-        const std::size_t keys = smil::append_path(cls ? hidden_out : visible_out, " class=\"brief\"", path, clock);
-        stats.path_stats.push_back({"stroke", contour0.spec.label(), cls ? "hidden" : "visible", first, last,
-                                    std::size_t(last - first + 1), vertices, keys, std::size_t(last - first + 1)});
+        out.push_back(std::move(path));
     }
 }
 

@@ -1,16 +1,13 @@
 #pragma once
-// Internal to core/export: the animated strokes of one contour kind (see
-// animated_svg.h). One visible and one hidden path per contour sequence,
-// each shown for the sequence's whole life; its visibility runs are the
-// path's subpaths, which grow from and shrink to points as runs appear and
-// vanish. Styles with surface-fastened dashes give each run its own path
+// Internal to core/export: the animated strokes of one contour kind
+// (stroke_paths in animated_paths.h). One visible and one hidden path per
+// contour sequence, each shown for the sequence's whole life; its
+// visibility runs are the path's subpaths, which grow from and shrink to
+// points as runs appear and vanish. Styles with surface-fastened dashes give each run its own path
 // instead (a path has one dash offset; SVG restarts dashes at every subpath).
 
-#include <string>
+#include <utility>
 #include <vector>
-
-#include "core/export/animated_svg.h"
-#include "core/export/smil.h"
 
 namespace snaxels {
 
@@ -28,11 +25,5 @@ struct ClassSpan {
 /// @p min_u (QI flicker at T-junctions) take their longer neighbour's class.
 std::vector<ClassSpan> class_spans(const std::vector<std::pair<double, int>>& changes, int cls0, bool closed,
                                    double min_u);
-
-/// Appends the paths of contour @p c of @p frames to @p hidden_out and
-/// @p visible_out, and their statistics to @p stats.
-void write_strokes(const std::vector<AnimationFrame>& frames, std::size_t c, const Style& style,
-                   const AnimatedSvgOptions& options, const smil::Clock& clock, std::string& hidden_out,
-                   std::string& visible_out, AnimatedSvgStats& stats);
 
 } // namespace snaxels

@@ -1,7 +1,8 @@
 #include "core/export/animated_svg.h"
 
-#include "core/export/animated_fills.h"
-#include "core/export/animated_strokes.h"
+#include <algorithm>
+
+#include "core/export/animated_paths.h"
 #include "core/export/smil.h"
 #include "core/export/svg_writer.h"
 
@@ -11,6 +12,19 @@ namespace {
 /// An Inkscape layer (a plain group elsewhere), named for what it holds.
 std::string layer(const std::string& id, const std::string& label) {
     return "<g id=\"" + id + "\" inkscape:groupmode=\"layer\" inkscape:label=\"" + label + "\">\n";
+}
+
+/// The keys of @p path's segments as SMIL path data, never two at one time.
+smil::AnimatedPath smil_path(const AnimatedPathData& path) {
+    smil::AnimatedPath out;
+    for (const PathSegment& seg : path.segments)
+        for (std::size_t k = 0; k < seg.times.size(); ++k) {
+            if (!out.times.empty() && seg.times[k] <= out.times.back()) continue;
+            out.times.push_back(seg.times[k]);
+            out.values.push_back(anim::path_data(seg.shapes[k], seg.knots.empty() ? nullptr : &seg.knots));
+        }
+    out.shown = {{path.first, path.last}};
+    return out;
 }
 
 } // namespace
@@ -28,16 +42,25 @@ std::string to_animated_svg(const std::vector<AnimationFrame>& frames, double fp
     for (const AnimationFrame& f : frames)
         for (const DrawnContour& c : f.drawing.contours)
             for (const DrawnLoop& loop : c.loops) with_visibility |= !loop.qi.empty();
-    std::string fills;
-    write_fills(frames, style, options, clock, fills, st);
-    if (!fills.empty()) {
-        // write_fills opens <g id="fills" ...>: make it a layer too.
-        fills.insert(std::string("<g").size(), " inkscape:groupmode=\"layer\" inkscape:label=\"fills\"");
-        out += fills;
+    const std::vector<AnimatedPathData> paths = animated_paths(frames, style, options);
+    bool any_fill = false;
+    for (const AnimatedPathData& path : paths) {
+        if (!path.fill) continue;
+        if (!any_fill)
+            out += "<g id=\"fills\" inkscape:groupmode=\"layer\" inkscape:label=\"fills\" stroke=\"none\" "
+                   "fill-rule=\"nonzero\">\n";
+        any_fill = true;
+        std::string attributes =
+            " class=\"region\" data-class=\"" + path.region_class + "\" fill=\"" + path.region->fill + "\"";
+        if (path.region->opacity < 1.0) {
+            attributes += " fill-opacity=\"";
+            svg::append_number(attributes, path.region->opacity);
+            attributes += "\"";
+        }
+        const std::size_t keys = smil::append_path(out, attributes, smil_path(path), clock);
+        st.path_stats.push_back(path_stats(path, path.region_class, keys));
     }
-    std::vector<std::string> hidden(d0.contours.size()), visible(d0.contours.size());
-    for (std::size_t c = 0; c < d0.contours.size(); ++c)
-        write_strokes(frames, c, style, options, clock, hidden[c], visible[c], st);
+    if (any_fill) out += "</g>\n";
     for (const bool is_hidden : {true, false}) {
         if (is_hidden && !with_visibility) continue;
         const std::string part = is_hidden ? "hidden" : "visible";
@@ -49,18 +72,23 @@ std::string to_animated_svg(const std::vector<AnimationFrame>& frames, double fp
             const std::string label = d0.contours[c].spec.label();
             out += svg::kind_group(d0.contours[c].spec, stroke,
                                    " id=\"" + part + "-" + label + "\" inkscape:groupmode=\"layer\" inkscape:label=\"" +
-                                       label + " (" + part + ")\"") +
-                   (is_hidden ? hidden[c] : visible[c]) + "</g>\n";
+                                       label + " (" + part + ")\"");
+            for (const AnimatedPathData& path : paths) {
+                if (path.fill || path.contour != c || path.cls != int(is_hidden)) continue;
+                const std::string children =
+                    path.dash_times.empty() ? std::string()
+                                            : smil::number_animation("stroke-dashoffset", path.dash_times,
+                                                                     path.dash_values, clock);
+                const std::size_t keys =
+                    smil::append_path(out, path.brief ? " class=\"brief\"" : "", smil_path(path), clock, children);
+                st.path_stats.push_back(path_stats(path, label, keys));
+            }
+            out += "</g>\n";
         }
         out += "</g>\n";
     }
     out += "</svg>\n";
-    for (const PathStats& p : st.path_stats) {
-        ++st.paths;
-        st.keyframes += p.keyframes;
-        st.frames_spanned += p.frames_shown;
-        st.vertices += p.vertices;
-    }
+    sum_stats(st);
     return out;
 }
 
