@@ -90,7 +90,7 @@ static void BM_ExportHorseTurntable360(benchmark::State& state) {
     std::size_t bytes = 0;
     for (auto _ : state) {
         const AnimationOutput out = run_animation(horse_mesh(), "", job);
-        bytes = out.svg.size();
+        bytes = out.document.size();
     }
     state.counters["svg_bytes"] = double(bytes);
 }

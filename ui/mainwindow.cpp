@@ -302,7 +302,7 @@ void MainWindow::exportAnimation(const QString& path) {
     exportFuture_ = QtConcurrent::run([mesh, mesh_path, job, path]() -> QString {
         try {
             const AnimationOutput out = run_animation(*mesh, mesh_path, job);
-            write_file_atomically(path.toStdString(), out.svg); // only now: a cancel leaves nothing
+            write_file_atomically(path.toStdString(), out.document); // only now: a cancel leaves nothing
             return {};
         } catch (const AnimationCancelled&) {
             return exportCancelledMessage();

@@ -33,7 +33,7 @@ nlohmann::json stats_json(const AnimationOutput& result) {
         one_frame += p.frames_shown == 1;
     }
     return {{"frames", result.frames},
-            {"bytes", result.svg.size()},
+            {"bytes", result.document.size()},
             {"paths", st.paths},
             {"paths_shown_one_frame", one_frame},
             {"keyframes", st.keyframes},
@@ -55,16 +55,19 @@ int run_animate(const std::vector<std::string>& argv) {
                   {"start", "N", "begin at the source's frame N (an in point: turntable angle, clip time, sequence file)"},
                   {"fps", "F", "frames per second (default 24)"},
                   {"tolerance", "PX", "drop path vertices and keyframes reproduced within PX pixels (default 0.25)"},
-                  {"output", "OUT.svg", "the animated SVG to write", false, 'o'},
+                  {"output", "OUT", "the animation to write: animated SVG, or Lottie for OUT.json", false, 'o'},
+                  {"format", "svg|lottie", "the output's format (default: by OUT's extension, .json for Lottie)"},
                   {"frames-dir", "DIR", "also write every frame as a static SVG into DIR (a flipbook, for comparison)"},
                   {"events", "OUT.json", "write the visual events (creation, annihilation, split, merge)"},
                   {"stats", "OUT.json", "write the animated SVG's paths: frames shown, vertices, keyframes"}});
     Args args("animate",
               "animate MESH (--turntable DEG | --light-orbit DEG | --clip NAME | --sequence PATTERN)\n"
               "       --frames N [--fps F] [view, light and kind options as in contours]\n"
-              "       [--tolerance PX] -o OUT.svg [--frames-dir DIR] [--events OUT.json] [--stats OUT.json]",
+              "       [--tolerance PX] -o OUT.svg|OUT.json [--format svg|lottie] [--frames-dir DIR]\n"
+              "       [--events OUT.json] [--stats OUT.json]",
               std::string("Tracks contours through an animation and writes an animated SVG in which every\n"
-                          "contour is one path whose vertices move (SMIL), keyframed only where needed.\n"
+                          "contour is one path whose vertices move (SMIL), keyframed only where needed,\n"
+                          "or the same paths as Lottie (docs/lottie.md).\n"
                           "With --sequence, MESH is ignored if it is '-'; the first file of the sequence\n"
                           "is read instead.\n\n") +
                   kMeshArgumentHelp,
@@ -108,7 +111,8 @@ int run_animate(const std::vector<std::string>& argv) {
     AnimatedSvgOptions svg_options;
     if (const auto v = args.value("tolerance")) svg_options.tolerance_px = parse_number("tolerance", *v, -1e-12, 100.0);
     const auto output = args.value("output");
-    if (!output) throw UsageError("-o OUT.svg is required");
+    if (!output) throw UsageError("-o OUT.svg (or OUT.json for Lottie) is required");
+    const AnimationFormat format = parse_animation_format(args.value("format"), *output);
     const std::string frames_dir = args.value("frames-dir").value_or("");
     const std::string events_out = args.value("events").value_or("");
     const std::string stats_out = args.value("stats").value_or("");
@@ -138,9 +142,10 @@ int run_animate(const std::vector<std::string>& argv) {
     job.refine = scene.refine;
     if (scene.check) job.engine.check_invariants = true;
     job.svg = svg_options;
+    job.format = format;
     job.frames_dir = frames_dir;
     const AnimationOutput result = run_animation_with_progress(loaded, mesh_path, job);
-    write_file_atomically(*output, result.svg);
+    write_file_atomically(*output, result.document);
     if (!events_out.empty()) write_file_atomically(events_out, result.events.dump(1) + "\n");
     if (!stats_out.empty()) write_file_atomically(stats_out, stats_json(result).dump(1) + "\n");
     const double total_ms =
@@ -151,7 +156,7 @@ int run_animate(const std::vector<std::string>& argv) {
     std::printf("%s: %d frames at %g fps, %zu paths, %zu keyframes (of %zu path-frames), %zu bytes; "
                 "tracking %.2f ms per frame, %.0f ms in all; %zu events\n",
                 output->c_str(), result.frames, anim.fps, stats.paths, stats.keyframes, stats.frames_spanned,
-                result.svg.size(), tracking / std::max(1, result.frames), total_ms, result.events.size());
+                result.document.size(), tracking / std::max(1, result.frames), total_ms, result.events.size());
     return 0;
 }
 

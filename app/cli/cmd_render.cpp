@@ -19,12 +19,14 @@ namespace snaxels::cli {
 
 int run_render(const std::vector<std::string>& argv) {
     Args args("render",
-              "render PROJECT.snaxels -o OUT.svg [--still [--frame N]]",
+              "render PROJECT.snaxels -o OUT.svg|OUT.json [--format svg|lottie] [--still [--frame N]]",
               "Renders a project saved by the application: its mesh, camera, light, animation and\n"
-              "style. Without --still it writes the animated SVG, the very bytes the application's\n"
-              "Export > Animated SVG writes for the project; with --still, one frame of the\n"
-              "animation (the project's current frame, or N) as static SVG.",
-              {{"output", "OUT.svg", "the SVG to write", false, 'o'},
+              "style. Without --still it writes the animated SVG (or, for OUT.json, Lottie), the\n"
+              "very bytes the application's Export > Animated SVG (Export > Lottie) writes for the\n"
+              "project; with --still, one frame of the animation (the project's current frame,\n"
+              "or N) as static SVG.",
+              {{"output", "OUT", "the file to write: SVG, or Lottie for OUT.json", false, 'o'},
+               {"format", "svg|lottie", "the animation's format (default: by OUT's extension, .json for Lottie)"},
                {"still", "", "write one frame as static SVG instead of the animation"},
                {"frame", "N", "with --still: the frame (default: the project's current frame)"}},
               {"PROJECT"});
@@ -33,7 +35,11 @@ int run_render(const std::vector<std::string>& argv) {
         return 0;
     }
     const auto output = args.value("output");
-    if (!output) throw UsageError("-o OUT.svg is required");
+    if (!output) throw UsageError("-o OUT.svg (or OUT.json for Lottie) is required");
+    if (args.flag("still") && args.value("format") && *args.value("format") != "svg")
+        throw UsageError("--still writes static SVG; --format lottie is for the animation");
+    const AnimationFormat format =
+        args.flag("still") ? AnimationFormat::Svg : parse_animation_format(args.value("format"), *output);
     if (args.flag("frame") && !args.flag("still")) throw UsageError("--frame goes with --still");
     const std::string project_path = args.positional()[0];
     const Project project = read_project(project_path);
@@ -51,12 +57,13 @@ int run_render(const std::vector<std::string>& argv) {
     if (animation.kind == AnimationSpec::Kind::Sequence) // relative to the project, as its mesh is
         animation.pattern = resolve_project_mesh(project_path, animation.pattern);
     AnimationJob job = make_animation_job(style, animation, orbit_base_camera(view), project.light);
+    job.format = format;
 
     if (!args.flag("still")) {
         const AnimationOutput result = run_animation_with_progress(loaded, mesh_path, job);
-        write_file_atomically(*output, result.svg);
+        write_file_atomically(*output, result.document);
         std::printf("%s: %d frames at %g fps, %zu paths, %zu bytes\n", output->c_str(), result.frames,
-                    project.animation.fps, result.stats.paths, result.svg.size());
+                    project.animation.fps, result.stats.paths, result.document.size());
         return 0;
     }
     const int frame = args.value("frame") ? parse_int("frame", *args.value("frame"), 0, 100000) : project.frame;

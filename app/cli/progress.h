@@ -1,9 +1,14 @@
 #pragma once
-// A frame counter on standard error for long runs (only on a terminal).
+// A frame counter on standard error for long runs (only on a terminal),
+// and the output format of the commands that write animations.
 
 #include <unistd.h>
 
 #include <cstdio>
+#include <optional>
+#include <string>
+
+#include "app/cli/args.h"
 
 #include "core/animation/pipeline.h"
 
@@ -28,6 +33,15 @@ class Progress {
     int total_;
     bool enabled_;
 };
+
+/// The format of the animation written to @p output: --format (svg or
+/// lottie) when given, else by the file's extension (.json: Lottie).
+inline AnimationFormat parse_animation_format(const std::optional<std::string>& format, const std::string& output) {
+    if (!format) return animation_format_for(output);
+    if (*format == "svg") return AnimationFormat::Svg;
+    if (*format == "lottie") return AnimationFormat::Lottie;
+    throw UsageError("--format must be svg or lottie, not '" + *format + "'");
+}
 
 /// Runs @p job with a frame counter on standard error (when it is a terminal).
 inline AnimationOutput run_animation_with_progress(const LoadedMesh& mesh, const std::string& mesh_path, AnimationJob job) {

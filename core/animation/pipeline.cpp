@@ -1,5 +1,7 @@
 #include "core/animation/pipeline.h"
 
+#include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -8,6 +10,7 @@
 #include "core/error.h"
 #include "core/animation/still.h"
 #include "core/export/dash_phase.h"
+#include "core/export/lottie.h"
 #include "core/export/svg.h"
 #include "core/util/atomic_file.h"
 #include "core/planarmap/region_tracker.h"
@@ -15,6 +18,12 @@
 #include "core/visibility/visibility.h"
 
 namespace snaxels {
+
+AnimationFormat animation_format_for(const std::string& path) {
+    std::string ext = std::filesystem::path(path).extension().string();
+    std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+    return ext == ".json" ? AnimationFormat::Lottie : AnimationFormat::Svg;
+}
 
 AnimationJob make_animation_job(const Style& style, const AnimationSpec& animation, const Camera& camera,
                                 const std::optional<Light>& light) {
@@ -186,7 +195,9 @@ AnimationOutput run_animation(const LoadedMesh& mesh, const std::string& mesh_pa
         recorded.push_back(std::move(frame));
         if (job.progress) job.progress(k + 1, frames);
     }
-    out.svg = to_animated_svg(recorded, job.animation.fps, job.svg, job.style, &out.stats);
+    out.document = job.format == AnimationFormat::Lottie
+                       ? to_lottie(recorded, job.animation.fps, job.svg, job.style, &out.stats)
+                       : to_animated_svg(recorded, job.animation.fps, job.svg, job.style, &out.stats);
     return out;
 }
 

@@ -1,7 +1,8 @@
 #pragma once
 /// The whole animation pipeline, shared by the CLI and the application:
 /// pose each frame, track every contour kind, classify hidden lines, draw,
-/// and write the animated SVG (and, on request, each frame as static SVG).
+/// and write the animated SVG or Lottie (and, on request, each frame as
+/// static SVG).
 
 #include <functional>
 #include <optional>
@@ -20,6 +21,15 @@
 
 namespace snaxels {
 
+/// The file an animation is written as.
+enum class AnimationFormat {
+    Svg,    ///< animated SVG (SMIL), docs/animation.md
+    Lottie, ///< Lottie JSON, docs/lottie.md
+};
+
+/// The format a file name asks for: Lottie for .json (any case), else SVG.
+AnimationFormat animation_format_for(const std::string& path);
+
 struct AnimationJob {
     AnimationSpec animation;
     Camera camera;
@@ -30,7 +40,8 @@ struct AnimationJob {
     PlanarMapKind map_kind = PlanarMapKind::Snaxel; ///< the map the style's fills come from
     int refine = kAutoRefine; ///< levels the mesh is refined by for the engine (core/snaxel/refine.h)
     EngineOptions engine;
-    AnimatedSvgOptions svg;
+    AnimatedSvgOptions svg; ///< tolerances, for either format
+    AnimationFormat format = AnimationFormat::Svg;
     std::string frames_dir; ///< when set, every frame is also written there as static SVG
     /// Called after each frame with (frames done, frames in all).
     std::function<void(int, int)> progress;
@@ -44,7 +55,7 @@ struct AnimationCancelled : std::runtime_error {
 };
 
 struct AnimationOutput {
-    std::string svg;
+    std::string document; ///< the animated SVG or the Lottie JSON, as job.format says
     nlohmann::json events = nlohmann::json::array(); ///< [{frame, kind, contour, where}]
     AnimatedSvgStats stats;
     std::vector<double> tracking_ms; ///< per frame, all kinds

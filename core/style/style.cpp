@@ -7,7 +7,7 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
-#include <set>
+#include <map>
 #include <sstream>
 
 #include <pugixml.hpp>
@@ -18,14 +18,21 @@
 namespace snaxels {
 namespace {
 
-// CSS colour keywords accepted besides #rgb and #rrggbb.
-const std::set<std::string>& colour_names() {
-    static const std::set<std::string> names = {
-        "black", "white", "gray", "grey", "silver", "red", "maroon", "orange", "gold", "yellow", "olive",
-        "lime", "green", "teal", "aqua", "cyan", "blue", "navy", "purple", "fuchsia", "magenta", "pink",
-        "brown", "tan", "beige", "ivory", "khaki", "coral", "salmon", "crimson", "indigo", "violet",
-        "turquoise", "skyblue", "steelblue", "slategray", "slategrey", "darkgray", "darkgrey", "lightgray",
-        "lightgrey", "dimgray", "dimgrey", "whitesmoke", "gainsboro", "wheat", "linen", "seashell"};
+// CSS colour keywords accepted besides #rgb and #rrggbb, with their values.
+const std::map<std::string, std::uint32_t>& colour_names() {
+    static const std::map<std::string, std::uint32_t> names = {
+        {"black", 0x000000},     {"white", 0xffffff},     {"gray", 0x808080},      {"grey", 0x808080},
+        {"silver", 0xc0c0c0},    {"red", 0xff0000},       {"maroon", 0x800000},    {"orange", 0xffa500},
+        {"gold", 0xffd700},      {"yellow", 0xffff00},    {"olive", 0x808000},     {"lime", 0x00ff00},
+        {"green", 0x008000},     {"teal", 0x008080},      {"aqua", 0x00ffff},      {"cyan", 0x00ffff},
+        {"blue", 0x0000ff},      {"navy", 0x000080},      {"purple", 0x800080},    {"fuchsia", 0xff00ff},
+        {"magenta", 0xff00ff},   {"pink", 0xffc0cb},      {"brown", 0xa52a2a},     {"tan", 0xd2b48c},
+        {"beige", 0xf5f5dc},     {"ivory", 0xfffff0},     {"khaki", 0xf0e68c},     {"coral", 0xff7f50},
+        {"salmon", 0xfa8072},    {"crimson", 0xdc143c},   {"indigo", 0x4b0082},    {"violet", 0xee82ee},
+        {"turquoise", 0x40e0d0}, {"skyblue", 0x87ceeb},   {"steelblue", 0x4682b4}, {"slategray", 0x708090},
+        {"slategrey", 0x708090}, {"darkgray", 0xa9a9a9},  {"darkgrey", 0xa9a9a9},  {"lightgray", 0xd3d3d3},
+        {"lightgrey", 0xd3d3d3}, {"dimgray", 0x696969},   {"dimgrey", 0x696969},   {"whitesmoke", 0xf5f5f5},
+        {"gainsboro", 0xdcdcdc}, {"wheat", 0xf5deb3},     {"linen", 0xfaf0e6},     {"seashell", 0xfff5ee}};
     return names;
 }
 
@@ -260,6 +267,20 @@ struct Parser {
 };
 
 } // namespace
+
+std::uint32_t colour_rgb(const std::string& colour) {
+    if (colour.size() == 7 && colour[0] == '#') return std::uint32_t(std::stoul(colour.substr(1), nullptr, 16));
+    if (colour.size() == 4 && colour[0] == '#') {
+        std::uint32_t rgb = 0;
+        for (int i = 1; i < 4; ++i) {
+            const std::uint32_t d = std::uint32_t(std::stoul(colour.substr(std::size_t(i), 1), nullptr, 16));
+            rgb = rgb << 8 | (d << 4 | d);
+        }
+        return rgb;
+    }
+    const auto it = colour_names().find(colour);
+    return it == colour_names().end() ? 0 : it->second;
+}
 
 StyleError::StyleError(const std::string& source, StyleDiagnostic diagnostic)
     : std::runtime_error(source + ":" + std::to_string(diagnostic.line) + ":" + std::to_string(diagnostic.column) +

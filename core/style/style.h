@@ -2,6 +2,7 @@
 /// The XML style language (reference: docs/styles.md): what to draw of each
 /// contour kind, visible and hidden, and how; the canvas; the light.
 
+#include <cstdint>
 #include <optional>
 #include <stdexcept>
 #include <string>
@@ -59,6 +60,10 @@ struct Style {
 /// Default strokes of a kind: the colour of its kind, solid when visible,
 /// thinner, faded and dashed when hidden.
 ContourStyle default_contour_style(const ContourSpec& spec);
+
+/// The 0xRRGGBB value of a colour the style language accepts (#rrggbb,
+/// #rgb, a CSS colour name; lower case as the parser stores it).
+std::uint32_t colour_rgb(const std::string& colour);
 
 /// The built-in style: the visual contour in ink, hidden lines dashed.
 Style default_style();

@@ -107,7 +107,7 @@ TEST(PlanarMaps, AnimatedFillsArePartitionsAtEveryFrame) {
             job.visibility = false;
             const AnimationOutput out = run_animation(mesh, test::asset(file), job);
             for (int f = 0; f < spec.frames; ++f) {
-                const test::Coverage c = test::coverage(test::smil_regions_at(out.svg, (f + 0.01) / spec.frames), 512, 512, 4, 2);
+                const test::Coverage c = test::coverage(test::smil_regions_at(out.document, (f + 0.01) / spec.frames), 512, 512, 4, 2);
                 const int k = kind == PlanarMapKind::Snaxel ? 0 : 1;
                 worst[k] = std::max(worst[k], c.overlap_fraction());
                 worst_wide[k] = std::max(worst_wide[k], c.wide_fraction());

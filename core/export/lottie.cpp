@@ -1,0 +1,321 @@
+#include "core/export/lottie.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+#include "core/export/animated_paths.h"
+
+namespace snaxels {
+namespace {
+
+/// A number rounded to a multiple of 10^-digits, as short as JSON allows.
+void append_fixed(std::string& out, double v, int digits) {
+    const double scale = std::pow(10.0, digits);
+    long long n = std::llround(v * scale);
+    if (n < 0) out += '-', n = -n;
+    long long whole = 1;
+    for (int d = 0; d < digits; ++d) whole *= 10;
+    out += std::to_string(n / whole);
+    long long frac = n % whole;
+    if (frac == 0) return;
+    int width = digits;
+    while (frac % 10 == 0) frac /= 10, --width;
+    const std::string f = std::to_string(frac);
+    out += '.';
+    out.append(std::size_t(width) - f.size(), '0');
+    out += f;
+}
+
+/// Positions and tangents: a tenth of a pixel, as the animated SVG's path data.
+void coord(std::string& out, double v) { append_fixed(out, v, 1); }
+/// Times (frames): keys a thousandth of a frame apart stay apart.
+void time_value(std::string& out, double t) { append_fixed(out, t, 3); }
+/// Colours, opacities, widths.
+void value(std::string& out, double v) { append_fixed(out, v, 4); }
+
+void json_string(std::string& out, const std::string& s) {
+    out += '"';
+    for (const char c : s) {
+        if (c == '"' || c == '\\') out += '\\';
+        if (static_cast<unsigned char>(c) < 0x20) continue;
+        out += c;
+    }
+    out += '"';
+}
+
+void colour(std::string& out, const std::string& css) {
+    const std::uint32_t rgb = colour_rgb(css);
+    out += '[';
+    for (int shift = 16; shift >= 0; shift -= 8) {
+        value(out, double((rgb >> shift) & 0xff) / 255.0);
+        out += ',';
+    }
+    out += "1]";
+}
+
+/// One subpath as Lottie's bezier value: vertices, and in and out tangents
+/// relative to them. Positions are rounded before the tangents are taken,
+/// so the controls land where the SVG's do.
+struct Bez {
+    bool closed = false;
+    std::vector<glm::dvec2> v, in, out;
+};
+
+glm::dvec2 rounded(glm::dvec2 p) { return glm::round(p * 10.0) / 10.0; }
+
+Bez bez_of(const anim::Subpath& sp, const std::vector<std::size_t>* knots) {
+    Bez b;
+    b.closed = sp.closed;
+    const bool some = knots && knots->size() < sp.pts.size();
+    if (some && knots->size() >= 2) {
+        const BezierChain c = bezier_chain(sp.pts, *knots, sp.closed);
+        const std::size_t m = c.knots.size();
+        for (const glm::dvec2& k : c.knots) b.v.push_back(rounded(k));
+        b.in.assign(m, glm::dvec2(0.0));
+        b.out.assign(m, glm::dvec2(0.0));
+        for (std::size_t s = 0; s < c.c1.size(); ++s) {
+            const std::size_t from = s, to = (s + 1) % m;
+            b.out[from] = rounded(c.c1[s]) - b.v[from];
+            b.in[to] = rounded(c.c2[s]) - b.v[to];
+        }
+        return b;
+    }
+    if (some) {
+        for (const std::size_t k : *knots) b.v.push_back(rounded(sp.pts[k]));
+    } else {
+        for (const glm::dvec2& p : sp.pts) b.v.push_back(rounded(p));
+    }
+    b.in.assign(b.v.size(), glm::dvec2(0.0));
+    b.out.assign(b.v.size(), glm::dvec2(0.0));
+    return b;
+}
+
+void points(std::string& out, const std::vector<glm::dvec2>& pts) {
+    out += '[';
+    for (std::size_t k = 0; k < pts.size(); ++k) {
+        if (k) out += ',';
+        out += '[';
+        coord(out, pts[k].x);
+        out += ',';
+        coord(out, pts[k].y);
+        out += ']';
+    }
+    out += ']';
+}
+
+std::string bezier_value(const Bez& b) {
+    std::string out = b.closed ? "{\"c\":true,\"v\":" : "{\"c\":false,\"v\":";
+    points(out, b.v);
+    out += ",\"i\":";
+    points(out, b.in);
+    out += ",\"o\":";
+    points(out, b.out);
+    out += '}';
+    return out;
+}
+
+/// Linear easing between a keyframe and the next.
+constexpr const char* kLinear = ",\"i\":{\"x\":1,\"y\":1},\"o\":{\"x\":0,\"y\":0}";
+
+/// A scalar property: static, or linear keyframes.
+std::string scalar(const std::vector<double>& times, const std::vector<double>& values) {
+    std::string out;
+    if (times.size() < 2) {
+        out = "{\"a\":0,\"k\":";
+        value(out, values.empty() ? 0.0 : values.front());
+        return out + '}';
+    }
+    out = "{\"a\":1,\"k\":[";
+    for (std::size_t k = 0; k < times.size(); ++k) {
+        if (k) out += ',';
+        out += "{\"t\":";
+        time_value(out, times[k]);
+        out += ",\"s\":[";
+        value(out, values[k]);
+        out += ']';
+        if (k + 1 < times.size()) out += kLinear;
+        out += '}';
+    }
+    return out + "]}";
+}
+
+std::string stroke_style(const StrokeStyle& stroke, const std::string& dash_offset) {
+    std::string out = "{\"ty\":\"st\",\"c\":{\"a\":0,\"k\":";
+    colour(out, stroke.colour);
+    out += "},\"o\":{\"a\":0,\"k\":";
+    value(out, 100.0 * stroke.opacity);
+    out += "},\"w\":{\"a\":0,\"k\":";
+    value(out, stroke.width);
+    out += "},\"lc\":";
+    out += stroke.cap == "butt" ? '1' : stroke.cap == "square" ? '3' : '2';
+    out += ",\"lj\":";
+    out += stroke.join == "miter" ? '1' : stroke.join == "bevel" ? '3' : '2';
+    out += ",\"ml\":4";
+    if (!stroke.dash.empty()) {
+        // As SVG does, an odd list of lengths is repeated to make it even.
+        std::vector<double> dash = stroke.dash;
+        if (dash.size() % 2) dash.insert(dash.end(), stroke.dash.begin(), stroke.dash.end());
+        out += ",\"d\":[";
+        for (std::size_t k = 0; k < dash.size(); ++k) {
+            out += k % 2 ? "{\"n\":\"g\",\"nm\":\"gap\",\"v\":{\"a\":0,\"k\":" : "{\"n\":\"d\",\"nm\":\"dash\",\"v\":{\"a\":0,\"k\":";
+            value(out, dash[k]);
+            out += "}},";
+        }
+        out += "{\"n\":\"o\",\"nm\":\"offset\",\"v\":" + (dash_offset.empty() ? std::string("{\"a\":0,\"k\":0}") : dash_offset) + "}]";
+    }
+    return out + '}';
+}
+
+std::string fill_style(const RegionStyle& region) {
+    std::string out = "{\"ty\":\"fl\",\"c\":{\"a\":0,\"k\":";
+    colour(out, region.fill);
+    out += "},\"o\":{\"a\":0,\"k\":";
+    value(out, 100.0 * region.opacity);
+    return out + "},\"r\":1}";
+}
+
+/// The `sh` items of one segment: a shape per subpath, keyframed when it
+/// moves; subpaths of a single point (a lone move) draw nothing and are
+/// left out. Returns the keyframes written.
+std::size_t segment_shapes(const PathSegment& seg, std::string& out) {
+    std::size_t keys = 0;
+    if (seg.shapes.empty()) return keys;
+    const std::vector<std::vector<std::size_t>>* knots = seg.knots.empty() ? nullptr : &seg.knots;
+    for (std::size_t s = 0; s < seg.shapes[0].size(); ++s) {
+        if (seg.shapes[0][s].pts.size() < 2) continue;
+        const std::vector<std::size_t>* kn = knots && s < knots->size() ? &(*knots)[s] : nullptr;
+        std::vector<std::string> values;
+        values.reserve(seg.shapes.size());
+        for (const anim::Shape& shape : seg.shapes) values.push_back(bezier_value(bez_of(shape[s], kn)));
+        if (!out.empty()) out += ',';
+        const bool moves = std::any_of(values.begin(), values.end(), [&](const std::string& v) { return v != values[0]; });
+        if (!moves) {
+            out += "{\"ty\":\"sh\",\"ks\":{\"a\":0,\"k\":" + values[0] + "}}";
+            ++keys;
+            continue;
+        }
+        out += "{\"ty\":\"sh\",\"ks\":{\"a\":1,\"k\":[";
+        for (std::size_t k = 0; k < values.size(); ++k) {
+            if (k) out += ',';
+            out += "{\"t\":";
+            time_value(out, seg.times[k]);
+            out += ",\"s\":[" + values[k] + "]";
+            if (k + 1 < values.size()) out += kLinear;
+            out += '}';
+        }
+        out += "]}}";
+        keys += values.size();
+    }
+    return keys;
+}
+
+/// The dash offset keys of @p path that matter in [ip, op]: from the last
+/// key at or before ip to the first at or after op.
+std::string dash_offset(const AnimatedPathData& path, double ip, double op) {
+    if (path.dash_times.empty()) return {};
+    std::size_t a = 0, b = path.dash_times.size() - 1;
+    while (a + 1 < path.dash_times.size() && path.dash_times[a + 1] <= ip) ++a;
+    while (b > a && path.dash_times[b - 1] >= op) --b;
+    const std::vector<double> t(path.dash_times.begin() + std::ptrdiff_t(a), path.dash_times.begin() + std::ptrdiff_t(b) + 1);
+    const std::vector<double> v(path.dash_values.begin() + std::ptrdiff_t(a), path.dash_values.begin() + std::ptrdiff_t(b) + 1);
+    return scalar(t, v);
+}
+
+} // namespace
+
+std::string to_lottie(const std::vector<AnimationFrame>& frames, double fps, const AnimatedSvgOptions& options,
+                      const Style& style, AnimatedSvgStats* stats) {
+    AnimatedSvgStats local;
+    AnimatedSvgStats& st = stats ? *stats : local;
+    st = {};
+    const int width = frames.empty() ? 16 : frames[0].drawing.width;
+    const int height = frames.empty() ? 16 : frames[0].drawing.height;
+    const std::size_t count = std::max<std::size_t>(frames.size(), 1);
+    const std::vector<AnimatedPathData> paths = animated_paths(frames, style, options);
+
+    // Drawing order as in the animated SVG: fills, then every kind's hidden
+    // lines, then every kind's visible lines.
+    std::vector<const AnimatedPathData*> order;
+    for (const AnimatedPathData& p : paths)
+        if (p.fill) order.push_back(&p);
+    const std::size_t kinds = frames.empty() ? 0 : frames[0].drawing.contours.size();
+    for (const int cls : {1, 0})
+        for (std::size_t c = 0; c < kinds; ++c)
+            for (const AnimatedPathData& p : paths)
+                if (!p.fill && p.contour == c && p.cls == cls) order.push_back(&p);
+
+    // Layers in drawing order; Lottie lists the topmost first.
+    std::vector<std::string> layers;
+    for (std::size_t n = 0; n < order.size(); ++n) {
+        const AnimatedPathData& path = *order[n];
+        std::string name, label;
+        StrokeStyle stroke;
+        if (path.fill) {
+            label = path.region_class;
+            name = "fill " + label;
+        } else {
+            const ContourSpec& spec = frames[0].drawing.contours[path.contour].spec;
+            const ContourStyle cs = style.contour(spec);
+            stroke = path.cls ? cs.hidden : cs.visible;
+            label = spec.label();
+            name = label + (path.cls ? " hidden" : " visible") + (path.brief ? " brief" : "");
+        }
+        name += " " + std::to_string(n + 1);
+        std::size_t keys = 0;
+        for (std::size_t s = 0; s < path.segments.size(); ++s) {
+            const PathSegment& seg = path.segments[s];
+            if (seg.times.empty()) continue;
+            const double ip = seg.times.front();
+            const double op = s + 1 < path.segments.size() && !path.segments[s + 1].times.empty()
+                                  ? path.segments[s + 1].times.front()
+                                  : double(path.last + 1);
+            if (op <= ip) continue;
+            std::string shapes;
+            const std::size_t k = segment_shapes(seg, shapes);
+            if (shapes.empty()) continue; // nothing drawn in this stretch
+            keys += k;
+            shapes += ',';
+            shapes += path.fill ? fill_style(*path.region) : stroke_style(stroke, dash_offset(path, ip, op));
+            std::string layer = "{\"ty\":4,\"nm\":";
+            json_string(layer, name + (path.segments.size() > 1 ? "." + std::to_string(s + 1) : std::string()));
+            layer += ",\"ip\":";
+            time_value(layer, ip);
+            layer += ",\"op\":";
+            time_value(layer, op);
+            layer += ",\"st\":0,\"ks\":{},\"shapes\":[" + shapes + "]}";
+            layers.push_back(std::move(layer));
+        }
+        st.path_stats.push_back(path_stats(path, label, keys));
+    }
+    std::string out = "{\"v\":\"5.7.4\",\"nm\":\"snaxels\",\"fr\":";
+    value(out, fps);
+    out += ",\"ip\":0,\"op\":" + std::to_string(count) + ",\"w\":" + std::to_string(width) +
+           ",\"h\":" + std::to_string(height) + ",\"ddd\":0,\"assets\":[],\"layers\":[";
+    std::size_t ind = 1;
+    bool first = true;
+    for (auto it = layers.rbegin(); it != layers.rend(); ++it) {
+        if (!first) out += ",\n";
+        first = false;
+        // The layer index goes in after "ty" (layers are numbered top down).
+        it->insert(std::string("{\"ty\":4").size(), ",\"ind\":" + std::to_string(ind++));
+        out += *it;
+    }
+    if (style.background != "none") {
+        if (!first) out += ",\n";
+        out += "{\"ty\":1,\"ind\":" + std::to_string(ind) + ",\"nm\":\"background\",\"ip\":0,\"op\":" +
+               std::to_string(count) + ",\"st\":0,\"ks\":{},\"sw\":" + std::to_string(width) +
+               ",\"sh\":" + std::to_string(height) + ",\"sc\":";
+        json_string(out, style.background.size() == 7 ? style.background : [&] {
+            char buf[8];
+            std::snprintf(buf, sizeof buf, "#%06x", unsigned(colour_rgb(style.background)));
+            return std::string(buf);
+        }());
+        out += '}';
+    }
+    out += "]}\n";
+    sum_stats(st);
+    return out;
+}
+
+} // namespace snaxels
