@@ -257,10 +257,11 @@ bool MainWindow::exportFrame(const QString& path) {
     }
 }
 
-void MainWindow::exportAnimation(const QString& path) {
+void MainWindow::exportAnimation(const QString& path, AnimationFormat format) {
     if (!mesh_ || exporting_) return;
     exporting_ = true;
     AnimationJob job = make_animation_job(style_, timeline_->spec(), view_->baseCamera(), light_);
+    job.format = format;
 
     auto* dialog = new QProgressDialog(tr("Exporting %1…").arg(QFileInfo(path).fileName()), tr("Cancel"), 0,
                                        job.animation.frames, this);
@@ -409,6 +410,14 @@ void MainWindow::createMenus() {
         if (!path.isEmpty()) exportAnimation(path);
     });
     exportAnim->setShortcut(QKeySequence(tr("Ctrl+E")));
+    QAction* exportLottie = exportMenu->addAction(tr("&Lottie…"), this, [this] {
+        QString path = QFileDialog::getSaveFileName(this, tr("Export Lottie"), QString(), tr("Lottie JSON (*.json)"));
+        if (path.isEmpty()) return;
+        if (QFileInfo(path).suffix().isEmpty()) path += ".json";
+        exportAnimation(path, AnimationFormat::Lottie);
+    });
+    exportLottie->setObjectName("exportLottie");
+    exportLottie->setShortcut(QKeySequence(tr("Ctrl+Alt+E")));
     QAction* exportStill = exportMenu->addAction(tr("Current &Frame as SVG…"), this, [this] {
         const QString path = QFileDialog::getSaveFileName(this, tr("Export Frame"), QString(), tr("SVG (*.svg)"));
         if (!path.isEmpty()) exportFrame(path);

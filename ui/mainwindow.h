@@ -12,6 +12,7 @@
 #include <QFutureWatcher>
 #include <QMainWindow>
 
+#include "core/animation/pipeline.h"
 #include "core/mesh/build.h"
 #include "core/project/project.h"
 #include "ui/contour_overlay.h"
@@ -77,10 +78,10 @@ class MainWindow : public QMainWindow {
     Timeline* timeline() const { return timeline_; }
     /// View > Colour Regions.
     QAction* regionsAction() const { return regionsAction_; }
-    /// Exports the timeline's animation as animated SVG to @p path off the
-    /// GUI thread, with a progress dialog that can cancel (nothing is
-    /// written then); ends with exportFinished or exportFailed.
-    void exportAnimation(const QString& path);
+    /// Exports the timeline's animation as animated SVG (or Lottie) to
+    /// @p path off the GUI thread, with a progress dialog that can cancel
+    /// (nothing is written then); ends with exportFinished or exportFailed.
+    void exportAnimation(const QString& path, AnimationFormat format = AnimationFormat::Svg);
     /// Writes the SVG of the current frame to @p path (atomically).
     bool exportFrame(const QString& path);
     /// The SVG the pane shows: what export writes for the current view.

@@ -7,6 +7,9 @@
 #include <QTextStream>
 #include <QTimer>
 #include <QFile>
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QJsonObject>
 #include <QLabel>
 #include <QTemporaryDir>
 #include <QSet>
@@ -404,6 +407,24 @@ class TestMainWindow : public QObject {
         QVERIFY(cli.waitForFinished(180000));
         QVERIFY2(cli.exitCode() == 0, cli.readAllStandardError().constData());
         QVERIFY2(readAll(dir.filePath("cli.svg")) == exported, "snaxels-cli render writes other bytes");
+
+        // Export > Lottie writes what snaxels-cli render writes for OUT.json.
+        QAction* lottie = reopened.findChild<QAction*>("exportLottie");
+        QVERIFY(lottie);
+        QVERIFY(lottie->text().contains("Lottie"));
+        finished.clear();
+        reopened.exportAnimation(dir.filePath("app.json"), snaxels::AnimationFormat::Lottie);
+        QVERIFY(finished.wait(180000));
+        const QByteArray app_lottie = readAll(dir.filePath("app.json"));
+        const QJsonDocument doc = QJsonDocument::fromJson(app_lottie);
+        QVERIFY2(doc.isObject() && doc.object().value("layers").toArray().size() > 1, "Export > Lottie wrote no layers");
+        QCOMPARE(doc.object().value("op").toInt(), 30);
+        QProcess cli_lottie;
+        cli_lottie.start(QCoreApplication::applicationDirPath() + "/snaxels-cli",
+                         {"render", projectFile, "-o", dir.filePath("cli.json")});
+        QVERIFY(cli_lottie.waitForFinished(180000));
+        QVERIFY2(cli_lottie.exitCode() == 0, cli_lottie.readAllStandardError().constData());
+        QVERIFY2(readAll(dir.filePath("cli.json")) == app_lottie, "snaxels-cli render -o OUT.json writes other bytes");
     }
 
     // Every edit is one undo step; unsaved changes are asked about before
