@@ -151,18 +151,18 @@ std::string stroke_style(const StrokeStyle& stroke, const std::string& dash_offs
     out += stroke.cap == "butt" ? '1' : stroke.cap == "square" ? '3' : '2';
     out += ",\"lj\":";
     out += stroke.join == "miter" ? '1' : stroke.join == "bevel" ? '3' : '2';
-    out += ",\"ml\":4";
+    if (stroke.join == "miter") out += ",\"ml\":4"; // SVG's default miter limit
     if (!stroke.dash.empty()) {
         // As SVG does, an odd list of lengths is repeated to make it even.
         std::vector<double> dash = stroke.dash;
         if (dash.size() % 2) dash.insert(dash.end(), stroke.dash.begin(), stroke.dash.end());
         out += ",\"d\":[";
         for (std::size_t k = 0; k < dash.size(); ++k) {
-            out += k % 2 ? "{\"n\":\"g\",\"nm\":\"gap\",\"v\":{\"a\":0,\"k\":" : "{\"n\":\"d\",\"nm\":\"dash\",\"v\":{\"a\":0,\"k\":";
+            out += k % 2 ? "{\"n\":\"g\",\"v\":{\"a\":0,\"k\":" : "{\"n\":\"d\",\"v\":{\"a\":0,\"k\":";
             value(out, dash[k]);
             out += "}},";
         }
-        out += "{\"n\":\"o\",\"nm\":\"offset\",\"v\":" + (dash_offset.empty() ? std::string("{\"a\":0,\"k\":0}") : dash_offset) + "}]";
+        out += "{\"n\":\"o\",\"v\":" + (dash_offset.empty() ? std::string("{\"a\":0,\"k\":0}") : dash_offset) + "}]";
     }
     return out + '}';
 }
