@@ -111,7 +111,7 @@ int run_animate(const std::vector<std::string>& argv) {
     AnimatedSvgOptions svg_options;
     if (const auto v = args.value("tolerance")) svg_options.tolerance_px = parse_number("tolerance", *v, -1e-12, 100.0);
     const auto output = args.value("output");
-    if (!output) throw UsageError("-o OUT.svg (or OUT.json for Lottie) is required");
+    if (!output) throw UsageError("-o OUT.svg is required (or OUT.json for Lottie)");
     const AnimationFormat format = parse_animation_format(args.value("format"), *output);
     const std::string frames_dir = args.value("frames-dir").value_or("");
     const std::string events_out = args.value("events").value_or("");

@@ -35,7 +35,7 @@ int run_render(const std::vector<std::string>& argv) {
         return 0;
     }
     const auto output = args.value("output");
-    if (!output) throw UsageError("-o OUT.svg (or OUT.json for Lottie) is required");
+    if (!output) throw UsageError("-o OUT.svg is required (or OUT.json for Lottie)");
     if (args.flag("still") && args.value("format") && *args.value("format") != "svg")
         throw UsageError("--still writes static SVG; --format lottie is for the animation");
     const AnimationFormat format =

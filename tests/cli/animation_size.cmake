@@ -3,7 +3,8 @@
 # persist: at least 80% of the stroke length x frames carried by paths shown
 # 30 frames or more, at most 10% of the paths shown one frame only, and
 # without SMIL only the paths of frame 0 show (measured by PERSISTENCE from
-# the SVG itself).
+# the SVG itself). Also writes the Lottie of the same animation and prints
+# both sizes.
 #   cmake -DCLI=... -DPERSISTENCE=... -DMESH=... -DOUT=<dir> -P animation_size.cmake
 file(REMOVE_RECURSE "${OUT}")
 file(MAKE_DIRECTORY "${OUT}")
@@ -36,5 +37,21 @@ execute_process(COMMAND ${PERSISTENCE} ${OUT}/horse.svg 360 --strokes 30 0.8 --o
 message("${out}${err}")
 if(NOT rc EQUAL 0)
   message(FATAL_ERROR "the animated SVG's paths do not persist as they should")
+endif()
+# The same animation as Lottie: its size beside the SVG's (docs/lottie.md
+# explains why a polyline vertex costs Lottie about three times what it
+# costs SVG path data); a regression guard, not the SVG's size.
+execute_process(COMMAND ${CLI} animate ${MESH} --turntable 1 --frames 360 --fps 24
+    --view-dir 1,0.2,0.3 --up 0,0,1 -o ${OUT}/horse.json
+  RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err TIMEOUT 600)
+if(NOT rc EQUAL 0)
+  message(FATAL_ERROR "animate -o horse.json failed (${rc}): ${err}")
+endif()
+file(SIZE ${OUT}/horse.json lottie)
+math(EXPR lottie_pct "100 * ${lottie} / ${animated}")
+message("Lottie ${lottie} bytes: ${lottie_pct}% of the animated SVG's ${animated}")
+math(EXPR lottie_limit "3 * ${animated}")
+if(lottie GREATER lottie_limit)
+  message(FATAL_ERROR "the Lottie file is more than three times the animated SVG")
 endif()
 file(REMOVE_RECURSE "${OUT}/frames")
