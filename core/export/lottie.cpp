@@ -158,11 +158,13 @@ std::string stroke_style(const StrokeStyle& stroke, const std::string& dash_offs
         if (dash.size() % 2) dash.insert(dash.end(), stroke.dash.begin(), stroke.dash.end());
         out += ",\"d\":[";
         for (std::size_t k = 0; k < dash.size(); ++k) {
-            out += k % 2 ? "{\"n\":\"g\",\"v\":{\"a\":0,\"k\":" : "{\"n\":\"d\",\"v\":{\"a\":0,\"k\":";
+            // lottie-web needs the names: without them it fails to draw the frame.
+            out += k % 2 ? "{\"n\":\"g\",\"nm\":\"gap\",\"v\":{\"a\":0,\"k\":"
+                         : "{\"n\":\"d\",\"nm\":\"dash\",\"v\":{\"a\":0,\"k\":";
             value(out, dash[k]);
             out += "}},";
         }
-        out += "{\"n\":\"o\",\"v\":" + (dash_offset.empty() ? std::string("{\"a\":0,\"k\":0}") : dash_offset) + "}]";
+        out += "{\"n\":\"o\",\"nm\":\"offset\",\"v\":" + (dash_offset.empty() ? std::string("{\"a\":0,\"k\":0}") : dash_offset) + "}]";
     }
     return out + '}';
 }

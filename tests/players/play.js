@@ -48,6 +48,11 @@ async function main() {
     try {
         const page = await browser.newPage();
         page.on('pageerror', (e) => { console.error('page error: ' + e.message); process.exitCode = 1; });
+        page.on('console', (m) => {
+            if (m.type() !== 'error') return;
+            console.error(m.text());
+            process.exitCode = 1;
+        });
         if (mode === 'grid') {
             const [out, cellText, colsText, ...frameTexts] = rest;
             const cell = Number(cellText), cols = Number(colsText), frames = frameTexts.map(Number);
@@ -64,6 +69,10 @@ async function main() {
                     const anim = lottie.loadAnimation({
                         container: div, renderer: 'svg', loop: false, autoplay: false,
                         animationData: JSON.parse(JSON.stringify(window.ANIM)),
+                    });
+                    // lottie-web catches what fails while it draws a frame and says so in an event.
+                    anim.addEventListener('error', (e) => {
+                        console.error('lottie-web: frame ' + frame + ': ' + (e.nativeError ? e.nativeError.message : e.type));
                     });
                     const seek = () => { anim.goToAndStop(frame, true); resolve(); };
                     // Loading may finish within loadAnimation, before a listener could hear it.
@@ -86,6 +95,9 @@ async function main() {
                 const t_load = performance.now();
                 const anim = lottie.loadAnimation({
                     container: div, renderer: 'svg', loop: false, autoplay: false, animationData: window.ANIM,
+                });
+                anim.addEventListener('error', (e) => {
+                    console.error('lottie-web: ' + (e.nativeError ? e.nativeError.message : e.type));
                 });
                 if (!anim.isLoaded) await new Promise((r) => anim.addEventListener('DOMLoaded', r));
                 const load_ms = performance.now() - t_load;

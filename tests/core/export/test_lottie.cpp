@@ -284,6 +284,7 @@ TEST(Lottie, FillsAndDashes) {
             EXPECT_EQ(d[1].at("n"), "g");
             EXPECT_NEAR(d[3].at("v").at("k").get<double>(), 6.0, 1e-9);
             EXPECT_EQ(d[6].at("n"), "o");
+            for (const json& item : d) EXPECT_TRUE(item.contains("nm")); // lottie-web draws nothing without them
             EXPECT_EQ(d[6].at("v").at("a"), 1); // fastened to the surface: the offset moves
         }
     }
