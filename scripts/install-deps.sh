@@ -1,9 +1,8 @@
 #!/usr/bin/env bash
-# Installs every Debian 12 package snaxels needs to build, run and test, and
-# the test players from npm (lottie-web, the Lottie schema, puppeteer-core),
-# pinned by tests/players/package-lock.json, into tests/players/node_modules.
-# Safe to run repeatedly: apt skips what is already installed, npm runs only
-# when the lock file changed since the last install.
+# Installs every Debian 12 package snaxels needs to build, run and test.
+# Safe to run repeatedly: apt skips what is already installed. (The Lottie
+# tests' lottie-web and schema are vendored in tests/players/vendor, pinned;
+# tests/players/fetch.sh refreshes them from npm.)
 #   scripts/install-deps.sh          install the packages that are missing
 #   scripts/install-deps.sh --list   print the package list, one a line
 # The test deps.packages checks that every system file the build reads comes
@@ -18,11 +17,8 @@ PACKAGES=(
   libgtest-dev libgmock-dev libbenchmark-dev
   xvfb xauth libgl1-mesa-dri mesa-utils
   chromium fonts-dejavu-core librsvg2-bin
-  librlottie-dev nodejs
+  librlottie-dev python3-jsonschema
 )
-# npm: Debian's package, unless the installed node brings its own (NodeSource's
-# nodejs does, and conflicts with Debian's npm).
-if ! command -v npm >/dev/null 2>&1; then PACKAGES+=(npm); fi
 
 if [ "${1:-}" = --list ]; then
   printf '%s\n' "${PACKAGES[@]}"
@@ -45,10 +41,3 @@ if ((${#missing[@]})); then
   $SUDO apt-get install -y -qq --no-install-recommends "${missing[@]}"
 fi
 
-root=$(cd "$(dirname "$0")/.." && pwd)
-players="$root/tests/players"
-if ! cmp -s "$players/package-lock.json" "$players/node_modules/.snaxels-lock.json"; then
-  echo "snaxels: installing the test players from npm into tests/players/node_modules"
-  (cd "$players" && npm ci --no-audit --no-fund --loglevel=error)
-  cp "$players/package-lock.json" "$players/node_modules/.snaxels-lock.json"
-fi
