@@ -18,6 +18,7 @@ const char* view_colour(ContourKind kind) {
     case ContourKind::Shadow: return "#2f7fe0";
     case ContourKind::Isophote: return "#a05fd0";
     case ContourKind::Gleam: return "#ffc000";
+    case ContourKind::Parabolic: return "#3ddc84";
     }
     return "#e8402a";
 }

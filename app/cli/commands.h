@@ -21,6 +21,7 @@ int run_contours(const std::vector<std::string>& args);
 int run_bench(const std::vector<std::string>& args);
 int run_animate(const std::vector<std::string>& args);
 int run_render(const std::vector<std::string>& args);
+int run_parabolic(const std::vector<std::string>& args);
 
 /// The sentence every command's help uses to say what MESH may be.
 extern const char* const kMeshArgumentHelp;

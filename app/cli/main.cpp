@@ -25,6 +25,7 @@ const std::vector<Command>& commands() {
         {"contours", "find visual, shadow, isophote and gleam contours; JSON and SVG", run_contours},
         {"animate", "track contours through an animation; animated SVG whose paths move", run_animate},
         {"render", "render a project saved by the application (animated or one frame)", run_render},
+        {"parabolic", "find parabolic points and curves from visual events over the view sphere", run_parabolic},
         {"bench", "time import, topology and contour extraction on a mesh", run_bench},
     };
     return all;

@@ -174,6 +174,7 @@ const char* default_stroke(ContourKind kind) {
     case ContourKind::Shadow: return "#2f5fa8";
     case ContourKind::Isophote: return "#8a4fb0";
     case ContourKind::Gleam: return "#d98c00";
+    case ContourKind::Parabolic: return "#1f8a4c";
     }
     return "#111111";
 }

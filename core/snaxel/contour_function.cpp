@@ -14,12 +14,13 @@ std::string ContourSpec::kind_name() const {
     case ContourKind::Shadow: return "shadow";
     case ContourKind::Isophote: return "isophote";
     case ContourKind::Gleam: return "gleam";
+    case ContourKind::Parabolic: return "parabolic";
     }
     return "visual";
 }
 
 std::string ContourSpec::label() const {
-    if (kind == ContourKind::Visual || kind == ContourKind::Shadow) return kind_name();
+    if (kind == ContourKind::Visual || kind == ContourKind::Shadow || kind == ContourKind::Parabolic) return kind_name();
     char buf[64];
     std::snprintf(buf, sizeof buf, "%s:%g", kind_name().c_str(), k);
     return buf;
@@ -29,15 +30,15 @@ ContourSpec ContourSpec::parse(const std::string& text) {
     const auto colon = text.find(':');
     const std::string name = text.substr(0, colon);
     ContourSpec spec;
-    if (name == "visual" || name == "shadow") {
+    if (name == "visual" || name == "shadow" || name == "parabolic") {
         if (colon != std::string::npos)
             throw Error("contour kind '" + text + "': " + name + " takes no value");
-        spec.kind = name == "visual" ? ContourKind::Visual : ContourKind::Shadow;
+        spec.kind = name == "visual" ? ContourKind::Visual : name == "shadow" ? ContourKind::Shadow : ContourKind::Parabolic;
         return spec;
     }
     if (name != "isophote" && name != "gleam")
         throw Error("unknown contour kind '" + text +
-                    "' (expected visual, shadow, isophote:K or gleam:K)");
+                    "' (expected visual, shadow, isophote:K, gleam:K or parabolic)");
     spec.kind = name == "isophote" ? ContourKind::Isophote : ContourKind::Gleam;
     if (colon == std::string::npos)
         throw Error("contour kind '" + text + "' needs a value, for example " + name +
@@ -61,7 +62,8 @@ double ContourFunction::evaluate(const glm::dvec3& p, const glm::dvec3& n) const
     const glm::dvec3 v = camera_.to_viewer(p);
     const double nv = glm::dot(n, v);
     switch (spec_.kind) {
-    case ContourKind::Visual: return nv;
+    case ContourKind::Visual:
+    case ContourKind::Parabolic: return nv; // not a contour function; see ContourKind
     case ContourKind::Shadow: return std::min(glm::dot(n, light_.to_light(p)), nv);
     case ContourKind::Isophote: return std::min(glm::dot(n, light_.to_light(p)) - spec_.k, nv);
     case ContourKind::Gleam: {

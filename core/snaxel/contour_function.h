@@ -10,17 +10,19 @@
 
 namespace snaxels {
 
-enum class ContourKind { Visual, Shadow, Isophote, Gleam };
+enum class ContourKind { Visual, Shadow, Isophote, Gleam, Parabolic };
 
 /// Which contour: visual N.V; shadow min(N.L, N.V); diffuse isophote
 /// min(N.L - k, N.V); specular gleam min(V.R - k, N.V) with R = 2(N.L)N - L.
+/// Parabolic curves have no contour function: they are the mesh's, found
+/// from visual events over all views (core/parabolic), the same from any view.
 struct ContourSpec {
     ContourKind kind = ContourKind::Visual;
     double k = 0.0;
 
-    /// "visual", "shadow", "isophote" or "gleam".
+    /// "visual", "shadow", "isophote", "gleam" or "parabolic".
     std::string kind_name() const;
-    /// "visual", "shadow", "isophote:0.5", "gleam:0.9": what parse() reads.
+    /// "visual", "shadow", "isophote:0.5", "gleam:0.9", "parabolic": what parse() reads.
     std::string label() const;
     /// Parses the CLI's --kind values; throws snaxels::Error when malformed.
     static ContourSpec parse(const std::string& text);

@@ -1,5 +1,7 @@
 #include "core/snaxel/snaxel_engine.h"
 
+#include "core/parabolic/parabolic.h"
+
 #include <chrono>
 #include <cmath>
 #include <numeric>
@@ -172,6 +174,13 @@ ContourResult SnaxelEngine::compute(const ContourSpec& spec, const Camera& camer
     const auto start = std::chrono::steady_clock::now();
     ContourResult result;
     result.spec = spec;
+    if (spec.kind == ContourKind::Parabolic) {
+        // The mesh's parabolic curves: the same from every view (no f, no regions).
+        const std::shared_ptr<const ParabolicResult> curves = topo_.parabolic ? topo_.parabolic : cached_parabolic(topo_);
+        result.fronts = parabolic_fronts(topo_, *curves);
+        result.stats.ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+        return result;
+    }
     const ContourFunction f(spec, camera, light);
     const std::size_t nv = topo_.n_vertices();
 

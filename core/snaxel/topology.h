@@ -14,7 +14,8 @@
 
 namespace snaxels {
 
-struct MeshRefinement; // core/snaxel/refine.h
+struct MeshRefinement;  // core/snaxel/refine.h
+struct ParabolicResult; // core/parabolic/parabolic.h
 
 struct MeshTopology {
     static constexpr std::int32_t kNone = -1;
@@ -32,6 +33,10 @@ struct MeshTopology {
     /// Set on a refined coarse mesh (refine_topology): how the vertices past
     /// the original ones follow them.
     std::shared_ptr<const MeshRefinement> refinement;
+    /// When set, the parabolic curves the engine draws for this mesh (found
+    /// once, on the pose a job starts from, and carried by its edges as it
+    /// moves); else the engine finds them (cached_parabolic).
+    std::shared_ptr<const ParabolicResult> parabolic;
 
     std::size_t n_vertices() const { return positions.size(); }
     /// The mesh's own vertices (the first ones; all of them unless refined).

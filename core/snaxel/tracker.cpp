@@ -56,8 +56,19 @@ const TrackedFrame& ContourTracker::step(const Camera& camera, const Light& ligh
     ++frame_number_;
     if (fault_injected("tracker-step", frame_number_))
         throw InternalError("fault injected in the tracker at frame " + std::to_string(frame_number_) + " (SNAXELS_FAULT)");
-    if (frame_number_ == 0) start(camera, light);
-    else track(camera, light);
+    if (frame_number_ == 0) {
+        start(camera, light);
+    } else if (spec_.kind == ContourKind::Parabolic) {
+        // The mesh's own curves: the same snaxels on the same edges every
+        // frame (they move with a moving mesh), no events.
+        frame_.frame = frame_number_;
+        frame_.events.clear();
+        std::fill(frame_.born_from.begin(), frame_.born_from.end(), 0);
+        frame_.fanouts = frame_.retreats = 0;
+        frame_.contour.stats = ContourStats{};
+    } else {
+        track(camera, light);
+    }
     return frame_;
 }
 
@@ -68,7 +79,8 @@ void ContourTracker::start(const Camera& camera, const Light& light) {
     frame_.contour = engine.compute(spec_, camera, light, options_);
     const Fronts& fronts = frame_.contour.fronts;
     inside_.assign(topo_.n_vertices(), 0);
-    for (std::size_t v = 0; v < inside_.size(); ++v) inside_[v] = frame_.contour.vertex_f[v] >= 0.0;
+    if (frame_.contour.vertex_f.size() == inside_.size()) // (parabolic curves bound no vertex set)
+        for (std::size_t v = 0; v < inside_.size(); ++v) inside_[v] = frame_.contour.vertex_f[v] >= 0.0;
     frame_.snaxel_id.resize(fronts.snaxels.size());
     frame_.born_from.assign(fronts.snaxels.size(), 0);
     snaxel_position_.resize(fronts.snaxels.size());

@@ -215,16 +215,13 @@ struct Parser {
                 check_attributes(child, {"kind", "k"});
                 const std::string kind = child.attribute("kind").value();
                 ContourSpec spec;
-                if (kind == "visual" || kind == "shadow") {
+                if (kind == "visual" || kind == "shadow" || kind == "parabolic") {
                     if (child.attribute("k")) fail(child, "a " + kind + " contour takes no k");
-                    spec.kind = kind == "visual" ? ContourKind::Visual : ContourKind::Shadow;
+                    spec.kind = kind == "visual" ? ContourKind::Visual : kind == "shadow" ? ContourKind::Shadow : ContourKind::Parabolic;
                 } else if (kind == "isophote" || kind == "gleam") {
                     if (!child.attribute("k")) fail(child, "an " + kind + " contour needs k (a cosine in -1 .. 1)");
                     spec.kind = kind == "isophote" ? ContourKind::Isophote : ContourKind::Gleam;
                     spec.k = number(child, "k", 0.0, -1.0, 1.0);
-                } else if (kind == "parabolic") {
-                    warn(child, "parabolic contours are not drawn yet; <contour kind=\"parabolic\"> is ignored");
-                    continue;
                 } else {
                     fail(child, "kind=\"" + kind + "\" must be visual, shadow, isophote, gleam or parabolic");
                 }
