@@ -98,7 +98,8 @@ bool pose_scene(const LoadedMesh& mesh, ContourScene& scene, const std::optional
 
 OverlayResult compute_overlay(const LoadedMesh& mesh, ContourScene& scene, const Camera& camera,
                               const Style& style, const std::optional<Light>& light,
-                              const std::optional<ClipPose>& pose) {
+                              const std::optional<ClipPose>& pose,
+                              std::shared_ptr<const ParabolicResult> parabolic, bool show_parabolic) {
     const auto start = std::chrono::steady_clock::now();
     OverlayResult out;
     try {
@@ -108,9 +109,18 @@ OverlayResult compute_overlay(const LoadedMesh& mesh, ContourScene& scene, const
         out.error = QString::fromStdString(e.what());
         return out;
     }
-    const StillJob job = make_still_job(style, camera, light);
+    scene.topology.parabolic = parabolic;
+    StillJob job = make_still_job(style, camera, light);
+    auto is_parabolic = [](const ContourSpec& k) { return k.kind == ContourKind::Parabolic; };
+    if (!parabolic) job.kinds.erase(std::remove_if(job.kinds.begin(), job.kinds.end(), is_parabolic), job.kinds.end());
     StillOutput still = render_still(mesh, scene.topology, scene.rays.get(), job);
     out.light = job.light;
+    if (show_parabolic && parabolic && std::none_of(job.kinds.begin(), job.kinds.end(), is_parabolic)) {
+        // View > Parabolic Curves: in the 3-D view only.
+        const SnaxelEngine engine(scene.topology);
+        still.results.push_back(engine.compute(ContourSpec{ContourKind::Parabolic, 0.0}, job.camera, job.light));
+        still.visibility.push_back(VisibilitySampler(*scene.rays, job.camera).classify(engine, still.results.back()));
+    }
 
     out.svg = std::move(still.svg);
     for (std::size_t c = 0; c < still.results.size(); ++c) {

@@ -9,6 +9,7 @@
 #include <QString>
 
 #include "core/mesh/build.h"
+#include "core/parabolic/parabolic.h"
 #include "core/scene/animation.h"
 #include "core/style/style.h"
 #include "core/snaxel/snaxel_engine.h"
@@ -66,8 +67,14 @@ const char* view_colour(ContourKind kind);
 /// SVG that export writes, from one computation.
 /// With @p pose the mesh is first posed at that clip frame; without, it is
 /// put back in its loaded pose if a clip had moved it.
+/// The mesh's parabolic curves are drawn (as the style says) once @p
+/// parabolic holds them (they are left out until then: finding them takes
+/// seconds, see MainWindow::ensureParabolic); with @p show_parabolic they are
+/// drawn in the 3-D view even when the style does not draw them (View >
+/// Parabolic Curves), and not in the SVG, which stays what export writes.
 OverlayResult compute_overlay(const LoadedMesh& mesh, ContourScene& scene, const Camera& camera,
                               const Style& style, const std::optional<Light>& light = std::nullopt,
-                              const std::optional<ClipPose>& pose = std::nullopt);
+                              const std::optional<ClipPose>& pose = std::nullopt,
+                              std::shared_ptr<const ParabolicResult> parabolic = nullptr, bool show_parabolic = false);
 
 } // namespace snaxels::ui

@@ -84,6 +84,7 @@ MainWindow::MainWindow(QWidget* parent)
     addDockWidget(Qt::RightDockWidgetArea, dock);
     connect(styleEditor_, &StyleEditor::styleChanged, this, [this](const Style& style) {
         style_ = style;
+        ensureParabolic(); // a style that draws parabolic curves needs them found
         scheduleContours();
     });
     committedStyle_ = styleEditor_->text();
@@ -158,6 +159,38 @@ MainWindow::MainWindow(QWidget* parent)
     connect(view_, &MeshView::cameraChanged, this, &MainWindow::scheduleContours);
     connect(&contourWatcher_, &QFutureWatcher<OverlayResult>::finished, this, &MainWindow::onContoursFinished);
     statusBar()->addPermanentWidget(busy_);
+    parabolicProgress_ = new QProgressBar(this);
+    parabolicProgress_->setObjectName("parabolicProgress");
+    parabolicProgress_->setFormat(tr("Parabolic curves %p%"));
+    parabolicProgress_->setMaximumWidth(220);
+    parabolicProgress_->hide();
+    statusBar()->addPermanentWidget(parabolicProgress_);
+    connect(&parabolicWatcher_, &QFutureWatcher<std::shared_ptr<const ParabolicResult>>::finished, this, [this] {
+        parabolicProgress_->hide();
+        std::shared_ptr<const ParabolicResult> result = parabolicWatcher_.result();
+        if (!scene_ || parabolicScene_ != scene_.get()) { // another mesh since: start over for it
+            ensureParabolic();
+            return;
+        }
+        if (!result) {
+            parabolicScene_ = nullptr;
+            const QString error = parabolicError_ && !parabolicError_->isEmpty()
+                                      ? tr("Parabolic curves failed: %1").arg(*parabolicError_)
+                                      : QString();
+            if (!error.isEmpty()) statusBar()->showMessage(error, 8000);
+            emit parabolicFinished(error.isEmpty() ? tr("cancelled") : error);
+            return;
+        }
+        parabolic_ = std::move(result);
+        statusBar()->showMessage(tr("Parabolic curves: %1 curves from %2 visual events over %3 view directions, %4 s")
+                                     .arg(parabolic_->curves.size())
+                                     .arg(parabolic_->events)
+                                     .arg(parabolic_->samples)
+                                     .arg(parabolic_->ms / 1000.0, 0, 'f', 1),
+                                 6000);
+        emit parabolicFinished(QString());
+        scheduleContours();
+    });
     createMenus();
     connect(&watcher_, &QFutureWatcher<LoadResult>::finished, this, &MainWindow::onLoadFinished);
 
@@ -338,8 +371,70 @@ void MainWindow::startContours() {
     if (const AnimationSpec spec = timeline_->spec();
         spec.kind == AnimationSpec::Kind::Clip || spec.kind == AnimationSpec::Kind::Sequence)
         pose = ClipPose{spec, timeline_->frame()}; // the driver adds the in point
-    contourWatcher_.setFuture(QtConcurrent::run([mesh, scene, camera, style, light, pose] {
-        return compute_overlay(*mesh, *scene, camera, style, light, pose);
+    const std::shared_ptr<const ParabolicResult> parabolic = parabolicScene_ == scene.get() ? parabolic_ : nullptr;
+    const bool showParabolic = parabolicAction_ && parabolicAction_->isChecked();
+    contourWatcher_.setFuture(QtConcurrent::run([mesh, scene, camera, style, light, pose, parabolic, showParabolic] {
+        return compute_overlay(*mesh, *scene, camera, style, light, pose, parabolic, showParabolic);
+    }));
+}
+
+bool MainWindow::wantsParabolic() const {
+    if (parabolicAction_ && parabolicAction_->isChecked()) return true;
+    return std::any_of(style_.contours.begin(), style_.contours.end(),
+                       [](const ContourStyle& c) { return c.spec.kind == ContourKind::Parabolic; });
+}
+
+void MainWindow::ensureParabolic() {
+    if (!scene_ || !wantsParabolic()) return;
+    if (parabolicScene_ == scene_.get() && (parabolic_ || parabolicWatcher_.isRunning())) return; // found or on the way
+    if (parabolicWatcher_.isRunning()) { // for another mesh: stop it; its end starts this one
+        parabolicCancel_->store(true);
+        parabolicScene_ = scene_.get();
+        return;
+    }
+    parabolicScene_ = scene_.get();
+    // The loaded pose's connectivity and positions (the overlay may be
+    // posing scene_->topology on its thread meanwhile: only the rest copies
+    // and the fixed connectivity are read here).
+    auto topology = std::make_shared<MeshTopology>();
+    const MeshTopology& t = scene_->topology;
+    topology->positions = scene_->rest_positions;
+    topology->normals = scene_->rest_normals;
+    topology->edge_vertices = t.edge_vertices;
+    topology->edge_faces = t.edge_faces;
+    topology->face_vertices = t.face_vertices;
+    topology->face_edges = t.face_edges;
+    topology->ring_start = t.ring_start;
+    topology->ring = t.ring;
+    topology->ring_edge = t.ring_edge;
+    topology->mean_edge_length = t.mean_edge_length;
+    topology->refinement = t.refinement;
+    parabolicCancel_ = std::make_shared<std::atomic<bool>>(false);
+    ParabolicOptions options;
+    QPointer<QProgressBar> bar(parabolicProgress_);
+    options.progress = [bar](int done, int total) {
+        QMetaObject::invokeMethod(
+            qApp,
+            [bar, done, total] {
+                if (!bar) return;
+                bar->setRange(0, total);
+                bar->setValue(done);
+            },
+            Qt::QueuedConnection);
+    };
+    options.cancelled = [cancel = parabolicCancel_] { return cancel->load(); };
+    parabolicProgress_->setRange(0, 0);
+    parabolicProgress_->show();
+    parabolicError_ = std::make_shared<QString>(); // written by the search, read when it has finished
+    parabolicWatcher_.setFuture(QtConcurrent::run([topology, options, error = parabolicError_]() -> std::shared_ptr<const ParabolicResult> {
+        try {
+            return cached_parabolic(*topology, options);
+        } catch (const ParabolicCancelled&) {
+            return nullptr;
+        } catch (const std::exception& e) {
+            *error = QString::fromStdString(e.what());
+            return nullptr;
+        }
     }));
 }
 
@@ -453,6 +548,18 @@ void MainWindow::createMenus() {
         shading.enabled = on;
         view_->setRegionShading(std::move(shading));
     });
+    parabolicAction_ = viewMenu->addAction(tr("&Parabolic Curves"));
+    parabolicAction_->setObjectName("parabolicCurves");
+    parabolicAction_->setCheckable(true);
+    parabolicAction_->setShortcut(QKeySequence(tr("Ctrl+Shift+P")));
+    parabolicAction_->setToolTip(tr("Draw the mesh's parabolic curves, where it turns from dome- to saddle-shaped "
+                                    "(found once per mesh from visual events over all views)"));
+    parabolicAction_->setChecked(QSettings().value("view/parabolic", false).toBool());
+    connect(parabolicAction_, &QAction::toggled, this, [this](bool on) {
+        QSettings().setValue("view/parabolic", on);
+        ensureParabolic();
+        scheduleContours();
+    });
     viewMenu->addAction(tr("&Fit SVG Pane"), svgPane_, &SvgPane::fit);
 }
 
@@ -526,6 +633,8 @@ void MainWindow::onLoadFinished() {
     if (contourWatcher_.isRunning()) contoursPending_ = true; // its contours are of the old mesh
     mesh_ = result.mesh;
     scene_ = result.scene;
+    parabolic_.reset(); // the old mesh's
+    ensureParabolic();
     view_->setContours({});
     meshSpec_ = loadingSpec_;
     ++restoring_; // framing the new mesh is not an edit
@@ -603,6 +712,7 @@ void MainWindow::closeEvent(QCloseEvent* event) {
     QSettings settings;
     settings.setValue("window/geometry", saveGeometry());
     settings.setValue("window/state", saveState());
+    if (parabolicCancel_) parabolicCancel_->store(true); // a search under way ends at its next step
     event->accept();
 }
 

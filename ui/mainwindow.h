@@ -78,6 +78,11 @@ class MainWindow : public QMainWindow {
     Timeline* timeline() const { return timeline_; }
     /// View > Colour Regions.
     QAction* regionsAction() const { return regionsAction_; }
+    /// View > Parabolic Curves.
+    QAction* parabolicAction() const { return parabolicAction_; }
+    /// The parabolic curves of the mesh, once found (null before, or while
+    /// they are being found off the GUI thread).
+    std::shared_ptr<const ParabolicResult> parabolicCurves() const { return parabolic_; }
     /// Exports the timeline's animation as animated SVG (or Lottie) to
     /// @p path off the GUI thread, with a progress dialog that can cancel
     /// (nothing is written then); ends with exportFinished or exportFailed.
@@ -96,6 +101,8 @@ class MainWindow : public QMainWindow {
     void loadFailed(const QString& message);
     /// New contours are on the 3-D view.
     void contoursUpdated();
+    /// The parabolic curves of the loaded mesh were found (or the search failed: @p error).
+    void parabolicFinished(const QString& error);
     void exportFinished(const QString& path);
     void exportFailed(const QString& message);
     void projectOpened(const QString& path);
@@ -126,6 +133,10 @@ class MainWindow : public QMainWindow {
     Light frameLight() const;
     void startContours();
     void onContoursFinished();
+    /// Finds the mesh's parabolic curves off the GUI thread (with progress in
+    /// the status bar) when the view or the style asks for them.
+    void ensureParabolic();
+    bool wantsParabolic() const;
     void addRecentFile(const QString& path);
     void rebuildRecentMenu();
 
@@ -140,6 +151,13 @@ class MainWindow : public QMainWindow {
     Style style_;
     QMenu* recentMenu_ = nullptr;
     QAction* regionsAction_ = nullptr;
+    QAction* parabolicAction_ = nullptr;
+    QProgressBar* parabolicProgress_ = nullptr;
+    std::shared_ptr<const ParabolicResult> parabolic_;
+    const ContourScene* parabolicScene_ = nullptr; ///< the scene a search runs (or ran) for
+    std::shared_ptr<std::atomic<bool>> parabolicCancel_;
+    QFutureWatcher<std::shared_ptr<const ParabolicResult>> parabolicWatcher_;
+    std::shared_ptr<QString> parabolicError_; ///< the running search's error, if any
     QLabel* meshLabel_;
     QProgressBar* busy_;
     QFutureWatcher<LoadResult> watcher_;

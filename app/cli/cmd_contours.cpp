@@ -7,6 +7,7 @@
 
 #include "app/cli/args.h"
 #include "app/cli/commands.h"
+#include "app/cli/progress.h"
 #include "app/cli/scene_options.h"
 #include "core/error.h"
 #include "core/animation/still.h"
@@ -28,8 +29,10 @@ int run_contours(const std::vector<std::string>& argv) {
         std::string(
             "Finds contours on MESH with snaxels and writes them as JSON (docs/contours-json.md)\n"
             "and/or SVG; without --json or --svg prints a summary. KIND is visual (N.V = 0),\n"
-            "shadow (N.L = 0 on front faces), isophote:K (N.L = K) or gleam:K (V.R = K), K a\n"
-            "cosine in [-1, 1]. The default view is orthographic along +Z (looking toward +Z)\n"
+            "shadow (N.L = 0 on front faces), isophote:K (N.L = K), gleam:K (V.R = K), K a\n"
+            "cosine in [-1, 1], or parabolic (the mesh's parabolic curves, found from visual\n"
+            "events over all views: see `snaxels-cli parabolic`). The default view is\n"
+            "orthographic along +Z (looking toward +Z)\n"
             "and the default light comes from the viewer's upper left.\n\n") +
             kMeshArgumentHelp,
         [] {
@@ -57,7 +60,7 @@ int run_contours(const std::vector<std::string>& argv) {
     const Camera& camera = scene.camera;
     const Light& light = *scene.light;
 
-    const MeshTopology topology = engine_topology(loaded.mesh, scene.refine);
+    MeshTopology topology = engine_topology(loaded.mesh, scene.refine);
     StillJob job;
     job.camera = camera;
     job.light = light;
@@ -67,6 +70,7 @@ int run_contours(const std::vector<std::string>& argv) {
     job.planar_map = planar;
     job.map_kind = scene.planar_map.value_or(PlanarMapKind::Snaxel);
     if (scene.check) job.engine.check_invariants = true;
+    find_parabolic_with_progress(topology, job.kinds);
     const StillOutput still = render_still(loaded, topology, nullptr, job);
     const std::vector<ContourResult>& results = still.results;
     const std::vector<ContourVisibility>& visibility = still.visibility;

@@ -70,7 +70,7 @@ int run_parabolic(const std::vector<std::string>& argv) {
     const std::string mesh = args.positional()[0];
     const LoadedMesh loaded = load_mesh(mesh);
     const MeshTopology topology = engine_topology(loaded.mesh);
-    Progress progress(0, ::isatty(2));
+    Progress progress(0, ::isatty(2), "view steps");
     options.progress = [&](int done, int total) {
         progress.set_total(total);
         progress.update(done);

@@ -68,6 +68,7 @@ int run_render(const std::vector<std::string>& argv) {
     }
     const int frame = args.value("frame") ? parse_int("frame", *args.value("frame"), 0, 100000) : project.frame;
     MeshTopology topology = engine_topology(loaded.mesh, job.refine);
+    find_parabolic_with_progress(topology, job.kinds); // on the pose as loaded, as the animation does
     const glm::dvec3 centre = 0.5 * (loaded.report.bbox_min + loaded.report.bbox_max);
     FrameDriver driver(job.animation, loaded, topology, job.camera, job.light, centre, mesh_path);
     StillJob still;

@@ -4,25 +4,28 @@
 
 #include <unistd.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "app/cli/args.h"
 
 #include "core/animation/pipeline.h"
+#include "core/parabolic/parabolic.h"
 
 namespace snaxels::cli {
 
 class Progress {
   public:
-    Progress(int total, bool enabled) : total_(total), enabled_(enabled) {}
+    Progress(int total, bool enabled, const char* unit = "frames") : total_(total), enabled_(enabled), unit_(unit) {}
     void set_total(int total) { total_ = total; }
     void update(int done) {
         if (!enabled_) return;
         const int width = 40, filled = total_ ? width * done / total_ : width;
-        std::fprintf(stderr, "\r[%.*s%*s] %d/%d frames", filled,
-                     "########################################", width - filled, "", done, total_);
+        std::fprintf(stderr, "\r[%.*s%*s] %d/%d %s", filled,
+                     "########################################", width - filled, "", done, total_, unit_);
         std::fflush(stderr);
     }
     void finish() {
@@ -32,7 +35,25 @@ class Progress {
   private:
     int total_;
     bool enabled_;
+    const char* unit_;
 };
+
+/// Finds @p topology's parabolic curves (when @p kinds draw them and it has
+/// none yet) with a counter of view steps on standard error (when it is a
+/// terminal), and keeps them on the topology for the engine.
+inline void find_parabolic_with_progress(MeshTopology& topology, const std::vector<ContourSpec>& kinds) {
+    if (topology.parabolic ||
+        std::none_of(kinds.begin(), kinds.end(), [](const ContourSpec& k) { return k.kind == ContourKind::Parabolic; }))
+        return;
+    Progress progress(0, ::isatty(2), "view steps (parabolic curves)");
+    ParabolicOptions options;
+    options.progress = [&](int done, int total) {
+        progress.set_total(total);
+        progress.update(done);
+    };
+    topology.parabolic = cached_parabolic(topology, options);
+    progress.finish();
+}
 
 /// The format of the animation written to @p output: --format (svg or
 /// lottie) when given, else by the file's extension (.json: Lottie).
@@ -46,6 +67,12 @@ inline AnimationFormat parse_animation_format(const std::optional<std::string>& 
 /// Runs @p job with a frame counter on standard error (when it is a terminal).
 inline AnimationOutput run_animation_with_progress(const LoadedMesh& mesh, const std::string& mesh_path, AnimationJob job) {
     Progress progress(0, ::isatty(2));
+    Progress parabolic(0, ::isatty(2), "view steps (parabolic curves)");
+    job.parabolic_progress = [&](int done, int total) {
+        parabolic.set_total(total);
+        parabolic.update(done);
+        if (done == total) parabolic.finish();
+    };
     job.progress = [&](int done, int total) {
         progress.set_total(total);
         progress.update(done);

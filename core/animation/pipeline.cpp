@@ -12,6 +12,7 @@
 #include "core/export/dash_phase.h"
 #include "core/export/lottie.h"
 #include "core/export/svg.h"
+#include "core/parabolic/parabolic.h"
 #include "core/util/atomic_file.h"
 #include "core/planarmap/region_tracker.h"
 #include "core/util/parallel.h"
@@ -42,6 +43,18 @@ AnimationJob make_animation_job(const Style& style, const AnimationSpec& animati
 AnimationOutput run_animation(const LoadedMesh& mesh, const std::string& mesh_path, const AnimationJob& job) {
     AnimationOutput out;
     MeshTopology topology = engine_topology(mesh.mesh, job.refine);
+    // Parabolic curves are the mesh's: found once, on the pose as loaded,
+    // and carried by the edges as the mesh moves.
+    if (std::any_of(job.kinds.begin(), job.kinds.end(), [](const ContourSpec& k) { return k.kind == ContourKind::Parabolic; })) {
+        ParabolicOptions options;
+        options.progress = job.parabolic_progress;
+        options.cancelled = job.cancelled;
+        try {
+            topology.parabolic = cached_parabolic(topology, options);
+        } catch (const ParabolicCancelled&) {
+            throw AnimationCancelled();
+        }
+    }
     const glm::dvec3 mesh_centre = 0.5 * (mesh.report.bbox_min + mesh.report.bbox_max);
     FrameDriver driver(job.animation, mesh, topology, job.camera, job.light, mesh_centre, mesh_path);
     int frames = job.animation.frames;

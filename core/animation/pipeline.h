@@ -45,6 +45,9 @@ struct AnimationJob {
     std::string frames_dir; ///< when set, every frame is also written there as static SVG
     /// Called after each frame with (frames done, frames in all).
     std::function<void(int, int)> progress;
+    /// When a kind is parabolic and the curves are not known yet: called as
+    /// the search over view directions goes, with (steps done, in all).
+    std::function<void(int, int)> parabolic_progress;
     /// Asked before each frame; true stops the run with AnimationCancelled.
     std::function<bool()> cancelled;
 };
