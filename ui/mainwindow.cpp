@@ -7,6 +7,7 @@
 #include <QPointer>
 #include <QProgressDialog>
 #include <atomic>
+#include <utility>
 #include <glm/gtx/rotate_vector.hpp>
 #include <QDockWidget>
 #include <QDragEnterEvent>
@@ -168,12 +169,12 @@ MainWindow::MainWindow(QWidget* parent)
     connect(&parabolicWatcher_, &QFutureWatcher<std::shared_ptr<const ParabolicResult>>::finished, this, [this] {
         parabolicProgress_->hide();
         std::shared_ptr<const ParabolicResult> result = parabolicWatcher_.result();
-        if (!scene_ || parabolicScene_ != scene_.get()) { // another mesh since: start over for it
+        const int searchedFor = std::exchange(searchFor_, -1);
+        if (!scene_ || searchedFor != meshGeneration_) { // another mesh since: start over for it
             ensureParabolic();
             return;
         }
         if (!result) {
-            parabolicScene_ = nullptr;
             const QString error = parabolicError_ && !parabolicError_->isEmpty()
                                       ? tr("Parabolic curves failed: %1").arg(*parabolicError_)
                                       : QString();
@@ -182,6 +183,7 @@ MainWindow::MainWindow(QWidget* parent)
             return;
         }
         parabolic_ = std::move(result);
+        parabolicFor_ = searchedFor;
         statusBar()->showMessage(tr("Parabolic curves: %1 curves from %2 visual events over %3 view directions, %4 s")
                                      .arg(parabolic_->curves.size())
                                      .arg(parabolic_->events)
@@ -371,7 +373,7 @@ void MainWindow::startContours() {
     if (const AnimationSpec spec = timeline_->spec();
         spec.kind == AnimationSpec::Kind::Clip || spec.kind == AnimationSpec::Kind::Sequence)
         pose = ClipPose{spec, timeline_->frame()}; // the driver adds the in point
-    const std::shared_ptr<const ParabolicResult> parabolic = parabolicScene_ == scene.get() ? parabolic_ : nullptr;
+    const std::shared_ptr<const ParabolicResult> parabolic = parabolicFor_ == meshGeneration_ ? parabolic_ : nullptr;
     const bool showParabolic = parabolicAction_ && parabolicAction_->isChecked();
     contourWatcher_.setFuture(QtConcurrent::run([mesh, scene, camera, style, light, pose, parabolic, showParabolic] {
         return compute_overlay(*mesh, *scene, camera, style, light, pose, parabolic, showParabolic);
@@ -386,13 +388,13 @@ bool MainWindow::wantsParabolic() const {
 
 void MainWindow::ensureParabolic() {
     if (!scene_ || !wantsParabolic()) return;
-    if (parabolicScene_ == scene_.get() && (parabolic_ || parabolicWatcher_.isRunning())) return; // found or on the way
-    if (parabolicWatcher_.isRunning()) { // for another mesh: stop it; its end starts this one
-        parabolicCancel_->store(true);
-        parabolicScene_ = scene_.get();
+    if (parabolic_ && parabolicFor_ == meshGeneration_) return; // found
+    if (parabolicWatcher_.isRunning()) {
+        // On the way; or for another mesh: stopped, and its end starts this one's.
+        if (searchFor_ != meshGeneration_) parabolicCancel_->store(true);
         return;
     }
-    parabolicScene_ = scene_.get();
+    searchFor_ = meshGeneration_;
     // The loaded pose's connectivity and positions (the overlay may be
     // posing scene_->topology on its thread meanwhile: only the rest copies
     // and the fixed connectivity are read here).
@@ -634,6 +636,7 @@ void MainWindow::onLoadFinished() {
     mesh_ = result.mesh;
     scene_ = result.scene;
     parabolic_.reset(); // the old mesh's
+    ++meshGeneration_;
     ensureParabolic();
     view_->setContours({});
     meshSpec_ = loadingSpec_;

@@ -83,6 +83,8 @@ class MainWindow : public QMainWindow {
     /// The parabolic curves of the mesh, once found (null before, or while
     /// they are being found off the GUI thread).
     std::shared_ptr<const ParabolicResult> parabolicCurves() const { return parabolic_; }
+    /// The view or the style asks for parabolic curves not found yet.
+    bool parabolicPending() const { return wantsParabolic() && !(parabolic_ && scene_ && parabolicFor_ == meshGeneration_); }
     /// Exports the timeline's animation as animated SVG (or Lottie) to
     /// @p path off the GUI thread, with a progress dialog that can cancel
     /// (nothing is written then); ends with exportFinished or exportFailed.
@@ -154,7 +156,9 @@ class MainWindow : public QMainWindow {
     QAction* parabolicAction_ = nullptr;
     QProgressBar* parabolicProgress_ = nullptr;
     std::shared_ptr<const ParabolicResult> parabolic_;
-    const ContourScene* parabolicScene_ = nullptr; ///< the scene a search runs (or ran) for
+    int meshGeneration_ = 0;  ///< counts meshes loaded
+    int parabolicFor_ = -1;   ///< the mesh parabolic_ belongs to
+    int searchFor_ = -1;      ///< the mesh the search under way is for (-1: none)
     std::shared_ptr<std::atomic<bool>> parabolicCancel_;
     QFutureWatcher<std::shared_ptr<const ParabolicResult>> parabolicWatcher_;
     std::shared_ptr<QString> parabolicError_; ///< the running search's error, if any

@@ -35,8 +35,10 @@ int main(int argc, char** argv) {
     const QCommandLineOption style_option("style-file", "Start with this XML style (docs/styles.md).", "xml");
     const QCommandLineOption screenshot_option(
         "screenshot", "Save a picture of the window to this PNG once the drawing is ready, then quit.", "png");
+    const QCommandLineOption parabolic_option("parabolic", "Start with View > Parabolic Curves on.");
     parser.addOption(style_option);
     parser.addOption(screenshot_option);
+    parser.addOption(parabolic_option);
     parser.process(app);
 
     snaxels::ui::MainWindow window;
@@ -48,10 +50,12 @@ int main(int argc, char** argv) {
         }
         window.styleEditor()->setText(QString::fromUtf8(in.readAll()), in.fileName());
     }
+    if (parser.isSet(parabolic_option)) window.parabolicAction()->setChecked(true);
     window.show();
     if (parser.isSet(screenshot_option)) {
         const QString png = parser.value(screenshot_option);
         QObject::connect(&window, &snaxels::ui::MainWindow::contoursUpdated, &window, [&window, png] {
+            if (window.parabolicPending()) return; // the drawing is ready once they are on it
             QTimer::singleShot(300, &window, [&window, png] {
                 const bool saved = window.grab().save(png);
                 if (!saved) std::fprintf(stderr, "snaxels: cannot write %s\n", qPrintable(png));

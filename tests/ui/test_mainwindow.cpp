@@ -13,6 +13,8 @@
 #include <QLabel>
 #include <QTemporaryDir>
 #include <QSet>
+#include <QProgressBar>
+#include <QSettings>
 #include <QSignalSpy>
 #include <QStandardPaths>
 #include <QSurfaceFormat>
@@ -183,6 +185,69 @@ class TestMainWindow : public QObject {
         QVERIFY2(window.styleEditor()->problem().startsWith("3:5: width=\"-3\""), qPrintable(window.styleEditor()->problem()));
         QCOMPARE(contours.count(), 0);
         QCOMPARE(window.currentSvg(), good);
+    }
+
+    // View > Parabolic Curves: found off the GUI thread with progress in the
+    // status bar, then drawn on the 3-D view (not in the SVG, which stays
+    // the style's); a new mesh while a search runs starts one for it.
+    void showsParabolicCurves() {
+        MainWindow window;
+        QVERIFY(showWithMesh(window, "proc:torus:20000"));
+        QSignalSpy found(&window, &MainWindow::parabolicFinished);
+        QSignalSpy contours(&window, &MainWindow::contoursUpdated);
+        const QByteArray svg = window.currentSvg();
+        auto* progress = window.findChild<QProgressBar*>("parabolicProgress");
+        QVERIFY(progress);
+        window.parabolicAction()->setChecked(true);
+        QVERIFY(progress->isVisible());
+        QVERIFY(window.parabolicPending());
+        QVERIFY(found.wait(120000));
+        QCOMPARE(found.first().first().toString(), QString());
+        QVERIFY(!progress->isVisible());
+        QVERIFY(window.parabolicCurves());
+        QCOMPARE(window.parabolicCurves()->curves.size(), std::size_t(2)); // the torus's two circles
+        contours.clear();
+        QVERIFY(contours.wait(30000));
+        QTest::qWait(200);
+        auto green = [&] {
+            const QImage image = window.meshView()->grabFramebuffer().convertToFormat(QImage::Format_RGB32);
+            qsizetype n = 0;
+            for (int y = 0; y < image.height(); ++y)
+                for (int x = 0; x < image.width(); ++x) {
+                    const QRgb p = image.pixel(x, y);
+                    n += qGreen(p) > 170 && qRed(p) < 120 && qBlue(p) < 170 && qGreen(p) - qRed(p) > 90;
+                }
+            return n;
+        };
+        const qsizetype on = green();
+        window.meshView()->grabFramebuffer().save(QString(SCREENSHOT_DIR) + "/mainwindow-parabolic.png");
+        QVERIFY2(on > 300, qPrintable(QString("%1 parabolic pixels").arg(on)));
+        QCOMPARE(window.currentSvg(), svg); // the style does not draw them
+        window.parabolicAction()->setChecked(false);
+        contours.clear();
+        QVERIFY(contours.wait(30000));
+        QTest::qWait(200);
+        QVERIFY2(green() < on / 10, qPrintable(QString("%1 parabolic pixels left").arg(green())));
+
+        // A style that draws them draws them in the SVG too, once found.
+        contours.clear();
+        window.styleEditor()->setText("<style>\n  <contour kind=\"visual\"/>\n  <contour kind=\"parabolic\"/>\n</style>\n",
+                                      "parabolic.xml");
+        QVERIFY(contours.wait(30000));
+        QTRY_VERIFY_WITH_TIMEOUT(window.currentSvg().contains("#1f8a4c"), 30000);
+
+        // Another mesh while a search runs: the search for the old one is
+        // dropped and the new one's curves come.
+        QSignalSpy loaded(&window, &MainWindow::meshLoaded);
+        window.openMesh("proc:torus:40000"); // its search starts at once
+        QVERIFY(loaded.wait(60000));
+        QVERIFY(window.parabolicPending());
+        window.openMesh("proc:nose:20000"); // and is dropped for this one's
+        QVERIFY(loaded.wait(60000));
+        QTRY_VERIFY_WITH_TIMEOUT(!window.parabolicPending(), 120000);
+        QVERIFY(window.parabolicCurves());
+        QVERIFY(window.parabolicCurves()->curves.size() > 2);
+        QSettings().setValue("view/parabolic", false);
     }
 
     // Scrub the timeline, export the animation and a frame; a path that

@@ -5,8 +5,11 @@
 #include <map>
 #include <unordered_map>
 
+#include "core/animation/still.h"
 #include "core/mesh/import.h"
 #include "core/parabolic/parabolic.h"
+#include "core/snaxel/refine.h"
+#include "core/visibility/visibility.h"
 #include "tests/support/assets.h"
 
 using namespace snaxels;
@@ -177,3 +180,116 @@ INSTANTIATE_TEST_SUITE_P(Meshes, ParabolicOnSurfaces,
                                  if (!std::isalnum(static_cast<unsigned char>(c))) c = '_';
                              return name;
                          });
+
+// The curves as fronts: every snaxel on a live edge with t in [0, 1], each
+// one's neighbour across a face it shares, and every point of a curve on
+// the surface (on its edge).
+TEST(Parabolic, CurvesRunAcrossFacesAsSnaxelLoops) {
+    const LoadedMesh m = load("proc:nose:20000");
+    const MeshTopology topo = build_topology(m.mesh);
+    ParabolicOptions options;
+    options.samples = 800;
+    const ParabolicResult r = find_parabolic(topo, options);
+    ASSERT_FALSE(r.curves.empty());
+    const Fronts fronts = parabolic_fronts(topo, r);
+    ASSERT_EQ(fronts.loops.size(), r.curves.size());
+    const SnaxelEngine engine(topo);
+    for (std::size_t l = 0; l < fronts.loops.size(); ++l) {
+        const FrontLoop& loop = fronts.loops[l];
+        const ParabolicCurve& curve = r.curves[l];
+        EXPECT_EQ(loop.closed, curve.closed);
+        ASSERT_EQ(std::size_t(loop.size), curve.points.size());
+        std::vector<std::int32_t> order;
+        fronts.for_each_in_loop(loop, [&](std::int32_t s) { order.push_back(s); });
+        for (std::size_t k = 0; k < order.size(); ++k) {
+            const Snaxel& s = fronts.snaxels[std::size_t(order[k])];
+            ASSERT_GE(s.t, 0.0);
+            ASSERT_LE(s.t, 1.0);
+            ASSERT_LE(glm::length(engine.position(s) - curve.points[k]), 1e-9);
+            if (k + 1 < order.size() || loop.closed) {
+                const Snaxel& next = fronts.snaxels[std::size_t(order[(k + 1) % order.size()])];
+                ASSERT_NE(common_face(topo, s, next), MeshTopology::kNone) << "curve " << l << " point " << k;
+            }
+        }
+    }
+}
+
+// Drawn like any contour: projected, with hidden parts. Seen from one side,
+// a torus shows part of each parabolic circle and hides the rest.
+TEST(Parabolic, DrawnWithHiddenLinesLikeAnyContour) {
+    const LoadedMesh m = load("proc:torus:20000");
+    MeshTopology topo = engine_topology(m.mesh);
+    StillJob job;
+    job.camera.view_dir = glm::normalize(glm::dvec3(0.2, 1.0, -0.35));
+    job.camera.up = {0.0, 0.0, 1.0};
+    job.light = default_light(job.camera);
+    job.kinds = {ContourSpec{}, ContourSpec{ContourKind::Parabolic, 0.0}};
+    const StillOutput out = render_still(m, topo, nullptr, job);
+    ASSERT_EQ(out.drawing.contours.size(), 2u);
+    const DrawnContour& parabolic = out.drawing.contours[1];
+    EXPECT_EQ(parabolic.spec.kind, ContourKind::Parabolic);
+    ASSERT_EQ(parabolic.loops.size(), 2u); // the two circles
+    std::size_t seen = 0, hidden = 0;
+    for (const DrawnLoop& loop : parabolic.loops)
+        for (const DrawnRun& run : loop.runs) (run.qi == 0 ? seen : hidden) += run.q.size();
+    std::printf("torus parabolic circles from the side: %zu samples seen, %zu hidden\n", seen, hidden);
+    EXPECT_GT(seen, 50u);
+    EXPECT_GT(hidden, 50u);
+    EXPECT_NE(out.svg.find("#1f8a4c"), std::string::npos); // the kind's default stroke
+}
+
+// A tracked parabolic kind keeps its snaxels and ids from frame to frame and
+// reports no events; on a moving mesh the points move with the surface.
+TEST(Parabolic, TrackedCurvesKeepTheirIdentityAndMoveWithTheMesh) {
+    const LoadedMesh m = load("proc:torus:20000");
+    MeshTopology topo = build_topology(m.mesh);
+    ParabolicOptions options;
+    options.samples = 600;
+    topo.parabolic = std::make_shared<const ParabolicResult>(find_parabolic(topo, options));
+    ContourTracker tracker(topo, ContourSpec{ContourKind::Parabolic, 0.0});
+    Camera camera;
+    const TrackedFrame first = tracker.step(camera, default_light(camera));
+    ASSERT_FALSE(first.contour.fronts.snaxels.empty());
+    const glm::dvec3 p0 = SnaxelEngine(topo).position(first.contour.fronts.snaxels[0]);
+    for (glm::dvec3& p : topo.positions) p += glm::dvec3(0.5, 0.0, 0.0); // the mesh moves
+    camera.view_dir = glm::normalize(glm::dvec3(0.5, 0.2, 1.0));
+    const TrackedFrame& second = tracker.step(camera, default_light(camera));
+    EXPECT_EQ(second.snaxel_id, first.snaxel_id);
+    EXPECT_EQ(second.loop_sequence, first.loop_sequence);
+    EXPECT_TRUE(second.events.empty());
+    const glm::dvec3 p1 = SnaxelEngine(topo).position(second.contour.fronts.snaxels[0]);
+    EXPECT_NEAR(glm::length(p1 - p0 - glm::dvec3(0.5, 0.0, 0.0)), 0.0, 1e-12);
+}
+
+// No parabolic points on a sphere (positive curvature everywhere): no
+// marks, no curves, and drawing the kind draws nothing without failing.
+TEST(Parabolic, SphereHasNone) {
+    const LoadedMesh m = load("proc:sphere:20000");
+    const MeshTopology topo = build_topology(m.mesh);
+    const ParabolicResult r = find_parabolic(topo);
+    EXPECT_EQ(r.points.size(), 0u);
+    EXPECT_EQ(r.curves.size(), 0u);
+    const SnaxelEngine engine(topo);
+    const ContourResult c = engine.compute(ContourSpec{ContourKind::Parabolic, 0.0}, Camera{}, Light{});
+    EXPECT_TRUE(c.fronts.loops.empty());
+}
+
+// The walks step between neighbours: no step is much longer than the
+// directions' spacing, and every direction is walked in every order.
+TEST(Parabolic, WalksStepBetweenNeighbouringDirections) {
+    const int samples = 2000;
+    const double spacing = std::sqrt(4.0 * kPi / samples);
+    const auto walks = parabolic_walks(samples, 3);
+    std::size_t steps = 0, long_steps = 0, visits = 0;
+    for (const auto& walk : walks) {
+        visits += walk.size();
+        for (std::size_t k = 1; k < walk.size(); ++k) {
+            const double a = std::acos(std::clamp(glm::dot(walk[k - 1], walk[k]), -1.0, 1.0));
+            ++steps;
+            long_steps += a > 3.0 * spacing;
+            EXPECT_LT(a, 8.0 * spacing);
+        }
+    }
+    EXPECT_GE(visits, std::size_t(3 * samples));
+    EXPECT_LT(double(long_steps) / double(steps), 0.02);
+}
