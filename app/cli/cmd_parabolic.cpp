@@ -3,6 +3,7 @@
 #include <cstdio>
 #include <iostream>
 #include <sstream>
+#include <string>
 
 #include <nlohmann/json.hpp>
 
@@ -66,7 +67,18 @@ int run_parabolic(const std::vector<std::string>& argv) {
     }
     ParabolicOptions options;
     if (const auto v = args.value("samples")) options.samples = parse_int("samples", *v, 24, 1000000);
-    if (const auto v = args.value("smoothing")) options.smoothing = parse_number("smoothing", *v, 0.0, 1.0);
+    if (const auto v = args.value("smoothing")) {
+        std::size_t used = 0;
+        double s = -1.0;
+        try {
+            s = std::stod(*v, &used);
+        } catch (const std::exception&) {
+            used = 0;
+        }
+        if (used == 0 || used != v->size() || !(s >= 0.0 && s <= 1.0))
+            throw UsageError("--smoothing takes a number from 0 to 1, not '" + *v + "'");
+        options.smoothing = s;
+    }
     const std::string mesh = args.positional()[0];
     const LoadedMesh loaded = load_mesh(mesh);
     const MeshTopology topology = engine_topology(loaded.mesh);
@@ -92,15 +104,18 @@ int run_parabolic(const std::vector<std::string>& argv) {
                                {"t", c.t}, {"faces", c.faces}});
         }
         const nlohmann::json doc = {{"mesh", mesh},           {"samples", r.samples}, {"walks", r.walks},
-                                    {"faces", topology.n_faces()}, {"ms", r.ms},      {"points", points},
+                                    {"faces", topology.n_faces()}, {"ms", r.ms}, {"smoothing_passes", r.smoothing_passes},
+                                    {"events", r.events}, {"unplaced", r.unplaced},      {"points", points},
                                     {"curves", curves}};
         if (*out == "-") std::cout << doc.dump(1) << '\n';
         else write_file_atomically(*out, doc.dump(1) + "\n");
     }
     if (const auto out = args.value("obj")) write_file_atomically(*out, obj_text(r));
     if (args.value("json").value_or("") != "-")
-        std::printf("%s: %d view directions in %d walks, %zu visual events, %zu marked points, %zu curves (%.4g long), %.0f ms\n",
-                    mesh.c_str(), r.samples, r.walks, r.events, r.points.size(), r.curves.size(), length, r.ms);
+        std::printf("%s: %d view directions in %d walks, normals smoothed in %d passes, %zu visual events (%zu unplaced), "
+                    "%zu marked points, %zu curves (%.4g long), %.0f ms\n",
+                    mesh.c_str(), r.samples, r.walks, r.smoothing_passes, r.events, r.unplaced, r.points.size(),
+                    r.curves.size(), length, r.ms);
     return 0;
 }
 

@@ -188,10 +188,19 @@ std::vector<std::uint8_t> boundary_vertices(const MeshTopology& topo) {
 
 /// The longest path of a tree given as adjacency lists (weighted by length),
 /// in the component of @p start.
+struct TreeScratch {
+    std::vector<double> dist;
+    std::vector<std::int32_t> parent, touched;
+};
+
 std::vector<std::int32_t> tree_diameter(const std::vector<std::vector<std::pair<std::int32_t, double>>>& tree,
-                                        std::int32_t start) {
-    std::vector<double> dist(tree.size(), -1.0);
-    std::vector<std::int32_t> parent(tree.size(), -1), touched;
+                                        std::int32_t start, TreeScratch& scratch) {
+    // Scratch space for the whole forest, reset only where a walk went:
+    // the cost is the component's size, not the forest's.
+    std::vector<double>& dist = scratch.dist;
+    std::vector<std::int32_t>& parent = scratch.parent;
+    std::vector<std::int32_t>& touched = scratch.touched;
+    if (dist.size() != tree.size()) dist.assign(tree.size(), -1.0), parent.assign(tree.size(), -1), touched.clear();
     auto farthest = [&](std::int32_t from) {
         for (const std::int32_t t : touched) dist[std::size_t(t)] = -1.0, parent[std::size_t(t)] = -1;
         touched.clear();
@@ -217,6 +226,8 @@ std::vector<std::int32_t> tree_diameter(const std::vector<std::vector<std::pair<
     const std::int32_t b = farthest(a);
     std::vector<std::int32_t> path;
     for (std::int32_t v = b; v >= 0; v = parent[std::size_t(v)]) path.push_back(v);
+    for (const std::int32_t t : touched) dist[std::size_t(t)] = -1.0, parent[std::size_t(t)] = -1;
+    touched.clear();
     return path;
 }
 
@@ -315,18 +326,36 @@ void smooth_normals(MeshTopology& topo, int passes) {
 std::vector<std::vector<glm::dvec3>> mark_chains(const std::vector<ParabolicPoint>& points, double link, double spacing,
                                                  int min_members) {
     std::vector<std::vector<glm::dvec3>> chains;
+    // The marked places: marks at one vertex are one place, weighed by their count.
     std::vector<glm::dvec3> where;
-    for (const ParabolicPoint& p : points) where.push_back(p.where);
+    std::vector<double> weight;
+    {
+        std::unordered_map<std::int32_t, std::size_t> place_of;
+        for (const ParabolicPoint& p : points) {
+            const auto [it, added] = place_of.emplace(p.vertex, where.size());
+            if (added) where.push_back(p.where), weight.push_back(0.0);
+            weight[it->second] += 1.0;
+        }
+    }
+    // Each place's neighbours within the link, the nearest 24 of them (a
+    // minimum spanning tree needs no more where places crowd).
     const PointGrid grid(where, link);
     std::vector<std::vector<std::pair<std::int32_t, double>>> near(where.size());
     parallel_for(where.size(), [&](std::size_t i) {
         grid.near(where[i], link, [&](std::int32_t j) {
             if (std::size_t(j) != i) near[i].push_back({j, glm::length(where[std::size_t(j)] - where[i])});
         });
+        constexpr std::size_t kMaxNear = 24;
+        if (near[i].size() > kMaxNear) {
+            std::nth_element(near[i].begin(), near[i].begin() + kMaxNear, near[i].end(),
+                             [](const auto& a, const auto& b) { return a.second < b.second; });
+            near[i].resize(kMaxNear);
+        }
     }, 256);
     std::vector<std::uint8_t> used(where.size(), 0);
     std::vector<std::int32_t> member(where.size(), -1);
     std::vector<std::vector<std::pair<std::int32_t, double>>> tree(where.size());
+    TreeScratch scratch;
     for (int round = 0; round < 8; ++round) {
         bool any = false;
         std::fill(member.begin(), member.end(), -1);
@@ -338,12 +367,14 @@ std::vector<std::vector<glm::dvec3>> mark_chains(const std::vector<ParabolicPoin
             std::priority_queue<Item, std::vector<Item>, std::greater<Item>> queue;
             queue.push({0.0, std::int32_t(s), -1});
             std::vector<std::int32_t> cluster;
+            double marks = 0.0;
             while (!queue.empty()) {
                 const auto [len, v, from] = queue.top();
                 queue.pop();
                 if (member[std::size_t(v)] >= 0) continue;
                 member[std::size_t(v)] = std::int32_t(s);
                 cluster.push_back(v);
+                marks += weight[std::size_t(v)];
                 if (from >= 0) {
                     tree[std::size_t(v)].push_back({from, len});
                     tree[std::size_t(from)].push_back({v, len});
@@ -351,18 +382,19 @@ std::vector<std::vector<glm::dvec3>> mark_chains(const std::vector<ParabolicPoin
                 for (const auto& [w, d] : near[std::size_t(v)])
                     if (!used[std::size_t(w)] && member[std::size_t(w)] < 0) queue.push({d, w, v});
             }
-            if (int(cluster.size()) < min_members) {
+            if (marks < double(min_members)) {
                 for (const std::int32_t v : cluster) used[std::size_t(v)] = 1;
                 continue;
             }
             any = true;
-            const std::vector<std::int32_t> path = tree_diameter(tree, std::int32_t(s));
+            const std::vector<std::int32_t> path = tree_diameter(tree, std::int32_t(s), scratch);
             std::vector<glm::dvec3> chain;
             for (const std::int32_t v : path) {
-                glm::dvec3 sum = where[std::size_t(v)];
-                double count = 1.0;
+                glm::dvec3 sum = weight[std::size_t(v)] * where[std::size_t(v)];
+                double count = weight[std::size_t(v)];
                 for (const auto& [w, d] : near[std::size_t(v)])
-                    if (!used[std::size_t(w)] && d <= 0.5 * link) sum += where[std::size_t(w)], count += 1.0;
+                    if (!used[std::size_t(w)] && d <= 0.5 * link)
+                        sum += weight[std::size_t(w)] * where[std::size_t(w)], count += weight[std::size_t(w)];
                 const glm::dvec3 p = sum / count;
                 if (!chain.empty() && glm::length(p - chain.back()) < spacing) continue;
                 chain.push_back(p);
@@ -466,6 +498,10 @@ std::vector<ParabolicCurve> chain_curves(const MeshTopology& topo, const std::ve
     const PointGrid vertices(topo.positions, 2.0 * edge);
     for (std::size_t c = 0; c < chains.size(); ++c) {
         std::vector<glm::dvec3>& chain = chains[c];
+        // A stub no longer than two links is a lone pair of marks, not a curve.
+        double span = 0.0;
+        for (std::size_t k = 1; k < chain.size(); ++k) span += glm::length(chain[k] - chain[k - 1]);
+        if (!closed[c] && span < 2.0 * link) continue;
         // Two passes of neighbour averaging take out the marks' jitter.
         for (int pass = 0; pass < 2; ++pass) {
             std::vector<glm::dvec3> smooth = chain;
