@@ -312,6 +312,22 @@ void MainWindow::exportAnimation(const QString& path, AnimationFormat format) {
             if (guard) guard->setValue(done);
         }, Qt::QueuedConnection);
     };
+    // A style with parabolic curves the view has not found yet: the dialog
+    // shows that search first, then the frames.
+    job.parabolic_progress = [guard, path, frames = job.animation.frames](int done, int total) {
+        QMetaObject::invokeMethod(qApp, [guard, done, total, path, frames] {
+            if (!guard) return;
+            if (done < total) {
+                guard->setLabelText(tr("Finding the parabolic curves for %1…").arg(QFileInfo(path).fileName()));
+                guard->setRange(0, total);
+                guard->setValue(done);
+            } else {
+                guard->setLabelText(tr("Exporting %1…").arg(QFileInfo(path).fileName()));
+                guard->setRange(0, frames);
+                guard->setValue(0);
+            }
+        }, Qt::QueuedConnection);
+    };
     job.cancelled = [cancelled] { return cancelled->load(); };
     const std::shared_ptr<const LoadedMesh> mesh = mesh_;
     const std::string mesh_path = meshSpec_.toStdString();
