@@ -11,6 +11,8 @@
 
 #include "core/animation/pipeline.h"
 #include "core/mesh/import.h"
+#include "core/mesh/procedural.h"
+#include "core/util/parallel.h"
 #include "bench/brute_force_contour.h"
 
 using namespace snaxels;
@@ -95,3 +97,50 @@ static void BM_ExportHorseTurntable360(benchmark::State& state) {
     state.counters["svg_bytes"] = double(bytes);
 }
 BENCHMARK(BM_ExportHorseTurntable360)->Arg(1)->Arg(0)->ArgName("visibility")->Unit(benchmark::kMillisecond)->Iterations(1);
+
+// Several kinds tracked together, each on its own thread as the export
+// does (visual, shadow, an isophote and a gleam on the horse), and the
+// visual contour of a million-face bumpy sphere: per-frame medians.
+namespace {
+
+double track_median(const MeshTopology& topo, const std::vector<ContourSpec>& kinds, int frames,
+                    const glm::dvec3& up, const glm::dvec3& start) {
+    EngineOptions options;
+    options.check_invariants = false;
+    std::vector<ContourTracker> trackers;
+    for (const ContourSpec& k : kinds) trackers.emplace_back(topo, k, options);
+    std::vector<double> ms;
+    for (int f = 0; f < frames; ++f) {
+        Camera cam;
+        cam.up = up;
+        cam.view_dir = glm::rotate(glm::normalize(start), glm::radians(double(f)), up);
+        const Light light = default_light(cam);
+        const auto t0 = std::chrono::steady_clock::now();
+        parallel_for(trackers.size(), [&](std::size_t c) {
+            benchmark::DoNotOptimize(trackers[c].step(cam, light).contour.fronts.snaxels.data());
+        }, 1);
+        if (f > 0) ms.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count());
+    }
+    return median(ms);
+}
+
+} // namespace
+
+static void BM_TrackHorseFourKinds(benchmark::State& state) {
+    const MeshTopology topo = build_topology(horse_mesh().mesh);
+    const std::vector<ContourSpec> kinds{ContourSpec{}, {ContourKind::Shadow, 0.0}, {ContourKind::Isophote, 0.5},
+                                         {ContourKind::Gleam, 0.9}};
+    double m = 0.0;
+    for (auto _ : state) m = track_median(topo, kinds, 120, {0.0, 0.0, 1.0}, {1.0, 0.2, 0.3});
+    state.counters["median_frame_ms"] = m;
+}
+BENCHMARK(BM_TrackHorseFourKinds)->Unit(benchmark::kMillisecond)->Iterations(1);
+
+static void BM_TrackBumpy1MTurntable(benchmark::State& state) {
+    const LoadedMesh m = build_mesh(make_bumpy_sphere(1'000'000), "bumpy");
+    const MeshTopology topo = build_topology(m.mesh);
+    double median_ms = 0.0;
+    for (auto _ : state) median_ms = track_median(topo, {ContourSpec{}}, 60, {0.0, 1.0, 0.0}, {0.3, -0.3, 1.0});
+    state.counters["median_frame_ms"] = median_ms;
+}
+BENCHMARK(BM_TrackBumpy1MTurntable)->Unit(benchmark::kMillisecond)->Iterations(1);

@@ -51,6 +51,35 @@ ContourSpec ContourSpec::parse(const std::string& text) {
     return spec;
 }
 
+ContourFunction::ContourFunction(const ContourSpec& spec, const Camera& camera, const Light& light)
+    : spec_(spec), camera_(camera), light_(light) {
+    linear_ = spec.kind == ContourKind::Visual && camera.orthographic() && glm::length(camera.view_dir) > 0.0;
+    if (linear_) v_ = -glm::normalize(camera.view_dir);
+}
+
+void ContourFunction::evaluate_vertices(const std::vector<glm::dvec3>& positions, const std::vector<glm::dvec3>& normals,
+                                        std::vector<double>& out) const {
+    out.resize(positions.size());
+    if (linear_) {
+        for (std::size_t i = 0; i < normals.size(); ++i) out[i] = glm::dot(normals[i], v_);
+        return;
+    }
+    for (std::size_t i = 0; i < positions.size(); ++i) out[i] = (*this)(positions[i], normals[i]);
+}
+
+double slerp_dot_root(const glm::dvec3& na, const glm::dvec3& nb, double a, double b) {
+    if (a <= 0.0) return 0.0;
+    const double c = std::clamp(glm::dot(na, nb), -1.0, 1.0);
+    const double w = std::acos(c), s = std::sin(w);
+    if (s < 1e-9) { // aligned (or opposite): the slerp's limit is linear
+        const double t = a / (a - b);
+        return std::clamp(t, 0.0, 1.0);
+    }
+    // a sin(w - tw) + b sin(tw) = 0  <=>  tan(tw) = a s / (a c - b).
+    const double tw = std::atan2(a * s, a * c - b);
+    return std::clamp(tw / w, 0.0, 1.0);
+}
+
 double ContourFunction::operator()(const glm::dvec3& p, const glm::dvec3& n) const {
     const double f = evaluate(p, n);
     // At the eye or a point light itself V or L is undefined: such a point

@@ -3,6 +3,7 @@
 /// evaluated at a surface point with its (slerped) normal. f >= 0 is inside.
 
 #include <string>
+#include <vector>
 
 #include <glm/glm.hpp>
 
@@ -31,10 +32,20 @@ struct ContourSpec {
 /// f for one spec, camera and light.
 class ContourFunction {
   public:
-    ContourFunction(const ContourSpec& spec, const Camera& camera, const Light& light)
-        : spec_(spec), camera_(camera), light_(light) {}
+    ContourFunction(const ContourSpec& spec, const Camera& camera, const Light& light);
 
     double operator()(const glm::dvec3& p, const glm::dvec3& n) const;
+
+    /// True when f is N.v for one vector v everywhere (the visual contour
+    /// seen by an orthographic camera): f at a vertex is then one dot
+    /// product, and its zero on a slerped edge has a closed form.
+    bool linear_in_normal() const { return linear_; }
+    /// That v (the unit vector toward the viewer) when linear_in_normal().
+    const glm::dvec3& normal_coefficient() const { return v_; }
+
+    /// f at every vertex into @p out (sized to the vertices).
+    void evaluate_vertices(const std::vector<glm::dvec3>& positions, const std::vector<glm::dvec3>& normals,
+                           std::vector<double>& out) const;
 
   private:
     double evaluate(const glm::dvec3& p, const glm::dvec3& n) const;
@@ -42,7 +53,14 @@ class ContourFunction {
     ContourSpec spec_;
     Camera camera_;
     Light light_;
+    bool linear_ = false;
+    glm::dvec3 v_{0.0};
 };
+
+/// The zero of N.v on the slerp from @p na (N.v = @p a >= 0) to @p nb
+/// (N.v = @p b < 0), as t in [0, 1]: a sin((1-t)w) + b sin(tw) = 0 with w
+/// the arc's angle, solved in closed form.
+double slerp_dot_root(const glm::dvec3& na, const glm::dvec3& nb, double a, double b);
 
 /// Spherical linear interpolation of unit normals, the limit na as they align.
 glm::dvec3 slerp_normal(const glm::dvec3& na, const glm::dvec3& nb, double t);

@@ -132,6 +132,8 @@ double polish_root(const MeshTopology& topo, const ContourFunction& f, std::int3
                    int scan_samples) {
     const glm::dvec3 pa = topo.positions[inside], pb = topo.positions[outside];
     const glm::dvec3 na = topo.normals[inside], nb = topo.normals[outside];
+    if (f.linear_in_normal() && scan_samples <= 1) // N.v on a slerp: one sinusoid, solved exactly
+        return slerp_dot_root(na, nb, f_inside, f_outside);
     const SlerpArc arc(na, nb);
     auto g = [&](double t) { return f((1.0 - t) * pa + t * pb, arc(t)); };
     double t0 = 0.0, t1 = 1.0, g0 = f_inside, g1 = f_outside;
@@ -184,9 +186,7 @@ ContourResult SnaxelEngine::compute(const ContourSpec& spec, const Camera& camer
     const ContourFunction f(spec, camera, light);
     const std::size_t nv = topo_.n_vertices();
 
-    result.vertex_f.resize(nv);
-    for (std::size_t v = 0; v < nv; ++v)
-        result.vertex_f[v] = f(topo_.positions[v], topo_.normals[v]);
+    f.evaluate_vertices(topo_.positions, topo_.normals, result.vertex_f);
 
     std::vector<std::int32_t> label(nv, kNone);
     RegionUnion regions;

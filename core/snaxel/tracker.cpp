@@ -3,8 +3,6 @@
 #include <algorithm>
 #include <chrono>
 #include <limits>
-#include <map>
-#include <set>
 
 #include "core/error.h"
 
@@ -105,12 +103,10 @@ void ContourTracker::track(const Camera& camera, const Light& light) {
 
     // 1. f everywhere (new regions may appear anywhere) and what changed side.
     const std::size_t nv = topo_.n_vertices();
-    result.vertex_f.resize(nv);
+    f.evaluate_vertices(topo_.positions, topo_.normals, result.vertex_f);
     std::vector<std::int32_t> changed;
-    for (std::size_t v = 0; v < nv; ++v) {
-        result.vertex_f[v] = f(topo_.positions[v], topo_.normals[v]);
+    for (std::size_t v = 0; v < nv; ++v)
         if (std::uint8_t(result.vertex_f[v] >= 0.0) != inside_[v]) changed.push_back(std::int32_t(v));
-    }
     for (const std::int32_t v : changed) inside_[v] ^= 1;
 
     // 2. Fronts move on: every changed vertex next to an old snaxel's edge
@@ -211,15 +207,24 @@ void ContourTracker::track(const Camera& camera, const Light& light) {
 
     // 5. Loops matched through their snaxels' sources: events and sequences.
     const std::size_t old_loops = old.loops.size(), new_loops = fronts.loops.size();
-    std::vector<std::set<std::int32_t>> pred(new_loops), succ(old_loops);
-    std::map<std::pair<std::int32_t, std::int32_t>, std::size_t> shared; // (old, new) -> snaxels linking them
+    // (old loop, new loop) of every snaxel with a source, sorted: runs of
+    // one pair count the snaxels linking them, in (old, new) order.
+    std::vector<std::pair<std::int32_t, std::int32_t>> links;
+    links.reserve(n);
     for (std::size_t s = 0; s < n; ++s)
-        if (source[s] != kNone) {
-            const std::int32_t ol = old.snaxels[source[s]].loop, nl = fronts.snaxels[s].loop;
-            pred[nl].insert(ol);
-            succ[ol].insert(nl);
-            ++shared[{ol, nl}];
-        }
+        if (source[s] != kNone) links.push_back({old.snaxels[source[s]].loop, fronts.snaxels[s].loop});
+    std::sort(links.begin(), links.end());
+    std::vector<std::pair<std::pair<std::int32_t, std::int32_t>, std::size_t>> shared; // (old, new) -> snaxels
+    for (const auto& link : links) {
+        if (shared.empty() || shared.back().first != link) shared.push_back({link, 0});
+        ++shared.back().second;
+    }
+    // Per loop, the loops on the other side, ascending.
+    std::vector<std::vector<std::int32_t>> pred(new_loops), succ(old_loops);
+    for (const auto& [link, count] : shared) {
+        succ[std::size_t(link.first)].push_back(link.second);
+        pred[std::size_t(link.second)].push_back(link.first);
+    }
     // Through a split or merge the sequence goes on along the branch that
     // shares the most snaxels both ways; the other branches start anew.
     std::vector<std::int32_t> best_succ(old_loops, kNone), best_pred(new_loops, kNone);
