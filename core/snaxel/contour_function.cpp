@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <charconv>
 #include <cmath>
+#include <limits>
 
 #include "core/error.h"
 
@@ -55,6 +56,63 @@ ContourFunction::ContourFunction(const ContourSpec& spec, const Camera& camera, 
     : spec_(spec), camera_(camera), light_(light) {
     linear_ = spec.kind == ContourKind::Visual && camera.orthographic() && glm::length(camera.view_dir) > 0.0;
     if (linear_) v_ = -glm::normalize(camera.view_dir);
+    const bool view_fixed = camera.orthographic() && glm::length(camera.view_dir) > 0.0;
+    const bool light_fixed = spec.kind == ContourKind::Visual || (!light.point && glm::length(light.dir) > 0.0);
+    closed_ = spec.kind != ContourKind::Parabolic && view_fixed && light_fixed;
+    if (closed_) {
+        v_ = camera.to_viewer(glm::dvec3(0.0));
+        if (spec.kind != ContourKind::Visual) l_ = light.to_light(glm::dvec3(0.0));
+    }
+}
+
+namespace {
+
+constexpr double kTwoPi = 6.283185307179586476925286766559;
+
+/// The first y in [0, span] where c0 + a cos y + b sin y turns negative
+/// (it is >= 0 at y = 0), or +inf when it does not.
+double first_downward(double c0, double a, double b, double span) {
+    const double r = std::hypot(a, b);
+    if (!(r > std::abs(c0))) return c0 < 0.0 ? 0.0 : std::numeric_limits<double>::infinity();
+    // Zeros at y = phi +- alpha; the one with phi + alpha goes down.
+    const double alpha = std::acos(-c0 / r), phi = std::atan2(b, a);
+    double y = std::fmod(phi + alpha, kTwoPi);
+    if (y < 0.0) y += kTwoPi;
+    if (y > kTwoPi - 1e-12) y = 0.0; // at the start itself
+    return y <= span ? y : std::numeric_limits<double>::infinity();
+}
+
+} // namespace
+
+double ContourFunction::first_zero(const glm::dvec3& na, const glm::dvec3& nb, double f_a, double f_b) const {
+    const double c = std::clamp(glm::dot(na, nb), -1.0, 1.0);
+    const double w = std::acos(c), s = std::sin(w);
+    if (s < 1e-9) {
+        if (c < 0.0) return std::numeric_limits<double>::quiet_NaN(); // no unique arc
+        return f_a <= 0.0 ? 0.0 : std::clamp(f_a / (f_a - f_b), 0.0, 1.0); // aligned: the slerp's limit is linear
+    }
+    // Along the arc, at angle x: N.u = P cos x + Q sin x.
+    auto coefficients = [&](const glm::dvec3& u, double& p, double& q) {
+        p = glm::dot(na, u);
+        q = (glm::dot(nb, u) - p * c) / s;
+    };
+    double pv, qv;
+    coefficients(v_, pv, qv);
+    double x = first_downward(0.0, pv, qv, w); // N.V, a term of every kind
+    if (spec_.kind == ContourKind::Shadow || spec_.kind == ContourKind::Isophote) {
+        const double k = spec_.kind == ContourKind::Isophote ? spec_.k : 0.0;
+        double pl, ql;
+        coefficients(l_, pl, ql);
+        x = std::min(x, first_downward(-k, pl, ql, w));
+    } else if (spec_.kind == ContourKind::Gleam) {
+        // V.R - k = 2 (N.L)(N.V) - L.V - k: a sinusoid in 2x.
+        double pl, ql;
+        coefficients(l_, pl, ql);
+        const double c0 = pl * pv + ql * qv - glm::dot(l_, v_) - spec_.k;
+        x = std::min(x, 0.5 * first_downward(c0, pl * pv - ql * qv, pl * qv + ql * pv, 2.0 * w));
+    }
+    if (!std::isfinite(x)) return std::numeric_limits<double>::quiet_NaN();
+    return std::clamp(x / w, 0.0, 1.0);
 }
 
 void ContourFunction::evaluate_vertices(const std::vector<glm::dvec3>& positions, const std::vector<glm::dvec3>& normals,
@@ -62,6 +120,21 @@ void ContourFunction::evaluate_vertices(const std::vector<glm::dvec3>& positions
     out.resize(positions.size());
     if (linear_) {
         for (std::size_t i = 0; i < normals.size(); ++i) out[i] = glm::dot(normals[i], v_);
+        return;
+    }
+    if (closed_) { // V and L the same everywhere: evaluate() without normalizing them per vertex
+        for (std::size_t i = 0; i < normals.size(); ++i) {
+            const glm::dvec3& n = normals[i];
+            const double nv = glm::dot(n, v_);
+            double g = nv;
+            switch (spec_.kind) {
+            case ContourKind::Shadow: g = glm::dot(n, l_); break;
+            case ContourKind::Isophote: g = glm::dot(n, l_) - spec_.k; break;
+            case ContourKind::Gleam: g = glm::dot(v_, 2.0 * glm::dot(n, l_) * n - l_) - spec_.k; break;
+            default: break;
+            }
+            out[i] = std::min(g, nv);
+        }
         return;
     }
     for (std::size_t i = 0; i < positions.size(); ++i) out[i] = (*this)(positions[i], normals[i]);

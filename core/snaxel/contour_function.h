@@ -43,6 +43,17 @@ class ContourFunction {
     /// That v (the unit vector toward the viewer) when linear_in_normal().
     const glm::dvec3& normal_coefficient() const { return v_; }
 
+    /// True when the camera is orthographic and the light directional: V and
+    /// L are then the same at every point, so along a slerped edge every
+    /// term of f is a sinusoid in the arc angle (N.V, N.L - k) or in twice
+    /// it (the gleam's V.R - k), and f's first zero has a closed form.
+    bool closed_form() const { return closed_; }
+    /// With closed_form(): the first t in [0, 1] where f turns negative on
+    /// the slerp from @p na (f >= 0) to @p nb (f < 0), exact to rounding.
+    /// NaN when the arc is degenerate (normals opposite) or no term crosses
+    /// (rounding): the caller then brackets the root numerically.
+    double first_zero(const glm::dvec3& na, const glm::dvec3& nb, double f_a, double f_b) const;
+
     /// f at every vertex into @p out (sized to the vertices).
     void evaluate_vertices(const std::vector<glm::dvec3>& positions, const std::vector<glm::dvec3>& normals,
                            std::vector<double>& out) const;
@@ -53,8 +64,9 @@ class ContourFunction {
     ContourSpec spec_;
     Camera camera_;
     Light light_;
-    bool linear_ = false;
-    glm::dvec3 v_{0.0};
+    bool linear_ = false, closed_ = false;
+    glm::dvec3 v_{0.0}; ///< to the viewer (orthographic)
+    glm::dvec3 l_{0.0}; ///< to the light (directional)
 };
 
 /// The zero of N.v on the slerp from @p na (N.v = @p a >= 0) to @p nb

@@ -132,8 +132,10 @@ double polish_root(const MeshTopology& topo, const ContourFunction& f, std::int3
                    int scan_samples) {
     const glm::dvec3 pa = topo.positions[inside], pb = topo.positions[outside];
     const glm::dvec3 na = topo.normals[inside], nb = topo.normals[outside];
-    if (f.linear_in_normal() && scan_samples <= 1) // N.v on a slerp: one sinusoid, solved exactly
+    if (f.linear_in_normal()) // N.v on a slerp: one sinusoid, solved exactly
         return slerp_dot_root(na, nb, f_inside, f_outside);
+    if (f.closed_form()) // sinusoids: the first crossing, exactly (no scan needed)
+        if (const double t = f.first_zero(na, nb, f_inside, f_outside); !std::isnan(t)) return t;
     const SlerpArc arc(na, nb);
     auto g = [&](double t) { return f((1.0 - t) * pa + t * pb, arc(t)); };
     double t0 = 0.0, t1 = 1.0, g0 = f_inside, g1 = f_outside;

@@ -100,3 +100,77 @@ TEST(ClosedForm, SphereContoursFollowThePapersFormulas) {
     }
     EXPECT_GE(checked_kinds, 30); // most kinds in most views have a curve to check
 }
+
+// The first zero along a slerped edge, which the engine solves in closed form
+// for an orthographic view and a directional light (sinusoids in the arc
+// angle), against a fine scan of the oracle's f on the oracle's slerp,
+// bisected: the crossing nearest the inside end, also where f dips below
+// zero and comes back before the outside end, and on arcs up to 175 degrees.
+TEST(ClosedForm, FirstZeroOnAnEdgeIsTheScannedFirstCrossing) {
+    std::mt19937 rng(11);
+    std::normal_distribution<double> nd;
+    std::uniform_real_distribution<double> ud(0.0, 1.0);
+    auto unit = [&] {
+        glm::dvec3 v;
+        do v = {nd(rng), nd(rng), nd(rng)};
+        while (glm::length(v) < 1e-3);
+        return glm::normalize(v);
+    };
+    int checked = 0, dips = 0;
+    for (int trial = 0; trial < 12000; ++trial) {
+        Camera cam;
+        cam.view_dir = unit();
+        Light light;
+        light.dir = unit();
+        const double k = 2.0 * ud(rng) - 1.0;
+        const ContourSpec spec = trial % 4 == 0 ? ContourSpec{ContourKind::Visual, 0.0}
+                                 : trial % 4 == 1 ? ContourSpec{ContourKind::Shadow, 0.0}
+                                 : trial % 4 == 2 ? ContourSpec{ContourKind::Isophote, k}
+                                                  : ContourSpec{ContourKind::Gleam, k};
+        const test::OracleSetup setup = test::oracle_setup(spec, cam, light);
+        const glm::dvec3 na = unit();
+        // An arc of a random angle (up to 175 degrees) toward a random direction.
+        const double angle = glm::radians(175.0) * std::pow(ud(rng), 2.0);
+        const glm::dvec3 side = glm::normalize(glm::cross(na, unit()));
+        const glm::dvec3 nb = std::cos(angle) * na + std::sin(angle) * side;
+        auto g = [&](double t) { return test::oracle_f(setup, glm::dvec3(0.0), test::oracle_slerp(na, nb, t)); };
+        const double fa = g(0.0), fb = g(1.0);
+        if (!(fa >= 0.0 && fb < 0.0)) continue;
+        const int n = 20000;
+        double t0 = 0.0, t1 = 1.0;
+        int sign_changes = 0;
+        bool found = false, before = true;
+        for (int i = 1; i <= n; ++i) {
+            const double t = double(i) / n;
+            const bool now = g(t) >= 0.0;
+            sign_changes += now != before;
+            before = now;
+            if (!now && !found) {
+                t1 = t;
+                t0 = double(i - 1) / n;
+                found = true;
+            }
+        }
+        for (int it = 0; it < 60; ++it) {
+            const double m = 0.5 * (t0 + t1);
+            (g(m) >= 0.0 ? t0 : t1) = m;
+        }
+        const ContourFunction f(spec, cam, light);
+        ASSERT_TRUE(f.closed_form());
+        const double t = f.first_zero(na, nb, fa, fb);
+        ASSERT_FALSE(std::isnan(t)) << "trial " << trial;
+        EXPECT_NEAR(t, t0, 1e-9) << spec.label() << " trial " << trial << " arc " << glm::degrees(angle);
+        dips += sign_changes > 1;
+        ++checked;
+    }
+    EXPECT_GT(checked, 1000);
+    EXPECT_GT(dips, 10); // edges where f crosses zero three times were among them
+    // A point light or a perspective view: no closed form.
+    Camera persp;
+    persp.projection = Camera::Projection::Perspective;
+    EXPECT_FALSE(ContourFunction(ContourSpec{ContourKind::Shadow, 0.0}, persp, Light{}).closed_form());
+    Light point;
+    point.point = true;
+    EXPECT_FALSE(ContourFunction(ContourSpec{ContourKind::Shadow, 0.0}, Camera{}, point).closed_form());
+    EXPECT_TRUE(ContourFunction(ContourSpec{ContourKind::Visual, 0.0}, Camera{}, point).closed_form());
+}
