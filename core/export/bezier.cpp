@@ -2,6 +2,8 @@
 #include "core/export/polyline.h"
 
 #include <algorithm>
+#include <array>
+#include <map>
 #include <cmath>
 
 namespace snaxels {
@@ -20,44 +22,58 @@ double distance_to_polyline(const glm::dvec2& p, const std::vector<glm::dvec2>& 
 
 } // namespace
 
+namespace {
+
+// Unit tangent at knot k (of m) from its neighbouring knots; none at open
+// ends and at sharp corners (more than 60 degrees), which stay corners.
+glm::dvec2 knot_tangent(const std::vector<glm::dvec2>& points, const std::vector<std::size_t>& knots, std::size_t k,
+                        bool closed) {
+    const std::size_t m = knots.size();
+    if (!closed && (k == 0 || k + 1 == m)) return glm::dvec2(0.0);
+    const glm::dvec2 prev = points[knots[(k + m - 1) % m]], next = points[knots[(k + 1) % m]], here = points[knots[k]];
+    const glm::dvec2 in = here - prev, out = next - here;
+    const double li = glm::length(in), lo = glm::length(out);
+    if (li <= 0.0 || lo <= 0.0) return glm::dvec2(0.0);
+    if (glm::dot(in, out) < 0.5 * li * lo) return glm::dvec2(0.0);
+    const glm::dvec2 t = in / li + out / lo;
+    const double lt = glm::length(t);
+    return lt > 0.0 ? t / lt : glm::dvec2(0.0);
+}
+
+// The control points of segment s (knot s to the next).
+void segment_controls(const std::vector<glm::dvec2>& points, const std::vector<std::size_t>& knots, bool closed,
+                      std::size_t s, glm::dvec2& c1, glm::dvec2& c2) {
+    const std::size_t m = knots.size(), n = points.size();
+    const std::size_t a = s, b = (s + 1) % m;
+    const glm::dvec2 p0 = points[knots[a]], p1 = points[knots[b]];
+    const double chord = glm::length(p1 - p0);
+    // Knots that were neighbouring points: the polyline is straight there.
+    const std::size_t span = closed ? (knots[b] + n - knots[a]) % n : knots[b] - knots[a];
+    if (span <= 1) {
+        c1 = p0 + (p1 - p0) / 3.0;
+        c2 = p1 - (p1 - p0) / 3.0;
+        return;
+    }
+    const glm::dvec2 d = chord > 0.0 ? (p1 - p0) / chord : glm::dvec2(0.0);
+    const glm::dvec2 ta = knot_tangent(points, knots, a, closed), tb = knot_tangent(points, knots, b, closed);
+    const glm::dvec2 t0 = ta != glm::dvec2(0.0) ? ta : d;
+    const glm::dvec2 t1 = tb != glm::dvec2(0.0) ? tb : d;
+    c1 = p0 + t0 * (chord / 3.0);
+    c2 = p1 - t1 * (chord / 3.0);
+}
+
+} // namespace
+
 BezierChain bezier_chain(const std::vector<glm::dvec2>& points, const std::vector<std::size_t>& knots, bool closed) {
     BezierChain chain;
     chain.closed = closed;
-    const std::size_t m = knots.size(), n = points.size();
+    const std::size_t m = knots.size();
     for (const std::size_t k : knots) chain.knots.push_back(points[k]);
     if (m < 2) return chain;
     const std::size_t segments = closed ? m : m - 1;
-    // Unit tangent at each knot from its neighbouring knots; none at open
-    // ends and at sharp corners (more than 60 degrees), which stay corners.
-    std::vector<glm::dvec2> tangent(m, glm::dvec2(0.0));
-    for (std::size_t k = 0; k < m; ++k) {
-        if (!closed && (k == 0 || k + 1 == m)) continue;
-        const glm::dvec2 prev = chain.knots[(k + m - 1) % m], next = chain.knots[(k + 1) % m], here = chain.knots[k];
-        const glm::dvec2 in = here - prev, out = next - here;
-        const double li = glm::length(in), lo = glm::length(out);
-        if (li <= 0.0 || lo <= 0.0) continue;
-        if (glm::dot(in, out) < 0.5 * li * lo) continue;
-        const glm::dvec2 t = in / li + out / lo;
-        const double lt = glm::length(t);
-        if (lt > 0.0) tangent[k] = t / lt;
-    }
-    for (std::size_t s = 0; s < segments; ++s) {
-        const std::size_t a = s, b = (s + 1) % m;
-        const glm::dvec2 p0 = chain.knots[a], p1 = chain.knots[b];
-        const double chord = glm::length(p1 - p0);
-        // Knots that were neighbouring points: the polyline is straight there.
-        const std::size_t span = closed ? (knots[b] + n - knots[a]) % n : knots[b] - knots[a];
-        if (span <= 1) {
-            chain.c1.push_back(p0 + (p1 - p0) / 3.0);
-            chain.c2.push_back(p1 - (p1 - p0) / 3.0);
-            continue;
-        }
-        const glm::dvec2 d = chord > 0.0 ? (p1 - p0) / chord : glm::dvec2(0.0);
-        const glm::dvec2 t0 = tangent[a] != glm::dvec2(0.0) ? tangent[a] : d;
-        const glm::dvec2 t1 = tangent[b] != glm::dvec2(0.0) ? tangent[b] : d;
-        chain.c1.push_back(p0 + t0 * (chord / 3.0));
-        chain.c2.push_back(p1 - t1 * (chord / 3.0));
-    }
+    chain.c1.resize(segments);
+    chain.c2.resize(segments);
+    for (std::size_t s = 0; s < segments; ++s) segment_controls(points, knots, closed, s, chain.c1[s], chain.c2[s]);
     return chain;
 }
 
@@ -93,42 +109,53 @@ std::vector<std::size_t> fit_knots(const std::vector<std::vector<glm::dvec2>>& f
         douglas_peucker_joint(frames, 0, n - 1, tolerance, keep);
     }
     // The curve bends away from the chords where the polyline turns: add the
-    // worst point of each segment that strays until none does.
+    // worst point of each segment that strays until none does. A segment's
+    // curve depends on its knots and their neighbours alone: rounds that
+    // leave those four alone reuse what it found.
+    struct Found {
+        double worst;
+        std::size_t point;
+    };
+    std::map<std::array<std::size_t, 4>, Found> found;
     for (;;) {
         std::vector<std::size_t> knots;
         for (std::size_t i = 0; i < n; ++i)
             if (keep[i]) knots.push_back(i);
+        const std::size_t m = knots.size();
         bool added = false;
-        const std::size_t segments = closed ? knots.size() : knots.size() - 1;
-        std::vector<std::size_t> worst_point(segments, n);
-        std::vector<double> worst(segments, tolerance);
-        for (const auto& f : frames) {
-            const BezierChain chain = bezier_chain(f, knots, closed);
-            for (std::size_t s = 0; s < segments; ++s) {
-                const std::size_t a = knots[s], b = knots[(s + 1) % knots.size()];
-                const std::size_t count = closed ? (b + n - a) % n : b - a;
-                if (count <= 1) continue;
-                std::vector<glm::dvec2> curve;
-                for (int i = 0; i <= 16; ++i)
-                    curve.push_back(cubic(chain.knots[s], chain.c1[s], chain.c2[s], chain.knots[(s + 1) % knots.size()], i / 16.0));
-                std::vector<glm::dvec2> poly;
-                for (std::size_t k = 0; k <= count; ++k) poly.push_back(f[(a + k) % n]);
-                for (std::size_t k = 1; k < count; ++k) {
-                    const double d = distance_to_polyline(poly[k], curve);
-                    if (d > worst[s]) worst[s] = d, worst_point[s] = (a + k) % n;
-                }
-                // The curve's own bulge away from the polyline.
-                for (const glm::dvec2& c : curve) {
-                    const double d = distance_to_polyline(c, poly);
-                    if (d > worst[s]) {
-                        worst[s] = d;
-                        worst_point[s] = (a + count / 2) % n;
+        const std::size_t segments = closed ? m : m - 1;
+        for (std::size_t s = 0; s < segments; ++s) {
+            const std::size_t a = knots[s], b = knots[(s + 1) % m];
+            const std::size_t before = closed || s > 0 ? knots[(s + m - 1) % m] : n;
+            const std::size_t after = closed || s + 2 < m ? knots[(s + 2) % m] : n;
+            auto [it, fresh] = found.try_emplace({before, a, b, after}, Found{tolerance, n});
+            Found& f = it->second;
+            const std::size_t count = closed ? (b + n - a) % n : b - a;
+            if (fresh && count > 1) {
+                for (const auto& pts : frames) {
+                    glm::dvec2 c1, c2;
+                    segment_controls(pts, knots, closed, s, c1, c2);
+                    const glm::dvec2 p0 = pts[a], p1 = pts[b];
+                    std::vector<glm::dvec2> curve;
+                    for (int i = 0; i <= 16; ++i) curve.push_back(cubic(p0, c1, c2, p1, i / 16.0));
+                    std::vector<glm::dvec2> poly;
+                    for (std::size_t k = 0; k <= count; ++k) poly.push_back(pts[(a + k) % n]);
+                    for (std::size_t k = 1; k < count; ++k) {
+                        const double d = distance_to_polyline(poly[k], curve);
+                        if (d > f.worst) f.worst = d, f.point = (a + k) % n;
+                    }
+                    // The curve's own bulge away from the polyline.
+                    for (const glm::dvec2& c : curve) {
+                        const double d = distance_to_polyline(c, poly);
+                        if (d > f.worst) {
+                            f.worst = d;
+                            f.point = (a + count / 2) % n;
+                        }
                     }
                 }
             }
+            if (f.point < n && !keep[f.point]) keep[f.point] = 1, added = true;
         }
-        for (std::size_t s = 0; s < segments; ++s)
-            if (worst_point[s] < n && !keep[worst_point[s]]) keep[worst_point[s]] = 1, added = true;
         if (!added) return knots;
     }
 }

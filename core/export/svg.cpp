@@ -1,4 +1,5 @@
 #include "core/export/svg.h"
+#include "core/util/parallel.h"
 
 #include <algorithm>
 #include <cmath>
@@ -232,16 +233,23 @@ std::string to_svg(const Drawing& drawing, const Style& style, const std::vector
         // points: only those that bend them stay. Each region is simplified
         // on its own, which can open slivers between neighbours, so the
         // simplified regions are made a partition again.
-        PlanarMap drawn;
-        for (const MapRegion& region : *regions) {
+        // Outlines are simplified before they are eroded too: the offset's
+        // cost grows with their points. Regions erode in parallel.
+        std::vector<MapRegion> eroded(regions->size());
+        parallel_for(regions->size(), [&](std::size_t i) {
+            const MapRegion& region = (*regions)[i];
             const RegionStyle* rs = style.region(region_class_name(region.cls), region.k);
-            if (!rs) continue;
-            MapRegion r = region;
+            if (!rs) return;
+            MapRegion& r = eroded[i];
+            r = region;
             r.polygons.clear();
-            for (const auto& poly : erode(region.polygons, rs->erosion)) r.polygons.push_back(simplify_polyline(poly, true, kFillTolerancePx));
-            if (r.polygons.empty()) continue;
-            drawn.regions.push_back(std::move(r));
-        }
+            std::vector<std::vector<glm::dvec2>> outline;
+            for (const auto& poly : region.polygons) outline.push_back(simplify_polyline(poly, true, kFillTolerancePx));
+            for (const auto& poly : erode(outline, rs->erosion)) r.polygons.push_back(simplify_polyline(poly, true, kFillTolerancePx));
+        }, 1);
+        PlanarMap drawn;
+        for (MapRegion& r : eroded)
+            if (!r.polygons.empty()) drawn.regions.push_back(std::move(r));
         subtract_nearer_regions(drawn);
         out += "<g id=\"fills\" stroke=\"none\" fill-rule=\"nonzero\">\n";
         for (const MapRegion& region : drawn.regions) {

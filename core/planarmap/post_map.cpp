@@ -515,7 +515,10 @@ std::vector<std::vector<glm::dvec2>> erode(const std::vector<std::vector<glm::dv
     Paths out;
     for (ClipperLib::PolyNode* node = tree.GetFirst(); node; node = node->GetNext()) {
         if (node->IsHole()) continue;
-        ClipperLib::ClipperOffset offset;
+        // Round joins within a hundredth of a pixel (Clipper's default, a
+        // quarter of a grid unit, is 1/4096 px: hundreds of points per
+        // rounded corner that the drawing simplifies away again).
+        ClipperLib::ClipperOffset offset(2.0, 0.01 * clip::kScale);
         offset.AddPath(node->Contour, ClipperLib::jtRound, ClipperLib::etClosedPolygon);
         for (const ClipperLib::PolyNode* hole : node->Childs) offset.AddPath(hole->Contour, ClipperLib::jtRound, ClipperLib::etClosedPolygon);
         Paths part;
