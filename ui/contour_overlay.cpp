@@ -61,6 +61,7 @@ std::shared_ptr<ContourScene> make_contour_scene(const LoadedMesh& mesh, const s
     scene->mesh_path = path;
     scene->rest_positions = scene->topology.positions;
     scene->rest_normals = scene->topology.normals;
+    scene->tracking = std::make_unique<StillTracking>(scene->topology);
     // Only formats that carry animation are read a second time for clips.
     const QString suffix = QString::fromStdString(path).section('.', -1).toLower();
     static const QStringList animated{"gltf", "glb", "fbx", "dae", "x", "blend", "md5mesh", "ms3d", "b3d", "smd", "bvh"};
@@ -71,13 +72,20 @@ std::shared_ptr<ContourScene> make_contour_scene(const LoadedMesh& mesh, const s
 namespace {
 
 /// Poses @p scene for @p pose (or back to rest); true when the mesh moved.
+/// Contours track through a step of one frame of the same clip; any other
+/// change of pose is a jump for them.
 bool pose_scene(const LoadedMesh& mesh, ContourScene& scene, const std::optional<ClipPose>& pose) {
     if (!pose) {
         if (!scene.posed) return false;
         scene.topology.positions = scene.rest_positions;
         scene.topology.normals = scene.rest_normals;
         scene.posed = false;
+        if (scene.tracking) scene.tracking->jump();
     } else {
+        const bool same_clip = scene.driver && scene.driver_spec == pose->clip;
+        if (scene.posed && same_clip && pose->frame == scene.posed_frame) return false; // already there
+        if (scene.tracking && !(scene.posed && same_clip && std::abs(pose->frame - scene.posed_frame) <= 1))
+            scene.tracking->jump();
         if (!scene.driver || !(scene.driver_spec == pose->clip)) {
             scene.driver.reset();
             const glm::dvec3 centre = 0.5 * (mesh.report.bbox_min + mesh.report.bbox_max);
@@ -89,6 +97,7 @@ bool pose_scene(const LoadedMesh& mesh, ContourScene& scene, const std::optional
         Light unused_light;
         scene.driver->apply(pose->frame, unused_camera, unused_light);
         scene.posed = true;
+        scene.posed_frame = pose->frame;
     }
     scene.rays->refit();
     return true;
@@ -113,7 +122,7 @@ OverlayResult compute_overlay(const LoadedMesh& mesh, ContourScene& scene, const
     StillJob job = make_still_job(style, camera, light);
     auto is_parabolic = [](const ContourSpec& k) { return k.kind == ContourKind::Parabolic; };
     if (!parabolic) job.kinds.erase(std::remove_if(job.kinds.begin(), job.kinds.end(), is_parabolic), job.kinds.end());
-    StillOutput still = render_still(mesh, scene.topology, scene.rays.get(), job);
+    StillOutput still = render_still(mesh, scene.topology, scene.rays.get(), job, scene.tracking.get());
     out.light = job.light;
     if (show_parabolic && parabolic && std::none_of(job.kinds.begin(), job.kinds.end(), is_parabolic)) {
         // View > Parabolic Curves: in the 3-D view only.

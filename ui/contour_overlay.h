@@ -8,6 +8,7 @@
 
 #include <QString>
 
+#include "core/animation/still.h"
 #include "core/mesh/build.h"
 #include "core/parabolic/parabolic.h"
 #include "core/scene/animation.h"
@@ -30,6 +31,10 @@ struct ContourScene {
     std::unique_ptr<FrameDriver> driver;                  ///< for the clip posed last
     AnimationSpec driver_spec;
     bool posed = false; ///< the topology is not in the loaded pose
+    int posed_frame = 0; ///< the clip frame posed last
+    /// The contours of the last frame, followed to the next one (orbits,
+    /// light turns and one-frame scrubs track; a jump starts anew).
+    std::unique_ptr<StillTracking> tracking;
 };
 
 /// Builds the scene of @p mesh read from @p path (topology, ray-tracing

@@ -369,6 +369,8 @@ void MainWindow::exportAnimation(const QString& path, AnimationFormat format) {
 
 QString MainWindow::exportCancelledMessage() { return tr("Export cancelled; nothing was written"); }
 
+bool MainWindow::contoursBusy() const { return contourTimer_->isActive() || contourWatcher_.isRunning(); }
+
 void MainWindow::scheduleContours() {
     if (scene_) contourTimer_->start();
 }

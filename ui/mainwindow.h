@@ -84,6 +84,8 @@ class MainWindow : public QMainWindow {
     /// they are being found off the GUI thread).
     std::shared_ptr<const ParabolicResult> parabolicCurves() const { return parabolic_; }
     /// The view or the style asks for parabolic curves not found yet.
+    /// Contours are scheduled or being computed (a result is still to come).
+    bool contoursBusy() const;
     bool parabolicPending() const { return wantsParabolic() && !(parabolic_ && scene_ && parabolicFor_ == meshGeneration_); }
     /// Exports the timeline's animation as animated SVG (or Lottie) to
     /// @p path off the GUI thread, with a progress dialog that can cancel

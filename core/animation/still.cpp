@@ -5,6 +5,7 @@
 #include <memory>
 
 #include "core/export/svg.h"
+#include "core/util/parallel.h"
 
 namespace snaxels {
 
@@ -29,14 +30,107 @@ StillJob make_still_job(const Style& style, const Camera& camera, const std::opt
     return job;
 }
 
+StillTracking::StillTracking(const MeshTopology& topology, double max_step_deg)
+    : topo_(topology), max_step_deg_(max_step_deg) {}
+
+namespace {
+
+double angle_deg(const glm::dvec3& a, const glm::dvec3& b) {
+    return glm::degrees(std::acos(std::clamp(glm::dot(a, b), -1.0, 1.0)));
+}
+
+bool same_spec(const ContourSpec& a, const ContourSpec& b) { return a.kind == b.kind && std::abs(a.k - b.k) < 1e-9; }
+
+} // namespace
+
+std::vector<ContourResult> StillTracking::compute(const std::vector<ContourSpec>& specs, const Camera& camera,
+                                                  const Light& light, const EngineOptions& options,
+                                                  const glm::dvec3& centre) {
+    // A far step: what the view and the light look like from the mesh's centre.
+    bool far = !camera_ || !light_ || camera_->projection != camera.projection || light_->point != light.point;
+    if (!far)
+        far = angle_deg(camera_->to_viewer(centre), camera.to_viewer(centre)) > max_step_deg_ ||
+              angle_deg(light_->to_light(centre), light.to_light(centre)) > max_step_deg_;
+    if (far) trackers_.clear();
+    camera_ = camera;
+    light_ = light;
+    // Trackers for the kinds asked for, in order; the others forgotten.
+    std::map<std::string, std::unique_ptr<ContourTracker>> kept;
+    std::vector<ContourTracker*> tracker(specs.size(), nullptr);
+    for (std::size_t i = 0; i < specs.size(); ++i) {
+        if (specs[i].kind == ContourKind::Parabolic) continue;
+        const std::string key = specs[i].label();
+        auto it = kept.find(key);
+        if (it == kept.end()) {
+            auto old = trackers_.find(key);
+            std::unique_ptr<ContourTracker> t = old != trackers_.end() && old->second
+                                                    ? std::move(old->second)
+                                                    : std::make_unique<ContourTracker>(topo_, specs[i], options);
+            it = kept.emplace(key, std::move(t)).first;
+        }
+        tracker[i] = it->second.get();
+    }
+    trackers_ = std::move(kept);
+    std::vector<ContourResult> results(specs.size());
+    std::vector<char> fresh(specs.size(), 0);
+    const SnaxelEngine engine(topo_);
+    // One tracker may serve two equal specs: each tracker steps once.
+    std::vector<std::size_t> first_of(specs.size());
+    for (std::size_t i = 0; i < specs.size(); ++i) {
+        first_of[i] = i;
+        for (std::size_t j = 0; j < i; ++j)
+            if (tracker[i] && tracker[j] == tracker[i]) {
+                first_of[i] = j;
+                break;
+            }
+    }
+    parallel_for(specs.size(), [&](std::size_t i) {
+        if (!tracker[i]) {
+            results[i] = engine.compute(specs[i], camera, light, options);
+        } else if (first_of[i] == i) {
+            fresh[i] = tracker[i]->frames() == 0;
+            results[i] = tracker[i]->step(camera, light).contour;
+        }
+    }, 1);
+    for (std::size_t i = 0; i < specs.size(); ++i) {
+        if (first_of[i] != i) results[i] = results[first_of[i]];
+        else if (tracker[i]) (fresh[i] ? restarts_ : tracked_) += 1;
+    }
+    return results;
+}
+
 StillOutput render_still(const LoadedMesh& mesh, const MeshTopology& topology, const RayScene* rays,
-                         const StillJob& job) {
+                         const StillJob& job, StillTracking* tracking) {
     StillOutput out;
     const MeshReport& report = mesh.report;
     const glm::dvec3 centre = 0.5 * (report.bbox_min + report.bbox_max);
     const double radius = std::max(0.5 * glm::length(report.bbox_max - report.bbox_min), 1e-12);
     const SnaxelEngine engine(topology);
-    for (const ContourSpec& spec : job.kinds) out.results.push_back(engine.compute(spec, job.camera, job.light, job.engine));
+
+    // Every contour at once (in parallel): the drawn kinds, then those the
+    // style's fills need that are not drawn (job.map_kind: the snaxel-defined
+    // map unless the job asks for the post-processed one); without fills
+    // but asked for the map, its whole: patches, lit and shadow.
+    const bool map = !job.style.regions.empty() || job.planar_map;
+    std::vector<ContourSpec> specs = job.kinds;
+    std::vector<ContourSpec> needed;
+    if (map) {
+        needed = job.style.fill_contours();
+        if (needed.empty()) needed = {ContourSpec{}, ContourSpec{ContourKind::Shadow, 0.0}};
+        for (const ContourSpec& spec : needed)
+            if (std::none_of(specs.begin(), specs.end(), [&](const ContourSpec& s) { return same_spec(s, spec); }))
+                specs.push_back(spec);
+    }
+    std::vector<ContourResult> all;
+    if (tracking) {
+        all = tracking->compute(specs, job.camera, job.light, job.engine, centre);
+    } else {
+        all.resize(specs.size());
+        parallel_for(specs.size(), [&](std::size_t i) { all[i] = engine.compute(specs[i], job.camera, job.light, job.engine); }, 1);
+    }
+    out.results.assign(std::make_move_iterator(all.begin()), std::make_move_iterator(all.begin() + std::ptrdiff_t(job.kinds.size())));
+    const std::vector<ContourResult> fill_results(std::make_move_iterator(all.begin() + std::ptrdiff_t(job.kinds.size())),
+                                                  std::make_move_iterator(all.end()));
 
     std::unique_ptr<RayScene> own_rays;
     if (job.visibility) {
@@ -47,25 +141,14 @@ StillOutput render_still(const LoadedMesh& mesh, const MeshTopology& topology, c
     const ImageProjection projection(job.camera, centre, radius, job.style.width, job.style.height, job.style.margin);
     out.drawing = make_drawing(engine, out.results, projection, job.visibility ? &out.visibility : nullptr);
 
-    // Fills: the planar map (job.map_kind: the snaxel-defined map unless the
-    // job asks for the post-processed one) of the contours the style's region
-    // classes need (computed here if they are not drawn).
-    if (!job.style.regions.empty() || job.planar_map) {
-        std::vector<ContourResult> fill_results;
-        auto same = [](const ContourSpec& a, const ContourSpec& b) { return a.kind == b.kind && std::abs(a.k - b.k) < 1e-9; };
+    if (map) {
         auto result_of = [&](const ContourSpec& spec) -> const ContourResult* {
             for (const ContourResult& r : out.results)
-                if (same(r.spec, spec)) return &r;
+                if (same_spec(r.spec, spec)) return &r;
             for (const ContourResult& r : fill_results)
-                if (same(r.spec, spec)) return &r;
+                if (same_spec(r.spec, spec)) return &r;
             return nullptr;
         };
-        std::vector<ContourSpec> needed = job.style.fill_contours();
-        if (needed.empty()) // the whole map: patches, lit and shadow
-            needed = {ContourSpec{}, ContourSpec{ContourKind::Shadow, 0.0}};
-        fill_results.reserve(needed.size()); // result_of's pointers must stay valid
-        for (const ContourSpec& spec : needed)
-            if (!result_of(spec)) fill_results.push_back(engine.compute(spec, job.camera, job.light, job.engine));
         std::vector<const ContourResult*> contours;
         for (const ContourSpec& spec : needed) contours.push_back(result_of(spec));
         if (!rays) rays = (own_rays = std::make_unique<RayScene>(topology)).get();

@@ -3,6 +3,8 @@
 /// contours` and the application's SVG pane: contours, hidden lines, the
 /// planar map the style's fills need, the drawing and its SVG.
 
+#include <map>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -10,6 +12,7 @@
 #include "core/export/drawing.h"
 #include "core/mesh/build.h"
 #include "core/planarmap/planar_map.h"
+#include "core/snaxel/tracker.h"
 #include "core/style/style.h"
 #include "core/visibility/visibility.h"
 
@@ -45,9 +48,46 @@ Light job_light(const Style& style, const Camera& camera, const std::optional<Li
 /// The contours @p style draws (its <contour> kinds), or the visual contour.
 std::vector<ContourSpec> style_kinds(const Style& style);
 
+/// Contours followed from one still frame to the next, as the application's
+/// view does while the user orbits, zooms, turns the light or scrubs: each
+/// kind's tracker (core/snaxel/tracker.h) moves its fronts on from the last
+/// frame instead of sweeping the whole mesh again. Tracked fronts are the
+/// ones a computation from scratch finds (the tracker's tests); tracking is
+/// only faster while little changes between frames, so a jump (the view or
+/// the light turned by more than max_step_deg as seen from the mesh's
+/// centre, a change of projection, a pose not next to the last: see jump())
+/// starts from scratch, as a kind seen for the first time does. Parabolic
+/// curves, the mesh's own, are never tracked.
+class StillTracking {
+  public:
+    /// @p topology may move between frames (a posed mesh); its connectivity may not.
+    explicit StillTracking(const MeshTopology& topology, double max_step_deg = 10.0);
+
+    /// The next frame's contour of every kind in @p specs (in order), each
+    /// tracked from its last frame or computed from scratch; kinds not asked
+    /// for are forgotten. The kinds run in parallel.
+    std::vector<ContourResult> compute(const std::vector<ContourSpec>& specs, const Camera& camera, const Light& light,
+                                       const EngineOptions& options, const glm::dvec3& centre);
+
+    /// The mesh jumped (another pose, edited geometry): every kind starts anew.
+    void jump() { trackers_.clear(); }
+
+    std::size_t tracked_steps() const { return tracked_; }   ///< kind-frames tracked, over the object's life
+    std::size_t restarts() const { return restarts_; }       ///< kind-frames computed from scratch
+
+  private:
+    const MeshTopology& topo_;
+    double max_step_deg_;
+    std::map<std::string, std::unique_ptr<ContourTracker>> trackers_; ///< by ContourSpec::label()
+    std::optional<Camera> camera_;
+    std::optional<Light> light_;
+    std::size_t tracked_ = 0, restarts_ = 0;
+};
+
 /// Renders @p job on @p topology, whose bounding box is @p mesh's report's.
 /// @p rays may be given (built once per mesh); else one is built if needed.
+/// With @p tracking the contours are tracked from its last frame.
 StillOutput render_still(const LoadedMesh& mesh, const MeshTopology& topology, const RayScene* rays,
-                         const StillJob& job);
+                         const StillJob& job, StillTracking* tracking = nullptr);
 
 } // namespace snaxels

@@ -2,6 +2,7 @@
 
 #include "core/parabolic/parabolic.h"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <numeric>
@@ -214,7 +215,12 @@ ContourResult SnaxelEngine::compute(const ContourSpec& spec, const Camera& camer
 
     std::vector<std::uint8_t> inside(nv);
     for (std::size_t v = 0; v < nv; ++v) inside[v] = result.regions[result.vertex_region[v]].sign > 0;
-    result.fronts = extract_fronts(topo_, inside, positive.stopped_edges());
+    // In edge order, as a scan of the edges (and the tracker) gives them: a
+    // tracked frame and the same frame computed anew have the same loops,
+    // in the same order, from the same snaxels, so they draw the same SVG.
+    std::vector<std::int32_t> crossing = positive.stopped_edges();
+    std::sort(crossing.begin(), crossing.end());
+    result.fronts = extract_fronts(topo_, inside, crossing);
     // N.V along a slerp is one sinusoid over less than half a period: a
     // single crossing, so only the other kinds need the bracketing scan.
     const int scan = spec.kind == ContourKind::Visual ? 1 : options.polish_scan_samples;

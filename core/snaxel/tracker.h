@@ -51,6 +51,8 @@ class ContourTracker {
     const TrackedFrame& step(const Camera& camera, const Light& light);
 
     const TrackedFrame& current() const { return frame_; }
+    /// Frames stepped so far (0: the next step starts from scratch).
+    int frames() const { return frame_number_ + 1; }
 
   private:
     void start(const Camera& camera, const Light& light);

@@ -177,6 +177,10 @@ class TestMainWindow : public QObject {
 
         // A broken style is reported at its line and column; the last good
         // style stays in force.
+        // (Updates still under way land first: orbits and edits may each
+        // bring more than one as results come in.)
+        QTRY_VERIFY_WITH_TIMEOUT(!window.contoursBusy(), 30000);
+        QTest::qWait(100);
         const QByteArray good = window.currentSvg();
         contours.clear();
         window.styleEditor()->editor()->setPlainText(

@@ -1,0 +1,58 @@
+// The application's update path (ui/contour_overlay: what the 3-D view and
+// the SVG pane show after each camera step) while the user orbits the horse
+// one degree at a time: per-step medians and 95th percentiles, with the
+// shading-lines preset (five kinds, hidden lines) and the toon preset
+// (fills from the snaxel map).
+
+#include <benchmark/benchmark.h>
+
+#include <algorithm>
+#include <chrono>
+
+#include "core/mesh/import.h"
+#include "core/scene/orbit.h"
+#include "core/style/style.h"
+#include "ui/contour_overlay.h"
+
+using namespace snaxels;
+
+namespace {
+
+double percentile(std::vector<double> v, double p) {
+    std::sort(v.begin(), v.end());
+    return v.empty() ? 0.0 : v[std::min(v.size() - 1, std::size_t(p * double(v.size())))];
+}
+
+void orbit_horse(benchmark::State& state, const char* style_file) {
+    const std::string path = std::string(SNAXELS_TEST_ASSETS) + "/horse.ply";
+    const LoadedMesh mesh = import_mesh(path);
+    const Style style = load_style(std::string(SNAXELS_STYLES_DIR) + "/" + style_file, nullptr);
+    const glm::dvec3 centre = 0.5 * (mesh.report.bbox_min + mesh.report.bbox_max);
+    const double radius = 0.5 * glm::length(mesh.report.bbox_max - mesh.report.bbox_min);
+    std::vector<double> ms;
+    std::size_t snaxels = 0;
+    for (auto _ : state) {
+        const std::shared_ptr<ui::ContourScene> scene = ui::make_contour_scene(mesh, path);
+        OrbitView view = framing_view(centre, radius);
+        ms.clear();
+        for (int step = 0; step <= 120; ++step) {
+            const auto t0 = std::chrono::steady_clock::now();
+            const ui::OverlayResult r = ui::compute_overlay(mesh, *scene, orbit_camera(view), style);
+            const double t = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+            if (step > 0) ms.push_back(t); // step 0 is the first view, from scratch
+            snaxels = r.snaxels;
+            view.yaw += glm::radians(1.0);
+        }
+    }
+    state.counters["median_step_ms"] = percentile(ms, 0.5);
+    state.counters["p95_step_ms"] = percentile(ms, 0.95);
+    state.counters["snaxels"] = double(snaxels);
+}
+
+} // namespace
+
+static void BM_AppOrbitHorseShadingLines(benchmark::State& state) { orbit_horse(state, "shading-lines.xml"); }
+BENCHMARK(BM_AppOrbitHorseShadingLines)->Unit(benchmark::kMillisecond)->Iterations(1)->UseRealTime();
+
+static void BM_AppOrbitHorseToon(benchmark::State& state) { orbit_horse(state, "toon.xml"); }
+BENCHMARK(BM_AppOrbitHorseToon)->Unit(benchmark::kMillisecond)->Iterations(1)->UseRealTime();
