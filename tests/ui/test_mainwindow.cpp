@@ -1,6 +1,8 @@
 // The main window under a real X server (xvfb-run): the default scene loads
 // on a worker thread and the 3-D view shows it shaded.
 
+#include <cstdio>
+
 #include <QApplication>
 #include <QDir>
 #include <QElapsedTimer>
@@ -32,6 +34,7 @@
 #include <QTest>
 
 #include "core/mesh/procedural.h"
+#include "core/project/project.h"
 #include "ui/mainwindow.h"
 #include "ui/meshview.h"
 #include "ui/resources.h"
@@ -832,6 +835,58 @@ class TestMainWindow : public QObject {
         QCOMPARE(window.projectPath(), dir.filePath("dropped.snaxels"));
     }
 
+    // A save killed at any moment (SIGKILL to a helper process that saves
+    // the project over and over) leaves the earlier project file, byte for
+    // byte, or a complete new one.
+    void projectSaveSurvivesKill() {
+        QTemporaryDir dir;
+        QVERIFY(dir.isValid());
+        const QString path = dir.filePath("scene.snaxels");
+        snaxels::Project earlier_project;
+        earlier_project.mesh = "proc:torus:20000";
+        earlier_project.style = "<style version=\"1\"/>\n";
+        snaxels::write_project(path.toStdString(), earlier_project);
+        const QByteArray earlier = readAll(path);
+        QVERIFY(!earlier.isEmpty());
+        int kept = 0, complete = 0;
+        for (int round = 0; round < 20; ++round) {
+            QFile::remove(path);
+            QFile f(path);
+            QVERIFY(f.open(QIODevice::WriteOnly));
+            f.write(earlier);
+            f.close();
+            QProcess helper;
+            helper.start(QCoreApplication::applicationFilePath(), {"--save-helper", path});
+            QVERIFY(helper.waitForStarted(10000));
+            // Killed while it saves: after 0 to 40 ms of saving.
+            QVERIFY(helper.waitForReadyRead(60000));
+            QTest::qWait(2 * round);
+            helper.kill(); // SIGKILL
+            QVERIFY(helper.waitForFinished(10000));
+            const QByteArray now = readAll(path);
+            if (now == earlier) {
+                ++kept;
+                continue;
+            }
+            snaxels::Project p;
+            try {
+                p = snaxels::read_project(path.toStdString());
+            } catch (const std::exception& e) {
+                QFAIL(qPrintable(QString("round %1: the project file is broken: %2").arg(round).arg(e.what())));
+            }
+            QCOMPARE(p.mesh, std::string("proc:torus:20000"));
+            QVERIFY2(QString::fromStdString(p.style).contains("helper save"), p.style.c_str());
+            ++complete;
+        }
+        qInfo("20 kills: %d left the earlier project, %d a complete new one", kept, complete);
+        QVERIFY(complete > 0);
+        // No temporaries stay once a save has run after the kills.
+        MainWindow window;
+        QVERIFY(showWithMesh(window, "proc:torus:20000"));
+        QVERIFY(window.saveProject(path));
+        QCOMPARE(QDir(dir.path()).entryList(QDir::Files | QDir::Hidden), QStringList{"scene.snaxels"});
+    }
+
     void reportsAFileThatFailsToLoad() {
         MainWindow window;
         window.show();
@@ -850,6 +905,26 @@ int main(int argc, char** argv) {
     format.setDepthBufferSize(24);
     QSurfaceFormat::setDefaultFormat(format);
     QApplication app(argc, argv);
+    if (argc == 3 && QString(argv[1]) == "--save-helper") {
+        // For projectSaveSurvivesKill: load a mesh, say so, then save the
+        // project to argv[2] over and over, a different style each time,
+        // until killed.
+        QStandardPaths::setTestModeEnabled(true);
+        MainWindow window;
+        window.show();
+        QSignalSpy loaded(&window, &MainWindow::meshLoaded);
+        window.openMesh("proc:torus:20000");
+        if (!loaded.wait(60000)) return 2;
+        std::printf("ready\n");
+        std::fflush(stdout);
+        for (int n = 0;; ++n) {
+            window.styleEditor()->setText(QString("<style version=\"1\">\n<!-- helper save %1 %2 -->\n</style>\n")
+                                              .arg(n)
+                                              .arg(QString(4000 + n % 7, 'x')),
+                                          "style");
+            if (!window.saveProject(QString(argv[2]))) return 3;
+        }
+    }
     TestMainWindow test;
     return QTest::qExec(&test, argc, argv);
 }
