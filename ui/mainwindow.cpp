@@ -351,10 +351,12 @@ void MainWindow::exportAnimation(const QString& path, AnimationFormat format) {
             emit exportFailed(error);
         }
     });
-    exportFuture_ = QtConcurrent::run([mesh, mesh_path, job, path]() -> QString {
+    exportFuture_ = QtConcurrent::run([mesh, mesh_path, job, path]() mutable -> QString {
         try {
-            const AnimationOutput out = run_animation(*mesh, mesh_path, job);
-            write_file_atomically(path.toStdString(), out.document); // only now: a cancel leaves nothing
+            // Written as the frames are made; the file appears, whole, only
+            // at the end: a cancel or a failure leaves nothing.
+            job.output = path.toStdString();
+            run_animation(*mesh, mesh_path, job);
             return {};
         } catch (const AnimationCancelled&) {
             return exportCancelledMessage();

@@ -33,7 +33,7 @@ nlohmann::json stats_json(const AnimationOutput& result) {
         one_frame += p.frames_shown == 1;
     }
     return {{"frames", result.frames},
-            {"bytes", result.document.size()},
+            {"bytes", result.bytes},
             {"paths", st.paths},
             {"paths_shown_one_frame", one_frame},
             {"keyframes", st.keyframes},
@@ -144,9 +144,9 @@ int run_animate(const std::vector<std::string>& argv) {
     job.svg = svg_options;
     job.format = format;
     job.frames_dir = frames_dir;
+    job.output = *output; // written as the frames are made, atomically
     const AnimationOutput result = run_animation_with_progress(loaded, mesh_path, job);
-    write_file_atomically(*output, result.document);
-    if (!events_out.empty()) write_file_atomically(events_out, result.events.dump(1) + "\n");
+    if (!events_out.empty()) write_file_atomically(events_out, events_json(result, job).dump(1) + "\n");
     if (!stats_out.empty()) write_file_atomically(stats_out, stats_json(result).dump(1) + "\n");
     const double total_ms =
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t_start).count();
@@ -156,7 +156,7 @@ int run_animate(const std::vector<std::string>& argv) {
     std::printf("%s: %d frames at %g fps, %zu paths, %zu keyframes (of %zu path-frames), %zu bytes; "
                 "tracking %.2f ms per frame, %.0f ms in all; %zu events\n",
                 output->c_str(), result.frames, anim.fps, stats.paths, stats.keyframes, stats.frames_spanned,
-                result.document.size(), tracking / std::max(1, result.frames), total_ms, result.events.size());
+                result.bytes, tracking / std::max(1, result.frames), total_ms, result.events.size());
     return 0;
 }
 

@@ -60,10 +60,10 @@ int run_render(const std::vector<std::string>& argv) {
     job.format = format;
 
     if (!args.flag("still")) {
+        job.output = *output; // written as the frames are made, atomically
         const AnimationOutput result = run_animation_with_progress(loaded, mesh_path, job);
-        write_file_atomically(*output, result.document);
         std::printf("%s: %d frames at %g fps, %zu paths, %zu bytes\n", output->c_str(), result.frames,
-                    project.animation.fps, result.stats.paths, result.document.size());
+                    project.animation.fps, result.stats.paths, result.bytes);
         return 0;
     }
     const int frame = args.value("frame") ? parse_int("frame", *args.value("frame"), 0, 100000) : project.frame;

@@ -40,6 +40,16 @@ AnimationJob make_animation_job(const Style& style, const AnimationSpec& animati
     return job;
 }
 
+nlohmann::json events_json(const AnimationOutput& out, const AnimationJob& job) {
+    nlohmann::json events = nlohmann::json::array();
+    for (const auto& [c, e] : out.events)
+        events.push_back({{"frame", e.frame},
+                          {"kind", event_name(e.kind)},
+                          {"contour", job.kinds[c].label()},
+                          {"where", {e.where.x, e.where.y, e.where.z}}});
+    return events;
+}
+
 AnimationOutput run_animation(const LoadedMesh& mesh, const std::string& mesh_path, const AnimationJob& job) {
     AnimationOutput out;
     MeshTopology topology = engine_topology(mesh.mesh, job.refine);
@@ -120,8 +130,10 @@ AnimationOutput run_animation(const LoadedMesh& mesh, const std::string& mesh_pa
     RegionTracker region_tracker;
     std::unique_ptr<RayScene> rays;
     const SnaxelEngine engine(topology);
-    std::vector<AnimationFrame> recorded;
-    recorded.reserve(std::size_t(frames));
+    // Frames are encoded as they come; the document is written at the end.
+    AnimationWriter writer(job.format, std::size_t(frames), job.animation.fps, job.svg, job.style);
+    std::unique_ptr<AtomicFile> file;
+    if (!job.output.empty()) file = std::make_unique<AtomicFile>(job.output); // fails early on a bad path
     for (int k = 0; k < frames; ++k) {
         if (job.cancelled && job.cancelled()) throw AnimationCancelled();
         Camera camera;
@@ -156,11 +168,7 @@ AnimationOutput run_animation(const LoadedMesh& mesh, const std::string& mesh_pa
                 loops.push_back(std::move(al));
             }
             frame.loops.push_back(std::move(loops));
-            for (const VisualEvent& e : tf.events)
-                out.events.push_back({{"frame", e.frame},
-                                      {"kind", event_name(e.kind)},
-                                      {"contour", job.kinds[c].label()},
-                                      {"where", {e.where.x, e.where.y, e.where.z}}});
+            for (const VisualEvent& e : tf.events) out.events.push_back({c, e});
             if (job.visibility) visibility.push_back(VisibilitySampler(*rays, camera).classify(engine, tf.contour));
         }
         out.tracking_ms.push_back(ms);
@@ -205,12 +213,24 @@ AnimationOutput run_animation(const LoadedMesh& mesh, const std::string& mesh_pa
             write_file_atomically((std::filesystem::path(job.frames_dir) / name).string(),
                                   to_svg(frame.drawing, job.style, frame.regions.empty() ? nullptr : &frame.regions));
         }
-        recorded.push_back(std::move(frame));
+        writer.add(std::move(frame));
         if (job.progress) job.progress(k + 1, frames);
     }
-    out.document = job.format == AnimationFormat::Lottie
-                       ? to_lottie(recorded, job.animation.fps, job.svg, job.style, &out.stats)
-                       : to_animated_svg(recorded, job.animation.fps, job.svg, job.style, &out.stats);
+    if (file) {
+        std::string block; // written in blocks of about a megabyte
+        writer.finish(
+            [&](std::string_view piece) {
+                block += piece;
+                out.bytes += piece.size();
+                if (block.size() > (1u << 20)) file->write(block), block.clear();
+            },
+            &out.stats);
+        file->write(block);
+        file->commit();
+    } else {
+        writer.finish([&](std::string_view piece) { out.document += piece; }, &out.stats);
+        out.bytes = out.document.size();
+    }
     return out;
 }
 

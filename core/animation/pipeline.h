@@ -13,6 +13,7 @@
 #include <nlohmann/json.hpp>
 
 #include "core/export/animated_svg.h"
+#include "core/export/animation_writer.h"
 #include "core/planarmap/planar_map.h"
 #include "core/scene/animation.h"
 #include "core/snaxel/refine.h"
@@ -20,12 +21,6 @@
 #include "core/style/style.h"
 
 namespace snaxels {
-
-/// The file an animation is written as.
-enum class AnimationFormat {
-    Svg,    ///< animated SVG (SMIL), docs/animation.md
-    Lottie, ///< Lottie JSON, docs/lottie.md
-};
 
 /// The format a file name asks for: Lottie for .json (any case), else SVG.
 AnimationFormat animation_format_for(const std::string& path);
@@ -43,6 +38,11 @@ struct AnimationJob {
     AnimatedSvgOptions svg; ///< tolerances, for either format
     AnimationFormat format = AnimationFormat::Svg;
     std::string frames_dir; ///< when set, every frame is also written there as static SVG
+    /// When set, the animation is written to this file as it is made
+    /// (atomically: the file appears, whole, when the run succeeds) and
+    /// AnimationOutput::document stays empty; memory then does not grow
+    /// with the frame count (core/export/animation_writer.h).
+    std::string output;
     /// Called after each frame with (frames done, frames in all).
     std::function<void(int, int)> progress;
     /// When a kind is parabolic and the curves are not known yet: called as
@@ -58,8 +58,11 @@ struct AnimationCancelled : std::runtime_error {
 };
 
 struct AnimationOutput {
-    std::string document; ///< the animated SVG or the Lottie JSON, as job.format says
-    nlohmann::json events = nlohmann::json::array(); ///< [{frame, kind, contour, where}]
+    std::string document; ///< the animated SVG or the Lottie JSON, as job.format says (unless job.output is set)
+    /// The visual events, with the index of their kind in job.kinds (kept
+    /// compact: a long animation has thousands): events_json() lists them.
+    std::vector<std::pair<std::size_t, VisualEvent>> events;
+    std::size_t bytes = 0; ///< the document's size (in the file, with job.output)
     AnimatedSvgStats stats;
     std::vector<double> tracking_ms; ///< per frame, all kinds
     int frames = 0;
@@ -70,6 +73,10 @@ struct AnimationOutput {
 /// default light for the camera; the style's contours (visual if none).
 AnimationJob make_animation_job(const Style& style, const AnimationSpec& animation, const Camera& camera,
                                 const std::optional<Light>& light);
+
+/// @p out's events as JSON: [{frame, kind, contour, where}], contour the
+/// label of the kind in @p job.
+nlohmann::json events_json(const AnimationOutput& out, const AnimationJob& job);
 
 /// Runs @p job on @p mesh (read from @p mesh_path, which clips need).
 /// Throws snaxels::Error on bad input (a missing sequence file, an unknown clip).

@@ -369,6 +369,7 @@ void fill_paths(const std::vector<AnimationFrame>& frames, const Style& style, c
             path.region = rs;
             path.first = first;
             path.last = last;
+            path.track = id;
             for (const FillPlan& plan : writer.plan()) path.segments.push_back(writer.emit(plan, options.tolerance_px));
             out.push_back(std::move(path));
         }

@@ -12,20 +12,6 @@ std::size_t PathSegment::vertices() const {
     return n;
 }
 
-PathStats path_stats(const AnimatedPathData& path, const std::string& label, std::size_t keyframes) {
-    PathStats p;
-    p.kind = path.fill ? "fill" : "stroke";
-    p.label = label;
-    p.part = path.fill ? "fill" : path.cls ? "hidden" : "visible";
-    p.first = path.first;
-    p.last = path.last;
-    p.frames_shown = std::size_t(path.last - path.first + 1);
-    for (const PathSegment& seg : path.segments) p.vertices = std::max(p.vertices, seg.vertices());
-    p.keyframes = keyframes;
-    p.segments = path.segments.size();
-    return p;
-}
-
 void sum_stats(AnimatedSvgStats& st) {
     st.paths = st.keyframes = st.frames_spanned = st.vertices = 0;
     for (const PathStats& p : st.path_stats) {
@@ -37,11 +23,11 @@ void sum_stats(AnimatedSvgStats& st) {
 }
 
 std::vector<AnimatedPathData> animated_paths(const std::vector<AnimationFrame>& frames, const Style& style,
-                                             const AnimatedSvgOptions& options) {
+                                             const AnimatedSvgOptions& options, const ChunkContext* chunk) {
     std::vector<AnimatedPathData> paths;
     if (frames.empty()) return paths;
     fill_paths(frames, style, options, paths);
-    for (std::size_t c = 0; c < frames[0].drawing.contours.size(); ++c) stroke_paths(frames, c, style, options, paths);
+    for (std::size_t c = 0; c < frames[0].drawing.contours.size(); ++c) stroke_paths(frames, c, style, options, paths, chunk);
     return paths;
 }
 

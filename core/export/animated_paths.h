@@ -7,6 +7,8 @@
 // Consecutive segments meet at keys that draw the same shape a thousandth
 // of a frame apart (see path_keys.h).
 
+#include <cstdint>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -36,26 +38,50 @@ struct AnimatedPathData {
     std::string region_class;
     const RegionStyle* region = nullptr;
     int first = 0, last = 0; ///< frames shown
+    /// Strokes: the contour sequence; fills: the region track. With run (a
+    /// surface-dashed stroke's run, else 0) what a path follows, so that a
+    /// path written in pieces (AnimationWriter) goes on from piece to piece.
+    std::uint64_t track = 0;
+    int run = 0;
     std::vector<PathSegment> segments;
     /// Surface-fastened dashes: the dash offset (pixels) at key times (frames).
     std::vector<double> dash_times, dash_values;
 };
 
+/// When @p frames are a chunk of a longer animation (AnimationWriter): its
+/// first frame is the last of the chunk before, its last the first of the
+/// next. A one-frame contour there is drawn by one chunk only.
+struct ChunkContext {
+    /// Not the last chunk: one-frame contours at the last frame are left to the next.
+    bool defer_last = false;
+    /// (contour, sequence) of the contours the chunk before drew at the first frame.
+    std::set<std::pair<std::size_t, std::uint64_t>> drawn_first;
+};
+
 /// The stroke paths of contour @p c of @p frames (appended to @p out).
 void stroke_paths(const std::vector<AnimationFrame>& frames, std::size_t c, const Style& style,
-                  const AnimatedSvgOptions& options, std::vector<AnimatedPathData>& out);
+                  const AnimatedSvgOptions& options, std::vector<AnimatedPathData>& out,
+                  const ChunkContext* chunk = nullptr);
 
 /// The fill paths of every region track of @p frames (appended to @p out).
 void fill_paths(const std::vector<AnimationFrame>& frames, const Style& style, const AnimatedSvgOptions& options,
                 std::vector<AnimatedPathData>& out);
 
-/// The statistics of @p path, drawn with @p keyframes keys, for --stats.
-PathStats path_stats(const AnimatedPathData& path, const std::string& label, std::size_t keyframes);
 /// The totals of @p stats' path list.
 void sum_stats(AnimatedSvgStats& stats);
 
+/// Lottie pieces (core/export/lottie.cpp) for AnimationWriter: a segment's
+/// shape layer after its name (`,"ip":..,"op":..,...}`, empty when it draws
+/// nothing; @p keys counts its keyframes), a layer's start up to its name,
+/// the document's start and its background layer.
+std::string lottie_layer_body(const PathSegment& seg, double ip, double op, const AnimatedPathData& path,
+                              const StrokeStyle& stroke, std::size_t& keys);
+std::string lottie_layer_start(std::size_t ind, const std::string& name);
+std::string lottie_document_start(double fps, std::size_t frames, int width, int height);
+std::string lottie_background_layer(const Style& style, std::size_t frames, int width, int height, std::size_t ind);
+
 /// Every path of the animation: the fills, then each contour kind's strokes.
 std::vector<AnimatedPathData> animated_paths(const std::vector<AnimationFrame>& frames, const Style& style,
-                                             const AnimatedSvgOptions& options);
+                                             const AnimatedSvgOptions& options, const ChunkContext* chunk = nullptr);
 
 } // namespace snaxels

@@ -579,7 +579,7 @@ anim::Subpath run_polyline(const ParamLoop& p, const ClassSpan& span, const Anim
 } // namespace
 
 void stroke_paths(const std::vector<AnimationFrame>& frames, std::size_t c, const Style& style,
-                  const AnimatedSvgOptions& options, std::vector<AnimatedPathData>& out) {
+                  const AnimatedSvgOptions& options, std::vector<AnimatedPathData>& out, const ChunkContext* chunk) {
     const DrawnContour& contour0 = frames[0].drawing.contours[c];
     const ContourStyle cs = style.contour(contour0.spec);
     const StrokeStyle* strokes[2] = {&cs.visible, &cs.hidden};
@@ -617,6 +617,13 @@ void stroke_paths(const std::vector<AnimationFrame>& frames, std::size_t c, cons
             const int first = members[start].first;
             start = end;
             if (empty) continue;
+            if (chunk && life.size() == 1) {
+                // A one-frame contour on a frame two chunks share: the next
+                // chunk draws it (it may go on there), unless the chunk before
+                // drew it (it ended there).
+                if (chunk->defer_last && first + 1 == int(frames.size())) continue;
+                if (first == 0 && chunk->drawn_first.count({c, sequence})) continue;
+            }
             for (std::size_t i = 0; i < life.size(); ++i) {
                 life[i].loop = &loops[i];
                 for (const ClassSpan& s : loops[i].spans) life[i].runs[s.cls].push_back({0, s});
@@ -636,6 +643,8 @@ void stroke_paths(const std::vector<AnimationFrame>& frames, std::size_t c, cons
                     path.cls = cls;
                     path.first = first + int(a);
                     path.last = first + int(b);
+                    path.track = sequence;
+                    path.run = run_id;
                     for (const Plan& plan : plans) path.segments.push_back(writer.emit(plan, stroke.smoothing));
                     if (run_id) dash_offsets(life, cls, run_id, first, stroke, options, path);
                     out.push_back(std::move(path));

@@ -5,6 +5,7 @@
 #include <cstdio>
 
 #include "core/export/animated_paths.h"
+#include "core/export/animation_writer.h"
 
 namespace snaxels {
 namespace {
@@ -226,98 +227,51 @@ std::string dash_offset(const AnimatedPathData& path, double ip, double op) {
 
 } // namespace
 
-std::string to_lottie(const std::vector<AnimationFrame>& frames, double fps, const AnimatedSvgOptions& options,
-                      const Style& style, AnimatedSvgStats* stats) {
-    AnimatedSvgStats local;
-    AnimatedSvgStats& st = stats ? *stats : local;
-    st = {};
-    const int width = frames.empty() ? 16 : frames[0].drawing.width;
-    const int height = frames.empty() ? 16 : frames[0].drawing.height;
-    const std::size_t count = std::max<std::size_t>(frames.size(), 1);
-    const std::vector<AnimatedPathData> paths = animated_paths(frames, style, options);
+std::string lottie_layer_body(const PathSegment& seg, double ip, double op, const AnimatedPathData& path,
+                              const StrokeStyle& stroke, std::size_t& keys) {
+    std::string shapes;
+    const std::size_t k = segment_shapes(seg, shapes);
+    if (shapes.empty()) return {}; // nothing drawn in this stretch
+    keys += k;
+    shapes += ',';
+    shapes += path.fill ? fill_style(*path.region) : stroke_style(stroke, dash_offset(path, ip, op));
+    std::string layer = ",\"ip\":";
+    time_value(layer, ip);
+    layer += ",\"op\":";
+    time_value(layer, op);
+    layer += ",\"st\":0,\"ks\":{},\"shapes\":[" + shapes + "]}";
+    return layer;
+}
 
-    // Drawing order as in the animated SVG: fills, then every kind's hidden
-    // lines, then every kind's visible lines.
-    std::vector<const AnimatedPathData*> order;
-    for (const AnimatedPathData& p : paths)
-        if (p.fill) order.push_back(&p);
-    const std::size_t kinds = frames.empty() ? 0 : frames[0].drawing.contours.size();
-    for (const int cls : {1, 0})
-        for (std::size_t c = 0; c < kinds; ++c)
-            for (const AnimatedPathData& p : paths)
-                if (!p.fill && p.contour == c && p.cls == cls) order.push_back(&p);
+std::string lottie_layer_start(std::size_t ind, const std::string& name) {
+    std::string out = "{\"ty\":4,\"ind\":" + std::to_string(ind) + ",\"nm\":";
+    json_string(out, name);
+    return out;
+}
 
-    // Layers in drawing order; Lottie lists the topmost first.
-    std::vector<std::string> layers;
-    for (std::size_t n = 0; n < order.size(); ++n) {
-        const AnimatedPathData& path = *order[n];
-        std::string name, label;
-        StrokeStyle stroke;
-        if (path.fill) {
-            label = path.region_class;
-            name = "fill " + label;
-        } else {
-            const ContourSpec& spec = frames[0].drawing.contours[path.contour].spec;
-            const ContourStyle cs = style.contour(spec);
-            stroke = path.cls ? cs.hidden : cs.visible;
-            label = spec.label();
-            name = label + (path.cls ? " hidden" : " visible") + (path.brief ? " brief" : "");
-        }
-        name += " " + std::to_string(n + 1);
-        std::size_t keys = 0;
-        for (std::size_t s = 0; s < path.segments.size(); ++s) {
-            const PathSegment& seg = path.segments[s];
-            if (seg.times.empty()) continue;
-            const double ip = seg.times.front();
-            const double op = s + 1 < path.segments.size() && !path.segments[s + 1].times.empty()
-                                  ? path.segments[s + 1].times.front()
-                                  : double(path.last + 1);
-            if (op <= ip) continue;
-            std::string shapes;
-            const std::size_t k = segment_shapes(seg, shapes);
-            if (shapes.empty()) continue; // nothing drawn in this stretch
-            keys += k;
-            shapes += ',';
-            shapes += path.fill ? fill_style(*path.region) : stroke_style(stroke, dash_offset(path, ip, op));
-            std::string layer = "{\"ty\":4,\"nm\":";
-            json_string(layer, name + (path.segments.size() > 1 ? "." + std::to_string(s + 1) : std::string()));
-            layer += ",\"ip\":";
-            time_value(layer, ip);
-            layer += ",\"op\":";
-            time_value(layer, op);
-            layer += ",\"st\":0,\"ks\":{},\"shapes\":[" + shapes + "]}";
-            layers.push_back(std::move(layer));
-        }
-        st.path_stats.push_back(path_stats(path, label, keys));
-    }
+std::string lottie_document_start(double fps, std::size_t frames, int width, int height) {
     std::string out = "{\"v\":\"5.7.4\",\"nm\":\"snaxels\",\"fr\":";
     value(out, fps);
-    out += ",\"ip\":0,\"op\":" + std::to_string(count) + ",\"w\":" + std::to_string(width) +
+    out += ",\"ip\":0,\"op\":" + std::to_string(frames) + ",\"w\":" + std::to_string(width) +
            ",\"h\":" + std::to_string(height) + ",\"ddd\":0,\"assets\":[],\"layers\":[";
-    std::size_t ind = 1;
-    bool first = true;
-    for (auto it = layers.rbegin(); it != layers.rend(); ++it) {
-        if (!first) out += ",\n";
-        first = false;
-        // The layer index goes in after "ty" (layers are numbered top down).
-        it->insert(std::string("{\"ty\":4").size(), ",\"ind\":" + std::to_string(ind++));
-        out += *it;
-    }
-    if (style.background != "none") {
-        if (!first) out += ",\n";
-        out += "{\"ty\":1,\"ind\":" + std::to_string(ind) + ",\"nm\":\"background\",\"ip\":0,\"op\":" +
-               std::to_string(count) + ",\"st\":0,\"ks\":{},\"sw\":" + std::to_string(width) +
-               ",\"sh\":" + std::to_string(height) + ",\"sc\":";
-        json_string(out, style.background.size() == 7 ? style.background : [&] {
-            char buf[8];
-            std::snprintf(buf, sizeof buf, "#%06x", unsigned(colour_rgb(style.background)));
-            return std::string(buf);
-        }());
-        out += '}';
-    }
-    out += "]}\n";
-    sum_stats(st);
     return out;
+}
+
+std::string lottie_background_layer(const Style& style, std::size_t frames, int width, int height, std::size_t ind) {
+    std::string out = "{\"ty\":1,\"ind\":" + std::to_string(ind) + ",\"nm\":\"background\",\"ip\":0,\"op\":" +
+                      std::to_string(frames) + ",\"st\":0,\"ks\":{},\"sw\":" + std::to_string(width) +
+                      ",\"sh\":" + std::to_string(height) + ",\"sc\":";
+    json_string(out, style.background.size() == 7 ? style.background : [&] {
+        char buf[8];
+        std::snprintf(buf, sizeof buf, "#%06x", unsigned(colour_rgb(style.background)));
+        return std::string(buf);
+    }());
+    return out + '}';
+}
+
+std::string to_lottie(const std::vector<AnimationFrame>& frames, double fps, const AnimatedSvgOptions& options,
+                      const Style& style, AnimatedSvgStats* stats) {
+    return animation_document(AnimationFormat::Lottie, frames, fps, options, style, stats);
 }
 
 } // namespace snaxels

@@ -14,20 +14,23 @@ std::string Clock::dur() const {
     return buf;
 }
 
+void KeyTimePrinter::append(std::string& out, double t) {
+    const double x = std::clamp(t / double(clock_.frames), 0.0, 1.0);
+    char buf[32];
+    for (int digits = 6; digits <= 12; ++digits) {
+        std::snprintf(buf, sizeof buf, "%.*g", digits, x);
+        if (std::strtod(buf, nullptr) > printed_before_ || x <= printed_before_) break;
+    }
+    printed_before_ = std::strtod(buf, nullptr);
+    if (!first_) out += ';';
+    first_ = false;
+    out += buf;
+}
+
 std::string key_times(const std::vector<double>& times, const Clock& clock) {
     std::string out;
-    double printed_before = -1.0;
-    for (const double t : times) {
-        const double x = std::clamp(t / double(clock.frames), 0.0, 1.0);
-        char buf[32];
-        for (int digits = 6; digits <= 12; ++digits) {
-            std::snprintf(buf, sizeof buf, "%.*g", digits, x);
-            if (std::strtod(buf, nullptr) > printed_before || x <= printed_before) break;
-        }
-        printed_before = std::strtod(buf, nullptr);
-        if (!out.empty()) out += ';';
-        out += buf;
-    }
+    KeyTimePrinter printer(clock);
+    for (const double t : times) printer.append(out, t);
     return out;
 }
 
@@ -57,33 +60,41 @@ std::string display_animation(const ShownRanges& shown, const Clock& clock) {
 
 } // namespace
 
-std::size_t append_path(std::string& out, const std::string& attributes, const AnimatedPath& path, const Clock& clock,
-                        const std::string& children) {
-    const bool at_start = !path.shown.empty() && path.shown.front().first == 0;
-    const bool always = path.shown.size() == 1 && at_start && path.shown.front().second + 1 >= int(clock.frames);
-    const bool moves = std::any_of(path.values.begin(), path.values.end(),
-                                   [&](const std::string& v) { return v != path.values.front(); });
+std::string path_start(const std::string& attributes, const ShownRanges& shown, bool moves,
+                       const std::string& first_value, const Clock& clock) {
+    const bool at_start = !shown.empty() && shown.front().first == 0;
+    const bool always = shown.size() == 1 && at_start && shown.front().second + 1 >= int(clock.frames);
     // Without SMIL a path not shown at frame 0 is hidden, so its d need not
     // draw anything; with SMIL the d animation gives its shapes.
-    out += "<path" + attributes + " d=\"" + (at_start || !moves ? path.values.front() : std::string("M0 0")) + "\"";
+    std::string out = "<path" + attributes + " d=\"" + (at_start || !moves ? first_value : std::string("M0 0")) + "\"";
     if (!at_start) out += " display=\"none\"";
     out += ">";
-    if (!always && !path.shown.empty()) out += display_animation(path.shown, clock);
+    if (!always && !shown.empty()) out += display_animation(shown, clock);
+    return out;
+}
+
+std::string d_animation_start(const Clock& clock) {
+    return "<animate attributeName=\"d\" dur=\"" + clock.dur() + "\" repeatCount=\"indefinite\" keyTimes=\""; // calcMode linear, the default
+}
+
+std::size_t append_path(std::string& out, const std::string& attributes, const AnimatedPath& path, const Clock& clock,
+                        const std::string& children) {
+    const bool moves = std::any_of(path.values.begin(), path.values.end(),
+                                   [&](const std::string& v) { return v != path.values.front(); });
+    out += path_start(attributes, path.shown, moves, path.values.front(), clock);
     std::size_t keys = 1;
     if (moves) {
-        std::vector<double> times;
-        std::string values;
+        std::string times, values;
+        KeyTimePrinter printer(clock);
         auto add = [&](double t, const std::string& v) {
             if (!values.empty()) values += ';';
             values += v;
-            times.push_back(t);
+            printer.append(times, t);
         };
         if (path.times.front() > 0.0) add(0.0, path.values.front());
         for (std::size_t k = 0; k < path.times.size(); ++k) add(path.times[k], path.values[k]);
         if (path.times.back() < double(clock.frames)) add(double(clock.frames), path.values.back());
-        out += "<animate attributeName=\"d\" dur=\"" + clock.dur() +
-               "\" repeatCount=\"indefinite\" keyTimes=\"" + key_times(times, clock) + "\" values=\"" + values +
-               "\"/>"; // calcMode linear, the default
+        out += d_animation_start(clock) + times + kValuesStart + values + kAnimationEnd;
         keys = path.times.size();
     }
     out += children;

@@ -22,6 +22,19 @@ struct Clock {
 /// a thousandth of a frame apart).
 std::string key_times(const std::vector<double>& times, const Clock& clock);
 
+/// key_times one key at a time, for paths written as they come.
+class KeyTimePrinter {
+  public:
+    explicit KeyTimePrinter(const Clock& clock) : clock_(clock) {}
+    /// Appends the key at @p t (frames), after a ';' unless it is the first.
+    void append(std::string& out, double t);
+
+  private:
+    Clock clock_;
+    double printed_before_ = -1.0;
+    bool first_ = true;
+};
+
 /// Frame ranges [first, last] (inclusive, sorted, disjoint) in which a path is shown.
 using ShownRanges = std::vector<std::pair<int, int>>;
 
@@ -33,6 +46,17 @@ struct AnimatedPath {
     std::vector<std::string> values; ///< path data, parallel to times
     ShownRanges shown;
 };
+
+/// The start of append_path's element, up to its d animation: `<path
+/// ATTRIBUTES d="..." [display="none"]>` and the display animation. @p moves:
+/// whether the d values differ (else the path has no d animation).
+std::string path_start(const std::string& attributes, const ShownRanges& shown, bool moves,
+                       const std::string& first_value, const Clock& clock);
+/// The d animation is d_animation_start, the keyTimes, kValuesStart, the
+/// values, kAnimationEnd.
+std::string d_animation_start(const Clock& clock);
+inline constexpr const char* kValuesStart = "\" values=\"";
+inline constexpr const char* kAnimationEnd = "\"/>";
 
 /// Appends `<path ATTRIBUTES d="..." [display="none"]>` with its display and
 /// d animations, then @p children, then `</path>`. Without SMIL the path

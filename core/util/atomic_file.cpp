@@ -47,54 +47,79 @@ void remove_stale_temporaries(const std::filesystem::path& dir, const std::files
 
 } // namespace
 
-void write_file_atomically(const std::string& path, const std::string& content) {
+AtomicFile::AtomicFile(std::string path) : path_(std::move(path)) {
     namespace fs = std::filesystem;
-    auto fail = [&](const std::string& why) { throw Error("cannot write " + path + ": " + why); };
     std::error_code ec;
-    if (fs::is_directory(path, ec)) fail("it is a directory");
-    const fs::path target(path);
+    if (fs::is_directory(path_, ec)) fail("it is a directory");
+    const fs::path target(path_);
     const fs::path dir = target.has_parent_path() ? target.parent_path() : fs::path(".");
     if (!fs::is_directory(dir, ec)) fail("the folder " + dir.string() + " does not exist");
+    dir_ = dir.string();
     remove_stale_temporaries(dir, target);
+    tmp_ = (dir / (temp_prefix(target, long(::getpid())) + "XXXXXX")).string();
+    fd_ = ::mkstemp(tmp_.data());
+    if (fd_ < 0) {
+        tmp_.clear();
+        fail(std::strerror(errno));
+    }
+}
 
-    std::string tmp = (dir / (temp_prefix(target, long(::getpid())) + "XXXXXX")).string();
-    const int fd = ::mkstemp(tmp.data());
-    if (fd < 0) fail(std::strerror(errno));
-    const char* data = content.data();
-    std::size_t left = content.size();
-    while (left > 0) {
-        const ssize_t n = ::write(fd, data, left);
+AtomicFile::~AtomicFile() {
+    if (fd_ >= 0) ::close(fd_);
+    if (!tmp_.empty()) ::unlink(tmp_.c_str());
+}
+
+void AtomicFile::fail(const std::string& why) {
+    const std::string message = "cannot write " + path_ + ": " + why;
+    if (fd_ >= 0) ::close(fd_);
+    fd_ = -1;
+    if (!tmp_.empty()) ::unlink(tmp_.c_str());
+    tmp_.clear();
+    throw Error(message);
+}
+
+void AtomicFile::write(const char* data, std::size_t size) {
+    if (fd_ < 0) throw Error("cannot write " + path_ + ": the file is closed");
+    while (size > 0) {
+        const ssize_t n = ::write(fd_, data, size);
         if (n < 0) {
             if (errno == EINTR) continue;
-            const int err = errno;
-            ::close(fd);
-            ::unlink(tmp.c_str());
-            fail(std::strerror(err));
+            fail(std::strerror(errno));
         }
         data += n;
-        left -= std::size_t(n);
+        size -= std::size_t(n);
     }
+}
+
+void AtomicFile::commit() {
+    if (fd_ < 0) throw Error("cannot write " + path_ + ": the file is closed");
     // mkstemp creates 0600; give the file the usual permissions.
     const mode_t mask = ::umask(0);
     ::umask(mask);
-    ::fchmod(fd, 0666 & ~mask);
+    ::fchmod(fd_, 0666 & ~mask);
     // The data reaches the disk before the name points at it, and the
     // rename itself is made durable by syncing the folder: after a crash or
     // a power cut the file is the old one or the new one, whole.
-    if (::fsync(fd) != 0 || ::close(fd) != 0) {
+    const int fd = fd_;
+    fd_ = -1;
+    if (::fsync(fd) != 0) {
         const int err = errno;
-        ::unlink(tmp.c_str());
+        ::close(fd);
         fail(std::strerror(err));
     }
-    if (std::rename(tmp.c_str(), path.c_str()) != 0) {
-        const int err = errno;
-        ::unlink(tmp.c_str());
-        fail(std::strerror(err));
-    }
-    if (const int dfd = ::open(dir.c_str(), O_RDONLY | O_DIRECTORY); dfd >= 0) {
+    if (::close(fd) != 0) fail(std::strerror(errno));
+    if (std::rename(tmp_.c_str(), path_.c_str()) != 0) fail(std::strerror(errno));
+    tmp_.clear();
+    if (const int dfd = ::open(dir_.c_str(), O_RDONLY | O_DIRECTORY); dfd >= 0) {
         ::fsync(dfd); // best effort: some file systems refuse to sync a folder
         ::close(dfd);
     }
+}
+
+void write_file_atomically(const std::string& path, const std::string& content) {
+    AtomicFile file(path);
+    file.write(content);
+    file.commit();
 }
 
 } // namespace snaxels

@@ -1,6 +1,7 @@
 #pragma once
 /// Writing output files so that a failure never leaves a half-written file.
 
+#include <cstddef>
 #include <string>
 
 namespace snaxels {
@@ -13,5 +14,26 @@ namespace snaxels {
 /// reason" on failure, in which case @p path is untouched and no temporary
 /// file remains.
 void write_file_atomically(const std::string& path, const std::string& content);
+
+/// The same for a file written in pieces (a streamed export): the pieces go
+/// to the temporary; commit() syncs it and renames it over the path. Until
+/// then (and if the object is destroyed without commit, or the process
+/// dies) the path keeps what it had. Errors throw as write_file_atomically's.
+class AtomicFile {
+  public:
+    explicit AtomicFile(std::string path);
+    ~AtomicFile();
+    AtomicFile(const AtomicFile&) = delete;
+    AtomicFile& operator=(const AtomicFile&) = delete;
+
+    void write(const char* data, std::size_t size);
+    void write(const std::string& text) { write(text.data(), text.size()); }
+    void commit();
+
+  private:
+    void fail(const std::string& why);
+    std::string path_, tmp_, dir_;
+    int fd_ = -1;
+};
 
 } // namespace snaxels

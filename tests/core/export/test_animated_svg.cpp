@@ -7,15 +7,19 @@
 
 #include <cmath>
 #include <cstdlib>
+#include <algorithm>
 #include <map>
+#include <set>
 #include <regex>
 #include <string>
 
 #include "core/export/animated_fills.h"
 #include "core/export/animated_strokes.h"
 #include "core/export/animated_svg.h"
+#include "core/export/animation_writer.h"
 #include "core/export/path_keys.h"
 #include "core/export/smil.h"
+#include "tests/support/coverage.h"
 #include "tests/support/drawn_frames.h"
 
 using namespace snaxels;
@@ -289,4 +293,130 @@ TEST(AnimatedFills, MatchLoops) {
     const auto pairs = match_loops({a, hole}, {far, moved}, 4.0);
     ASSERT_EQ(pairs.size(), 1u);
     EXPECT_EQ(pairs[0], std::make_pair(std::size_t(0), std::size_t(1)));
+}
+
+// The animation is encoded in chunks of AnimationWriter::kChunkFrames frames
+// (docs/animation.md): paths go on across them. Over 150 frames (four
+// chunks) circles of known centre and radius come and go around the chunks'
+// shared frames (48, 96, 144); each life is one path, and at every frame
+// every shown stroke lies on its circle of that frame, with no path drawn
+// twice.
+TEST(AnimationWriter, PathsGoOnAcrossChunks) {
+    ASSERT_EQ(AnimationWriter::kChunkFrames, 48u);
+    const int frames = 150, n = 90;
+    struct Circle {
+        std::uint64_t sequence;
+        int first, last;
+        glm::dvec2 centre;
+        double radius;
+    };
+    // Sequence 1 moves two pixels a frame, a quarter of it hidden.
+    auto centre1 = [](int f) { return glm::dvec2(80.0 + 2.0 * f * 0.5, 200.0); };
+    const std::vector<Circle> others = {
+        {2, 47, 97, {300, 80}, 30},  // across two chunk starts, ends a frame after the second
+        {3, 40, 48, {300, 320}, 25}, // ends on a shared frame
+        {4, 48, 48, {60, 60}, 8},    // one frame: the shared one
+        {5, 96, 140, {80, 330}, 35}, // starts on a shared frame
+    };
+    std::vector<AnimationFrame> fs;
+    for (int f = 0; f < frames; ++f) {
+        std::vector<std::pair<DrawnLoop, AnimatedLoop>> loops;
+        const double turn = 0.02 * f;
+        loops.push_back({circle_loop(centre1(f), 60.0, n, [turn](double a) { return std::fmod(a + turn, 2 * M_PI) < M_PI / 2; }),
+                         ids(1, 1000, n)});
+        for (const Circle& c : others)
+            if (f >= c.first && f <= c.last)
+                loops.push_back({circle_loop(c.centre + glm::dvec2(0.0, 0.3 * (f - c.first)), c.radius, n, [](double) { return false; }),
+                                 ids(c.sequence, c.sequence * 1000, n)});
+        fs.push_back(frame_with(std::move(loops)));
+    }
+    const std::string svg = to_animated_svg(fs, 24.0);
+    // The paths, read without std::regex (whose recursion overflows the
+    // stack on attribute values this long).
+    auto attr = [](const std::string& tag, const std::string& name) {
+        const std::size_t at = tag.find(" " + name + "=\"");
+        if (at == std::string::npos) return std::string();
+        const std::size_t from = at + name.size() + 3;
+        return tag.substr(from, tag.find('"', from) - from);
+    };
+    std::vector<ReadPath> paths;
+    for (std::size_t at = svg.find("<path"); at != std::string::npos; at = svg.find("<path", at + 1)) {
+        const std::size_t open_end = svg.find('>', at);
+        ReadPath p;
+        p.attributes = svg.substr(at + 5, open_end - at - 5);
+        // d is kept apart (in group, unused here): shown() reads the rest with std::regex.
+        p.group = attr(p.attributes, "d");
+        if (const std::size_t d = p.attributes.find(" d=\""); d != std::string::npos)
+            p.attributes.erase(d, p.attributes.find('"', d + 4) + 1 - d);
+        const std::size_t close = svg.find("</path>", open_end);
+        const std::string body = svg.substr(open_end + 1, close - open_end - 1);
+        for (std::size_t a = body.find("<animate"); a != std::string::npos; a = body.find("<animate", a + 1)) {
+            const std::string anim = body.substr(a, body.find("/>", a) - a);
+            const std::string what = attr(anim, "attributeName");
+            if (what == "display") p.display_times = attr(anim, "keyTimes"), p.display_values = attr(anim, "values");
+            if (what == "d") p.d_times = attr(anim, "keyTimes"), p.d_values = attr(anim, "values");
+        }
+        paths.push_back(std::move(p));
+    }
+    std::multiset<std::pair<int, int>> lives;
+    for (const auto& p : paths) lives.insert(shown(p, frames));
+    EXPECT_EQ(lives.count({0, frames - 1}), 2u); // sequence 1, visible and hidden, one path each
+    EXPECT_EQ(lives.count({47, 97}), 1u);
+    EXPECT_EQ(lives.count({40, 48}), 1u);
+    EXPECT_EQ(lives.count({96, 140}), 1u);
+    EXPECT_EQ(lives.count({48, 48}), 1u); // the brief one
+    EXPECT_EQ(paths.size(), 6u);
+
+    // The shape a path draws at frame f (keyTimes and values: linear between
+    // keys of one structure, else the earlier key's).
+    auto shape_at = [&](const ReadPath& p, int f) {
+        if (p.d_times.empty()) return test::parse_path(p.group);
+        const std::vector<double> t = split_numbers(p.d_times);
+        std::vector<std::string> v;
+        for (std::size_t at = 0;;) {
+            const std::size_t end = p.d_values.find(';', at);
+            v.push_back(p.d_values.substr(at, end - at));
+            if (end == std::string::npos) break;
+            at = end + 1;
+        }
+        const double x = double(f) / frames;
+        std::size_t k = 0;
+        while (k + 1 < t.size() && t[k + 1] <= x) ++k;
+        test::Loops a = test::parse_path(v[k]);
+        if (k + 1 >= t.size()) return a;
+        const test::Loops b = test::parse_path(v[k + 1]);
+        bool same = a.size() == b.size();
+        for (std::size_t s = 0; same && s < a.size(); ++s) same = a[s].size() == b[s].size();
+        if (!same) return a;
+        const double u = std::clamp((x - t[k]) / std::max(t[k + 1] - t[k], 1e-12), 0.0, 1.0);
+        for (std::size_t s = 0; s < a.size(); ++s)
+            for (std::size_t i = 0; i < a[s].size(); ++i) a[s][i] = (1.0 - u) * a[s][i] + u * b[s][i];
+        return a;
+    };
+    int checked = 0;
+    for (int f = 0; f < frames; ++f) {
+        std::vector<std::pair<glm::dvec2, double>> circles{{centre1(f), 60.0}};
+        for (const Circle& c : others)
+            if (f >= c.first && f <= c.last) circles.push_back({c.centre + glm::dvec2(0.0, 0.3 * (f - c.first)), c.radius});
+        std::vector<int> drawn(circles.size(), 0);
+        for (const auto& p : paths) {
+            const auto [first, last] = shown(p, frames);
+            if (f < first || f > last) continue;
+            const test::Loops shape = shape_at(p, f);
+            // The circle it lies on: every point within 0.6 px of it.
+            int on = -1;
+            for (std::size_t c = 0; c < circles.size() && on < 0; ++c) {
+                bool all = true;
+                for (const auto& loop : shape)
+                    for (const glm::dvec2& q : loop) all &= std::abs(glm::length(q - circles[c].first) - circles[c].second) < 0.6;
+                if (all) on = int(c);
+            }
+            ASSERT_GE(on, 0) << "frame " << f << ": a path drawn off every circle (" << attr(p.attributes, "class") << ")";
+            ++drawn[std::size_t(on)];
+            ++checked;
+        }
+        EXPECT_EQ(drawn[0], 2) << "frame " << f; // visible and hidden parts of sequence 1
+        for (std::size_t c = 1; c < circles.size(); ++c) EXPECT_EQ(drawn[c], 1) << "frame " << f << " circle " << c;
+    }
+    EXPECT_GT(checked, 400);
 }
