@@ -122,10 +122,9 @@ AnimationOutput run_animation(const LoadedMesh& mesh, const std::string& mesh_pa
     const bool fills = !job.style.regions.empty();
     std::vector<ContourSpec> fill_specs = job.style.fill_contours();
     std::vector<ContourTracker> fill_trackers;
-    auto same_spec = [](const ContourSpec& a, const ContourSpec& b) { return a.kind == b.kind && std::abs(a.k - b.k) < 1e-9; };
     if (fills)
         for (const ContourSpec& spec : fill_specs)
-            if (std::none_of(job.kinds.begin(), job.kinds.end(), [&](const ContourSpec& k) { return same_spec(k, spec); }))
+            if (std::none_of(job.kinds.begin(), job.kinds.end(), [&](const ContourSpec& k) { return k.same_as(spec); }))
                 fill_trackers.emplace_back(topology, spec, job.engine);
     RegionTracker region_tracker;
     std::unique_ptr<RayScene> rays;
@@ -179,7 +178,7 @@ AnimationOutput run_animation(const LoadedMesh& mesh, const std::string& mesh_pa
             for (const ContourSpec& spec : fill_specs) {
                 const ContourResult* r = nullptr;
                 for (std::size_t c = 0; c < tracked.size() && !r; ++c)
-                    if (same_spec(tracked[c]->contour.spec, spec)) r = &tracked[c]->contour;
+                    if (tracked[c]->contour.spec.same_as(spec)) r = &tracked[c]->contour;
                 contours.push_back(r);
             }
             PlanarMap map = build_planar_map(job.map_kind, engine, contours, rays.get(), projection, camera, light);

@@ -39,8 +39,6 @@ double angle_deg(const glm::dvec3& a, const glm::dvec3& b) {
     return glm::degrees(std::acos(std::clamp(glm::dot(a, b), -1.0, 1.0)));
 }
 
-bool same_spec(const ContourSpec& a, const ContourSpec& b) { return a.kind == b.kind && std::abs(a.k - b.k) < 1e-9; }
-
 } // namespace
 
 std::vector<ContourResult> StillTracking::compute(const std::vector<ContourSpec>& specs, const Camera& camera,
@@ -118,7 +116,7 @@ StillOutput render_still(const LoadedMesh& mesh, const MeshTopology& topology, c
         needed = job.style.fill_contours();
         if (needed.empty()) needed = {ContourSpec{}, ContourSpec{ContourKind::Shadow, 0.0}};
         for (const ContourSpec& spec : needed)
-            if (std::none_of(specs.begin(), specs.end(), [&](const ContourSpec& s) { return same_spec(s, spec); }))
+            if (std::none_of(specs.begin(), specs.end(), [&](const ContourSpec& s) { return s.same_as(spec); }))
                 specs.push_back(spec);
     }
     std::vector<ContourResult> all;
@@ -144,9 +142,9 @@ StillOutput render_still(const LoadedMesh& mesh, const MeshTopology& topology, c
     if (map) {
         auto result_of = [&](const ContourSpec& spec) -> const ContourResult* {
             for (const ContourResult& r : out.results)
-                if (same_spec(r.spec, spec)) return &r;
+                if (r.spec.same_as(spec)) return &r;
             for (const ContourResult& r : fill_results)
-                if (same_spec(r.spec, spec)) return &r;
+                if (r.spec.same_as(spec)) return &r;
             return nullptr;
         };
         std::vector<const ContourResult*> contours;

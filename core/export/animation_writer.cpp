@@ -131,6 +131,7 @@ struct AnimationWriter::Impl {
     std::vector<ContourSpec> specs;
     std::map<std::uint64_t, std::int64_t> track_rank; ///< region tracks in order of appearance
     std::vector<std::unique_ptr<Record>> records;
+    std::vector<Record*> open; ///< the records that may still go on (a chunk scans these, not all)
 
     Impl(AnimationFormat f, std::size_t n, double rate, const AnimatedSvgOptions& o, const Style& s)
         : format(f), frames_total(std::max<std::size_t>(n, 1)), fps(rate), options(o), style(s), clock{frames_total, rate} {}
@@ -208,8 +209,8 @@ struct AnimationWriter::Impl {
         ChunkContext context;
         context.defer_last = !final;
         if (shared)
-            for (const auto& r : records)
-                if (r->open && !r->meta.fill && !r->meta.brief && r->meta.last == s)
+            for (const Record* r : open)
+                if (!r->meta.fill && !r->meta.brief && r->meta.last == s)
                     context.drawn_first.insert({r->meta.contour, r->meta.track});
         std::vector<AnimatedPathData> paths = animated_paths(buffer, style, options, &context);
         std::vector<Record*> continued;
@@ -255,26 +256,28 @@ struct AnimationWriter::Impl {
             p.segments.clear();
             r->meta = std::move(p);
             for (PathSegment& seg : segments) add_segment(*r, std::move(seg));
+            open.push_back(r.get());
             records.push_back(std::move(r));
         }
         // Paths that did not reach the chunk's last frame are done.
         const int end = s + int(buffer.size()) - 1;
-        for (auto& r : records)
-            if (r->open && r->meta.last < end) close(*r);
+        for (Record* r : open)
+            if (r->meta.last < end) close(*r);
+        open.erase(std::remove_if(open.begin(), open.end(), [](const Record* r) { return !r->open; }), open.end());
         ++chunk_index;
     }
 
     /// The open path of the chunk before that @p p goes on (it ended on the shared frame).
     Record* continuation(const AnimatedPathData& p, const std::vector<Record*>& taken) {
-        for (auto& r : records) {
+        for (Record* r : open) {
             const AnimatedPathData& m = r->meta;
-            if (!r->open || m.last != p.first || m.fill != p.fill || m.brief) continue;
-            if (std::find(taken.begin(), taken.end(), r.get()) != taken.end()) continue;
+            if (m.last != p.first || m.fill != p.fill || m.brief) continue;
+            if (std::find(taken.begin(), taken.end(), r) != taken.end()) continue;
             if (m.fill ? m.track == p.track
                        : m.contour == p.contour && m.cls == p.cls && m.track == p.track && (m.run == 0) == (p.run == 0) &&
                              (p.run == 0 || (!p.segments.empty() && !p.segments.front().shapes.empty() &&
                                              same_run(r->last_shape, p.segments.front().shapes.front()))))
-                return r.get();
+                return r;
         }
         return nullptr;
     }

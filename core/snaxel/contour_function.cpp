@@ -27,6 +27,10 @@ std::string ContourSpec::label() const {
     return buf;
 }
 
+bool ContourSpec::same_as(const ContourSpec& other) const {
+    return kind == other.kind && std::abs(k - other.k) < 1e-9;
+}
+
 ContourSpec ContourSpec::parse(const std::string& text) {
     const auto colon = text.find(':');
     const std::string name = text.substr(0, colon);

@@ -27,6 +27,8 @@ struct ContourSpec {
     std::string label() const;
     /// Parses the CLI's --kind values; throws snaxels::Error when malformed.
     static ContourSpec parse(const std::string& text);
+    /// The same contour (kind, and k within 1e-9).
+    bool same_as(const ContourSpec& other) const;
 };
 
 /// f for one spec, camera and light.
