@@ -10,6 +10,7 @@
 #include "app/cli/args.h"
 #include "app/cli/commands.h"
 #include "core/error.h"
+#include "core/mesh/isolated_import.h"
 
 namespace snaxels::cli {
 
@@ -80,6 +81,9 @@ int main(int argc, char** argv) {
         std::cout << "snaxels-cli " << SNAXELS_VERSION << '\n';
         return 0;
     }
+    // Mesh files are read by the snaxels-import helper in a process of its
+    // own, under time and memory limits.
+    snaxels::set_mesh_importer(snaxels::importer_beside_executable());
     const std::vector<std::string> rest(argv + 2, argv + argc);
     for (const auto& c : commands()) {
         if (name != c.name) continue;

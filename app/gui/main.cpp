@@ -9,6 +9,7 @@
 
 #include <cstdio>
 
+#include "core/mesh/isolated_import.h"
 #include "ui/mainwindow.h"
 #include "ui/resources.h"
 #include "ui/styleeditor.h"
@@ -41,6 +42,10 @@ int main(int argc, char** argv) {
     parser.addOption(parabolic_option);
     parser.process(app);
 
+    // Mesh files are read by the snaxels-import helper in a process of its
+    // own: a file that crashes the reader costs that process, not the work
+    // open in this window.
+    snaxels::set_mesh_importer(snaxels::importer_beside_executable());
     snaxels::ui::MainWindow window;
     if (parser.isSet(style_option)) {
         QFile in(parser.value(style_option));

@@ -9,6 +9,8 @@
 #include <fstream>
 #include <functional>
 #include <sstream>
+#include <string>
+#include <vector>
 
 #include <assimp/Importer.hpp>
 #include <assimp/postprocess.h>
@@ -17,6 +19,7 @@
 
 #include "core/error.h"
 #include "core/mesh/assimp_scene.h"
+#include "core/mesh/isolated_import.h"
 #include "core/mesh/procedural.h"
 
 namespace snaxels {
@@ -40,77 +43,194 @@ const char* non_mesh_kind(const std::array<unsigned char, 8>& head, std::size_t 
     return nullptr;
 }
 
-// Assimp reads past the end of a truncated binary PLY and reports whatever
-// garbage follows; checking the body's size against its header says plainly
-// what is wrong. Returns an empty string when the file is not binary PLY or
-// is long enough.
-std::string binary_ply_problem(std::ifstream& in, std::uintmax_t file_size) {
+// One element of a PLY header: its count and the layout of one item.
+struct PlyProperty {
+    bool list = false;
+    std::size_t size = 0;       ///< a scalar's size, or a list item's
+    std::size_t count_size = 0; ///< a list's count type
+};
+struct PlyElement {
+    std::string name;
+    std::uintmax_t count = 0;
+    std::vector<PlyProperty> properties;
+    bool has_list() const {
+        return std::any_of(properties.begin(), properties.end(), [](const PlyProperty& p) { return p.list; });
+    }
+    std::size_t fixed_size() const {
+        std::size_t n = 0;
+        for (const auto& p : properties) n += p.size;
+        return n;
+    }
+};
+
+std::size_t ply_type_size(const std::string& t) {
+    if (t == "char" || t == "uchar" || t == "int8" || t == "uint8") return 1;
+    if (t == "short" || t == "ushort" || t == "int16" || t == "uint16") return 2;
+    if (t == "int" || t == "uint" || t == "float" || t == "int32" || t == "uint32" || t == "float32") return 4;
+    if (t == "double" || t == "float64") return 8;
+    return 0;
+}
+
+// Reads a binary PLY body in large blocks, for walking its lists.
+class BodyWalker {
+  public:
+    BodyWalker(std::ifstream& in, std::uintmax_t size) : in_(in), left_(size) {}
+    /// Skips @p n bytes; false when the body ends first.
+    bool skip(std::uintmax_t n) {
+        const std::uintmax_t buffered = buffer_.size() - at_;
+        if (n <= buffered) {
+            at_ += std::size_t(n);
+            return true;
+        }
+        n -= buffered;
+        at_ = buffer_.size();
+        if (n > left_) return false;
+        in_.seekg(std::streamoff(n), std::ios::cur);
+        left_ -= n;
+        return true;
+    }
+    /// Reads an unsigned count of @p size bytes; false when the body ends.
+    bool count(std::size_t size, bool big_endian, std::uint64_t& value) {
+        if (buffer_.size() - at_ < size && !refill()) return false;
+        if (buffer_.size() - at_ < size) return false;
+        value = 0;
+        for (std::size_t b = 0; b < size; ++b) {
+            const auto byte = static_cast<unsigned char>(buffer_[at_ + (big_endian ? b : size - 1 - b)]);
+            value = (value << 8) | byte;
+        }
+        at_ += size;
+        return true;
+    }
+
+  private:
+    bool refill() {
+        buffer_.erase(0, at_);
+        at_ = 0;
+        const std::size_t want = std::size_t(std::min<std::uintmax_t>(left_, 1 << 20));
+        if (want == 0) return false;
+        const std::size_t had = buffer_.size();
+        buffer_.resize(had + want);
+        in_.read(buffer_.data() + had, std::streamsize(want));
+        buffer_.resize(had + std::size_t(in_.gcount()));
+        left_ -= std::uintmax_t(in_.gcount());
+        return in_.gcount() > 0;
+    }
+    std::ifstream& in_;
+    std::uintmax_t left_;
+    std::string buffer_;
+    std::size_t at_ = 0;
+};
+
+// A face (or any list) whose count runs past its line or past the end of the
+// file makes Assimp allocate for the count (500,000,000 indices kept it busy
+// for most of a minute) or read past the end; checking the body against its
+// header says plainly what is wrong. Returns an empty string when the file
+// is not PLY or holds what its header declares.
+std::string ply_problem(std::ifstream& in, std::uintmax_t file_size) {
     in.clear();
     in.seekg(0);
     std::string line;
     if (!std::getline(in, line) || line.rfind("ply", 0) != 0) return {};
-    auto type_size = [](const std::string& t) -> std::size_t {
-        if (t == "char" || t == "uchar" || t == "int8" || t == "uint8") return 1;
-        if (t == "short" || t == "ushort" || t == "int16" || t == "uint16") return 2;
-        if (t == "int" || t == "uint" || t == "float" || t == "int32" || t == "uint32" ||
-            t == "float32")
-            return 4;
-        if (t == "double" || t == "float64") return 8;
-        return 0;
-    };
-    bool binary = false;
-    std::uintmax_t minimum = 0, count = 0, element_min = 0, elements = 0;
-    std::string element;
-    auto close_element = [&] { minimum += count * element_min; };
-    while (std::getline(in, line)) {
+    std::string format;
+    std::vector<PlyElement> elements;
+    bool header_ended = false;
+    while (!header_ended && std::getline(in, line)) {
         if (!line.empty() && line.back() == '\r') line.pop_back();
         std::istringstream words(line);
         std::string word;
         words >> word;
         if (word == "format") {
-            std::string fmt;
-            words >> fmt;
-            binary = fmt.rfind("binary", 0) == 0;
+            words >> format;
         } else if (word == "element") {
-            close_element();
-            count = 0;
-            if (!(words >> element >> count)) return "the PLY header has a malformed element line: " + line;
-            element_min = 0;
-            elements += count;
+            PlyElement e;
+            if (!(words >> e.name >> e.count)) return "the PLY header has a malformed element line: " + line;
+            elements.push_back(e);
         } else if (word == "property") {
+            if (elements.empty()) return "the PLY header has a property before any element: " + line;
             std::string type;
             words >> type;
+            PlyProperty p;
             if (type == "list") {
                 std::string count_type, item_type;
                 words >> count_type >> item_type;
-                // A face list holds at least three indices.
-                const std::size_t items = element == "face" ? 3 : 0;
-                element_min += type_size(count_type) + items * type_size(item_type);
+                p.list = true;
+                p.count_size = ply_type_size(count_type);
+                p.size = ply_type_size(item_type);
+                if (p.count_size == 0 || p.size == 0) return "the PLY header has a list of an unknown type: " + line;
             } else {
-                element_min += type_size(type);
+                p.size = ply_type_size(type);
+                if (p.size == 0) return "the PLY header has a property of an unknown type: " + line;
             }
+            elements.back().properties.push_back(p);
         } else if (word == "end_header") {
-            close_element();
-            if (!binary) {
-                // One element per line: a body with fewer lines is truncated
-                // (and Assimp would read past it).
-                std::uintmax_t lines = 0;
-                while (lines < elements && std::getline(in, line))
-                    if (line.find_first_not_of(" \t\r") != std::string::npos) ++lines;
-                if (lines < elements)
-                    return "the ASCII PLY file is truncated (its header declares " + std::to_string(elements) +
-                           " elements, the file has " + std::to_string(lines) + " data lines)";
-                return {};
-            }
-            const auto body = file_size - static_cast<std::uintmax_t>(in.tellg());
-            if (body < minimum)
-                return "the binary PLY file is truncated (its header needs at least " +
-                       std::to_string(minimum) + " bytes of data, the file has " +
-                       std::to_string(body) + ")";
-            return {};
+            header_ended = true;
         }
     }
-    return "the PLY header has no end_header line";
+    if (!header_ended) return "the PLY header has no end_header line";
+    const auto item_name = [](const PlyElement& e, std::uintmax_t i) { return e.name + " " + std::to_string(i); };
+
+    if (format == "ascii") {
+        // One item per line, each list as long as its count says.
+        for (const PlyElement& e : elements) {
+            for (std::uintmax_t i = 0; i < e.count;) {
+                if (!std::getline(in, line)) {
+                    std::uintmax_t total = 0;
+                    for (const auto& el : elements) total += el.count;
+                    return "the ASCII PLY file is truncated (its header declares " + std::to_string(total) +
+                           " elements, the file ends at " + item_name(e, i) + ")";
+                }
+                if (line.find_first_not_of(" \t\r") == std::string::npos) continue;
+                if (e.has_list()) {
+                    std::istringstream tokens(line);
+                    std::string token;
+                    for (const PlyProperty& p : e.properties) {
+                        if (!(tokens >> token)) return "the ASCII PLY " + item_name(e, i) + " is missing values: " + line.substr(0, 80);
+                        if (!p.list) continue;
+                        char* end = nullptr;
+                        const long long n = std::strtoll(token.c_str(), &end, 10);
+                        if (*end != '\0' || n < 0)
+                            return "the ASCII PLY " + item_name(e, i) + " has a malformed list count '" + token + "'";
+                        for (long long k = 0; k < n; ++k)
+                            if (!(tokens >> token))
+                                return "the ASCII PLY " + item_name(e, i) + " declares a list of " + std::to_string(n) +
+                                       " values but its line holds " + std::to_string(k);
+                    }
+                }
+                ++i;
+            }
+        }
+        return {};
+    }
+    const bool big_endian = format == "binary_big_endian";
+    if (!big_endian && format != "binary_little_endian") return "the PLY header has an unknown format '" + format + "'";
+    const auto body = file_size - static_cast<std::uintmax_t>(in.tellg());
+    const auto truncated = [&](const std::string& where) {
+        return "the binary PLY file is truncated (its data ends inside " + where + "; the body has " +
+               std::to_string(body) + " bytes)";
+    };
+    BodyWalker walk(in, body);
+    for (const PlyElement& e : elements) {
+        if (!e.has_list()) {
+            const std::size_t size = e.fixed_size();
+            if (size > 0 && e.count > body / size) return truncated("the " + e.name + " elements");
+            if (!walk.skip(e.count * size)) return truncated("the " + e.name + " elements");
+            continue;
+        }
+        for (std::uintmax_t i = 0; i < e.count; ++i) {
+            for (const PlyProperty& p : e.properties) {
+                if (!p.list) {
+                    if (!walk.skip(p.size)) return truncated(item_name(e, i));
+                    continue;
+                }
+                std::uint64_t n = 0;
+                if (!walk.count(p.count_size, big_endian, n)) return truncated(item_name(e, i));
+                if (n > body / p.size || !walk.skip(n * p.size))
+                    return "the binary PLY " + item_name(e, i) + " declares a list of " + std::to_string(n) +
+                           " values, more than the file holds";
+            }
+        }
+    }
+    return {};
 }
 
 // OFF: the counts line must not promise more vertex and face lines than
@@ -184,7 +304,7 @@ void check_readable(const std::string& path) {
     if (const char* kind = non_mesh_kind(head, n))
         throw Error(path + ": is " + kind + ", not a mesh file");
     const std::uintmax_t size = fs::file_size(path, ec);
-    for (const std::string& problem : {binary_ply_problem(in, size), off_problem(in), binary_stl_problem(in, size, path)})
+    for (const std::string& problem : {ply_problem(in, size), off_problem(in), binary_stl_problem(in, size, path)})
         if (!problem.empty()) throw Error(path + ": " + problem);
 }
 
@@ -234,7 +354,7 @@ void for_each_mesh_instance(const aiScene* scene,
 
 } // namespace detail
 
-TriangleSoup read_triangle_soup(const std::string& path) {
+TriangleSoup detail::read_triangle_soup_here(const std::string& path) {
     Assimp::Importer importer;
     const aiScene* scene = detail::read_assimp_scene(importer, path);
     TriangleSoup soup;
@@ -257,6 +377,11 @@ TriangleSoup read_triangle_soup(const std::string& path) {
         }
     });
     return soup;
+}
+
+TriangleSoup read_triangle_soup(const std::string& path) {
+    const std::string helper = mesh_importer();
+    return helper.empty() ? detail::read_triangle_soup_here(path) : detail::read_soup_isolated(helper, path);
 }
 
 LoadedMesh import_mesh(const std::string& path) {

@@ -8,8 +8,10 @@
 
 namespace snaxels {
 
-/// Reads the triangles of every mesh instance in the scene of @p path.
-/// Throws snaxels::Error "PATH: problem" for unreadable or invalid input.
+/// Reads the triangles of every mesh instance in the scene of @p path, in
+/// this process or, when set_mesh_importer named a helper, in the helper's
+/// (isolated_import.h). Throws snaxels::Error "PATH: problem" for
+/// unreadable or invalid input, and when the reader crashes or overruns.
 TriangleSoup read_triangle_soup(const std::string& path);
 
 /// read_triangle_soup followed by build_mesh; errors name @p path.

@@ -6,6 +6,7 @@
 
 #include "core/error.h"
 #include "core/mesh/assimp_scene.h"
+#include "core/mesh/isolated_import.h"
 
 namespace snaxels {
 namespace {
@@ -54,6 +55,11 @@ int clip_frame_count(double seconds, double fps) {
 }
 
 std::vector<AnimationClipInfo> animation_clips(const std::string& path) {
+    const std::string helper = mesh_importer();
+    return helper.empty() ? detail::animation_clips_here(path) : detail::read_clips_isolated(helper, path);
+}
+
+std::vector<AnimationClipInfo> detail::animation_clips_here(const std::string& path) {
     Assimp::Importer importer;
     const aiScene* scene = detail::read_assimp_scene(importer, path);
     std::vector<AnimationClipInfo> clips;
@@ -68,6 +74,10 @@ std::vector<AnimationClipInfo> animation_clips(const std::string& path) {
 
 MeshAnimation::MeshAnimation(const std::string& path, const std::string& clip)
     : impl_(std::make_unique<Impl>()) {
+    // Posing needs Assimp's scene in this process. With an isolated importer
+    // the helper reads the file first, so one that crashes the reader or
+    // overruns its limits is refused there, before it is read here.
+    if (const std::string helper = mesh_importer(); !helper.empty()) detail::read_clips_isolated(helper, path);
     impl_->scene = detail::read_assimp_scene(impl_->importer, path);
     const aiScene* scene = impl_->scene;
     for (unsigned a = 0; a < scene->mNumAnimations; ++a) {

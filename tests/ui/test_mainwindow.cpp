@@ -3,6 +3,8 @@
 
 #include <cstdio>
 
+#include <sys/resource.h>
+
 #include <QApplication>
 #include <QDir>
 #include <QElapsedTimer>
@@ -32,6 +34,8 @@
 #include <QUrl>
 #include <QWheelEvent>
 #include <QTest>
+
+#include "core/mesh/isolated_import.h"
 
 #include "core/mesh/procedural.h"
 #include "core/project/project.h"
@@ -90,7 +94,10 @@ QImage paneImage(MainWindow& window) {
 class TestMainWindow : public QObject {
     Q_OBJECT
   private slots:
-    void initTestCase() { QStandardPaths::setTestModeEnabled(true); }
+    void initTestCase() {
+        QStandardPaths::setTestModeEnabled(true);
+        snaxels::set_mesh_importer(snaxels::importer_beside_executable()); // as the application does
+    }
 
     void showsTheDefaultSceneShaded() {
         MainWindow window;
@@ -677,6 +684,56 @@ class TestMainWindow : public QObject {
         });
         QVERIFY(!window.saveProject(dir.filePath("no-such-folder/p.snaxels")));
         QVERIFY(window.isModified());
+    }
+
+    // Files that crash Assimp's readers (and one that declares 500,000,000
+    // indices) are read by the snaxels-import helper: each costs that
+    // process, the window stays up with a message naming the file, and the
+    // document is untouched. The helpers' peak memory stays under 2 GB.
+    void importerKillersLoseNothing() {
+        MainWindow window;
+        QVERIFY(showWithMesh(window, QString(SNAXELS_TEST_ASSETS) + "/spot.obj"));
+        window.turnLight(0.3, 0.0);
+        QTest::qWait(300);
+        const auto* mesh = window.mesh();
+        const QString style = window.styleEditor()->text();
+        const int steps = window.undoStack()->count();
+        const bool modified = window.isModified();
+        const QDir dir(QString(SNAXELS_TEST_ASSETS) + "/bad/importer");
+        const QStringList files = dir.entryList(QDir::Files, QDir::Name);
+        QVERIFY(files.size() >= 6);
+        int crashes = 0;
+        for (const QString& name : files) {
+            QSignalSpy failed(&window, &MainWindow::loadFailed);
+            QElapsedTimer clock;
+            clock.start();
+            window.openMesh(dir.filePath(name));
+            QVERIFY2(failed.wait(30000), qPrintable(name));
+            QVERIFY2(clock.elapsed() < 10000, qPrintable(name + ": refused after " + QString::number(clock.elapsed()) + " ms"));
+            QMessageBox* box = nullptr;
+            for (auto* b : window.findChildren<QMessageBox*>())
+                if (b->isVisible()) box = b;
+            QVERIFY2(box, qPrintable(name));
+            QVERIFY2(box->text().contains(name), qPrintable(box->text()));
+            crashes += box->text().contains("the mesh reader crashed on this file") ? 1 : 0;
+            box->close();
+            QVERIFY(window.isVisible());
+            QCOMPARE(window.mesh(), mesh);
+            QCOMPARE(window.styleEditor()->text(), style);
+            QCOMPARE(window.undoStack()->count(), steps);
+            QCOMPARE(window.isModified(), modified);
+        }
+        // Five of them abort Assimp or fault in it: the helper died, this
+        // process did not.
+        QCOMPARE(crashes, 5);
+        rusage children{};
+        getrusage(RUSAGE_CHILDREN, &children);
+        QVERIFY2(children.ru_maxrss < 2L * 1024 * 1024, qPrintable(QString::number(children.ru_maxrss) + " KB"));
+        // And the window still works: a good mesh opens.
+        QSignalSpy contours(&window, &MainWindow::contoursUpdated);
+        window.openMesh("proc:torus:5000");
+        QVERIFY(contours.wait(60000));
+        QVERIFY(window.mesh() != mesh);
     }
 
     // Dropping a mesh file opens it; dropping a project opens the project.

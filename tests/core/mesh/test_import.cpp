@@ -2,6 +2,8 @@
 
 #include "core/error.h"
 #include "core/mesh/import.h"
+#include "core/mesh/isolated_import.h"
+#include "core/mesh/mesh_animation.h"
 #include "tests/support/assets.h"
 
 using namespace snaxels;
@@ -73,4 +75,56 @@ TEST(Import, HorseFacesAreTurnedOutward) {
     }
     EXPECT_GT(volume, 0.0);
     EXPECT_EQ(import_mesh(asset("spot.obj")).report.flipped_components, 0u);
+}
+
+// The snaxels-import helper hands back exactly what this process reads, and
+// its errors read as the in-process ones do.
+TEST(IsolatedImport, HelperReadsWhatThisProcessReads) {
+    for (const std::string file : {"horse.ply", "instanced.gltf", "anim/skinned-bar.gltf", "suzanne.obj"}) {
+        const TriangleSoup here = read_triangle_soup(asset(file));
+        const TriangleSoup there = detail::read_soup_isolated(SNAXELS_IMPORTER, asset(file));
+        ASSERT_EQ(there.positions.size(), here.positions.size()) << file;
+        ASSERT_EQ(there.triangles.size(), here.triangles.size()) << file;
+        for (std::size_t i = 0; i < here.positions.size(); ++i) ASSERT_EQ(there.positions[i], here.positions[i]) << file;
+        EXPECT_EQ(there.triangles, here.triangles) << file;
+    }
+    const auto clips_here = animation_clips(asset("anim/skinned-bar.gltf"));
+    const auto clips_there = detail::read_clips_isolated(SNAXELS_IMPORTER, asset("anim/skinned-bar.gltf"));
+    ASSERT_EQ(clips_there.size(), clips_here.size());
+    ASSERT_FALSE(clips_here.empty());
+    for (std::size_t i = 0; i < clips_here.size(); ++i) {
+        EXPECT_EQ(clips_there[i].name, clips_here[i].name);
+        EXPECT_EQ(clips_there[i].duration, clips_here[i].duration);
+    }
+    for (const std::string bad : {"bad/truncated.ply", "bad/empty.obj", "bad/no-such-file.obj"}) {
+        std::string here, there;
+        try {
+            read_triangle_soup(asset(bad));
+        } catch (const Error& e) {
+            here = e.what();
+        }
+        try {
+            detail::read_soup_isolated(SNAXELS_IMPORTER, asset(bad));
+        } catch (const Error& e) {
+            there = e.what();
+        }
+        EXPECT_FALSE(here.empty()) << bad;
+        EXPECT_EQ(there, here) << bad;
+    }
+}
+
+// A file that kills Assimp kills only the helper: this process gets an
+// Error naming the file and the signal.
+TEST(IsolatedImport, ReaderCrashIsAnError) {
+    set_mesh_importer(SNAXELS_IMPORTER);
+    std::string message;
+    try {
+        import_mesh(asset("bad/importer/triangulate-assert-1.ply"));
+    } catch (const Error& e) {
+        message = e.what();
+    }
+    set_mesh_importer("");
+    EXPECT_NE(message.find("triangulate-assert-1.ply: the mesh reader crashed on this file (SIGABRT"),
+              std::string::npos)
+        << message;
 }
