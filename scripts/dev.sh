@@ -3,6 +3,12 @@
 #   scripts/dev.sh run [MESH]   install what is missing, build, start the application
 #   scripts/dev.sh test         install what is missing, build, run every test (ctest)
 #   scripts/dev.sh build        install what is missing and build
+#   scripts/dev.sh sanitize     clang build with AddressSanitizer and
+#                               UndefinedBehaviorSanitizer (build-sanitize/);
+#                               runs the core and cli test labels
+#   scripts/dev.sh fuzz [SECONDS]  builds the libFuzzer targets (fuzz/) in
+#                               build-sanitize/ and runs each for SECONDS
+#                               (default 60) on its corpus
 # The build goes to ./build (override with SNAXELS_BUILD_DIR). With CI=true
 # compiler warnings are errors.
 set -euo pipefail
@@ -10,11 +16,24 @@ cd "$(dirname "$0")/.."
 
 action=${1:-}
 case "$action" in
-  run|test|build) shift ;;
-  *) echo "usage: scripts/dev.sh run [MESH] | test | build" >&2; exit 2 ;;
+  run|test|build|sanitize|fuzz) shift ;;
+  *) echo "usage: scripts/dev.sh run [MESH] | test | build | sanitize | fuzz [SECONDS]" >&2; exit 2 ;;
 esac
 
 bash scripts/install-deps.sh
+
+if [ "$action" = sanitize ] || [ "$action" = fuzz ]; then
+  san_dir=${SNAXELS_SANITIZE_BUILD_DIR:-build-sanitize}
+  CC=clang CXX=clang++ cmake -S . -B "$san_dir" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo \
+    -DSNAXELS_FUZZ=ON -DSNAXELS_BUILD_GUI=OFF -DSNAXELS_BUILD_BENCH=OFF -DSNAXELS_WERROR=OFF
+  cmake --build "$san_dir" -j2
+  export ASAN_OPTIONS=detect_leaks=1:abort_on_error=0:strict_string_checks=1
+  export UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
+  if [ "$action" = sanitize ]; then
+    cd "$san_dir" && exec ctest --output-on-failure -j2 --timeout 1800 -L 'core|cli'
+  fi
+  exec bash scripts/fuzz.sh "$san_dir/fuzz" "${1:-60}"
+fi
 
 build_dir=${SNAXELS_BUILD_DIR:-build}
 werror=OFF

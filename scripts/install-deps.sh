@@ -18,6 +18,7 @@ PACKAGES=(
   xvfb xauth libgl1-mesa-dri mesa-utils
   chromium fonts-dejavu-core librsvg2-bin
   librlottie-dev python3-jsonschema
+  clang libclang-rt-14-dev llvm
 )
 
 if [ "${1:-}" = --list ]; then

@@ -7,6 +7,7 @@
 #include <QStringList>
 
 #include "core/animation/still.h"
+#include "core/error.h"
 #include "core/snaxel/refine.h"
 #include "core/visibility/visibility.h"
 
@@ -122,7 +123,13 @@ OverlayResult compute_overlay(const LoadedMesh& mesh, ContourScene& scene, const
     StillJob job = make_still_job(style, camera, light);
     auto is_parabolic = [](const ContourSpec& k) { return k.kind == ContourKind::Parabolic; };
     if (!parabolic) job.kinds.erase(std::remove_if(job.kinds.begin(), job.kinds.end(), is_parabolic), job.kinds.end());
-    StillOutput still = render_still(mesh, scene.topology, scene.rays.get(), job, scene.tracking.get());
+    StillOutput still;
+    try {
+        still = render_still(mesh, scene.topology, scene.rays.get(), job, scene.tracking.get());
+    } catch (const Error& e) { // a view the drawing cannot show (the eye inside the mesh): said in the status bar
+        out.error = QString::fromStdString(e.what());
+        return out;
+    }
     out.light = job.light;
     if (show_parabolic && parabolic && std::none_of(job.kinds.begin(), job.kinds.end(), is_parabolic)) {
         // View > Parabolic Curves: in the 3-D view only.

@@ -139,6 +139,7 @@ AnimationOutput run_animation(const LoadedMesh& mesh, const std::string& mesh_pa
         Light light;
         driver.apply(k, camera, light);
         if (driver.mesh_moves()) camera = job_camera; // a moving mesh's camera stays (framed on its poses)
+        require_mesh_in_front(camera, topology.positions, radius);
         const bool need_rays = job.visibility || fills;
         if (need_rays) {
             if (!rays) rays = std::make_unique<RayScene>(topology);

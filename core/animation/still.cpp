@@ -103,6 +103,7 @@ StillOutput render_still(const LoadedMesh& mesh, const MeshTopology& topology, c
     const MeshReport& report = mesh.report;
     const glm::dvec3 centre = 0.5 * (report.bbox_min + report.bbox_max);
     const double radius = std::max(0.5 * glm::length(report.bbox_max - report.bbox_min), 1e-12);
+    require_mesh_in_front(job.camera, topology.positions, radius);
     const SnaxelEngine engine(topology);
 
     // Every contour at once (in parallel): the drawn kinds, then those the

@@ -589,7 +589,9 @@ void stroke_paths(const std::vector<AnimationFrame>& frames, std::size_t c, cons
             by_sequence[frames[f].loops[c][l].sequence].push_back({int(f), l});
     int next_run = 1;
     std::map<int, anim::Shape> brief[2]; // per class: frame -> the runs of one-frame contours
-    for (const auto& [sequence, members] : by_sequence) {
+    for (const auto& entry : by_sequence) {
+        const auto sequence = entry.first; // variables, so lambdas below may capture them
+        const auto& members = entry.second;
         // A sequence's life: its frames, consecutive (a gap starts another life).
         for (std::size_t start = 0; start < members.size();) {
             std::size_t end = start + 1;

@@ -11,6 +11,7 @@
 #include <glm/glm.hpp>
 
 #include "core/error.h"
+#include "core/util/memory.h"
 
 namespace snaxels {
 namespace {
@@ -143,6 +144,14 @@ void compute_vertex_normals(Mesh& mesh) {
 }
 
 LoadedMesh build_mesh(const TriangleSoup& soup, const std::string& source) {
+    // Refused before anything is allocated for it: a mesh that cannot be
+    // drawn in this machine's memory (the estimate: a toon drawing of a
+    // million faces peaks near 400 MB; animation and the window need more).
+    const std::uint64_t estimate = std::uint64_t(soup.triangles.size()) * kBytesPerFace;
+    if (const std::uint64_t machine = machine_memory_bytes(); estimate > machine)
+        throw Error(std::to_string(soup.triangles.size()) + " faces need an estimated " + describe_bytes(estimate) +
+                    " of memory to draw, more than this machine's " + describe_bytes(machine) +
+                    "; simplify the mesh (decimate it) first");
     LoadedMesh out;
     MeshReport& report = out.report;
     report.source = source;

@@ -4,6 +4,7 @@
 /// where a face cannot be added to a manifold halfedge mesh, and computes
 /// area-weighted vertex normals.
 
+#include <cstdint>
 #include <string>
 
 #include "core/mesh/mesh.h"
@@ -21,9 +22,15 @@ struct LoadedMesh {
     std::vector<std::uint32_t> vertex_source;
 };
 
+/// Memory a mesh needs per face to be drawn, estimated from the peaks of
+/// toon drawings and exports of meshes of 0.1 to 1 million faces, with room.
+inline constexpr std::uint64_t kBytesPerFace = 600;
+
 /// Builds a Mesh from @p soup. @p source names the input in the report.
 /// Throws snaxels::Error (message without the source) when the soup has a
-/// non-finite coordinate, an out-of-range index or no usable face.
+/// non-finite coordinate, an out-of-range index or no usable face, or when
+/// its faces need more memory than the machine has (kBytesPerFace each),
+/// before allocating for them.
 LoadedMesh build_mesh(const TriangleSoup& soup, const std::string& source);
 
 /// Recomputes every vertex normal as the normalized sum of its faces'

@@ -394,7 +394,14 @@ LoadedMesh import_mesh(const std::string& path) {
 }
 
 LoadedMesh load_mesh(const std::string& spec) {
-    if (spec.rfind("proc:", 0) == 0) return build_mesh(make_procedural(spec.substr(5)), spec);
+    if (spec.rfind("proc:", 0) == 0) {
+        const TriangleSoup soup = make_procedural(spec.substr(5));
+        try {
+            return build_mesh(soup, spec);
+        } catch (const Error& e) {
+            throw Error(spec + ": " + e.what());
+        }
+    }
     return import_mesh(spec);
 }
 

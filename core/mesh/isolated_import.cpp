@@ -19,6 +19,7 @@
 #include <unistd.h>
 
 #include "core/error.h"
+#include "core/util/memory.h"
 
 extern char** environ;
 
@@ -101,14 +102,6 @@ double env_number(const char* name) {
     char* end = nullptr;
     const double x = std::strtod(v, &end);
     return (end && *end == '\0' && std::isfinite(x) && x > 0) ? x : 0.0;
-}
-
-std::string describe_bytes(std::uint64_t bytes) {
-    char buf[32];
-    const double mb = double(bytes) / (1024.0 * 1024.0);
-    if (mb < 1024.0) std::snprintf(buf, sizeof buf, "%.0f MB", mb);
-    else std::snprintf(buf, sizeof buf, "%.1f GB", mb / 1024.0);
-    return buf;
 }
 
 std::string describe_seconds(double s) {
@@ -278,9 +271,7 @@ ImportLimits import_limits(std::uintmax_t file_size) {
     limits.seconds = 8.0 + double(file_size) / (4.0 * 1024 * 1024);
     const std::uint64_t gib = 1ull << 30;
     limits.memory_bytes = std::max<std::uint64_t>(2 * gib, std::uint64_t(file_size) * 64);
-    const long pages = ::sysconf(_SC_PHYS_PAGES), page = ::sysconf(_SC_PAGE_SIZE);
-    if (pages > 0 && page > 0)
-        limits.memory_bytes = std::min<std::uint64_t>(limits.memory_bytes, std::uint64_t(pages) * std::uint64_t(page) / 4 * 3);
+    limits.memory_bytes = std::min<std::uint64_t>(limits.memory_bytes, machine_memory_bytes() / 4 * 3);
     if (const double s = env_number("SNAXELS_IMPORT_SECONDS"); s > 0) limits.seconds = s;
     if (const double mb = env_number("SNAXELS_IMPORT_MEMORY_MB"); mb > 0)
         limits.memory_bytes = std::uint64_t(mb * 1024 * 1024);

@@ -379,7 +379,8 @@ std::vector<MapRegion> build_post_map(const SnaxelEngine& engine, const PostMapI
 
     Paths covered;
     int depth = 0;
-    for (const auto& [d, patch] : order) {
+    for (const auto& entry : order) {
+        const std::int32_t patch = entry.second; // a variable, so the lambda below may capture it
         const auto found = open_patch.find(patch);
         const char how = found == open_patch.end() ? 0 : found->second;
         const Paths shape = how == 2 ? outline_of([&](std::size_t i) {

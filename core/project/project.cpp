@@ -142,6 +142,11 @@ Project read_project(const std::string& path) {
         std::string what = e.what();
         if (const auto colon = what.find("parse error"); colon != std::string::npos) what = what.substr(colon);
         throw Error(path + ": not a snaxels project (" + what + ")");
+    } catch (const json::exception& e) {
+        // A number past double's range (1e400), say: found by fuzz_project.
+        std::string what = e.what();
+        if (const auto bracket = what.find("] "); bracket != std::string::npos) what = what.substr(bracket + 2);
+        throw Error(path + ": not a snaxels project (" + what + ")");
     }
     const Reader top(path, doc, "");
     if (!top.has("format") || !doc.at("format").is_string() || doc.at("format").get<std::string>() != kFormat)

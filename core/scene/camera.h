@@ -1,6 +1,8 @@
 #pragma once
 /// Camera, light and the projection to image (SVG pixel) coordinates.
 
+#include <vector>
+
 #include <glm/glm.hpp>
 #include <nlohmann/json_fwd.hpp>
 
@@ -43,6 +45,13 @@ struct Light {
 
 /// Light from the viewer's upper left for @p camera: the default light.
 Light default_light(const Camera& camera);
+
+/// A perspective eye must see the whole mesh in front of it: a point at or
+/// behind the eye has no place in the picture (its projection would be
+/// mirrored or infinitely far). Throws snaxels::Error saying so, and what to
+/// do, when any of @p positions lies less than a thousandth of @p radius in
+/// front of the eye (the eye inside the mesh, or the mesh around it).
+void require_mesh_in_front(const Camera& camera, const std::vector<glm::dvec3>& positions, double radius);
 
 /// Maps world points to image pixels (x right, y down). Orthographic views
 /// fit the given bounding sphere into the image within a margin; perspective

@@ -66,11 +66,11 @@ void occlusion_filter(const RTCFilterFunctionNArguments* args) {
             args->valid[i] = 0;
 }
 
-RTCRay make_ray(const VisibilityRay& r) {
+RTCRay make_ray(const VisibilityRay& r, const glm::dvec3& shift) {
     RTCRay ray{};
-    ray.org_x = float(r.origin.x);
-    ray.org_y = float(r.origin.y);
-    ray.org_z = float(r.origin.z);
+    ray.org_x = float(r.origin.x - shift.x);
+    ray.org_y = float(r.origin.y - shift.y);
+    ray.org_z = float(r.origin.z - shift.z);
     ray.dir_x = float(r.dir.x);
     ray.dir_y = float(r.dir.y);
     ray.dir_z = float(r.dir.z);
@@ -95,6 +95,14 @@ RTCDevice shared_device() {
 } // namespace
 
 RayScene::RayScene(const MeshTopology& topology) : topo_(topology) {
+    if (!topo_.positions.empty()) {
+        glm::dvec3 lo = topo_.positions[0], hi = lo;
+        for (const glm::dvec3& p : topo_.positions) {
+            lo = glm::min(lo, p);
+            hi = glm::max(hi, p);
+        }
+        origin_ = 0.5 * (lo + hi);
+    }
     RTCDevice device = shared_device();
     RTCScene scene = rtcNewScene(device);
     scene_ = scene;
@@ -125,7 +133,7 @@ RayScene::~RayScene() {
 
 void RayScene::upload_positions() {
     for (std::size_t v = 0; v < topo_.n_vertices(); ++v)
-        for (int k = 0; k < 3; ++k) vertices_[3 * v + k] = float(topo_.positions[v][k]);
+        for (int k = 0; k < 3; ++k) vertices_[3 * v + k] = float(topo_.positions[v][k] - origin_[k]);
 }
 
 void RayScene::refit() {
@@ -167,7 +175,7 @@ Crossings RayScene::count(const VisibilityRay& r) const {
     CountContext c{};
     init_context(c, r, true);
     RTCRayHit rayhit{};
-    rayhit.ray = make_ray(r);
+    rayhit.ray = make_ray(r, origin_);
     rayhit.hit.geomID = RTC_INVALID_GEOMETRY_ID;
     rtcIntersect1(static_cast<RTCScene>(scene_), &c.embree, &rayhit);
     return c.crossings;
@@ -177,7 +185,7 @@ RayHit RayScene::nearest(const VisibilityRay& r) const {
     CountContext c{};
     init_context(c, r, false); // the occlusion filter skips ignored faces only
     RTCRayHit rayhit{};
-    rayhit.ray = make_ray(r);
+    rayhit.ray = make_ray(r, origin_);
     rayhit.hit.geomID = RTC_INVALID_GEOMETRY_ID;
     rtcIntersect1(static_cast<RTCScene>(scene_), &c.embree, &rayhit);
     RayHit hit;
@@ -192,7 +200,7 @@ RayHit RayScene::nearest(const VisibilityRay& r) const {
 bool RayScene::occluded(const VisibilityRay& r) const {
     CountContext c{};
     init_context(c, r, false);
-    RTCRay ray = make_ray(r);
+    RTCRay ray = make_ray(r, origin_);
     rtcOccluded1(static_cast<RTCScene>(scene_), &c.embree, &ray);
     return ray.tfar < 0.0f; // Embree marks an occluded ray with tfar = -inf
 }

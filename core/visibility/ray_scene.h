@@ -68,6 +68,10 @@ class RayScene {
     void init_context(CountContext& context, const VisibilityRay& ray, bool counting) const;
 
     const MeshTopology& topo_;
+    /// Embree works in float: vertices and rays are taken relative to the
+    /// mesh's centre (in double), so a mesh far from the origin (1e7 away)
+    /// keeps its detail.
+    glm::dvec3 origin_{0.0};
     void* scene_ = nullptr;  // RTCScene
     void* geometry_ = nullptr; // RTCGeometry
     float* vertices_ = nullptr; // Embree-owned vertex buffer
