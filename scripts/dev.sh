@@ -43,6 +43,7 @@ cmake --build "$build_dir" -j2
 
 case "$action" in
   run) exec "$build_dir/bin/snaxels" "$@" ;;
-  test) cd "$build_dir" && exec ctest --output-on-failure -j2 --timeout 900 ;;
+  # The 10,000-frame soak (label soak) is left out: ctest -L soak runs it.
+  test) cd "$build_dir" && exec ctest --output-on-failure -j2 --timeout 900 -LE '^soak$' ;;
   build) ;;
 esac

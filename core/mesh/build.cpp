@@ -109,8 +109,11 @@ class RepairingFaceAdder {
   private:
     // An isolated vertex at the position of @p original, reused between attempts.
     Mesh::VertexHandle spare(std::size_t k, Mesh::VertexHandle original) {
-        while (spares_.size() <= k) spares_.push_back(mesh_.add_vertex(mesh_.point(original)));
-        mesh_.set_point(spares_[k], mesh_.point(original));
+        // A copy: add_vertex grows the point array, and a reference into it
+        // would be read after it moved (found by AddressSanitizer).
+        const Mesh::Point at = mesh_.point(original);
+        while (spares_.size() <= k) spares_.push_back(mesh_.add_vertex(at));
+        mesh_.set_point(spares_[k], at);
         mesh_.property(source_, spares_[k]) = mesh_.property(source_, original);
         return spares_[k];
     }
