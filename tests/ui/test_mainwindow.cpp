@@ -729,6 +729,39 @@ class TestMainWindow : public QObject {
         rusage children{};
         getrusage(RUSAGE_CHILDREN, &children);
         QVERIFY2(children.ru_maxrss < 2L * 1024 * 1024, qPrintable(QString::number(children.ru_maxrss) + " KB"));
+        // A file that keeps the reader busy past its time limit: a 320,000-face
+        // grid under a limit of 0.3 s stands in for one that would take minutes.
+        QTemporaryDir scratch;
+        const QString grid = scratch.filePath("busy-grid.obj");
+        {
+            QFile out(grid);
+            QVERIFY(out.open(QIODevice::WriteOnly));
+            QTextStream s(&out);
+            const int n = 400;
+            for (int i = 0; i <= n; ++i)
+                for (int j = 0; j <= n; ++j) s << "v " << i << ' ' << j << ' ' << (i * 7 + j * 13) % 10 * 0.1 << '\n';
+            for (int i = 0; i < n; ++i)
+                for (int j = 0; j < n; ++j) {
+                    const int a = i * (n + 1) + j + 1;
+                    s << "f " << a << ' ' << a + 1 << ' ' << a + n + 2 << "\nf " << a << ' ' << a + n + 2 << ' ' << a + n + 1 << '\n';
+                }
+        }
+        qputenv("SNAXELS_IMPORT_SECONDS", "0.3");
+        {
+            QSignalSpy failed(&window, &MainWindow::loadFailed);
+            QElapsedTimer clock;
+            clock.start();
+            window.openMesh(grid);
+            QVERIFY(failed.wait(30000));
+            QVERIFY2(clock.elapsed() < 10000, qPrintable(QString::number(clock.elapsed())));
+            QVERIFY2(failed.first().first().toString().contains("busy-grid.obj: reading the file took longer than 0.3 s"),
+                     qPrintable(failed.first().first().toString()));
+        }
+        qunsetenv("SNAXELS_IMPORT_SECONDS");
+        for (auto* b : window.findChildren<QMessageBox*>())
+            if (b->isVisible()) b->close();
+        QCOMPARE(window.mesh(), mesh);
+
         // And the window still works: a good mesh opens.
         QSignalSpy contours(&window, &MainWindow::contoursUpdated);
         window.openMesh("proc:torus:5000");
