@@ -29,6 +29,8 @@ if [ "$action" = sanitize ] || [ "$action" = fuzz ]; then
   cmake --build "$san_dir" -j2
   export ASAN_OPTIONS=detect_leaks=1:abort_on_error=0:strict_string_checks=1
   export UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
+  export LSAN_OPTIONS=suppressions=$PWD/scripts/lsan.supp:print_suppressions=0
+  export SNAXELS_SANITIZER_BUILD=1 # tests/cli/importer_limits.sh: no memory limit to check
   if [ "$action" = sanitize ]; then
     cd "$san_dir" && exec ctest --output-on-failure -j2 --timeout 1800 -L 'core|cli'
   fi

@@ -16,7 +16,7 @@ for target in "$bin"/fuzz_*; do
   work="$bin/work/$name"
   mkdir -p "$work" "$bin/artifacts"
   if compgen -G "fuzz/regressions/$name/*" >/dev/null; then
-    if ! "$target" -runs=0 fuzz/regressions/"$name"/* >"$bin/regressions-$name.log" 2>&1; then
+    if ! "$target" fuzz/regressions/"$name"/* >"$bin/regressions-$name.log" 2>&1; then
       echo "fuzz $name: a committed reproducer fails again (see $bin/regressions-$name.log)"
       status=1
       continue

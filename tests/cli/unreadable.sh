@@ -9,8 +9,8 @@ trap 'rm -rf "$dir"' EXIT
 chmod 755 "$dir"
 printf 'v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n' > "$dir/locked.obj"
 chmod 000 "$dir/locked.obj"
-cp "$cli" "$dir/snaxels-cli"
-chmod 755 "$dir/snaxels-cli"
+cp "$cli" "$(dirname "$cli")/snaxels-import" "$dir/" # the CLI reads files through its helper
+chmod 755 "$dir/snaxels-cli" "$dir/snaxels-import"
 if [ "$(id -u)" -eq 0 ]; then
   run=(setpriv --reuid=65534 --regid=65534 --clear-groups "$dir/snaxels-cli")
 else
