@@ -56,6 +56,59 @@ struct UnionFind {
     void unite(std::uint32_t a, std::uint32_t b) { parent[find(a)] = find(b); }
 };
 
+// Fans of faces that meet only at a vertex (a bow tie, or a cone tip shared
+// by two surfaces) get a copy of the vertex each but the first: the faces
+// around a vertex of a manifold mesh form one fan. Faces join a fan through
+// an edge at the vertex they share. OpenMesh accepts some such faces and
+// leaves a vertex with two gaps in its ring (found by fuzz_mesh). Appends
+// the copies to @p positions and @p source; returns how many it made.
+std::size_t split_fans(std::vector<std::array<std::uint32_t, 3>>& faces, std::vector<glm::dvec3>& positions,
+                       std::vector<std::uint32_t>& source) {
+    // Corners c = 3 f + k; corners of one vertex in one fan end up united.
+    std::vector<std::pair<std::uint64_t, std::uint32_t>> edges; // (edge key, corner of its first vertex)
+    edges.reserve(faces.size() * 3);
+    for (std::size_t f = 0; f < faces.size(); ++f)
+        for (int k = 0; k < 3; ++k) {
+            const std::uint64_t a = faces[f][std::size_t(k)], b = faces[f][std::size_t((k + 1) % 3)];
+            edges.emplace_back(a < b ? (a << 32 | b) : (b << 32 | a), std::uint32_t(3 * f + std::size_t(k)));
+        }
+    std::sort(edges.begin(), edges.end());
+    UnionFind fans(faces.size() * 3);
+    auto corner_of = [&](std::uint32_t face, std::uint32_t vertex) {
+        for (std::uint32_t k = 0; k < 3; ++k)
+            if (faces[face][k] == vertex) return 3 * face + k;
+        return 3 * face; // unreachable: the face has the vertex
+    };
+    for (std::size_t i = 0; i < edges.size();) {
+        std::size_t j = i;
+        while (j < edges.size() && edges[j].first == edges[i].first) ++j;
+        for (std::size_t e = i + 1; e < j; ++e) {
+            const std::uint32_t f1 = edges[i].second / 3, f2 = edges[e].second / 3;
+            for (const auto v : {std::uint32_t(edges[i].first >> 32), std::uint32_t(edges[i].first & 0xffffffffu)})
+                fans.unite(corner_of(f1, v), corner_of(f2, v));
+        }
+        i = j;
+    }
+    std::vector<std::int64_t> first_fan(positions.size(), -1);
+    std::unordered_map<std::uint32_t, std::uint32_t> copy_of_fan;
+    const std::size_t before = positions.size();
+    for (std::size_t f = 0; f < faces.size(); ++f)
+        for (std::uint32_t k = 0; k < 3; ++k) {
+            const std::uint32_t v = faces[f][k];
+            const std::uint32_t fan = fans.find(std::uint32_t(3 * f + k));
+            if (first_fan[v] < 0) first_fan[v] = fan;
+            if (first_fan[v] == fan) continue;
+            auto [it, fresh] = copy_of_fan.try_emplace(fan, std::uint32_t(positions.size()));
+            if (fresh) {
+                const glm::dvec3 at = positions[v]; // a copy: push_back may move the array
+                positions.push_back(at);
+                source.push_back(source[v]);
+            }
+            faces[f][k] = it->second;
+        }
+    return positions.size() - before;
+}
+
 // Adds triangles, splitting (duplicating) as few vertices as it takes when a
 // face cannot join the manifold halfedge structure as it is: a complex
 // vertex or edge, or a fan with no free gap to link into.
@@ -247,6 +300,39 @@ LoadedMesh build_mesh(const TriangleSoup& soup, const std::string& source) {
     for (const auto& t : faces)
         adder.add({handles[remap[t[0]]], handles[remap[t[1]]], handles[remap[t[2]]]});
     report.split_vertices = adder.finish();
+    // 5b. Fans that add_face accepted around one vertex (bow ties, also left
+    // by the repairs above): the mesh is built again with a copy of the
+    // vertex for each fan but the first. Rare, so only then.
+    auto complex_vertex = [&] {
+        return std::any_of(mesh.vertices_begin(), mesh.vertices_end(), [&](auto vh) { return !mesh.is_manifold(vh); });
+    };
+    for (int round = 0; round < 4 && complex_vertex(); ++round) { // a rebuild's own repairs may leave one more
+        std::vector<std::array<std::uint32_t, 3>> built;
+        built.reserve(mesh.n_faces());
+        for (const auto fh : mesh.faces()) {
+            std::array<std::uint32_t, 3> t{};
+            int k = 0;
+            for (const auto vh : mesh.fv_range(fh)) t[std::size_t(k++)] = std::uint32_t(vh.idx());
+            built.push_back(t);
+        }
+        std::vector<glm::dvec3> points;
+        std::vector<std::uint32_t> sources;
+        for (const auto vh : mesh.vertices()) {
+            points.push_back(to_glm(mesh.point(vh)));
+            sources.push_back(mesh.property(soup_vertex, vh));
+        }
+        const std::size_t fan_copies = split_fans(built, points, sources);
+        mesh.clean();
+        std::vector<Mesh::VertexHandle> again;
+        again.reserve(points.size());
+        for (std::size_t v = 0; v < points.size(); ++v) {
+            again.push_back(mesh.add_vertex(to_om(points[v])));
+            mesh.property(soup_vertex, again.back()) = sources[v];
+        }
+        RepairingFaceAdder readder(mesh, soup_vertex);
+        for (const auto& t : built) readder.add({again[t[0]], again[t[1]], again[t[2]]});
+        report.split_vertices += fan_copies + readder.finish();
+    }
     omerr().enable();
     out.vertex_source.resize(mesh.n_vertices());
     for (const auto vh : mesh.vertices()) out.vertex_source[vh.idx()] = mesh.property(soup_vertex, vh);

@@ -1,7 +1,8 @@
 #pragma once
 /// Turns a triangle soup into the project's Mesh: welds vertices by exact
 /// position, drops unreferenced vertices and zero-area faces, splits vertices
-/// where a face cannot be added to a manifold halfedge mesh, and computes
+/// where fans of faces meet only at them (bow ties) or a face cannot be added
+/// to a manifold halfedge mesh, and computes
 /// area-weighted vertex normals.
 
 #include <cstdint>

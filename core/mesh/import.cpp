@@ -164,9 +164,17 @@ std::string ply_problem(std::ifstream& in, std::uintmax_t file_size) {
             elements.back().properties.push_back(p);
         } else if (word == "end_header") {
             header_ended = true;
+        } else if (!word.empty() && word != "comment" && word != "obj_info") {
+            // Assimp reads on past a line it does not know and can corrupt
+            // its memory (a double free, found by fuzz_mesh).
+            return "the PLY header has a line that is not PLY: " + line.substr(0, 80);
         }
     }
     if (!header_ended) return "the PLY header has no end_header line";
+    for (std::size_t a = 0; a < elements.size(); ++a)
+        for (std::size_t b = a + 1; b < elements.size(); ++b)
+            if (elements[a].name == elements[b].name)
+                return "the PLY header declares the element '" + elements[a].name + "' twice";
     const auto item_name = [](const PlyElement& e, std::uintmax_t i) { return e.name + " " + std::to_string(i); };
 
     if (format == "ascii") {

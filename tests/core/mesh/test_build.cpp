@@ -71,6 +71,31 @@ TEST(BuildMesh, SplitsAComplexVertex) {
     for (const auto eh : m.mesh.edges()) EXPECT_FALSE(m.mesh.is_boundary(eh));
 }
 
+TEST(BuildMesh, SplitsABowTie) {
+    // Two open fans touching at one vertex: OpenMesh accepts the second face
+    // and leaves the vertex with two gaps in its ring (fuzz_mesh found a PLY
+    // cube, most of its faces degenerate, that did this). Each fan gets its
+    // own copy of the vertex.
+    TriangleSoup s;
+    s.positions = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}, {-1, 0, 0}, {-1, -1, 0}, {0, -1, 0}};
+    s.triangles = {{0, 1, 2}, {0, 2, 3}, {0, 4, 5}, {0, 5, 6}};
+    const auto m = build_mesh(s, "bow tie");
+    EXPECT_EQ(m.mesh.n_faces(), 4u);
+    EXPECT_EQ(m.report.split_vertices, 1u);
+    EXPECT_EQ(m.report.vertices, 7u);
+    EXPECT_EQ(m.mesh.n_vertices(), 8u);
+    EXPECT_EQ(m.report.components, 2u);
+    for (const auto vh : m.mesh.vertices()) EXPECT_TRUE(m.mesh.is_manifold(vh));
+    // The copy stands for the same input vertex.
+    std::size_t at_origin = 0;
+    for (const auto vh : m.mesh.vertices())
+        if (m.mesh.point(vh).norm() == 0.0) {
+            ++at_origin;
+            EXPECT_EQ(m.vertex_source[std::size_t(vh.idx())], 0u);
+        }
+    EXPECT_EQ(at_origin, 2u);
+}
+
 TEST(BuildMesh, RejectsNonFiniteCoordinatesAndBadIndices) {
     TriangleSoup s = two_triangles_with_seam();
     s.positions[2].y = std::numeric_limits<double>::quiet_NaN();

@@ -119,12 +119,12 @@ TEST(IsolatedImport, ReaderCrashIsAnError) {
     set_mesh_importer(SNAXELS_IMPORTER);
     std::string message;
     try {
-        import_mesh(asset("bad/importer/triangulate-assert-1.ply"));
+        import_mesh(asset("bad/importer/triangulate-assert-2.ply"));
     } catch (const Error& e) {
         message = e.what();
     }
     set_mesh_importer("");
-    EXPECT_NE(message.find("triangulate-assert-1.ply: the mesh reader crashed on this file (SIGABRT"),
+    EXPECT_NE(message.find("triangulate-assert-2.ply: the mesh reader crashed on this file (SIGABRT"),
               std::string::npos)
         << message;
 }
