@@ -243,31 +243,56 @@ std::string ply_problem(std::ifstream& in, std::uintmax_t file_size) {
 
 // OFF: the counts line must not promise more vertex and face lines than
 // the file has (Assimp would allocate and loop for them).
-std::string off_problem(std::ifstream& in) {
+std::string lower_extension(const std::string& path) {
+    std::string ext = fs::path(path).extension().string();
+    std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+    return ext;
+}
+
+bool is_off_magic(const std::string& word) {
+    return word == "OFF" || word == "COFF" || word == "NOFF" || word == "CNOFF";
+}
+
+// The next line that is neither blank nor a comment.
+bool next_data_line(std::istream& in, std::string& line) {
+    while (std::getline(in, line)) {
+        const auto at = line.find_first_not_of(" \t\r");
+        if (at != std::string::npos && line[at] != '#') return true;
+    }
+    return false;
+}
+
+// OFF: an optional magic line ("OFF" and its variants, counts possibly on the same line), then the vertex, face
+// and edge counts, then one line per vertex and per face. Assimp reads a .off file without its magic line too, and
+// allocates for the declared counts before reading them, so the counts are checked against the file's lines first.
+std::string off_problem(std::ifstream& in, const std::string& path) {
     in.clear();
     in.seekg(0);
-    std::string line, first;
-    if (!std::getline(in, first)) return {};
-    std::istringstream head(first);
+    std::string line;
+    if (!next_data_line(in, line)) return {};
+    std::istringstream first(line);
     std::string magic;
-    head >> magic;
-    if (magic != "OFF" && magic != "COFF" && magic != "NOFF" && magic != "CNOFF") return {};
+    first >> magic;
     long long nv = -1, nf = -1;
-    if (!(head >> nv >> nf)) {
-        while (std::getline(in, line)) {
-            const auto at = line.find_first_not_of(" \t\r");
-            if (at == std::string::npos || line[at] == '#') continue;
+    if (is_off_magic(magic)) {
+        if (!(first >> nv >> nf)) {
+            if (!next_data_line(in, line)) return "the OFF file has no vertex and face counts";
             std::istringstream counts(line);
             if (!(counts >> nv >> nf)) return "the OFF file's counts line is malformed: " + line;
-            break;
         }
+    } else if (lower_extension(path) == ".off") {
+        std::istringstream counts(line);
+        if (!(counts >> nv >> nf))
+            return "the OFF file starts with neither an OFF line nor its counts: " + line.substr(0, 80);
+    } else {
+        return {};
     }
     if (nv < 0 || nf < 0) return "the OFF file has no valid vertex and face counts";
+    constexpr long long kMostCount = 1LL << 40;  // far past any file; keeps nv + nf from overflowing
+    if (nv > kMostCount || nf > kMostCount)
+        return "the OFF file declares " + std::to_string(std::max(nv, nf)) + " elements, more than any file holds";
     long long lines = 0;
-    while (lines < nv + nf && std::getline(in, line)) {
-        const auto at = line.find_first_not_of(" \t\r");
-        if (at != std::string::npos && line[at] != '#') ++lines;
-    }
+    while (lines < nv + nf && next_data_line(in, line)) ++lines;
     if (lines < nv + nf)
         return "the OFF file is truncated (it declares " + std::to_string(nv) + " vertices and " + std::to_string(nf) +
                " faces, the file has " + std::to_string(lines) + " data lines)";
@@ -276,9 +301,7 @@ std::string off_problem(std::ifstream& in) {
 
 // Binary STL: 80-byte header, a triangle count, 50 bytes per triangle.
 std::string binary_stl_problem(std::ifstream& in, std::uintmax_t file_size, const std::string& path) {
-    std::string ext = fs::path(path).extension().string();
-    std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
-    if (ext != ".stl" || file_size < 84) return {};
+    if (lower_extension(path) != ".stl" || file_size < 84) return {};
     in.clear();
     in.seekg(0);
     char head[84];
@@ -312,7 +335,7 @@ void check_readable(const std::string& path) {
     if (const char* kind = non_mesh_kind(head, n))
         throw Error(path + ": is " + kind + ", not a mesh file");
     const std::uintmax_t size = fs::file_size(path, ec);
-    for (const std::string& problem : {ply_problem(in, size), off_problem(in), binary_stl_problem(in, size, path)})
+    for (const std::string& problem : {ply_problem(in, size), off_problem(in, path), binary_stl_problem(in, size, path)})
         if (!problem.empty()) throw Error(path + ": " + problem);
 }
 
