@@ -27,7 +27,18 @@ if [ "$action" = sanitize ] || [ "$action" = fuzz ]; then
   CC=clang CXX=clang++ cmake -S . -B "$san_dir" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo \
     -DSNAXELS_FUZZ=ON -DSNAXELS_BUILD_GUI=OFF -DSNAXELS_BUILD_BENCH=OFF -DSNAXELS_WERROR=OFF
   cmake --build "$san_dir" -j2
-  export ASAN_OPTIONS=detect_leaks=1:abort_on_error=0:strict_string_checks=1
+  # strict_string_checks makes AddressSanitizer report a string function
+  # given a buffer without a terminating NUL even when it reads nothing past
+  # the end. Our code is held to that in the test run; Assimp's readers call
+  # strtol on unterminated line buffers (a digit followed by a newline at the
+  # end of the buffer: fuzz/regressions/mesh/obj-strtol-unterminated), so the
+  # fuzzers, which run Assimp in-process, report only bytes really read out
+  # of bounds.
+  if [ "$action" = sanitize ]; then
+    export ASAN_OPTIONS=detect_leaks=1:abort_on_error=0:strict_string_checks=1
+  else
+    export ASAN_OPTIONS=detect_leaks=1:abort_on_error=0
+  fi
   export UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
   export LSAN_OPTIONS=suppressions=$PWD/scripts/lsan.supp:print_suppressions=0
   export SNAXELS_SANITIZER_BUILD=1 # tests/cli/importer_limits.sh: no memory limit to check
