@@ -9,10 +9,10 @@
 
 #include <glm/gtx/rotate_vector.hpp>
 
-#include "core/animation/pipeline.h"
-#include "core/mesh/import.h"
-#include "core/mesh/procedural.h"
-#include "core/util/parallel.h"
+#include "snaxels/animation/pipeline.h"
+#include "snaxels/mesh/import.h"
+#include "snaxels/mesh/procedural.h"
+#include "snaxels/util/detail/parallel.h"
 #include "bench/brute_force_contour.h"
 
 using namespace snaxels;

@@ -9,9 +9,9 @@
 #include <algorithm>
 #include <chrono>
 
-#include "core/mesh/import.h"
-#include "core/scene/orbit.h"
-#include "core/style/style.h"
+#include "snaxels/mesh/import.h"
+#include "snaxels/scene/orbit.h"
+#include "snaxels/style/style.h"
 #include "ui/contour_overlay.h"
 
 using namespace snaxels;

@@ -8,8 +8,8 @@
 #include <memory>
 
 #include "bench/brute_force_contour.h"
-#include "core/mesh/import.h"
-#include "core/snaxel/snaxel_engine.h"
+#include "snaxels/mesh/import.h"
+#include "snaxels/snaxel/snaxel_engine.h"
 
 using namespace snaxels;
 

@@ -2,8 +2,8 @@
 
 #include <benchmark/benchmark.h>
 
-#include "core/mesh/import.h"
-#include "core/mesh/procedural.h"
+#include "snaxels/mesh/import.h"
+#include "snaxels/mesh/procedural.h"
 
 using namespace snaxels;
 

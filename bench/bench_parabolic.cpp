@@ -3,9 +3,9 @@
 // (97K faces). The target is under 15 s on two cores.
 #include <benchmark/benchmark.h>
 
-#include "core/mesh/import.h"
-#include "core/parabolic/parabolic.h"
-#include "core/snaxel/refine.h"
+#include "snaxels/mesh/import.h"
+#include "snaxels/snaxel/parabolic.h"
+#include "snaxels/snaxel/refine.h"
 
 using namespace snaxels;
 

@@ -8,8 +8,8 @@
 
 #include <algorithm>
 
-#include "core/mesh/import.h"
-#include "core/planarmap/map_timing.h"
+#include "snaxels/mesh/import.h"
+#include "snaxels/planarmap/detail/map_timing.h"
 
 using namespace snaxels;
 

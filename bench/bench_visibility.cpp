@@ -3,8 +3,8 @@
 
 #include <benchmark/benchmark.h>
 
-#include "core/mesh/import.h"
-#include "core/visibility/visibility.h"
+#include "snaxels/mesh/import.h"
+#include "snaxels/visibility/visibility.h"
 
 using namespace snaxels;
 

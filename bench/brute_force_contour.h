@@ -11,8 +11,8 @@
 #include <numeric>
 #include <vector>
 
-#include "core/snaxel/contour_function.h"
-#include "core/snaxel/topology.h"
+#include "snaxels/snaxel/contour_function.h"
+#include "snaxels/snaxel/topology.h"
 
 namespace snaxels::bench {
 

@@ -21,12 +21,12 @@
 
 #include <unistd.h>
 
-#include "core/mesh/build.h"
-#include "core/mesh/procedural.h"
-#include "core/snaxel/refine.h"
-#include "core/snaxel/snaxel_engine.h"
-#include "core/snaxel/topology.h"
-#include "core/snaxel/tracker.h"
+#include "snaxels/mesh/build.h"
+#include "snaxels/mesh/procedural.h"
+#include "snaxels/snaxel/refine.h"
+#include "snaxels/snaxel/snaxel_engine.h"
+#include "snaxels/snaxel/topology.h"
+#include "snaxels/snaxel/tracker.h"
 
 using namespace snaxels;
 

@@ -1,4 +1,4 @@
-#include "core/error.h"
+#include "snaxels/error.h"
 
 #include <cstdlib>
 #include <cstring>

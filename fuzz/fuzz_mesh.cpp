@@ -14,9 +14,9 @@
 
 #include <unistd.h>
 
-#include "core/error.h"
-#include "core/mesh/build.h"
-#include "core/mesh/isolated_import.h"
+#include "snaxels/error.h"
+#include "snaxels/mesh/build.h"
+#include "snaxels/mesh/isolated_import.h"
 
 // Assimp's internal checks (ai_assert) abort; in this process they throw
 // instead, so that a failed check is an error of the file, as the

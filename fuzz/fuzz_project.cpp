@@ -12,8 +12,8 @@
 
 #include <unistd.h>
 
-#include "core/error.h"
-#include "core/project/project.h"
+#include "snaxels/error.h"
+#include "snaxels/project/project.h"
 
 namespace {
 

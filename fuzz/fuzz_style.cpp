@@ -11,8 +11,8 @@
 #include <string>
 #include <vector>
 
-#include "core/error.h"
-#include "core/style/style.h"
+#include "snaxels/error.h"
+#include "snaxels/style/style.h"
 
 namespace {
 

@@ -19,6 +19,7 @@ PACKAGES=(
   chromium fonts-dejavu-core librsvg2-bin
   librlottie-dev python3-jsonschema
   clang libclang-rt-14-dev llvm
+  dpkg-dev file desktop-file-utils
 )
 
 if [ "${1:-}" = --list ]; then

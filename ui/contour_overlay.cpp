@@ -6,10 +6,10 @@
 #include <QColor>
 #include <QStringList>
 
-#include "core/animation/still.h"
-#include "core/error.h"
-#include "core/snaxel/refine.h"
-#include "core/visibility/visibility.h"
+#include "snaxels/animation/still.h"
+#include "snaxels/error.h"
+#include "snaxels/snaxel/refine.h"
+#include "snaxels/visibility/visibility.h"
 
 namespace snaxels::ui {
 

@@ -8,13 +8,13 @@
 
 #include <QString>
 
-#include "core/animation/still.h"
-#include "core/mesh/build.h"
-#include "core/parabolic/parabolic.h"
-#include "core/scene/animation.h"
-#include "core/style/style.h"
-#include "core/snaxel/snaxel_engine.h"
-#include "core/visibility/ray_scene.h"
+#include "snaxels/animation/still.h"
+#include "snaxels/mesh/build.h"
+#include "snaxels/snaxel/parabolic.h"
+#include "snaxels/animation/frame_driver.h"
+#include "snaxels/style/style.h"
+#include "snaxels/snaxel/snaxel_engine.h"
+#include "snaxels/visibility/ray_scene.h"
 #include "ui/meshview.h"
 
 namespace snaxels::ui {

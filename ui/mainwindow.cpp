@@ -29,16 +29,16 @@
 #include <QUndoStack>
 #include <QtConcurrent/QtConcurrentRun>
 
-#include "core/error.h"
-#include "core/mesh/import.h"
-#include "core/util/atomic_file.h"
+#include "snaxels/error.h"
+#include "snaxels/mesh/import.h"
+#include "snaxels/util/atomic_file.h"
 #include "ui/meshview.h"
 #include "ui/resources.h"
 #include "ui/styleeditor.h"
 #include "ui/svgpane.h"
 #include "ui/timeline.h"
 #include "ui/undo.h"
-#include "core/animation/pipeline.h"
+#include "snaxels/animation/pipeline.h"
 
 namespace snaxels::ui {
 namespace {

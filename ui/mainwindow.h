@@ -12,9 +12,9 @@
 #include <QFutureWatcher>
 #include <QMainWindow>
 
-#include "core/animation/pipeline.h"
-#include "core/mesh/build.h"
-#include "core/project/project.h"
+#include "snaxels/animation/pipeline.h"
+#include "snaxels/mesh/build.h"
+#include "snaxels/project/project.h"
 #include "ui/contour_overlay.h"
 
 class QAction;

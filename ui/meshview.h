@@ -14,10 +14,10 @@
 #include <QPoint>
 #include <glm/glm.hpp>
 
-#include "core/mesh/mesh.h"
-#include "core/snaxel/topology.h"
-#include "core/scene/camera.h"
-#include "core/scene/orbit.h"
+#include "snaxels/mesh/mesh.h"
+#include "snaxels/snaxel/topology.h"
+#include "snaxels/scene/camera.h"
+#include "snaxels/scene/orbit.h"
 
 namespace snaxels::ui {
 

@@ -7,7 +7,7 @@
 #include <QTimer>
 #include <QWidget>
 
-#include "core/style/style.h"
+#include "snaxels/style/style.h"
 
 class QLabel;
 

@@ -6,8 +6,8 @@
 #include <QTimer>
 #include <QWidget>
 
-#include "core/mesh/mesh_animation.h"
-#include "core/scene/animation.h"
+#include "snaxels/mesh/mesh_animation.h"
+#include "snaxels/animation/frame_driver.h"
 
 class QCheckBox;
 class QComboBox;

@@ -12,10 +12,10 @@
 #include "app/cli/commands.h"
 #include "app/cli/progress.h"
 #include "app/cli/scene_options.h"
-#include "core/error.h"
-#include "core/mesh/import.h"
-#include "core/animation/pipeline.h"
-#include "core/util/atomic_file.h"
+#include "snaxels/error.h"
+#include "snaxels/mesh/import.h"
+#include "snaxels/animation/pipeline.h"
+#include "snaxels/util/atomic_file.h"
 
 namespace snaxels::cli {
 

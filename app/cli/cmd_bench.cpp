@@ -7,11 +7,11 @@
 #include "app/cli/args.h"
 #include "app/cli/commands.h"
 #include "app/cli/scene_options.h"
-#include "core/error.h"
-#include "core/mesh/import.h"
-#include "core/planarmap/map_timing.h"
-#include "core/snaxel/refine.h"
-#include "core/snaxel/snaxel_engine.h"
+#include "snaxels/error.h"
+#include "snaxels/mesh/import.h"
+#include "snaxels/planarmap/detail/map_timing.h"
+#include "snaxels/snaxel/refine.h"
+#include "snaxels/snaxel/snaxel_engine.h"
 
 namespace snaxels::cli {
 namespace {

@@ -4,8 +4,8 @@
 
 #include "app/cli/args.h"
 #include "app/cli/commands.h"
-#include "core/mesh/import.h"
-#include "core/snaxel/refine.h"
+#include "snaxels/mesh/import.h"
+#include "snaxels/snaxel/refine.h"
 
 namespace snaxels::cli {
 

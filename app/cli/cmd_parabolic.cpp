@@ -11,10 +11,10 @@
 #include "app/cli/commands.h"
 #include "app/cli/progress.h"
 #include "app/cli/scene_options.h"
-#include "core/mesh/import.h"
-#include "core/parabolic/parabolic.h"
-#include "core/snaxel/refine.h"
-#include "core/util/atomic_file.h"
+#include "snaxels/mesh/import.h"
+#include "snaxels/snaxel/parabolic.h"
+#include "snaxels/snaxel/refine.h"
+#include "snaxels/util/atomic_file.h"
 
 namespace snaxels::cli {
 

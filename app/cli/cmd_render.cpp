@@ -7,13 +7,13 @@
 #include "app/cli/commands.h"
 #include "app/cli/progress.h"
 #include "app/cli/scene_options.h"
-#include "core/animation/pipeline.h"
-#include "core/animation/still.h"
-#include "core/error.h"
-#include "core/mesh/import.h"
-#include "core/project/project.h"
-#include "core/snaxel/refine.h"
-#include "core/util/atomic_file.h"
+#include "snaxels/animation/pipeline.h"
+#include "snaxels/animation/still.h"
+#include "snaxels/error.h"
+#include "snaxels/mesh/import.h"
+#include "snaxels/project/project.h"
+#include "snaxels/snaxel/refine.h"
+#include "snaxels/util/atomic_file.h"
 
 namespace snaxels::cli {
 

@@ -9,8 +9,9 @@
 
 #include "app/cli/args.h"
 #include "app/cli/commands.h"
-#include "core/error.h"
-#include "core/mesh/isolated_import.h"
+#include "snaxels/error.h"
+#include "snaxels/mesh/isolated_import.h"
+#include "snaxels/version.h"
 
 namespace snaxels::cli {
 
@@ -78,7 +79,7 @@ int main(int argc, char** argv) {
         return 0;
     }
     if (name == "--version") {
-        std::cout << "snaxels-cli " << SNAXELS_VERSION << '\n';
+        std::cout << "snaxels-cli " << snaxels::version << '\n';
         return 0;
     }
     // Mesh files are read by the snaxels-import helper in a process of its

@@ -12,8 +12,8 @@
 
 #include "app/cli/args.h"
 
-#include "core/animation/pipeline.h"
-#include "core/parabolic/parabolic.h"
+#include "snaxels/animation/pipeline.h"
+#include "snaxels/snaxel/parabolic.h"
 
 namespace snaxels::cli {
 

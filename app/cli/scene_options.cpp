@@ -4,7 +4,7 @@
 #include <iostream>
 #include <sstream>
 
-#include "core/error.h"
+#include "snaxels/error.h"
 
 namespace snaxels::cli {
 

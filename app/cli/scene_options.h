@@ -7,12 +7,12 @@
 #include <vector>
 
 #include "app/cli/args.h"
-#include "core/mesh/report.h"
-#include "core/planarmap/planar_map.h"
-#include "core/snaxel/refine.h"
-#include "core/scene/camera.h"
-#include "core/snaxel/contour_function.h"
-#include "core/style/style.h"
+#include "snaxels/mesh/report.h"
+#include "snaxels/planarmap/planar_map.h"
+#include "snaxels/snaxel/refine.h"
+#include "snaxels/scene/camera.h"
+#include "snaxels/snaxel/contour_function.h"
+#include "snaxels/style/style.h"
 
 namespace snaxels::cli {
 

@@ -9,7 +9,8 @@
 
 #include <cstdio>
 
-#include "core/mesh/isolated_import.h"
+#include "snaxels/mesh/isolated_import.h"
+#include "snaxels/version.h"
 #include "ui/mainwindow.h"
 #include "ui/resources.h"
 #include "ui/styleeditor.h"
@@ -25,7 +26,7 @@ int main(int argc, char** argv) {
     QApplication app(argc, argv);
     QApplication::setApplicationName("snaxels");
     QApplication::setOrganizationName("snaxels");
-    QApplication::setApplicationVersion(SNAXELS_VERSION);
+    QApplication::setApplicationVersion(snaxels::version);
 
     QCommandLineParser parser;
     parser.setApplicationDescription("Snaxels: vector line art from 3-D meshes.");

@@ -10,7 +10,7 @@
 
 #include <sys/resource.h>
 
-#include "core/mesh/isolated_import.h"
+#include "snaxels/mesh/isolated_import.h"
 
 #if defined(__SANITIZE_ADDRESS__)
 #define SNAXELS_ASAN 1

@@ -1,4 +1,4 @@
-#include "core/animation/pipeline.h"
+#include "snaxels/animation/pipeline.h"
 
 #include <algorithm>
 #include <cctype>
@@ -7,16 +7,16 @@
 #include <filesystem>
 #include <memory>
 
-#include "core/error.h"
-#include "core/animation/still.h"
-#include "core/export/dash_phase.h"
-#include "core/export/lottie.h"
-#include "core/export/svg.h"
-#include "core/parabolic/parabolic.h"
-#include "core/util/atomic_file.h"
-#include "core/planarmap/region_tracker.h"
-#include "core/util/parallel.h"
-#include "core/visibility/visibility.h"
+#include "snaxels/error.h"
+#include "snaxels/animation/still.h"
+#include "snaxels/export/dash_phase.h"
+#include "snaxels/export/lottie.h"
+#include "snaxels/export/svg.h"
+#include "snaxels/snaxel/parabolic.h"
+#include "snaxels/util/atomic_file.h"
+#include "snaxels/planarmap/region_tracker.h"
+#include "snaxels/util/detail/parallel.h"
+#include "snaxels/visibility/visibility.h"
 
 namespace snaxels {
 

@@ -12,13 +12,13 @@
 
 #include <nlohmann/json.hpp>
 
-#include "core/export/animated_svg.h"
-#include "core/export/animation_writer.h"
-#include "core/planarmap/planar_map.h"
-#include "core/scene/animation.h"
-#include "core/snaxel/refine.h"
-#include "core/snaxel/tracker.h"
-#include "core/style/style.h"
+#include "snaxels/export/animated_svg.h"
+#include "snaxels/export/animation_writer.h"
+#include "snaxels/planarmap/planar_map.h"
+#include "snaxels/animation/frame_driver.h"
+#include "snaxels/snaxel/refine.h"
+#include "snaxels/snaxel/tracker.h"
+#include "snaxels/style/style.h"
 
 namespace snaxels {
 

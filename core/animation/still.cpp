@@ -1,11 +1,11 @@
-#include "core/animation/still.h"
+#include "snaxels/animation/still.h"
 
 #include <algorithm>
 #include <cmath>
 #include <memory>
 
-#include "core/export/svg.h"
-#include "core/util/parallel.h"
+#include "snaxels/export/svg.h"
+#include "snaxels/util/detail/parallel.h"
 
 namespace snaxels {
 

@@ -9,12 +9,12 @@
 #include <string>
 #include <vector>
 
-#include "core/export/drawing.h"
-#include "core/mesh/build.h"
-#include "core/planarmap/planar_map.h"
-#include "core/snaxel/tracker.h"
-#include "core/style/style.h"
-#include "core/visibility/visibility.h"
+#include "snaxels/export/drawing.h"
+#include "snaxels/mesh/build.h"
+#include "snaxels/planarmap/planar_map.h"
+#include "snaxels/snaxel/tracker.h"
+#include "snaxels/style/style.h"
+#include "snaxels/visibility/visibility.h"
 
 namespace snaxels {
 

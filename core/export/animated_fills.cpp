@@ -1,4 +1,4 @@
-#include "core/export/animated_fills.h"
+#include "snaxels/export/animated_fills.h"
 
 #include <algorithm>
 #include <cmath>
@@ -6,9 +6,9 @@
 #include <tuple>
 #include <unordered_map>
 
-#include "core/export/animated_paths.h"
-#include "core/export/path_keys.h"
-#include "core/export/polyline.h"
+#include "snaxels/export/animated_paths.h"
+#include "snaxels/export/path_keys.h"
+#include "snaxels/export/detail/polyline.h"
 
 namespace snaxels {
 namespace {

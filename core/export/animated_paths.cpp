@@ -1,4 +1,4 @@
-#include "core/export/animated_paths.h"
+#include "snaxels/export/animated_paths.h"
 
 #include <algorithm>
 

@@ -12,8 +12,8 @@
 #include <string>
 #include <vector>
 
-#include "core/export/animated_svg.h"
-#include "core/export/path_keys.h"
+#include "snaxels/export/animated_svg.h"
+#include "snaxels/export/path_keys.h"
 
 namespace snaxels {
 

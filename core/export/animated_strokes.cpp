@@ -1,13 +1,13 @@
-#include "core/export/animated_strokes.h"
+#include "snaxels/export/animated_strokes.h"
 
 #include <algorithm>
 #include <cmath>
 #include <map>
 #include <unordered_map>
 
-#include "core/export/animated_paths.h"
-#include "core/export/path_keys.h"
-#include "core/export/polyline.h"
+#include "snaxels/export/animated_paths.h"
+#include "snaxels/export/path_keys.h"
+#include "snaxels/export/detail/polyline.h"
 
 namespace snaxels {
 

@@ -1,6 +1,6 @@
-#include "core/export/animated_svg.h"
+#include "snaxels/export/animated_svg.h"
 
-#include "core/export/animation_writer.h"
+#include "snaxels/export/animation_writer.h"
 
 namespace snaxels {
 

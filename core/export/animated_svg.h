@@ -15,9 +15,9 @@
 #include <string>
 #include <vector>
 
-#include "core/export/drawing.h"
-#include "core/planarmap/post_map.h"
-#include "core/style/style.h"
+#include "snaxels/export/drawing.h"
+#include "snaxels/planarmap/post_map.h"
+#include "snaxels/style/style.h"
 
 namespace snaxels {
 

@@ -1,4 +1,4 @@
-#include "core/export/animation_writer.h"
+#include "snaxels/export/animation_writer.h"
 
 #include <algorithm>
 #include <array>
@@ -8,10 +8,10 @@
 #include <map>
 #include <optional>
 
-#include "core/error.h"
-#include "core/export/animated_paths.h"
-#include "core/export/smil.h"
-#include "core/export/svg_writer.h"
+#include "snaxels/error.h"
+#include "snaxels/export/animated_paths.h"
+#include "snaxels/export/smil.h"
+#include "snaxels/export/detail/svg_writer.h"
 
 namespace snaxels {
 namespace {

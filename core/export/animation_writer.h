@@ -14,7 +14,7 @@
 #include <memory>
 #include <string_view>
 
-#include "core/export/animated_svg.h"
+#include "snaxels/export/animated_svg.h"
 
 namespace snaxels {
 

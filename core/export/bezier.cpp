@@ -1,5 +1,5 @@
-#include "core/export/bezier.h"
-#include "core/export/polyline.h"
+#include "snaxels/export/bezier.h"
+#include "snaxels/export/detail/polyline.h"
 
 #include <algorithm>
 #include <array>

@@ -1,4 +1,4 @@
-#include "core/export/contours_json.h"
+#include "snaxels/export/contours_json.h"
 
 namespace snaxels {
 namespace {

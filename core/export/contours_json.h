@@ -3,9 +3,9 @@
 
 #include <nlohmann/json.hpp>
 
-#include "core/export/drawing.h"
-#include "core/planarmap/post_map.h"
-#include "core/mesh/report.h"
+#include "snaxels/export/drawing.h"
+#include "snaxels/planarmap/post_map.h"
+#include "snaxels/mesh/report.h"
 
 namespace snaxels {
 

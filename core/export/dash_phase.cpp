@@ -1,4 +1,4 @@
-#include "core/export/dash_phase.h"
+#include "snaxels/export/dash_phase.h"
 
 #include <algorithm>
 #include <cmath>

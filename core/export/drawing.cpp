@@ -1,4 +1,4 @@
-#include "core/export/drawing.h"
+#include "snaxels/export/drawing.h"
 
 namespace snaxels {
 

@@ -6,9 +6,9 @@
 
 #include <glm/glm.hpp>
 
-#include "core/scene/camera.h"
-#include "core/snaxel/snaxel_engine.h"
-#include "core/visibility/visibility.h"
+#include "snaxels/scene/camera.h"
+#include "snaxels/snaxel/snaxel_engine.h"
+#include "snaxels/visibility/visibility.h"
 
 namespace snaxels {
 

@@ -1,11 +1,11 @@
-#include "core/export/lottie.h"
+#include "snaxels/export/lottie.h"
 
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
 
-#include "core/export/animated_paths.h"
-#include "core/export/animation_writer.h"
+#include "snaxels/export/animated_paths.h"
+#include "snaxels/export/animation_writer.h"
 
 namespace snaxels {
 namespace {

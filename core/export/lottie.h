@@ -13,7 +13,7 @@
 #include <string>
 #include <vector>
 
-#include "core/export/animated_svg.h"
+#include "snaxels/export/animated_svg.h"
 
 namespace snaxels {
 

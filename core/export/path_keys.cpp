@@ -1,10 +1,10 @@
-#include "core/export/path_keys.h"
+#include "snaxels/export/path_keys.h"
 
 #include <algorithm>
 #include <cmath>
 
-#include "core/export/polyline.h"
-#include "core/export/svg_writer.h"
+#include "snaxels/export/detail/polyline.h"
+#include "snaxels/export/detail/svg_writer.h"
 
 namespace snaxels::anim {
 

@@ -11,7 +11,7 @@
 
 #include <glm/vec2.hpp>
 
-#include "core/export/bezier.h"
+#include "snaxels/export/bezier.h"
 
 namespace snaxels::anim {
 

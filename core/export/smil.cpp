@@ -1,10 +1,10 @@
-#include "core/export/smil.h"
+#include "snaxels/export/smil.h"
 
 #include <algorithm>
 #include <cstdio>
 #include <cstdlib>
 
-#include "core/export/svg_writer.h"
+#include "snaxels/export/detail/svg_writer.h"
 
 namespace snaxels::smil {
 

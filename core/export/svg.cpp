@@ -1,13 +1,13 @@
-#include "core/export/svg.h"
-#include "core/util/parallel.h"
+#include "snaxels/export/svg.h"
+#include "snaxels/util/detail/parallel.h"
 
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
 
-#include "core/export/polyline.h"
-#include "core/export/svg_writer.h"
-#include "core/planarmap/planar_map.h"
+#include "snaxels/export/detail/polyline.h"
+#include "snaxels/export/detail/svg_writer.h"
+#include "snaxels/planarmap/planar_map.h"
 
 namespace snaxels {
 namespace svg {
@@ -168,17 +168,6 @@ void append_compact_chain_data(std::string& out, const BezierChain& chain, glm::
 }
 
 } // namespace svg
-
-const char* default_stroke(ContourKind kind) {
-    switch (kind) {
-    case ContourKind::Visual: return "#111111";
-    case ContourKind::Shadow: return "#2f5fa8";
-    case ContourKind::Isophote: return "#8a4fb0";
-    case ContourKind::Gleam: return "#d98c00";
-    case ContourKind::Parabolic: return "#1f8a4c";
-    }
-    return "#111111";
-}
 
 namespace {
 

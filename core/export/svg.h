@@ -3,14 +3,11 @@
 
 #include <string>
 
-#include "core/export/drawing.h"
-#include "core/planarmap/post_map.h"
-#include "core/style/style.h"
+#include "snaxels/export/drawing.h"
+#include "snaxels/planarmap/post_map.h"
+#include "snaxels/style/style.h"
 
 namespace snaxels {
-
-/// Default stroke colour of a contour kind (until styles say otherwise).
-const char* default_stroke(ContourKind kind);
 
 /// The SVG document text, drawn as @p style says. Hidden runs (QI > 0) go in
 /// <g id="hidden"> under the visible ones in <g id="visible">; without

@@ -1,4 +1,4 @@
-#include "core/mesh/build.h"
+#include "snaxels/mesh/build.h"
 
 #include <algorithm>
 #include <bit>
@@ -10,8 +10,8 @@
 #include <OpenMesh/Core/System/omstream.hh>
 #include <glm/glm.hpp>
 
-#include "core/error.h"
-#include "core/util/memory.h"
+#include "snaxels/error.h"
+#include "snaxels/util/memory.h"
 
 namespace snaxels {
 namespace {

@@ -8,9 +8,9 @@
 #include <cstdint>
 #include <string>
 
-#include "core/mesh/mesh.h"
-#include "core/mesh/report.h"
-#include "core/mesh/triangle_soup.h"
+#include "snaxels/mesh/mesh.h"
+#include "snaxels/mesh/report.h"
+#include "snaxels/mesh/triangle_soup.h"
 
 namespace snaxels {
 

@@ -1,4 +1,4 @@
-#include "core/mesh/import.h"
+#include "snaxels/mesh/import.h"
 
 #include <algorithm>
 #include <array>
@@ -17,10 +17,10 @@
 #include <assimp/scene.h>
 #include <glm/glm.hpp>
 
-#include "core/error.h"
-#include "core/mesh/assimp_scene.h"
-#include "core/mesh/isolated_import.h"
-#include "core/mesh/procedural.h"
+#include "snaxels/error.h"
+#include "snaxels/mesh/detail/assimp_scene.h"
+#include "snaxels/mesh/isolated_import.h"
+#include "snaxels/mesh/procedural.h"
 
 namespace snaxels {
 namespace {

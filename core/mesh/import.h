@@ -4,7 +4,7 @@
 
 #include <string>
 
-#include "core/mesh/build.h"
+#include "snaxels/mesh/build.h"
 
 namespace snaxels {
 

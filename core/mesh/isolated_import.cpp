@@ -1,4 +1,4 @@
-#include "core/mesh/isolated_import.h"
+#include "snaxels/mesh/isolated_import.h"
 
 #include <algorithm>
 #include <cerrno>
@@ -18,8 +18,8 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
-#include "core/error.h"
-#include "core/util/memory.h"
+#include "snaxels/error.h"
+#include "snaxels/util/memory.h"
 
 extern char** environ;
 

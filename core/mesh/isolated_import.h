@@ -14,8 +14,8 @@
 #include <string>
 #include <vector>
 
-#include "core/mesh/mesh_animation.h"
-#include "core/mesh/triangle_soup.h"
+#include "snaxels/mesh/mesh_animation.h"
+#include "snaxels/mesh/triangle_soup.h"
 
 namespace snaxels {
 

@@ -1,12 +1,12 @@
-#include "core/mesh/mesh_animation.h"
+#include "snaxels/mesh/mesh_animation.h"
 
 #include <cmath>
 #include <functional>
 #include <map>
 
-#include "core/error.h"
-#include "core/mesh/assimp_scene.h"
-#include "core/mesh/isolated_import.h"
+#include "snaxels/error.h"
+#include "snaxels/mesh/detail/assimp_scene.h"
+#include "snaxels/mesh/isolated_import.h"
 
 namespace snaxels {
 namespace {

@@ -1,4 +1,4 @@
-#include "core/mesh/procedural.h"
+#include "snaxels/mesh/procedural.h"
 
 #include <algorithm>
 #include <charconv>
@@ -8,7 +8,7 @@
 
 #include <glm/glm.hpp>
 
-#include "core/error.h"
+#include "snaxels/error.h"
 
 namespace snaxels {
 namespace {

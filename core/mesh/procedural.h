@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "core/mesh/triangle_soup.h"
+#include "snaxels/mesh/triangle_soup.h"
 
 namespace snaxels {
 

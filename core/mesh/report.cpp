@@ -1,4 +1,4 @@
-#include "core/mesh/report.h"
+#include "snaxels/mesh/report.h"
 
 #include <cstdio>
 #include <sstream>

@@ -1,12 +1,12 @@
-#include "core/planarmap/planar_map.h"
+#include "snaxels/planarmap/planar_map.h"
 
 #include <algorithm>
 #include <cmath>
 #include <limits>
 
-#include "core/error.h"
-#include "core/planarmap/clip.h"
-#include "core/util/parallel.h"
+#include "snaxels/error.h"
+#include "snaxels/planarmap/detail/clip.h"
+#include "snaxels/util/detail/parallel.h"
 
 namespace snaxels {
 

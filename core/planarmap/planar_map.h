@@ -6,8 +6,8 @@
 #include <string>
 #include <vector>
 
-#include "core/planarmap/post_map.h"
-#include "core/planarmap/snaxel_map.h"
+#include "snaxels/planarmap/post_map.h"
+#include "snaxels/planarmap/snaxel_map.h"
 
 namespace snaxels {
 

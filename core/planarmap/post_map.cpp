@@ -1,13 +1,13 @@
-#include "core/planarmap/post_map.h"
+#include "snaxels/planarmap/post_map.h"
 
 #include <algorithm>
 #include <cmath>
 #include <map>
 #include <unordered_map>
 
-#include "core/planarmap/clip.h"
-#include "core/util/parallel.h"
-#include "core/visibility/visibility.h"
+#include "snaxels/planarmap/detail/clip.h"
+#include "snaxels/util/detail/parallel.h"
+#include "snaxels/visibility/visibility.h"
 
 namespace snaxels {
 namespace {

@@ -14,9 +14,9 @@
 
 #include <glm/glm.hpp>
 
-#include "core/scene/camera.h"
-#include "core/snaxel/snaxel_engine.h"
-#include "core/visibility/ray_scene.h"
+#include "snaxels/scene/camera.h"
+#include "snaxels/snaxel/snaxel_engine.h"
+#include "snaxels/visibility/ray_scene.h"
 
 namespace snaxels {
 

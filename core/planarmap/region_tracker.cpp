@@ -1,4 +1,4 @@
-#include "core/planarmap/region_tracker.h"
+#include "snaxels/planarmap/region_tracker.h"
 
 #include <algorithm>
 #include <cmath>

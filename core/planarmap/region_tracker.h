@@ -9,7 +9,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "core/planarmap/planar_map.h"
+#include "snaxels/planarmap/planar_map.h"
 
 namespace snaxels {
 

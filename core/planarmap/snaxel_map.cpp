@@ -1,4 +1,4 @@
-#include "core/planarmap/snaxel_map.h"
+#include "snaxels/planarmap/snaxel_map.h"
 
 #include <algorithm>
 #include <chrono>
@@ -8,8 +8,8 @@
 #include <tuple>
 #include <unordered_map>
 
-#include "core/util/parallel.h"
-#include "core/visibility/visibility.h"
+#include "snaxels/util/detail/parallel.h"
+#include "snaxels/visibility/visibility.h"
 
 namespace snaxels {
 namespace {

@@ -33,8 +33,8 @@
 
 #include <vector>
 
-#include "core/planarmap/post_map.h"
-#include "core/visibility/ray_scene.h"
+#include "snaxels/planarmap/post_map.h"
+#include "snaxels/visibility/ray_scene.h"
 
 namespace snaxels {
 

@@ -1,4 +1,4 @@
-#include "core/project/project.h"
+#include "snaxels/project/project.h"
 
 #include <cmath>
 #include <cstring>
@@ -8,8 +8,8 @@
 
 #include <nlohmann/json.hpp>
 
-#include "core/error.h"
-#include "core/util/atomic_file.h"
+#include "snaxels/error.h"
+#include "snaxels/util/atomic_file.h"
 
 namespace snaxels {
 namespace {

@@ -8,8 +8,8 @@
 #include <optional>
 #include <string>
 
-#include "core/scene/animation.h"
-#include "core/scene/orbit.h"
+#include "snaxels/animation/frame_driver.h"
+#include "snaxels/scene/orbit.h"
 
 namespace snaxels {
 

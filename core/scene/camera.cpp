@@ -1,4 +1,4 @@
-#include "core/scene/camera.h"
+#include "snaxels/scene/camera.h"
 
 #include <cmath>
 #include <cstdio>
@@ -6,7 +6,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "core/error.h"
+#include "snaxels/error.h"
 
 namespace snaxels {
 

@@ -7,7 +7,7 @@
 
 #include <glm/glm.hpp>
 
-#include "core/scene/camera.h"
+#include "snaxels/scene/camera.h"
 
 namespace snaxels {
 

@@ -1,11 +1,11 @@
-#include "core/snaxel/contour_function.h"
+#include "snaxels/snaxel/contour_function.h"
 
 #include <algorithm>
 #include <charconv>
 #include <cmath>
 #include <limits>
 
-#include "core/error.h"
+#include "snaxels/error.h"
 
 namespace snaxels {
 

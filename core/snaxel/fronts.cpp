@@ -1,4 +1,4 @@
-#include "core/snaxel/fronts.h"
+#include "snaxels/snaxel/fronts.h"
 
 namespace snaxels {
 

@@ -10,7 +10,7 @@
 #include <string>
 #include <vector>
 
-#include "core/snaxel/topology.h"
+#include "snaxels/snaxel/topology.h"
 
 namespace snaxels {
 

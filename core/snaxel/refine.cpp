@@ -1,4 +1,4 @@
-#include "core/snaxel/refine.h"
+#include "snaxels/snaxel/refine.h"
 
 #include <algorithm>
 #include <memory>

@@ -16,7 +16,7 @@
 
 #include <glm/vec3.hpp>
 
-#include "core/snaxel/topology.h"
+#include "snaxels/snaxel/topology.h"
 
 namespace snaxels {
 

@@ -1,13 +1,13 @@
-#include "core/snaxel/snaxel_engine.h"
+#include "snaxels/snaxel/snaxel_engine.h"
 
-#include "core/parabolic/parabolic.h"
+#include "snaxels/snaxel/parabolic.h"
 
 #include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <numeric>
 
-#include "core/error.h"
+#include "snaxels/error.h"
 
 namespace snaxels {
 namespace {

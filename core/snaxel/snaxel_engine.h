@@ -8,10 +8,10 @@
 #include <cstdint>
 #include <vector>
 
-#include "core/scene/camera.h"
-#include "core/snaxel/contour_function.h"
-#include "core/snaxel/fronts.h"
-#include "core/snaxel/topology.h"
+#include "snaxels/scene/camera.h"
+#include "snaxels/snaxel/contour_function.h"
+#include "snaxels/snaxel/fronts.h"
+#include "snaxels/snaxel/topology.h"
 
 namespace snaxels {
 

@@ -1,8 +1,8 @@
-#include "core/snaxel/topology.h"
+#include "snaxels/snaxel/topology.h"
 
 #include <glm/glm.hpp>
 
-#include "core/snaxel/refine.h"
+#include "snaxels/snaxel/refine.h"
 
 namespace snaxels {
 

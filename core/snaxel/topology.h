@@ -10,12 +10,12 @@
 
 #include <glm/vec3.hpp>
 
-#include "core/mesh/mesh.h"
+#include "snaxels/mesh/mesh.h"
 
 namespace snaxels {
 
 struct MeshRefinement;  // core/snaxel/refine.h
-struct ParabolicResult; // core/parabolic/parabolic.h
+struct ParabolicResult; // core/snaxel/parabolic.h
 
 struct MeshTopology {
     static constexpr std::int32_t kNone = -1;

@@ -1,10 +1,10 @@
-#include "core/snaxel/tracker.h"
+#include "snaxels/snaxel/tracker.h"
 
 #include <algorithm>
 #include <chrono>
 #include <limits>
 
-#include "core/error.h"
+#include "snaxels/error.h"
 
 namespace snaxels {
 namespace {

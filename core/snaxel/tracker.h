@@ -12,7 +12,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "core/snaxel/snaxel_engine.h"
+#include "snaxels/snaxel/snaxel_engine.h"
 
 namespace snaxels {
 

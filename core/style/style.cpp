@@ -1,4 +1,4 @@
-#include "core/style/style.h"
+#include "snaxels/style/style.h"
 
 #include <algorithm>
 #include <cctype>
@@ -12,8 +12,7 @@
 
 #include <pugixml.hpp>
 
-#include "core/error.h"
-#include "core/export/svg.h"
+#include "snaxels/error.h"
 
 namespace snaxels {
 namespace {
@@ -264,6 +263,17 @@ struct Parser {
 };
 
 } // namespace
+
+const char* default_stroke(ContourKind kind) {
+    switch (kind) {
+    case ContourKind::Visual: return "#111111";
+    case ContourKind::Shadow: return "#2f5fa8";
+    case ContourKind::Isophote: return "#8a4fb0";
+    case ContourKind::Gleam: return "#d98c00";
+    case ContourKind::Parabolic: return "#1f8a4c";
+    }
+    return "#111111";
+}
 
 std::uint32_t colour_rgb(const std::string& colour) {
     if (colour.size() == 7 && colour[0] == '#') return std::uint32_t(std::stoul(colour.substr(1), nullptr, 16));

@@ -8,10 +8,13 @@
 #include <string>
 #include <vector>
 
-#include "core/scene/camera.h"
-#include "core/snaxel/contour_function.h"
+#include "snaxels/scene/camera.h"
+#include "snaxels/snaxel/contour_function.h"
 
 namespace snaxels {
+
+/// Default stroke colour of a contour kind (until styles say otherwise).
+const char* default_stroke(ContourKind kind);
 
 struct StrokeStyle {
     bool draw = true;

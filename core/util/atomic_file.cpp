@@ -1,4 +1,4 @@
-#include "core/util/atomic_file.h"
+#include "snaxels/util/atomic_file.h"
 
 #include <cerrno>
 #include <cstdio>
@@ -12,7 +12,7 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
-#include "core/error.h"
+#include "snaxels/error.h"
 
 namespace snaxels {
 

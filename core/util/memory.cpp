@@ -1,4 +1,4 @@
-#include "core/util/memory.h"
+#include "snaxels/util/memory.h"
 
 #include <cmath>
 #include <cstdio>

@@ -1,12 +1,12 @@
-#include "core/visibility/ray_scene.h"
+#include "snaxels/visibility/ray_scene.h"
 
 #include <algorithm>
 #include <limits>
 
 #include <embree3/rtcore.h>
 
-#include "core/error.h"
-#include "core/snaxel/refine.h"
+#include "snaxels/error.h"
+#include "snaxels/snaxel/refine.h"
 
 namespace snaxels {
 

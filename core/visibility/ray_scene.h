@@ -9,7 +9,7 @@
 
 #include <glm/glm.hpp>
 
-#include "core/snaxel/topology.h"
+#include "snaxels/snaxel/topology.h"
 
 namespace snaxels {
 

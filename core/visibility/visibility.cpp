@@ -1,9 +1,9 @@
-#include "core/visibility/visibility.h"
+#include "snaxels/visibility/visibility.h"
 
 #include <cmath>
 #include <limits>
 
-#include "core/util/parallel.h"
+#include "snaxels/util/detail/parallel.h"
 
 namespace snaxels {
 

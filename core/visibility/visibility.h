@@ -5,9 +5,9 @@
 
 #include <vector>
 
-#include "core/scene/camera.h"
-#include "core/snaxel/snaxel_engine.h"
-#include "core/visibility/ray_scene.h"
+#include "snaxels/scene/camera.h"
+#include "snaxels/snaxel/snaxel_engine.h"
+#include "snaxels/visibility/ray_scene.h"
 
 namespace snaxels {
 

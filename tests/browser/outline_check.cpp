@@ -15,9 +15,9 @@
 #include <QPainter>
 #include <QPainterPath>
 
-#include "core/mesh/import.h"
-#include "core/scene/camera.h"
-#include "core/snaxel/topology.h"
+#include "snaxels/mesh/import.h"
+#include "snaxels/scene/camera.h"
+#include "snaxels/snaxel/topology.h"
 
 using namespace snaxels;
 

@@ -10,7 +10,7 @@
 
 #include <glm/glm.hpp>
 
-#include "core/export/animated_svg.h"
+#include "snaxels/export/animated_svg.h"
 
 namespace snaxels::test {
 

@@ -2,8 +2,8 @@
 // The numbers of a product view, light and contour kind for the engine
 // oracle (tests/support/marching_triangles.h), which takes plain numbers.
 
-#include "core/scene/camera.h"
-#include "core/snaxel/contour_function.h"
+#include "snaxels/scene/camera.h"
+#include "snaxels/snaxel/contour_function.h"
 #include "tests/support/marching_triangles.h"
 
 namespace snaxels::test {

@@ -35,10 +35,10 @@
 #include <QWheelEvent>
 #include <QTest>
 
-#include "core/mesh/isolated_import.h"
+#include "snaxels/mesh/isolated_import.h"
 
-#include "core/mesh/procedural.h"
-#include "core/project/project.h"
+#include "snaxels/mesh/procedural.h"
+#include "snaxels/project/project.h"
 #include "ui/mainwindow.h"
 #include "ui/meshview.h"
 #include "ui/resources.h"

@@ -11,10 +11,10 @@
 
 #include <glm/gtx/rotate_vector.hpp>
 
-#include "core/animation/still.h"
-#include "core/mesh/import.h"
-#include "core/scene/orbit.h"
-#include "core/visibility/ray_scene.h"
+#include "snaxels/animation/still.h"
+#include "snaxels/mesh/import.h"
+#include "snaxels/scene/orbit.h"
+#include "snaxels/visibility/ray_scene.h"
 #include "tests/support/assets.h"
 
 using namespace snaxels;

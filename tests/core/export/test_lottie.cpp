@@ -15,8 +15,8 @@
 #include <glm/glm.hpp>
 #include <nlohmann/json.hpp>
 
-#include "core/export/animated_svg.h"
-#include "core/export/lottie.h"
+#include "snaxels/export/animated_svg.h"
+#include "snaxels/export/lottie.h"
 #include "tests/support/drawn_frames.h"
 
 using namespace snaxels;

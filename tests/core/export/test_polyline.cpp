@@ -3,7 +3,7 @@
 #include <cmath>
 #include <random>
 
-#include "core/export/polyline.h"
+#include "snaxels/export/detail/polyline.h"
 
 using namespace snaxels;
 

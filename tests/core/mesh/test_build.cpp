@@ -2,8 +2,8 @@
 
 #include <glm/glm.hpp>
 
-#include "core/error.h"
-#include "core/mesh/build.h"
+#include "snaxels/error.h"
+#include "snaxels/mesh/build.h"
 
 using namespace snaxels;
 

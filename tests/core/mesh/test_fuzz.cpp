@@ -10,9 +10,9 @@
 
 #include <unistd.h>
 
-#include "core/error.h"
-#include "core/mesh/import.h"
-#include "core/snaxel/snaxel_engine.h"
+#include "snaxels/error.h"
+#include "snaxels/mesh/import.h"
+#include "snaxels/snaxel/snaxel_engine.h"
 #include "tests/support/assets.h"
 
 using namespace snaxels;

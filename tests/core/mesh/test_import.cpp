@@ -1,9 +1,9 @@
 #include <gtest/gtest.h>
 
-#include "core/error.h"
-#include "core/mesh/import.h"
-#include "core/mesh/isolated_import.h"
-#include "core/mesh/mesh_animation.h"
+#include "snaxels/error.h"
+#include "snaxels/mesh/import.h"
+#include "snaxels/mesh/isolated_import.h"
+#include "snaxels/mesh/mesh_animation.h"
 #include "tests/support/assets.h"
 
 using namespace snaxels;

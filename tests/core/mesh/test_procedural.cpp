@@ -4,9 +4,9 @@
 
 #include <glm/glm.hpp>
 
-#include "core/error.h"
-#include "core/mesh/build.h"
-#include "core/mesh/procedural.h"
+#include "snaxels/error.h"
+#include "snaxels/mesh/build.h"
+#include "snaxels/mesh/procedural.h"
 
 using namespace snaxels;
 

@@ -5,10 +5,10 @@
 #include <map>
 #include <random>
 
-#include "core/mesh/import.h"
-#include "core/mesh/procedural.h"
-#include "core/planarmap/planar_map.h"
-#include "core/snaxel/refine.h"
+#include "snaxels/mesh/import.h"
+#include "snaxels/mesh/procedural.h"
+#include "snaxels/planarmap/planar_map.h"
+#include "snaxels/snaxel/refine.h"
 #include "tests/support/assets.h"
 #include "tests/support/map_raster.h"
 #include "tests/support/reference_raster.h"

@@ -2,11 +2,11 @@
 
 #include <random>
 
-#include "core/animation/pipeline.h"
-#include "core/animation/still.h"
-#include "core/mesh/import.h"
-#include "core/snaxel/refine.h"
-#include "core/style/style.h"
+#include "snaxels/animation/pipeline.h"
+#include "snaxels/animation/still.h"
+#include "snaxels/mesh/import.h"
+#include "snaxels/snaxel/refine.h"
+#include "snaxels/style/style.h"
 #include "tests/support/assets.h"
 #include "tests/support/coverage.h"
 #include "tests/support/views.h"

@@ -5,9 +5,9 @@
 
 #include <polyclipping/clipper.hpp>
 
-#include "core/mesh/import.h"
-#include "core/planarmap/planar_map.h"
-#include "core/snaxel/refine.h"
+#include "snaxels/mesh/import.h"
+#include "snaxels/planarmap/planar_map.h"
+#include "snaxels/snaxel/refine.h"
 #include "tests/support/assets.h"
 #include "tests/support/views.h"
 

@@ -3,9 +3,9 @@
 #include <map>
 #include <random>
 
-#include "core/mesh/import.h"
-#include "core/planarmap/snaxel_map.h"
-#include "core/snaxel/refine.h"
+#include "snaxels/mesh/import.h"
+#include "snaxels/planarmap/snaxel_map.h"
+#include "snaxels/snaxel/refine.h"
 #include "tests/support/assets.h"
 #include "tests/support/map_raster.h"
 #include "tests/support/views.h"

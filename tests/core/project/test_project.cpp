@@ -4,8 +4,8 @@
 
 #include <gtest/gtest.h>
 
-#include "core/error.h"
-#include "core/project/project.h"
+#include "snaxels/error.h"
+#include "snaxels/project/project.h"
 
 namespace snaxels {
 namespace {

@@ -10,12 +10,12 @@
 #include <random>
 #include <string>
 
-#include "core/animation/still.h"
-#include "core/error.h"
-#include "core/mesh/build.h"
-#include "core/mesh/procedural.h"
-#include "core/snaxel/refine.h"
-#include "core/style/style.h"
+#include "snaxels/animation/still.h"
+#include "snaxels/error.h"
+#include "snaxels/mesh/build.h"
+#include "snaxels/mesh/procedural.h"
+#include "snaxels/snaxel/refine.h"
+#include "snaxels/style/style.h"
 #include "tests/support/assets.h"
 
 using namespace snaxels;

@@ -21,8 +21,8 @@
 #include <map>
 #include <random>
 
-#include "core/mesh/import.h"
-#include "core/snaxel/snaxel_engine.h"
+#include "snaxels/mesh/import.h"
+#include "snaxels/snaxel/snaxel_engine.h"
 #include "tests/support/oracle_setup.h"
 
 using namespace snaxels;

@@ -2,9 +2,9 @@
 
 #include <random>
 
-#include "core/error.h"
-#include "core/mesh/import.h"
-#include "core/snaxel/snaxel_engine.h"
+#include "snaxels/error.h"
+#include "snaxels/mesh/import.h"
+#include "snaxels/snaxel/snaxel_engine.h"
 #include "tests/support/assets.h"
 #include "tests/support/oracle_setup.h"
 

@@ -6,11 +6,11 @@
 
 #include <glm/glm.hpp>
 
-#include "core/mesh/import.h"
-#include "core/snaxel/contour_function.h"
-#include "core/snaxel/refine.h"
-#include "core/snaxel/snaxel_engine.h"
-#include "core/visibility/visibility.h"
+#include "snaxels/mesh/import.h"
+#include "snaxels/snaxel/contour_function.h"
+#include "snaxels/snaxel/refine.h"
+#include "snaxels/snaxel/snaxel_engine.h"
+#include "snaxels/visibility/visibility.h"
 #include "tests/support/assets.h"
 #include "tests/support/views.h"
 

@@ -6,8 +6,8 @@
 
 #include <glm/gtx/rotate_vector.hpp>
 
-#include "core/mesh/import.h"
-#include "core/snaxel/tracker.h"
+#include "snaxels/mesh/import.h"
+#include "snaxels/snaxel/tracker.h"
 #include "tests/support/assets.h"
 #include "tests/support/oracle_setup.h"
 

@@ -4,9 +4,9 @@
 
 #include <glm/gtx/rotate_vector.hpp>
 
-#include "core/export/dash_phase.h"
-#include "core/mesh/import.h"
-#include "core/snaxel/tracker.h"
+#include "snaxels/export/dash_phase.h"
+#include "snaxels/mesh/import.h"
+#include "snaxels/snaxel/tracker.h"
 
 using namespace snaxels;
 

@@ -2,10 +2,10 @@
 
 #include <filesystem>
 
-#include "core/export/bezier.h"
-#include "core/export/drawing.h"
-#include "core/mesh/import.h"
-#include "core/style/style.h"
+#include "snaxels/export/bezier.h"
+#include "snaxels/export/drawing.h"
+#include "snaxels/mesh/import.h"
+#include "snaxels/style/style.h"
 #include "tests/support/assets.h"
 
 using namespace snaxels;

@@ -4,8 +4,8 @@
 #include <stdexcept>
 #include <vector>
 
-#include "core/error.h"
-#include "core/util/parallel.h"
+#include "snaxels/error.h"
+#include "snaxels/util/detail/parallel.h"
 
 using namespace snaxels;
 

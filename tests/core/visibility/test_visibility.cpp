@@ -4,9 +4,9 @@
 #include <cstdio>
 #include <random>
 
-#include "core/mesh/import.h"
-#include "core/mesh/procedural.h"
-#include "core/visibility/visibility.h"
+#include "snaxels/mesh/import.h"
+#include "snaxels/mesh/procedural.h"
+#include "snaxels/visibility/visibility.h"
 #include "tests/support/assets.h"
 #include "tests/support/marching_triangles.h"
 

@@ -19,9 +19,9 @@
 
 #include <glm/vec3.hpp>
 
-#include "core/snaxel/fronts.h"
-#include "core/snaxel/topology.h"
-#include "core/snaxel/tracker.h"
+#include "snaxels/snaxel/fronts.h"
+#include "snaxels/snaxel/topology.h"
+#include "snaxels/snaxel/tracker.h"
 
 namespace snaxels {
 

@@ -7,9 +7,9 @@
 
 #include <glm/glm.hpp>
 
-#include "core/export/bezier.h"
-#include "core/snaxel/contour_function.h"
-#include "core/style/style.h"
+#include "snaxels/export/bezier.h"
+#include "snaxels/snaxel/contour_function.h"
+#include "snaxels/style/style.h"
 
 namespace snaxels::svg {
 

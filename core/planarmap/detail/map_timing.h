@@ -8,8 +8,8 @@
 #include <cstddef>
 #include <vector>
 
-#include "core/mesh/build.h"
-#include "core/snaxel/topology.h"
+#include "snaxels/mesh/build.h"
+#include "snaxels/snaxel/topology.h"
 
 namespace snaxels {
 

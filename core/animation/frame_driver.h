@@ -8,10 +8,10 @@
 #include <string>
 #include <vector>
 
-#include "core/mesh/build.h"
-#include "core/mesh/mesh_animation.h"
-#include "core/scene/camera.h"
-#include "core/snaxel/topology.h"
+#include "snaxels/mesh/build.h"
+#include "snaxels/mesh/mesh_animation.h"
+#include "snaxels/scene/camera.h"
+#include "snaxels/snaxel/topology.h"
 
 namespace snaxels {
 

@@ -1,4 +1,4 @@
-#include "core/planarmap/clip.h"
+#include "snaxels/planarmap/detail/clip.h"
 
 #include <cmath>
 

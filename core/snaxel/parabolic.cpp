@@ -1,4 +1,4 @@
-#include "core/parabolic/parabolic.h"
+#include "snaxels/snaxel/parabolic.h"
 
 #include <algorithm>
 #include <atomic>
@@ -13,7 +13,7 @@
 
 #include <glm/glm.hpp>
 
-#include "core/util/parallel.h"
+#include "snaxels/util/detail/parallel.h"
 
 namespace snaxels {
 namespace {

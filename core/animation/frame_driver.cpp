@@ -1,4 +1,4 @@
-#include "core/scene/animation.h"
+#include "snaxels/animation/frame_driver.h"
 
 #include <cctype>
 #include <cstdio>
@@ -6,8 +6,8 @@
 
 #include <glm/gtx/rotate_vector.hpp>
 
-#include "core/error.h"
-#include "core/mesh/import.h"
+#include "snaxels/error.h"
+#include "snaxels/mesh/import.h"
 
 namespace snaxels {
 

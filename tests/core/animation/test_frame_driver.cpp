@@ -4,12 +4,12 @@
 #include <filesystem>
 #include <fstream>
 
-#include "core/error.h"
-#include "core/mesh/import.h"
-#include "core/mesh/mesh_animation.h"
-#include "core/mesh/procedural.h"
-#include "core/scene/animation.h"
-#include "core/snaxel/tracker.h"
+#include "snaxels/error.h"
+#include "snaxels/mesh/import.h"
+#include "snaxels/mesh/mesh_animation.h"
+#include "snaxels/mesh/procedural.h"
+#include "snaxels/animation/frame_driver.h"
+#include "snaxels/snaxel/tracker.h"
 #include "tests/support/assets.h"
 #include "tests/support/oracle_setup.h"
 

@@ -5,11 +5,11 @@
 #include <map>
 #include <unordered_map>
 
-#include "core/animation/still.h"
-#include "core/mesh/import.h"
-#include "core/parabolic/parabolic.h"
-#include "core/snaxel/refine.h"
-#include "core/visibility/visibility.h"
+#include "snaxels/animation/still.h"
+#include "snaxels/mesh/import.h"
+#include "snaxels/snaxel/parabolic.h"
+#include "snaxels/snaxel/refine.h"
+#include "snaxels/visibility/visibility.h"
 #include "tests/support/assets.h"
 
 using namespace snaxels;

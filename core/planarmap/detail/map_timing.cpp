@@ -1,15 +1,15 @@
-#include "core/planarmap/map_timing.h"
+#include "snaxels/planarmap/detail/map_timing.h"
 
-#include "core/planarmap/planar_map.h"
+#include "snaxels/planarmap/planar_map.h"
 
 #include <algorithm>
 #include <chrono>
 
 #include <glm/gtx/rotate_vector.hpp>
 
-#include "core/planarmap/snaxel_map.h"
-#include "core/snaxel/tracker.h"
-#include "core/util/parallel.h"
+#include "snaxels/planarmap/snaxel_map.h"
+#include "snaxels/snaxel/tracker.h"
+#include "snaxels/util/detail/parallel.h"
 
 namespace snaxels {
 

@@ -1,0 +1,32 @@
+// The snaxels engine embedded in another program: load a mesh, find its
+// visible and hidden contours, write them as SVG. Built against an installed
+// snaxels with find_package(snaxels) (see CMakeLists.txt beside this file).
+//   embed MESH OUT.svg
+#include <cstdio>
+
+#include <snaxels/animation/still.h>
+#include <snaxels/error.h>
+#include <snaxels/mesh/import.h>
+#include <snaxels/snaxel/refine.h>
+#include <snaxels/util/atomic_file.h>
+#include <snaxels/version.h>
+
+int main(int argc, char** argv) {
+    if (argc != 3) {
+        std::fprintf(stderr, "usage: embed MESH OUT.svg   (snaxels %s)\n", snaxels::version);
+        return 2;
+    }
+    try {
+        const snaxels::LoadedMesh mesh = snaxels::load_mesh(argv[1]); // a file, or proc:torus and the like
+        const snaxels::MeshTopology topology = snaxels::engine_topology(mesh.mesh);
+        snaxels::StillJob job; // the visual contour, seen along +Z, hidden lines dashed
+        job.light = snaxels::default_light(job.camera);
+        const snaxels::StillOutput still = snaxels::render_still(mesh, topology, nullptr, job);
+        snaxels::write_file_atomically(argv[2], still.svg);
+        std::printf("%s: %zu contour loops\n", argv[2], still.results.front().fronts.loops.size());
+    } catch (const snaxels::Error& e) {
+        std::fprintf(stderr, "embed: %s\n", e.what());
+        return 1;
+    }
+    return 0;
+}

@@ -1,0 +1,125 @@
+// The library's include structure, read from its sources: no circle between
+// core folders, the library includes only its own headers by their installed
+// names, and a public header needs nothing a user of the library lacks.
+#include <algorithm>
+#include <filesystem>
+#include <fstream>
+#include <functional>
+#include <map>
+#include <regex>
+#include <set>
+#include <string>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+namespace fs = std::filesystem;
+
+namespace {
+
+struct Include {
+    std::string file;   ///< path below core/
+    std::string target; ///< as written between the quotes or brackets
+    bool quoted;
+};
+
+std::vector<Include> core_includes() {
+    const fs::path core = fs::path(SNAXELS_SOURCE_DIR) / "core";
+    const std::regex line(R"(^\s*#\s*include\s*([<"])([^>"]+)[>"])");
+    std::vector<Include> all;
+    for (const auto& entry : fs::recursive_directory_iterator(core)) {
+        const std::string ext = entry.path().extension().string();
+        if (ext != ".h" && ext != ".cpp" && ext != ".in") continue;
+        std::ifstream in(entry.path());
+        for (std::string l; std::getline(in, l);) {
+            std::smatch m;
+            if (std::regex_search(l, m, line))
+                all.push_back({fs::relative(entry.path(), core).generic_string(), m[2].str(), m[1].str() == "\""});
+        }
+    }
+    return all;
+}
+
+/// "mesh/import.h" -> "mesh"; "error.h" -> "" (the library's root).
+std::string folder_of(const std::string& path) {
+    const auto slash = path.find('/');
+    return slash == std::string::npos ? std::string() : path.substr(0, slash);
+}
+
+bool is_detail(const std::string& path) { return path.find("/detail/") != std::string::npos; }
+
+} // namespace
+
+TEST(IncludeGraph, ReadsTheLibrary) {
+    // The scan itself works: the library has many files and includes.
+    const auto includes = core_includes();
+    EXPECT_GT(includes.size(), 300u);
+    std::set<std::string> folders;
+    for (const auto& inc : includes) folders.insert(folder_of(inc.file));
+    EXPECT_GE(folders.size(), 10u);
+}
+
+TEST(IncludeGraph, CoreIncludesItsOwnHeadersByTheirInstalledNames) {
+    for (const auto& inc : core_includes()) {
+        if (!inc.quoted) continue;
+        EXPECT_EQ(inc.target.rfind("snaxels/", 0), 0u)
+            << inc.file << " includes \"" << inc.target << "\": the library's headers are \"snaxels/...\"";
+        if (inc.target.rfind("snaxels/", 0) != 0) continue;
+        const fs::path header = fs::path(SNAXELS_SOURCE_DIR) / "core" / inc.target.substr(8);
+        if (inc.target != "snaxels/version.h")
+            EXPECT_TRUE(fs::exists(header)) << inc.file << " includes \"" << inc.target << "\", which is not in core/";
+    }
+}
+
+TEST(IncludeGraph, NoCircleBetweenCoreFolders) {
+    std::map<std::string, std::map<std::string, std::string>> edges; // from -> to -> an example
+    for (const auto& inc : core_includes()) {
+        if (!inc.quoted || inc.target.rfind("snaxels/", 0) != 0) continue;
+        const std::string from = folder_of(inc.file), to = folder_of(inc.target.substr(8));
+        if (from != to) edges[from].emplace(to, inc.file + " includes " + inc.target);
+    }
+    // Depth-first search; a back edge closes a circle, reported with its path.
+    std::map<std::string, int> state; // 0 new, 1 on the path, 2 done
+    std::vector<std::string> path;
+    std::string circle;
+    std::function<void(const std::string&)> visit = [&](const std::string& f) {
+        state[f] = 1;
+        path.push_back(f);
+        for (const auto& [to, example] : edges[f]) {
+            if (!circle.empty()) break;
+            if (state[to] == 1) {
+                auto at = std::find(path.begin(), path.end(), to);
+                for (auto it = at; it != path.end(); ++it) {
+                    const std::string& next = (it + 1 == path.end()) ? to : *(it + 1);
+                    circle += "  " + edges[*it][next] + "\n";
+                }
+            } else if (state[to] == 0) {
+                visit(to);
+            }
+        }
+        path.pop_back();
+        state[f] = 2;
+    };
+    std::vector<std::string> folders;
+    for (const auto& [f, _] : edges) folders.push_back(f);
+    for (const auto& f : folders)
+        if (state[f] == 0 && circle.empty()) visit(f);
+    EXPECT_TRUE(circle.empty()) << "core folders include each other in a circle:\n" << circle;
+}
+
+TEST(IncludeGraph, PublicHeadersNeedOnlyPublicDependencies) {
+    // What snaxels::core's users get on their include path: its own public
+    // headers, the standard library, GLM, OpenMesh and nlohmann::json.
+    const std::regex allowed_system(R"(^(glm/|OpenMesh/|nlohmann/)|^[a-z_]+$)");
+    for (const auto& inc : core_includes()) {
+        const bool public_header = inc.file.size() > 2 && inc.file.substr(inc.file.size() - 2) == ".h" &&
+                                   !is_detail(inc.file);
+        if (!public_header) continue;
+        if (inc.quoted) {
+            EXPECT_FALSE(is_detail(inc.target)) << "the public header " << inc.file << " includes " << inc.target;
+        } else {
+            EXPECT_TRUE(std::regex_search(inc.target, allowed_system))
+                << "the public header " << inc.file << " includes <" << inc.target << ">";
+        }
+    }
+}
