@@ -4,6 +4,7 @@
 #include <array>
 #include <cctype>
 #include <cerrno>
+#include <cstdio>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
@@ -126,16 +127,76 @@ class BodyWalker {
 // for most of a minute) or read past the end; checking the body against its
 // header says plainly what is wrong. Returns an empty string when the file
 // is not PLY or holds what its header declares.
-std::string ply_problem(std::ifstream& in, std::uintmax_t file_size) {
+std::string lower_extension(const std::string& path) {
+    std::string ext = fs::path(path).extension().string();
+    std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+    return ext;
+}
+
+// A line of a file quoted in a message: at most 80 characters, bytes that
+// are not printable ASCII shown as '?' (a message is one line of text).
+std::string shown(const std::string& line) {
+    std::string out = line.substr(0, 80);
+    for (char& c : out)
+        if (c < 0x20 || c > 0x7e) c = '?';
+    return line.size() > 80 ? out + "..." : out;
+}
+
+// Reads one line of a PLY header into @p line (without its CR LF or LF).
+// The header is text: Assimp's reader also ends lines at NUL, a lone CR and
+// form feed, and runs off the end of its buffer after one of them when no
+// line feed follows (found by fuzz_mesh), so a control character other than
+// a tab (or the CR of a CR LF) is a problem. Bytes past ASCII (UTF-8 in a
+// comment) are text.
+bool ply_header_line(std::istream& in, std::string& line, std::string& problem, std::uintmax_t& offset) {
+    line.clear();
+    for (int c; (c = in.get()) != std::char_traits<char>::eof(); ++offset) {
+        if (c == '\n') {
+            ++offset;
+            if (!line.empty() && line.back() == '\r') line.pop_back();
+            return true;
+        }
+        if (!line.empty() && line.back() == '\r') {
+            problem = "the PLY header has a carriage return without a line feed (at byte " +
+                      std::to_string(offset - 1) + ")";
+            return false;
+        }
+        if (c < 0x20 && c != '\t' && c != '\r') {
+            char hex[8];
+            std::snprintf(hex, sizeof hex, "0x%02x", unsigned(c));
+            problem = std::string("the PLY header has a byte that is not text (") + hex + " at byte " +
+                      std::to_string(offset) + ")";
+            return false;
+        }
+        line.push_back(char(c));
+    }
+    return !line.empty();
+}
+
+std::string ply_problem(std::ifstream& in, std::uintmax_t file_size, const std::string& path) {
     in.clear();
     in.seekg(0);
-    std::string line;
-    if (!std::getline(in, line) || line.rfind("ply", 0) != 0) return {};
+    // Assimp reads any .ply file as PLY, and a file that starts with "ply" or
+    // "PLY" (after a line end) whatever its name.
+    char head[4] = {};
+    in.read(head, 4);
+    const std::size_t skip = head[0] == '\n' ? 1 : head[0] == '\r' && head[1] == '\n' ? 2 : 0;
+    const bool magic = std::tolower(head[skip]) == 'p' && std::tolower(head[skip + 1]) == 'l' &&
+                       std::tolower(head[skip + 2]) == 'y';
+    if (!magic && lower_extension(path) != ".ply") return {};
+    in.clear();
+    in.seekg(std::streamoff(skip));
+    std::uintmax_t offset = skip;
+    std::string line, problem;
+    if (!ply_header_line(in, line, problem, offset))
+        return problem.empty() ? "the PLY file has no header" : problem;
+    std::transform(line.begin(), line.end(), line.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+    while (!line.empty() && (line.back() == ' ' || line.back() == '\t')) line.pop_back();
+    if (line != "ply") return "the PLY file does not start with a 'ply' line";
     std::string format;
     std::vector<PlyElement> elements;
     bool header_ended = false;
-    while (!header_ended && std::getline(in, line)) {
-        if (!line.empty() && line.back() == '\r') line.pop_back();
+    while (!header_ended && ply_header_line(in, line, problem, offset)) {
         std::istringstream words(line);
         std::string word;
         words >> word;
@@ -143,10 +204,10 @@ std::string ply_problem(std::ifstream& in, std::uintmax_t file_size) {
             words >> format;
         } else if (word == "element") {
             PlyElement e;
-            if (!(words >> e.name >> e.count)) return "the PLY header has a malformed element line: " + line;
+            if (!(words >> e.name >> e.count)) return "the PLY header has a malformed element line: " + shown(line);
             elements.push_back(e);
         } else if (word == "property") {
-            if (elements.empty()) return "the PLY header has a property before any element: " + line;
+            if (elements.empty()) return "the PLY header has a property before any element: " + shown(line);
             std::string type;
             words >> type;
             PlyProperty p;
@@ -156,10 +217,10 @@ std::string ply_problem(std::ifstream& in, std::uintmax_t file_size) {
                 p.list = true;
                 p.count_size = ply_type_size(count_type);
                 p.size = ply_type_size(item_type);
-                if (p.count_size == 0 || p.size == 0) return "the PLY header has a list of an unknown type: " + line;
+                if (p.count_size == 0 || p.size == 0) return "the PLY header has a list of an unknown type: " + shown(line);
             } else {
                 p.size = ply_type_size(type);
-                if (p.size == 0) return "the PLY header has a property of an unknown type: " + line;
+                if (p.size == 0) return "the PLY header has a property of an unknown type: " + shown(line);
             }
             elements.back().properties.push_back(p);
         } else if (word == "end_header") {
@@ -167,9 +228,10 @@ std::string ply_problem(std::ifstream& in, std::uintmax_t file_size) {
         } else if (!word.empty() && word != "comment" && word != "obj_info") {
             // Assimp reads on past a line it does not know and can corrupt
             // its memory (a double free, found by fuzz_mesh).
-            return "the PLY header has a line that is not PLY: " + line.substr(0, 80);
+            return "the PLY header has a line that is not PLY: " + shown(line);
         }
     }
+    if (!problem.empty()) return problem;
     if (!header_ended) return "the PLY header has no end_header line";
     for (std::size_t a = 0; a < elements.size(); ++a)
         for (std::size_t b = a + 1; b < elements.size(); ++b)
@@ -187,12 +249,15 @@ std::string ply_problem(std::ifstream& in, std::uintmax_t file_size) {
                     return "the ASCII PLY file is truncated (its header declares " + std::to_string(total) +
                            " elements, the file ends at " + item_name(e, i) + ")";
                 }
-                if (line.find_first_not_of(" \t\r") == std::string::npos) continue;
+                if (!line.empty() && line.back() == '\r') line.pop_back();
+                if (std::any_of(line.begin(), line.end(), [](char c) { return c >= 0 && c < 0x20 && c != '\t'; }))
+                    return "the ASCII PLY " + item_name(e, i) + " has a control character in its line";
+                if (line.find_first_not_of(" \t") == std::string::npos) continue;
                 if (e.has_list()) {
                     std::istringstream tokens(line);
                     std::string token;
                     for (const PlyProperty& p : e.properties) {
-                        if (!(tokens >> token)) return "the ASCII PLY " + item_name(e, i) + " is missing values: " + line.substr(0, 80);
+                        if (!(tokens >> token)) return "the ASCII PLY " + item_name(e, i) + " is missing values: " + shown(line);
                         if (!p.list) continue;
                         char* end = nullptr;
                         const long long n = std::strtoll(token.c_str(), &end, 10);
@@ -243,12 +308,6 @@ std::string ply_problem(std::ifstream& in, std::uintmax_t file_size) {
 
 // OFF: the counts line must not promise more vertex and face lines than
 // the file has (Assimp would allocate and loop for them).
-std::string lower_extension(const std::string& path) {
-    std::string ext = fs::path(path).extension().string();
-    std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
-    return ext;
-}
-
 bool is_off_magic(const std::string& word) {
     return word == "OFF" || word == "COFF" || word == "NOFF" || word == "CNOFF";
 }
@@ -278,12 +337,12 @@ std::string off_problem(std::ifstream& in, const std::string& path) {
         if (!(first >> nv >> nf)) {
             if (!next_data_line(in, line)) return "the OFF file has no vertex and face counts";
             std::istringstream counts(line);
-            if (!(counts >> nv >> nf)) return "the OFF file's counts line is malformed: " + line;
+            if (!(counts >> nv >> nf)) return "the OFF file's counts line is malformed: " + shown(line);
         }
     } else if (lower_extension(path) == ".off") {
         std::istringstream counts(line);
         if (!(counts >> nv >> nf))
-            return "the OFF file starts with neither an OFF line nor its counts: " + line.substr(0, 80);
+            return "the OFF file starts with neither an OFF line nor its counts: " + shown(line);
     } else {
         return {};
     }
@@ -335,7 +394,7 @@ void check_readable(const std::string& path) {
     if (const char* kind = non_mesh_kind(head, n))
         throw Error(path + ": is " + kind + ", not a mesh file");
     const std::uintmax_t size = fs::file_size(path, ec);
-    for (const std::string& problem : {ply_problem(in, size), off_problem(in, path), binary_stl_problem(in, size, path)})
+    for (const std::string& problem : {ply_problem(in, size, path), off_problem(in, path), binary_stl_problem(in, size, path)})
         if (!problem.empty()) throw Error(path + ": " + problem);
 }
 
