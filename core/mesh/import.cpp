@@ -162,7 +162,7 @@ bool ply_header_line(std::istream& in, std::string& line, std::string& problem, 
             return false;
         }
         if (c < 0x20 && c != '\t' && c != '\r') {
-            char hex[8];
+            char hex[16];
             std::snprintf(hex, sizeof hex, "0x%02x", unsigned(c));
             problem = std::string("the PLY header has a byte that is not text (") + hex + " at byte " +
                       std::to_string(offset) + ")";

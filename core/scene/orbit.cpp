@@ -1,4 +1,4 @@
-#include "core/scene/orbit.h"
+#include "snaxels/scene/orbit.h"
 
 #include <cmath>
 
