@@ -66,8 +66,9 @@ TEST(IncludeGraph, CoreIncludesItsOwnHeadersByTheirInstalledNames) {
             << inc.file << " includes \"" << inc.target << "\": the library's headers are \"snaxels/...\"";
         if (inc.target.rfind("snaxels/", 0) != 0) continue;
         const fs::path header = fs::path(SNAXELS_SOURCE_DIR) / "core" / inc.target.substr(8);
-        if (inc.target != "snaxels/version.h")
+        if (inc.target != "snaxels/version.h") {
             EXPECT_TRUE(fs::exists(header)) << inc.file << " includes \"" << inc.target << "\", which is not in core/";
+        }
     }
 }
 
