@@ -1,6 +1,7 @@
 #pragma once
-/// Errors raised by the core library. Every message is one line meant for a
-/// user: it names the file or input and what is wrong with it.
+/// Errors raised by the core library, all derived from snaxels::Error (one
+/// catch takes them all). Every message is one line meant for a user: it
+/// names the file or input and what is wrong with it.
 
 #include <stdexcept>
 #include <string>
@@ -18,6 +19,13 @@ class Error : public std::runtime_error {
 class InternalError : public Error {
   public:
     explicit InternalError(const std::string& message) : Error(message) {}
+};
+
+/// The user stopped long work (an export, a search) before it ended: not a
+/// failure, so callers say so, or nothing, rather than report an error.
+class Cancelled : public Error {
+  public:
+    explicit Cancelled(const std::string& message) : Error(message) {}
 };
 
 /// Test seam: true when the environment variable SNAXELS_FAULT names

@@ -33,11 +33,14 @@ RegionShading region_shading(const Style& style, const Light& light, bool enable
         return c.isValid() ? glm::vec3(float(c.redF()), float(c.greenF()), float(c.blueF())) : fallback;
     };
     if (!style.regions.empty()) {
+        // The map's classes: a shadow contour comes with any fill but highlights (Style::fill_contours).
+        r.shadow_contour = std::any_of(style.regions.begin(), style.regions.end(),
+                                       [](const RegionStyle& region) { return region.cls != RegionClass::Highlight; });
         for (const RegionStyle& region : style.regions) {
-            if (region.cls == "shadow") r.shadow = colour(region.fill, r.shadow);
-            else if (region.cls == "lit") r.lit = colour(region.fill, r.lit);
-            else if (region.cls == "band") r.bands.emplace_back(region.k, colour(region.fill, r.lit));
-            else if (region.cls == "highlight") r.highlights.emplace_back(region.k, colour(region.fill, glm::vec3(1.0f)));
+            if (region.cls == RegionClass::Shadow) r.shadow = colour(region.fill, r.shadow);
+            else if (region.cls == RegionClass::Lit) r.lit = colour(region.fill, r.lit);
+            else if (region.cls == RegionClass::Band) r.bands.emplace_back(region.k, colour(region.fill, r.lit));
+            else if (region.cls == RegionClass::Highlight) r.highlights.emplace_back(region.k, colour(region.fill, glm::vec3(1.0f)));
         }
     } else {
         for (const ContourStyle& cs : style.contours) {

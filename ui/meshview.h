@@ -50,6 +50,7 @@ struct ContourStrip {
 struct RegionShading {
     bool enabled = false;
     Light light;
+    bool shadow_contour = true; ///< the map has a shadow contour (else every unlit point is lit)
     glm::vec3 shadow{0.36f, 0.42f, 0.58f};
     glm::vec3 lit{0.93f, 0.86f, 0.72f};
     std::vector<std::pair<double, glm::vec3>> bands;      ///< (k, colour), ascending k: N.L >= k
@@ -124,6 +125,7 @@ class MeshView : public QOpenGLWidget, protected QOpenGLFunctions_3_3_Core {
   private:
     void upload();
     void setRegionUniforms();
+    void buildSurfaceProgram();
     void drawContours(const glm::mat4& mvp);
     void resizeEvent(QResizeEvent* event) override;
     void uploadContours();
@@ -151,6 +153,8 @@ class MeshView : public QOpenGLWidget, protected QOpenGLFunctions_3_3_Core {
     QOpenGLBuffer lineVbo_{QOpenGLBuffer::VertexBuffer};
 
     QOpenGLShaderProgram program_;
+    int bandCapacity_ = 8, highlightCapacity_ = 4; ///< levels the surface shader's arrays hold
+    bool programStale_ = false;                    ///< the shader must grow to hold the levels
     QOpenGLVertexArrayObject vao_;
     QOpenGLBuffer vbo_{QOpenGLBuffer::VertexBuffer};
     bool glReady_ = false;

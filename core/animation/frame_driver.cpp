@@ -97,6 +97,19 @@ std::string sequence_file(const AnimationSpec& spec, int k) {
     return path.substr(0, first) + digits + path.substr(last);
 }
 
+Light light_at_frame(const AnimationSpec& spec, const Light& light, double source_frame, const glm::dvec3& axis,
+                     const glm::dvec3& centre) {
+    const double angle = glm::radians(spec.degrees_per_frame * source_frame);
+    Light out = light;
+    if (spec.kind == AnimationSpec::Kind::Turntable && !light.point) {
+        out.dir = glm::rotate(light.dir, angle, axis); // lit from the same side
+    } else if (spec.kind == AnimationSpec::Kind::LightOrbit) {
+        if (light.point) out.pos = centre + glm::rotate(light.pos - centre, angle, axis);
+        else out.dir = glm::rotate(light.dir, angle, axis);
+    }
+    return out;
+}
+
 void FrameDriver::apply(int k, Camera& camera, Light& light) {
     camera = camera_;
     light = light_;
@@ -111,11 +124,10 @@ void FrameDriver::apply(int k, Camera& camera, Light& light) {
         } else {
             camera.eye = camera_.target + glm::rotate(camera_.eye - camera_.target, angle, axis);
         }
-        if (!light.point) light.dir = glm::rotate(light_.dir, angle, axis); // lit from the same side
+        light = light_at_frame(spec_, light_, double(k), axis, centre_);
         break;
     case AnimationSpec::Kind::LightOrbit:
-        if (light.point) light.pos = centre_ + glm::rotate(light_.pos - centre_, angle, axis);
-        else light.dir = glm::rotate(light_.dir, angle, axis);
+        light = light_at_frame(spec_, light_, double(k), axis, centre_);
         break;
     case AnimationSpec::Kind::Clip:
         clip_->pose(double(k) / spec_.fps, soup_);

@@ -29,6 +29,13 @@ struct AnimationSpec {
     bool operator==(const AnimationSpec&) const = default;
 };
 
+/// The light at @p source_frame (the spec's start counted in) of @p spec,
+/// from its light at frame 0: turned about @p axis by the turntable (a
+/// directional light, so the mesh stays lit from the same side) or by the
+/// light orbit (a point light about @p centre); otherwise unchanged.
+Light light_at_frame(const AnimationSpec& spec, const Light& light, double source_frame, const glm::dvec3& axis,
+                     const glm::dvec3& centre);
+
 /// Poses the scene for each frame: camera, light, and (for clips and
 /// sequences) the mesh's positions and normals in @p topology.
 class FrameDriver {

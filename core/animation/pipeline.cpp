@@ -50,36 +50,48 @@ nlohmann::json events_json(const AnimationOutput& out, const AnimationJob& job) 
     return events;
 }
 
-AnimationOutput run_animation(const LoadedMesh& mesh, const std::string& mesh_path, const AnimationJob& job) {
-    AnimationOutput out;
-    MeshTopology topology = engine_topology(mesh.mesh, job.refine);
-    // Parabolic curves are the mesh's: found once, on the pose as loaded,
-    // and carried by the edges as the mesh moves.
-    if (std::any_of(job.kinds.begin(), job.kinds.end(), [](const ContourSpec& k) { return k.kind == ContourKind::Parabolic; })) {
-        ParabolicOptions options;
-        options.progress = job.parabolic_progress;
-        options.cancelled = job.cancelled;
-        try {
-            topology.parabolic = cached_parabolic(topology, options);
-        } catch (const ParabolicCancelled&) {
-            throw AnimationCancelled();
-        }
+namespace {
+
+/// Parabolic curves are the mesh's: found once, on the pose as loaded, and
+/// carried by the edges as the mesh moves.
+void attach_parabolic(MeshTopology& topology, const AnimationJob& job) {
+    if (std::none_of(job.kinds.begin(), job.kinds.end(), [](const ContourSpec& k) { return k.kind == ContourKind::Parabolic; }))
+        return;
+    ParabolicOptions options;
+    options.progress = job.parabolic_progress;
+    options.cancelled = job.cancelled;
+    try {
+        topology.parabolic = cached_parabolic(topology, options);
+    } catch (const ParabolicCancelled&) {
+        throw AnimationCancelled();
     }
-    const glm::dvec3 mesh_centre = 0.5 * (mesh.report.bbox_min + mesh.report.bbox_max);
-    FrameDriver driver(job.animation, mesh, topology, job.camera, job.light, mesh_centre, mesh_path);
+}
+
+int frame_count(const AnimationJob& job, const std::string& mesh_path) {
     int frames = job.animation.frames;
     if (job.animation.kind == AnimationSpec::Kind::Clip && frames <= 0) {
         const MeshAnimation clip(mesh_path, job.animation.clip);
         frames = std::max(1, clip_frame_count(clip.duration(), job.animation.fps) - job.animation.start);
     }
-    frames = std::max(frames, 1);
-    out.frames = frames;
+    return std::max(frames, 1);
+}
 
-    // The image frame: the mesh's bounding sphere over every frame; a mesh
-    // that moves is framed on the union of its poses over the animation (its
-    // rest pose, as loaded, may stand elsewhere and at another scale).
+/// What the image is framed on, and the camera of a moving mesh.
+struct ImageFrame {
+    glm::dvec3 centre{0.0};
+    double radius = 1.0;
+    Camera camera;
+};
+
+/// The image frame: the mesh's bounding sphere over every frame; a mesh that
+/// moves is framed on the union of its poses over the animation (its rest
+/// pose, as loaded, may stand elsewhere and at another scale).
+ImageFrame frame_image(FrameDriver& driver, const MeshTopology& topology, const LoadedMesh& mesh, const AnimationJob& job,
+                       int frames) {
+    const glm::dvec3 mesh_centre = 0.5 * (mesh.report.bbox_min + mesh.report.bbox_max);
     glm::dvec3 lo = mesh.report.bbox_min, hi = mesh.report.bbox_max;
-    Camera job_camera = job.camera;
+    ImageFrame out;
+    out.camera = job.camera;
     if (driver.mesh_moves()) {
         lo = glm::dvec3(1e300), hi = glm::dvec3(-1e300);
         Camera c;
@@ -91,13 +103,93 @@ AnimationOutput run_animation(const LoadedMesh& mesh, const std::string& mesh_pa
         // A perspective camera aimed at the loaded mesh's centre (the
         // default) follows it to the poses' centre.
         const glm::dvec3 shift = 0.5 * (lo + hi) - mesh_centre;
-        if (!job_camera.orthographic() && glm::length(job_camera.target - mesh_centre) <= 1e-9 * (1.0 + glm::length(mesh_centre))) {
-            job_camera.target += shift;
-            job_camera.eye += shift;
+        if (!out.camera.orthographic() &&
+            glm::length(out.camera.target - mesh_centre) <= 1e-9 * (1.0 + glm::length(mesh_centre))) {
+            out.camera.target += shift;
+            out.camera.eye += shift;
         }
     }
-    const glm::dvec3 centre = 0.5 * (lo + hi);
-    const double radius = std::max(0.5 * glm::length(hi - lo), 1e-12);
+    out.centre = 0.5 * (lo + hi);
+    out.radius = std::max(0.5 * glm::length(hi - lo), 1e-12);
+    return out;
+}
+
+/// Surface-fastened dashes: a phase carried by the surface for @p spec's
+/// strokes, if its style fastens them; else none.
+std::unique_ptr<SurfaceDashPhase> surface_dash_phase(const AnimationJob& job, const ContourSpec& spec) {
+    const ContourStyle cs = job.style.contour(spec);
+    const StrokeStyle* surface = cs.visible.dash_on_surface && !cs.visible.dash.empty() ? &cs.visible
+                                 : cs.hidden.dash_on_surface && !cs.hidden.dash.empty() ? &cs.hidden
+                                                                                         : nullptr;
+    double period = 0.0;
+    if (surface)
+        for (const double d : surface->dash) period += d;
+    return period > 0.0 ? std::make_unique<SurfaceDashPhase>(period) : nullptr;
+}
+
+/// A tracked frame's loops as the animation writer takes them: snaxel ids.
+std::vector<AnimatedLoop> animated_loops(const TrackedFrame& tf) {
+    std::vector<AnimatedLoop> loops;
+    for (std::size_t l = 0; l < tf.contour.fronts.loops.size(); ++l) {
+        AnimatedLoop al;
+        al.sequence = tf.loop_sequence[l];
+        tf.contour.fronts.for_each_in_loop(tf.contour.fronts.loops[l], [&](std::int32_t s) { al.ids.push_back(tf.snaxel_id[s]); });
+        loops.push_back(std::move(al));
+    }
+    return loops;
+}
+
+/// The dash phase of each of @p drawn's loops, carried along the surface.
+void fasten_dashes(SurfaceDashPhase& phase, const Fronts& fronts, DrawnContour& drawn, const ImageProjection& projection,
+                   const MeshTopology& topology) {
+    std::vector<PhaseLoop> loops;
+    for (std::size_t l = 0; l < fronts.loops.size(); ++l) {
+        PhaseLoop pl;
+        pl.q = drawn.loops[l].q;
+        pl.closed = fronts.loops[l].closed;
+        fronts.for_each_in_loop(fronts.loops[l], [&](std::int32_t s) {
+            const Snaxel& sn = fronts.snaxels[s];
+            pl.surface.push_back({sn.inside, sn.outside, sn.t});
+        });
+        loops.push_back(std::move(pl));
+    }
+    const std::vector<double> phases = phase.step(loops, [&](const SurfacePoint& sp) {
+        return projection.project((1.0 - sp.t) * topology.positions[sp.a] + sp.t * topology.positions[sp.b]);
+    });
+    for (std::size_t l = 0; l < phases.size(); ++l) drawn.loops[l].dash_phase = phases[l];
+}
+
+/// The finished document: into @p file in blocks of about a megabyte, or
+/// into out.document.
+void finish_output(AnimationWriter& writer, AtomicFile* file, AnimationOutput& out) {
+    if (!file) {
+        writer.finish([&](std::string_view piece) { out.document += piece; }, &out.stats);
+        out.bytes = out.document.size();
+        return;
+    }
+    std::string block;
+    writer.finish(
+        [&](std::string_view piece) {
+            block += piece;
+            out.bytes += piece.size();
+            if (block.size() > (1u << 20)) file->write(block), block.clear();
+        },
+        &out.stats);
+    file->write(block);
+    file->commit();
+}
+
+} // namespace
+
+AnimationOutput run_animation(const LoadedMesh& mesh, const std::string& mesh_path, const AnimationJob& job) {
+    AnimationOutput out;
+    MeshTopology topology = engine_topology(mesh.mesh, job.refine);
+    attach_parabolic(topology, job);
+    const glm::dvec3 mesh_centre = 0.5 * (mesh.report.bbox_min + mesh.report.bbox_max);
+    FrameDriver driver(job.animation, mesh, topology, job.camera, job.light, mesh_centre, mesh_path);
+    const int frames = frame_count(job, mesh_path);
+    out.frames = frames;
+    const ImageFrame image = frame_image(driver, topology, mesh, job, frames);
 
     if (!job.frames_dir.empty()) {
         std::error_code ec;
@@ -105,18 +197,10 @@ AnimationOutput run_animation(const LoadedMesh& mesh, const std::string& mesh_pa
         if (ec) throw Error("cannot create " + job.frames_dir + ": " + ec.message());
     }
     std::vector<ContourTracker> trackers;
-    // Surface-fastened dashes: a phase carried by the surface, per kind.
-    std::vector<std::unique_ptr<SurfaceDashPhase>> dash_phases;
+    std::vector<std::unique_ptr<SurfaceDashPhase>> dash_phases; // per kind
     for (const ContourSpec& spec : job.kinds) {
         trackers.emplace_back(topology, spec, job.engine);
-        const ContourStyle cs = job.style.contour(spec);
-        const StrokeStyle* surface = cs.visible.dash_on_surface && !cs.visible.dash.empty() ? &cs.visible
-                                     : cs.hidden.dash_on_surface && !cs.hidden.dash.empty() ? &cs.hidden
-                                                                                             : nullptr;
-        double period = 0.0;
-        if (surface)
-            for (const double d : surface->dash) period += d;
-        dash_phases.push_back(period > 0.0 ? std::make_unique<SurfaceDashPhase>(period) : nullptr);
+        dash_phases.push_back(surface_dash_phase(job, spec));
     }
     // Fills: the planar map's contours the drawn ones lack are tracked too.
     const bool fills = !job.style.regions.empty();
@@ -138,10 +222,9 @@ AnimationOutput run_animation(const LoadedMesh& mesh, const std::string& mesh_pa
         Camera camera;
         Light light;
         driver.apply(k, camera, light);
-        if (driver.mesh_moves()) camera = job_camera; // a moving mesh's camera stays (framed on its poses)
-        require_mesh_in_front(camera, topology.positions, radius);
-        const bool need_rays = job.visibility || fills;
-        if (need_rays) {
+        if (driver.mesh_moves()) camera = image.camera; // a moving mesh's camera stays (framed on its poses)
+        require_mesh_in_front(camera, topology.positions, image.radius);
+        if (job.visibility || fills) {
             if (!rays) rays = std::make_unique<RayScene>(topology);
             else if (driver.mesh_moves()) rays->refit();
         }
@@ -159,20 +242,12 @@ AnimationOutput run_animation(const LoadedMesh& mesh, const std::string& mesh_pa
             const TrackedFrame& tf = *tracked[c];
             ms += tf.contour.stats.ms;
             results.push_back(tf.contour);
-            std::vector<AnimatedLoop> loops;
-            for (std::size_t l = 0; l < tf.contour.fronts.loops.size(); ++l) {
-                AnimatedLoop al;
-                al.sequence = tf.loop_sequence[l];
-                tf.contour.fronts.for_each_in_loop(tf.contour.fronts.loops[l],
-                                                   [&](std::int32_t s) { al.ids.push_back(tf.snaxel_id[s]); });
-                loops.push_back(std::move(al));
-            }
-            frame.loops.push_back(std::move(loops));
+            frame.loops.push_back(animated_loops(tf));
             for (const VisualEvent& e : tf.events) out.events.push_back({c, e});
             if (job.visibility) visibility.push_back(VisibilitySampler(*rays, camera).classify(engine, tf.contour));
         }
         out.tracking_ms.push_back(ms);
-        const ImageProjection projection(camera, centre, radius, job.style.width, job.style.height, job.style.margin);
+        const ImageProjection projection(camera, image.centre, image.radius, job.style.width, job.style.height, job.style.margin);
         frame.drawing = make_drawing(engine, results, projection, job.visibility ? &visibility : nullptr);
         if (fills) {
             std::vector<const ContourResult*> contours;
@@ -186,25 +261,8 @@ AnimationOutput run_animation(const LoadedMesh& mesh, const std::string& mesh_pa
             frame.region_tracks = region_tracker.step(map);
             frame.regions = std::move(map.regions);
         }
-        for (std::size_t c = 0; c < trackers.size(); ++c) {
-            if (!dash_phases[c]) continue;
-            const Fronts& fronts = results[c].fronts;
-            std::vector<PhaseLoop> loops;
-            for (std::size_t l = 0; l < fronts.loops.size(); ++l) {
-                PhaseLoop pl;
-                pl.q = frame.drawing.contours[c].loops[l].q;
-                pl.closed = fronts.loops[l].closed;
-                fronts.for_each_in_loop(fronts.loops[l], [&](std::int32_t s) {
-                    const Snaxel& sn = fronts.snaxels[s];
-                    pl.surface.push_back({sn.inside, sn.outside, sn.t});
-                });
-                loops.push_back(std::move(pl));
-            }
-            const std::vector<double> phases = dash_phases[c]->step(loops, [&](const SurfacePoint& sp) {
-                return projection.project((1.0 - sp.t) * topology.positions[sp.a] + sp.t * topology.positions[sp.b]);
-            });
-            for (std::size_t l = 0; l < phases.size(); ++l) frame.drawing.contours[c].loops[l].dash_phase = phases[l];
-        }
+        for (std::size_t c = 0; c < trackers.size(); ++c)
+            if (dash_phases[c]) fasten_dashes(*dash_phases[c], results[c].fronts, frame.drawing.contours[c], projection, topology);
         for (auto& contour : frame.drawing.contours)
             for (auto& loop : contour.loops) std::vector<glm::dvec3>().swap(loop.p); // not exported: memory freed
         if (!job.frames_dir.empty()) {
@@ -216,21 +274,7 @@ AnimationOutput run_animation(const LoadedMesh& mesh, const std::string& mesh_pa
         writer.add(std::move(frame));
         if (job.progress) job.progress(k + 1, frames);
     }
-    if (file) {
-        std::string block; // written in blocks of about a megabyte
-        writer.finish(
-            [&](std::string_view piece) {
-                block += piece;
-                out.bytes += piece.size();
-                if (block.size() > (1u << 20)) file->write(block), block.clear();
-            },
-            &out.stats);
-        file->write(block);
-        file->commit();
-    } else {
-        writer.finish([&](std::string_view piece) { out.document += piece; }, &out.stats);
-        out.bytes = out.document.size();
-    }
+    finish_output(writer, file.get(), out);
     return out;
 }
 

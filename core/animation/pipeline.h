@@ -12,6 +12,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "snaxels/error.h"
 #include "snaxels/export/animated_svg.h"
 #include "snaxels/export/animation_writer.h"
 #include "snaxels/planarmap/planar_map.h"
@@ -53,8 +54,8 @@ struct AnimationJob {
 };
 
 /// Thrown by run_animation when the job's `cancelled` says so.
-struct AnimationCancelled : std::runtime_error {
-    AnimationCancelled() : std::runtime_error("the animation export was cancelled") {}
+struct AnimationCancelled : Cancelled {
+    AnimationCancelled() : Cancelled("the animation export was cancelled") {}
 };
 
 struct AnimationOutput {

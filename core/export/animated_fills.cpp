@@ -301,7 +301,7 @@ void fill_paths(const std::vector<AnimationFrame>& frames, const Style& style, c
     for (const std::uint64_t id : order) {
         const auto& track = tracks[id];
         const MapRegion& r0 = *track.front().second;
-        const RegionStyle* rs = style.region(region_class_name(r0.cls), r0.k);
+        const RegionStyle* rs = style.region(r0.cls, r0.k);
         if (!rs) continue;
         // The track's lives: runs of consecutive frames.
         for (std::size_t start = 0; start < track.size();) {

@@ -199,40 +199,32 @@ void compute_vertex_normals(Mesh& mesh) {
     }
 }
 
-LoadedMesh build_mesh(const TriangleSoup& soup, const std::string& source) {
-    // Refused before anything is allocated for it: a mesh that cannot be
-    // drawn in this machine's memory (the estimate: a toon drawing of a
-    // million faces peaks near 400 MB; animation and the window need more).
-    const std::uint64_t estimate = std::uint64_t(soup.triangles.size()) * kBytesPerFace;
-    if (const std::uint64_t machine = machine_memory_bytes(); estimate > machine)
-        throw Error(std::to_string(soup.triangles.size()) + " faces need an estimated " + describe_bytes(estimate) +
-                    " of memory to draw, more than this machine's " + describe_bytes(machine) +
-                    "; simplify the mesh (decimate it) first");
-    LoadedMesh out;
-    MeshReport& report = out.report;
-    report.source = source;
+namespace {
 
-    // 1. Weld by exact position.
+// 1. Weld by exact position: per input vertex, its index among the unique
+// positions.
+std::vector<std::uint32_t> weld(const TriangleSoup& soup, std::vector<glm::dvec3>& unique) {
     std::vector<std::uint32_t> welded(soup.positions.size());
-    std::vector<glm::dvec3> unique;
     unique.reserve(soup.positions.size());
-    {
-        std::unordered_map<PositionKey, std::uint32_t, PositionKeyHash> index;
-        index.reserve(soup.positions.size());
-        for (std::size_t i = 0; i < soup.positions.size(); ++i) {
-            const glm::dvec3& p = soup.positions[i];
-            for (int k = 0; k < 3; ++k)
-                if (!std::isfinite(p[k]))
-                    throw Error(std::string("a vertex has a non-finite coordinate (") +
-                                (std::isnan(p[k]) ? "NaN" : "infinity") + ")");
-            auto [it, inserted] =
-                index.try_emplace(key_of(p), static_cast<std::uint32_t>(unique.size()));
-            if (inserted) unique.push_back(p);
-            welded[i] = it->second;
-        }
+    std::unordered_map<PositionKey, std::uint32_t, PositionKeyHash> index;
+    index.reserve(soup.positions.size());
+    for (std::size_t i = 0; i < soup.positions.size(); ++i) {
+        const glm::dvec3& p = soup.positions[i];
+        for (int k = 0; k < 3; ++k)
+            if (!std::isfinite(p[k]))
+                throw Error(std::string("a vertex has a non-finite coordinate (") + (std::isnan(p[k]) ? "NaN" : "infinity") +
+                            ")");
+        auto [it, inserted] = index.try_emplace(key_of(p), static_cast<std::uint32_t>(unique.size()));
+        if (inserted) unique.push_back(p);
+        welded[i] = it->second;
     }
+    return welded;
+}
 
-    // 2. Keep the faces with three distinct corners and a non-zero area.
+// 2. The faces with three distinct corners and a non-zero area, over the
+// welded vertices.
+std::vector<std::array<std::uint32_t, 3>> kept_faces(const TriangleSoup& soup, const std::vector<std::uint32_t>& welded,
+                                                     const std::vector<glm::dvec3>& unique, MeshReport& report) {
     std::vector<std::array<std::uint32_t, 3>> faces;
     faces.reserve(soup.triangles.size());
     for (std::size_t f = 0; f < soup.triangles.size(); ++f) {
@@ -240,72 +232,49 @@ LoadedMesh build_mesh(const TriangleSoup& soup, const std::string& source) {
         for (int k = 0; k < 3; ++k) {
             const auto i = soup.triangles[f][k];
             if (i >= soup.positions.size())
-                throw Error("face " + std::to_string(f + 1) + " refers to vertex " +
-                            std::to_string(i + 1) + " but there are only " +
-                            std::to_string(soup.positions.size()) + " vertices");
+                throw Error("face " + std::to_string(f + 1) + " refers to vertex " + std::to_string(i + 1) +
+                            " but there are only " + std::to_string(soup.positions.size()) + " vertices");
             t[k] = welded[i];
         }
-        if (t[0] == t[1] || t[1] == t[2] || t[2] == t[0] ||
-            is_degenerate(unique[t[0]], unique[t[1]], unique[t[2]])) {
+        if (t[0] == t[1] || t[1] == t[2] || t[2] == t[0] || is_degenerate(unique[t[0]], unique[t[1]], unique[t[2]])) {
             ++report.dropped_faces;
             continue;
         }
         faces.push_back(t);
     }
     if (faces.empty())
-        throw Error(soup.triangles.empty() ? "the mesh has no faces"
-                                           : "the mesh has no faces with a non-zero area");
+        throw Error(soup.triangles.empty() ? "the mesh has no faces" : "the mesh has no faces with a non-zero area");
+    return faces;
+}
 
-    // 3. Edge statistics of the input, before any repair.
-    {
-        std::vector<std::uint64_t> edges;
-        edges.reserve(faces.size() * 3);
-        for (const auto& t : faces)
-            for (int k = 0; k < 3; ++k) {
-                const std::uint64_t a = t[k], b = t[(k + 1) % 3];
-                edges.push_back(a < b ? (a << 32 | b) : (b << 32 | a));
-            }
-        std::sort(edges.begin(), edges.end());
-        for (std::size_t i = 0; i < edges.size();) {
-            std::size_t j = i;
-            while (j < edges.size() && edges[j] == edges[i]) ++j;
-            ++report.edges;
-            if (j - i == 1) ++report.boundary_edges;
-            if (j - i > 2) ++report.nonmanifold_edges;
-            i = j;
+// 3. Edge statistics of the input, before any repair.
+void count_edges(const std::vector<std::array<std::uint32_t, 3>>& faces, MeshReport& report) {
+    std::vector<std::uint64_t> edges;
+    edges.reserve(faces.size() * 3);
+    for (const auto& t : faces)
+        for (int k = 0; k < 3; ++k) {
+            const std::uint64_t a = t[k], b = t[(k + 1) % 3];
+            edges.push_back(a < b ? (a << 32 | b) : (b << 32 | a));
         }
+    std::sort(edges.begin(), edges.end());
+    for (std::size_t i = 0; i < edges.size();) {
+        std::size_t j = i;
+        while (j < edges.size() && edges[j] == edges[i]) ++j;
+        ++report.edges;
+        if (j - i == 1) ++report.boundary_edges;
+        if (j - i > 2) ++report.nonmanifold_edges;
+        i = j;
     }
+}
 
-    // 4. Vertices referenced by a kept face, in first-use order of the input.
-    std::vector<std::int64_t> remap(unique.size(), -1);
-    Mesh& mesh = out.mesh;
-    mesh.reserve(unique.size(), faces.size() * 3 / 2 + 16, faces.size());
-    std::vector<Mesh::VertexHandle> handles;
-    handles.reserve(unique.size());
-    std::vector<std::uint32_t> unique_source(unique.size());
-    for (std::size_t i = soup.positions.size(); i-- > 0;) unique_source[welded[i]] = std::uint32_t(i);
-    OpenMesh::VPropHandleT<std::uint32_t> soup_vertex;
-    mesh.add_property(soup_vertex);
-    for (const auto& t : faces)
-        for (const auto v : t)
-            if (remap[v] < 0) {
-                remap[v] = static_cast<std::int64_t>(handles.size());
-                handles.push_back(mesh.add_vertex(to_om(unique[v])));
-                mesh.property(soup_vertex, handles.back()) = unique_source[v];
-            }
-
-    // 5. Faces, repairing non-manifold configurations by splitting vertices.
-    omerr().disable(); // failed add_face attempts are expected and handled
-    RepairingFaceAdder adder(mesh, soup_vertex);
-    for (const auto& t : faces)
-        adder.add({handles[remap[t[0]]], handles[remap[t[1]]], handles[remap[t[2]]]});
-    report.split_vertices = adder.finish();
-    // 5b. Fans that add_face accepted around one vertex (bow ties, also left
-    // by the repairs above): the mesh is built again with a copy of the
-    // vertex for each fan but the first. Rare, so only then.
+// 5b. Fans that add_face accepted around one vertex (bow ties, also left by
+// the repairs of step 5): the mesh is built again with a copy of the vertex
+// for each fan but the first. Rare, so only then. Returns the copies made.
+std::size_t split_complex_vertices(Mesh& mesh, OpenMesh::VPropHandleT<std::uint32_t> soup_vertex) {
     auto complex_vertex = [&] {
         return std::any_of(mesh.vertices_begin(), mesh.vertices_end(), [&](auto vh) { return !mesh.is_manifold(vh); });
     };
+    std::size_t copies = 0;
     for (int round = 0; round < 4 && complex_vertex(); ++round) { // a rebuild's own repairs may leave one more
         std::vector<std::array<std::uint32_t, 3>> built;
         built.reserve(mesh.n_faces());
@@ -331,59 +300,106 @@ LoadedMesh build_mesh(const TriangleSoup& soup, const std::string& source) {
         }
         RepairingFaceAdder readder(mesh, soup_vertex);
         for (const auto& t : built) readder.add({again[t[0]], again[t[1]], again[t[2]]});
-        report.split_vertices += fan_copies + readder.finish();
+        copies += fan_copies + readder.finish();
     }
-    omerr().enable();
-    out.vertex_source.resize(mesh.n_vertices());
-    for (const auto vh : mesh.vertices()) out.vertex_source[vh.idx()] = mesh.property(soup_vertex, vh);
-    mesh.remove_property(soup_vertex);
+    return copies;
+}
 
-    // 6. Components; closed ones that enclose negative volume face inward
-    // (some scanners write them so) and are turned outward, because shading
-    // contours (N.L) depend on which side is out.
-    report.vertices = handles.size(); // welded input; split copies are counted apart
-    report.faces = mesh.n_faces();
+// 6. Components; closed ones that enclose negative volume face inward (some
+// scanners write them so) and are turned outward, because shading contours
+// (N.L) depend on which side is out.
+void orient_components(Mesh& mesh, MeshReport& report) {
     UnionFind components(mesh.n_vertices());
     for (const auto eh : mesh.edges())
         components.unite(static_cast<std::uint32_t>(mesh.from_vertex_handle(mesh.halfedge_handle(eh, 0)).idx()),
                          static_cast<std::uint32_t>(mesh.to_vertex_handle(mesh.halfedge_handle(eh, 0)).idx()));
     for (std::uint32_t v = 0; v < mesh.n_vertices(); ++v)
         if (components.find(v) == v) ++report.components;
-    {
-        std::vector<double> volume(mesh.n_vertices(), 0.0);
-        std::vector<std::uint8_t> open(mesh.n_vertices(), 0);
-        std::vector<glm::dvec3> anchor(mesh.n_vertices());
-        for (const auto vh : mesh.vertices()) anchor[components.find(vh.idx())] = to_glm(mesh.point(vh));
-        for (const auto fh : mesh.faces()) {
-            auto it = mesh.cfv_iter(fh);
-            const auto a = *it, b = *++it, c = *++it;
-            const std::uint32_t root = components.find(a.idx());
-            const glm::dvec3 o = anchor[root];
-            volume[root] += glm::dot(to_glm(mesh.point(a)) - o,
-                                     glm::cross(to_glm(mesh.point(b)) - o, to_glm(mesh.point(c)) - o));
-        }
-        for (const auto heh : mesh.halfedges())
-            if (mesh.is_boundary(heh)) open[components.find(mesh.to_vertex_handle(heh).idx())] = 1;
-        std::vector<std::uint8_t> flip(mesh.n_vertices(), 0);
-        for (std::uint32_t v = 0; v < mesh.n_vertices(); ++v)
-            if (components.find(v) == v && !open[v] && volume[v] < 0.0) {
-                flip[v] = 1;
-                ++report.flipped_components;
-            }
-        if (report.flipped_components) {
-            Mesh turned;
-            turned.reserve(mesh.n_vertices(), mesh.n_edges(), mesh.n_faces());
-            for (const auto vh : mesh.vertices()) turned.add_vertex(mesh.point(vh));
-            for (const auto fh : mesh.faces()) {
-                std::array<Mesh::VertexHandle, 3> c;
-                int k = 0;
-                for (const auto vh : mesh.fv_range(fh)) c[k++] = vh;
-                if (flip[components.find(c[0].idx())]) std::swap(c[1], c[2]);
-                turned.add_face(c[0], c[1], c[2]);
-            }
-            mesh = std::move(turned);
-        }
+    std::vector<double> volume(mesh.n_vertices(), 0.0);
+    std::vector<std::uint8_t> open(mesh.n_vertices(), 0);
+    std::vector<glm::dvec3> anchor(mesh.n_vertices());
+    for (const auto vh : mesh.vertices()) anchor[components.find(vh.idx())] = to_glm(mesh.point(vh));
+    for (const auto fh : mesh.faces()) {
+        auto it = mesh.cfv_iter(fh);
+        const auto a = *it, b = *++it, c = *++it;
+        const std::uint32_t root = components.find(a.idx());
+        const glm::dvec3 o = anchor[root];
+        volume[root] +=
+            glm::dot(to_glm(mesh.point(a)) - o, glm::cross(to_glm(mesh.point(b)) - o, to_glm(mesh.point(c)) - o));
     }
+    for (const auto heh : mesh.halfedges())
+        if (mesh.is_boundary(heh)) open[components.find(mesh.to_vertex_handle(heh).idx())] = 1;
+    std::vector<std::uint8_t> flip(mesh.n_vertices(), 0);
+    for (std::uint32_t v = 0; v < mesh.n_vertices(); ++v)
+        if (components.find(v) == v && !open[v] && volume[v] < 0.0) {
+            flip[v] = 1;
+            ++report.flipped_components;
+        }
+    if (!report.flipped_components) return;
+    Mesh turned;
+    turned.reserve(mesh.n_vertices(), mesh.n_edges(), mesh.n_faces());
+    for (const auto vh : mesh.vertices()) turned.add_vertex(mesh.point(vh));
+    for (const auto fh : mesh.faces()) {
+        std::array<Mesh::VertexHandle, 3> c;
+        int k = 0;
+        for (const auto vh : mesh.fv_range(fh)) c[k++] = vh;
+        if (flip[components.find(c[0].idx())]) std::swap(c[1], c[2]);
+        turned.add_face(c[0], c[1], c[2]);
+    }
+    mesh = std::move(turned);
+}
+
+} // namespace
+
+LoadedMesh build_mesh(const TriangleSoup& soup, const std::string& source) {
+    // Refused before anything is allocated for it: a mesh that cannot be
+    // drawn in this machine's memory (the estimate: a toon drawing of a
+    // million faces peaks near 400 MB; animation and the window need more).
+    const std::uint64_t estimate = std::uint64_t(soup.triangles.size()) * kBytesPerFace;
+    if (const std::uint64_t machine = machine_memory_bytes(); estimate > machine)
+        throw Error(std::to_string(soup.triangles.size()) + " faces need an estimated " + describe_bytes(estimate) +
+                    " of memory to draw, more than this machine's " + describe_bytes(machine) +
+                    "; simplify the mesh (decimate it) first");
+    LoadedMesh out;
+    MeshReport& report = out.report;
+    report.source = source;
+    std::vector<glm::dvec3> unique;
+    const std::vector<std::uint32_t> welded = weld(soup, unique);
+    const auto faces = kept_faces(soup, welded, unique, report);
+    count_edges(faces, report);
+
+    // 4. Vertices referenced by a kept face, in first-use order of the input.
+    std::vector<std::int64_t> remap(unique.size(), -1);
+    Mesh& mesh = out.mesh;
+    mesh.reserve(unique.size(), faces.size() * 3 / 2 + 16, faces.size());
+    std::vector<Mesh::VertexHandle> handles;
+    handles.reserve(unique.size());
+    std::vector<std::uint32_t> unique_source(unique.size());
+    for (std::size_t i = soup.positions.size(); i-- > 0;) unique_source[welded[i]] = std::uint32_t(i);
+    OpenMesh::VPropHandleT<std::uint32_t> soup_vertex;
+    mesh.add_property(soup_vertex);
+    for (const auto& t : faces)
+        for (const auto v : t)
+            if (remap[v] < 0) {
+                remap[v] = static_cast<std::int64_t>(handles.size());
+                handles.push_back(mesh.add_vertex(to_om(unique[v])));
+                mesh.property(soup_vertex, handles.back()) = unique_source[v];
+            }
+
+    // 5. Faces, repairing non-manifold configurations by splitting vertices.
+    omerr().disable(); // failed add_face attempts are expected and handled
+    RepairingFaceAdder adder(mesh, soup_vertex);
+    for (const auto& t : faces) adder.add({handles[remap[t[0]]], handles[remap[t[1]]], handles[remap[t[2]]]});
+    report.split_vertices = adder.finish();
+    report.split_vertices += split_complex_vertices(mesh, soup_vertex);
+    omerr().enable();
+    out.vertex_source.resize(mesh.n_vertices());
+    for (const auto vh : mesh.vertices()) out.vertex_source[vh.idx()] = mesh.property(soup_vertex, vh);
+    mesh.remove_property(soup_vertex);
+
+    report.vertices = handles.size(); // welded input; split copies are counted apart
+    report.faces = mesh.n_faces();
+    orient_components(mesh, report);
     compute_vertex_normals(mesh);
 
     report.bbox_min = report.bbox_max = to_glm(mesh.point(Mesh::VertexHandle(0)));

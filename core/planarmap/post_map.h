@@ -14,23 +14,12 @@
 
 #include <glm/glm.hpp>
 
+#include "snaxels/planarmap/region.h"
 #include "snaxels/scene/camera.h"
 #include "snaxels/snaxel/snaxel_engine.h"
 #include "snaxels/visibility/ray_scene.h"
 
 namespace snaxels {
-
-enum class RegionClass { Shadow, Lit, Band, Highlight };
-
-const char* region_class_name(RegionClass cls);
-
-struct MapRegion {
-    RegionClass cls = RegionClass::Lit;
-    double k = 0.0;  ///< band: the isophote level it starts at; highlight: the gleam threshold
-    int depth = 0;   ///< depth order of its patch, 0 nearest
-    std::vector<std::vector<glm::dvec2>> polygons; ///< image pixels; holes wind the other way (non-zero fill)
-    double area = 0.0; ///< square pixels
-};
 
 struct PostMapInput {
     const ContourResult* visual = nullptr;              ///< required: its regions are the patches

@@ -8,23 +8,105 @@
 #include <tuple>
 #include <unordered_map>
 
+#include "snaxels/planarmap/detail/polygon_cut.h"
 #include "snaxels/util/detail/parallel.h"
 #include "snaxels/visibility/visibility.h"
 
 namespace snaxels {
 namespace {
 
-/// One step of a region's outline, from one point to the next (point ids:
-/// vertices, then edge points, junctions and crossings), sorted by region
-/// and start.
+/// What a vertex shows the viewer once every kind's front has converged:
+/// hidden behind a nearer surface, turned away and unseen, or seen with a
+/// shading class (0 shadow, 1 lit, 2.. the bands, then the highlight levels)
+/// on the near side of the surface or on its far side (seen through a hole,
+/// or a corner past the contour of interpolated normals). Labels order as
+/// occluded < away < near classes < far classes, which breaks ties.
+class VertexLabel {
+  public:
+    VertexLabel() = default;
+    static VertexLabel occluded() { return VertexLabel(kOccludedCode); }
+    static VertexLabel away() { return VertexLabel(kAwayCode); }
+    static VertexLabel near_side(int cls) { return VertexLabel(cls); }
+    static VertexLabel far_side(int cls) { return VertexLabel(kFarCode + cls); }
+
+    bool seen() const { return code_ >= 0; }
+    bool is_occluded() const { return code_ == kOccludedCode; }
+    bool is_away() const { return code_ == kAwayCode; }
+    bool on_far_side() const { return code_ >= kFarCode; }
+    /// The shading class of a seen vertex, on either side.
+    int cls() const { return on_far_side() ? code_ - kFarCode : code_; }
+    auto operator<=>(const VertexLabel&) const = default;
+
+  private:
+    static constexpr int kOccludedCode = -1; // behind a nearer surface
+    static constexpr int kAwayCode = -2;     // turned away from the viewer, not seen (N.V < 0)
+    static constexpr int kFarCode = 64;      // added to the class of a seen vertex turned away (N.V < 0)
+    explicit VertexLabel(int code) : code_(code) {}
+    int code_ = kOccludedCode;
+};
+
+/// A point an outline passes through. Each kind has its own range of ids, so
+/// steps sort by region, then by point, whatever the kind.
+struct PointId {
+    std::int64_t value = 0;
+    auto operator<=>(const PointId&) const = default;
+};
+
+enum class PointKind {
+    Vertex,    ///< a mesh vertex
+    EdgePoint, ///< where fronts stop on an edge whose labels differ
+    Junction,  ///< inside a face whose three corners carry three labels
+    Level,     ///< past the contour: where N.L crosses a level on an edge (shared by both faces)
+    Across     ///< past the contour: where N.L crosses a level inside a face
+};
+
+/// The id ranges of the point kinds for one mesh and number of N.L levels.
+class PointIds {
+  public:
+    PointIds(std::int32_t vertices, std::int32_t edges, std::size_t faces, std::size_t levels)
+        : edge_base_(vertices), junction_base_(edge_base_ + edges),
+          level_base_(junction_base_ + std::int64_t(faces)), levels_(std::int64_t(levels)),
+          across_base_(level_base_ + std::int64_t(edges) * levels_) {}
+
+    PointId vertex(std::int32_t v) const { return {v}; }
+    PointId edge(std::int32_t e) const { return {edge_base_ + e}; }
+    PointId junction(std::int32_t f) const { return {junction_base_ + f}; }
+    PointId level(std::int32_t e, std::size_t level) const { return {level_base_ + e * levels_ + std::int64_t(level)}; }
+    /// The k-th crossing of @p level along a part of face @p f (at most 8).
+    PointId across(std::int32_t f, std::size_t level, std::size_t k) const {
+        return {across_base_ + (std::int64_t(f) * levels_ + std::int64_t(level)) * 8 + std::int64_t(k)};
+    }
+
+    PointKind kind(PointId p) const {
+        return p.value < edge_base_       ? PointKind::Vertex
+               : p.value < junction_base_ ? PointKind::EdgePoint
+               : p.value < level_base_    ? PointKind::Junction
+               : p.value < across_base_   ? PointKind::Level
+                                          : PointKind::Across;
+    }
+    /// The vertex, edge or face a vertex, edge point or junction belongs to.
+    std::int32_t element(PointId p) const {
+        switch (kind(p)) {
+        case PointKind::Vertex: return std::int32_t(p.value);
+        case PointKind::EdgePoint: return std::int32_t(p.value - edge_base_);
+        default: return std::int32_t(p.value - junction_base_);
+        }
+    }
+
+  private:
+    std::int64_t edge_base_, junction_base_, level_base_, levels_, across_base_;
+};
+
+/// One step of a region's outline, from one point to the next, sorted by
+/// region and start.
 struct Step {
     std::uint64_t key = 0; ///< region << 40 | from
-    std::int64_t to = 0;
+    PointId to;
     Step() = default;
-    Step(std::int32_t region, std::int64_t from, std::int64_t next)
-        : key((std::uint64_t(region) << 40) | std::uint64_t(from)), to(next) {}
+    Step(std::int32_t region, PointId from, PointId next)
+        : key((std::uint64_t(region) << 40) | std::uint64_t(from.value)), to(next) {}
     std::int32_t region() const { return std::int32_t(key >> 40); }
-    std::int64_t from() const { return std::int64_t(key & ((std::uint64_t(1) << 40) - 1)); }
+    PointId from() const { return {std::int64_t(key & ((std::uint64_t(1) << 40) - 1))}; }
     bool operator<(const Step& o) const { return key < o.key || (key == o.key && to < o.to); }
     bool operator==(const Step& o) const { return key == o.key && to == o.to; }
 };
@@ -32,15 +114,11 @@ struct Step {
 /// A point of a face's part past the contour: its id, the face edge the
 /// part's boundary follows from it (-1: across the face), where it is and N.L there.
 struct RimPoint {
-    std::int64_t id = 0;
+    PointId id;
     int along = -1;
     glm::dvec3 p{0.0};
     double nl = 0.0;
 };
-
-constexpr int kOccluded = -1; // behind a nearer surface
-constexpr int kAway = -2;     // turned away from the viewer, not seen (N.V < 0)
-constexpr int kBack = 64;     // added to the class of a visible vertex turned away (N.V < 0)
 
 /// Root of the linear interpolant of fa (at 0) and fb (at 1), else the middle.
 double linear_root(double fa, double fb) {
@@ -121,651 +199,757 @@ class ContourImage {
     std::vector<std::vector<std::uint32_t>> cells_;
 };
 
-} // namespace
+/// The map's construction as named stages over shared state, in order:
+/// label vertices, grow regions (dissolving flecks), place edge points, walk
+/// faces, take the rim past creases, cancel steps walked both ways, chain
+/// outlines, and class and rank the regions by depth.
+class SnaxelMapBuilder {
+  public:
+    SnaxelMapBuilder(const SnaxelEngine& engine, const SnaxelMapInput& in, const RayScene& rays,
+                     const ImageProjection& projection, const Camera& camera, const Light& light)
+        : engine_(engine), in_(in), rays_(rays), projection_(projection), camera_(camera), light_(light),
+          topo_(engine.topology()), visual_(*in.visual), V_(std::int32_t(topo_.n_vertices())),
+          E_(std::int32_t(topo_.n_edges())), classes_(shading_classes(in)), highlight_(classes_.first_highlight()),
+          levels_(shading_levels(in)), ids_(V_, E_, topo_.n_faces(), levels_.size()),
+          sampler_(rays, camera, refined_scale()) {}
 
-SnaxelMap build_snaxel_map(const SnaxelEngine& engine, const SnaxelMapInput& in, const RayScene& rays,
-                           const ImageProjection& projection, const Camera& camera, const Light& light) {
-    const auto start = std::chrono::steady_clock::now();
-    const MeshTopology& topo = engine.topology();
-    const ContourResult& visual = *in.visual;
-    const auto V = std::int32_t(topo.n_vertices());
-    const auto E = std::int32_t(topo.n_edges());
-    const int bands = int(in.isophotes.size());
-    const int highlight = 2 + bands; // classes: 0 shadow, 1 lit, 2.. bands, then the highlight levels
-    const int gleams = int(in.gleams.size());
-    // Labels are decided at the refined mesh's own scale: a vertex near a
-    // fold of a large face is hidden by the refined faces next to it.
-    VisibilityOptions ray_options;
-    ray_options.original_neighbourhood = false;
-    const VisibilitySampler sampler(rays, camera, ray_options);
-    SnaxelMap map;
+    SnaxelMap build() {
+        const auto start = std::chrono::steady_clock::now();
+        label_vertices();
+        grow_regions();
+        place_edge_points();
+        select_faces();
+        walk_faces();
+        take_rim_rings();
+        cancel_opposite_steps();
+        chain_outlines();
+        class_and_rank_regions();
+        map_.vertex_region = std::move(comp_);
+        map_.stats.ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+        return std::move(map_);
+    }
 
-    // Labels: where every kind's converged front leaves each vertex (rules
-    // 1 and 4), after the image-plane test against nearer surfaces (rule 2).
-    std::vector<int> label(static_cast<std::size_t>(V), kOccluded);
-    std::vector<double> nl(static_cast<std::size_t>(V));
-    const std::vector<double> levels = [&] {
+  private:
+    /// The levels of N.L the classes change at: 0 (shadow), then each band's.
+    static std::vector<double> shading_levels(const SnaxelMapInput& in) {
         std::vector<double> l{0.0};
         for (const ContourResult* iso : in.isophotes) l.push_back(iso->spec.k);
         return l;
-    }();
-    // On a closed mesh a point turned away is always behind the surface
-    // (rays from the fold's far side only graze it): no ray is needed.
-    bool open = false;
-    for (std::int32_t e = 0; e < E && !open; ++e) open = topo.is_boundary_edge(e);
-    parallel_for(std::size_t(V), [&](std::size_t i) {
-        const auto v = std::int32_t(i);
-        if (!open && visual.vertex_f[i] < 0.0) {
-            label[i] = kAway;
-            return;
-        }
-        if (rays.occluded(sampler.vertex_ray(v, visual.vertex_f[i] < 0.0))) {
+    }
+    /// Labels are decided at the refined mesh's own scale: a vertex near a
+    /// fold of a large face is hidden by the refined faces next to it.
+    static VisibilityOptions refined_scale() {
+        VisibilityOptions options;
+        options.original_neighbourhood = false;
+        return options;
+    }
+
+    /// The shading class of a point on the far side of the surface from N.L alone.
+    int class_of(double nl) const { return classes_.from_nl(nl); }
+    const glm::dvec3& position(std::int32_t v) const { return topo_.positions[std::size_t(v)]; }
+    VertexLabel label(std::int32_t v) const { return label_[std::size_t(v)]; }
+    double depth_of(const glm::dvec3& p) const {
+        return camera_.orthographic() ? glm::dot(p, camera_.forward()) : glm::dot(p - camera_.eye, camera_.forward());
+    }
+    bool face_hidden(std::int32_t f) const {
+        const auto& fv = topo_.face_vertices[std::size_t(f)];
+        const glm::dvec3 &p0 = position(fv[0]), &p1 = position(fv[1]), &p2 = position(fv[2]);
+        return rays_.occluded(sampler_.face_ray(f, (p0 + p1 + p2) / 3.0, glm::normalize(glm::cross(p1 - p0, p2 - p0))));
+    }
+
+    // ---- label vertices -------------------------------------------------
+
+    /// Where every kind's converged front leaves each vertex (rules 1 and
+    /// 4), after the image-plane test against nearer surfaces (rule 2).
+    void label_vertices() {
+        label_.assign(std::size_t(V_), VertexLabel::occluded());
+        nl_.assign(std::size_t(V_), 0.0);
+        // On a closed mesh a point turned away is always behind the surface
+        // (rays from the fold's far side only graze it): no ray is needed.
+        bool open = false;
+        for (std::int32_t e = 0; e < E_ && !open; ++e) open = topo_.is_boundary_edge(e);
+        parallel_for(std::size_t(V_), [&](std::size_t i) { label_[i] = label_vertex(std::int32_t(i), open); }, 256);
+        // N.L of the vertices turned away too, which the walk past the contour uses.
+        for (std::int32_t v = 0; v < V_; ++v)
+            if (label(v).is_away()) nl_[std::size_t(v)] = glm::dot(topo_.normals[std::size_t(v)], light_.to_light(position(v)));
+    }
+
+    VertexLabel label_vertex(std::int32_t v, bool open) {
+        const auto i = std::size_t(v);
+        const bool turned_away = visual_.vertex_f[i] < 0.0;
+        if (!open && turned_away) return VertexLabel::away();
+        if (rays_.occluded(sampler_.vertex_ray(v, turned_away))) {
             // Hidden; one turned away is hidden by its own fold as often as
             // not, and faces past the contour may still be seen whole.
-            label[i] = visual.vertex_f[i] < 0.0 ? kAway : kOccluded;
-            return;
+            return turned_away ? VertexLabel::away() : VertexLabel::occluded();
         }
-        nl[i] = glm::dot(topo.normals[i], light.to_light(topo.positions[i]));
-        if (visual.vertex_f[i] < 0.0) {
-            // Seen although turned away: through a hole of an open mesh, or
-            // a corner past the contour of interpolated normals. Its side of
-            // the surface forms its own regions, classed by N.L alone.
-            int cls = in.shadow && nl[i] < 0.0 ? 0 : 1;
-            for (int k = 0; k < bands; ++k)
-                if (cls != 0 && nl[i] >= levels[std::size_t(k + 1)]) cls = 2 + k;
-            label[i] = kBack + cls;
-            return;
-        }
-        int cls = in.shadow && in.shadow->vertex_f[i] < 0.0 ? 0 : 1;
-        for (int k = 0; k < bands; ++k)
-            if (cls != 0 && in.isophotes[std::size_t(k)]->vertex_f[i] >= 0.0) cls = 2 + k; // brighter wins
-        for (int g = 0; g < gleams; ++g)
-            if (in.gleams[std::size_t(g)]->vertex_f[i] >= 0.0) cls = highlight + g; // the highest threshold met
-        label[i] = cls;
-    }, 256);
+        nl_[i] = glm::dot(topo_.normals[i], light_.to_light(topo_.positions[i]));
+        // Seen although turned away: through a hole of an open mesh, or a
+        // corner past the contour of interpolated normals. Its side of the
+        // surface forms its own regions, classed by N.L alone.
+        if (turned_away) return VertexLabel::far_side(class_of(nl_[i]));
+        return VertexLabel::near_side(classes_.classify(
+            in_.shadow && in_.shadow->vertex_f[i] < 0.0, [&](int b) { return in_.isophotes[std::size_t(b)]->vertex_f[i] >= 0.0; },
+            [&](int h) { return in_.gleams[std::size_t(h)]->vertex_f[i] >= 0.0; }));
+    }
 
-    // Regions: grown from a seed over edges of equal label; every vertex no
-    // region reached seeds a new one (rule 3: same kinds merge). A front
-    // needs room on the mesh: a region with no vertex whose whole ring
-    // shares its label is thinner than the tessellation and cannot hold
-    // one; when it is also a fleck of a few vertices, its vertices join the
-    // label most of their neighbours outside it carry, and the regions they
-    // reach are grown again. (Long thin bands along a coarse mesh are kept.)
-    std::vector<std::int32_t> comp(static_cast<std::size_t>(V), -1);
-    std::vector<int> comp_label;
-    std::vector<std::int32_t> stack;
-    // A vertex's share of the image: a third of its faces' projected areas
-    // (each face meets two of the vertex's ring edges).
-    auto vertex_area = [&](std::int32_t v) {
+    // ---- grow regions, dissolve flecks ----------------------------------
+
+    /// Regions: grown from a seed over edges of equal label; every vertex no
+    /// region reached seeds a new one (rule 3: same kinds merge). A front
+    /// needs room on the mesh: a region with no vertex whose whole ring
+    /// shares its label is thinner than the tessellation and cannot hold
+    /// one; when it is also a fleck of a few vertices, its vertices join the
+    /// label most of their neighbours outside it carry, and the regions they
+    /// reach are grown again. (Long thin bands along a coarse mesh are kept.)
+    void grow_regions() {
+        comp_.assign(std::size_t(V_), -1);
+        comp_label_.resize(std::size_t(grow_vertex_sets(
+            topo_, comp_, [&](std::int32_t v) { return label(v).seen(); },
+            [&](std::int32_t v, std::int32_t w) { return label(v) == label(w); })));
+        for (std::int32_t v = 0; v < V_; ++v)
+            if (comp_[std::size_t(v)] >= 0) comp_label_[std::size_t(comp_[std::size_t(v)])] = label(v);
+        map_.stats.seeds = comp_label_.size();
+        for (int pass = 0; pass < 3; ++pass) { // dissolving can leave a new fleck behind
+            const auto moves = fleck_moves();
+            if (moves.empty()) break;
+            regrow_moved(moves);
+            map_.stats.seeds += comp_label_.size();
+        }
+        for (const VertexLabel l : label_) { // as the flecks left them
+            if (l.seen()) ++map_.stats.visible_vertices;
+            if (l.is_occluded()) ++map_.stats.occluded_vertices;
+        }
+    }
+
+    /// A vertex's share of the image: a third of its faces' projected areas
+    /// (each face meets two of the vertex's ring edges).
+    double vertex_area(std::int32_t v) const {
         double area = 0.0;
-        for (std::int32_t i = topo.ring_start[v]; i < topo.ring_start[v + 1]; ++i)
-            for (const std::int32_t f : topo.edge_faces[std::size_t(topo.ring_edge[i])]) {
+        for (std::int32_t i = topo_.ring_start[v]; i < topo_.ring_start[v + 1]; ++i)
+            for (const std::int32_t f : topo_.edge_faces[std::size_t(topo_.ring_edge[i])]) {
                 if (f == MeshTopology::kNone) continue;
-                const auto& fv = topo.face_vertices[std::size_t(f)];
-                const glm::dvec2 p0 = projection.project(topo.positions[std::size_t(fv[0])]);
-                const glm::dvec2 p1 = projection.project(topo.positions[std::size_t(fv[1])]);
-                const glm::dvec2 p2 = projection.project(topo.positions[std::size_t(fv[2])]);
+                const auto& fv = topo_.face_vertices[std::size_t(f)];
+                const glm::dvec2 p0 = projection_.project(position(fv[0]));
+                const glm::dvec2 p1 = projection_.project(position(fv[1]));
+                const glm::dvec2 p2 = projection_.project(position(fv[2]));
                 area += std::abs((p1.x - p0.x) * (p2.y - p0.y) - (p2.x - p0.x) * (p1.y - p0.y)) / 12.0;
             }
         return area;
-    };
-    comp_label.resize(std::size_t(grow_vertex_sets(
-        topo, comp, [&](std::int32_t v) { return label[std::size_t(v)] >= 0; },
-        [&](std::int32_t v, std::int32_t w) { return label[std::size_t(v)] == label[std::size_t(w)]; })));
-    for (std::int32_t v = 0; v < V; ++v)
-        if (comp[std::size_t(v)] >= 0) comp_label[std::size_t(comp[std::size_t(v)])] = label[std::size_t(v)];
-    std::size_t seeds = comp_label.size();
-    for (int pass = 0; pass < 3; ++pass) { // dissolving can leave a new fleck behind
-        std::vector<char> supported(comp_label.size(), 0);
-        std::vector<int> size(comp_label.size(), 0);
-        for (const std::int32_t r : comp)
+    }
+
+    /// The vertices of unsupported flecks, each with the label most of its
+    /// neighbours outside the fleck carry.
+    std::vector<std::pair<std::int32_t, VertexLabel>> fleck_moves() const {
+        std::vector<char> supported(comp_label_.size(), 0);
+        std::vector<int> size(comp_label_.size(), 0);
+        for (const std::int32_t r : comp_)
             if (r >= 0) ++size[std::size_t(r)];
         // Only the vertices of regions of few vertices can be flecks.
         std::vector<std::int32_t> small;
-        for (std::int32_t v = 0; v < V; ++v) {
-            const std::int32_t r = comp[std::size_t(v)];
-            if (r >= 0 && size[std::size_t(r)] < in.min_unsupported_vertices) small.push_back(v);
+        for (std::int32_t v = 0; v < V_; ++v) {
+            const std::int32_t r = comp_[std::size_t(v)];
+            if (r >= 0 && size[std::size_t(r)] < in_.min_unsupported_vertices) small.push_back(v);
         }
-        std::vector<double> image_area(comp_label.size(), 0.0);
-        for (const std::int32_t v : small) image_area[std::size_t(comp[std::size_t(v)])] += vertex_area(v);
+        std::vector<double> image_area(comp_label_.size(), 0.0);
+        for (const std::int32_t v : small) image_area[std::size_t(comp_[std::size_t(v)])] += vertex_area(v);
         for (std::size_t r = 0; r < size.size(); ++r)
-            supported[r] = size[r] >= in.min_unsupported_vertices || image_area[r] >= in.min_fleck_area_px;
+            supported[r] = size[r] >= in_.min_unsupported_vertices || image_area[r] >= in_.min_fleck_area_px;
         for (const std::int32_t v : small) {
-            const std::int32_t r = comp[std::size_t(v)];
+            const std::int32_t r = comp_[std::size_t(v)];
             if (supported[std::size_t(r)]) continue;
-            bool interior = topo.ring_start[v + 1] > topo.ring_start[v];
-            for (std::int32_t i = topo.ring_start[v]; i < topo.ring_start[v + 1] && interior; ++i)
-                interior = label[std::size_t(topo.ring[i])] == label[std::size_t(v)];
+            bool interior = topo_.ring_start[v + 1] > topo_.ring_start[v];
+            for (std::int32_t i = topo_.ring_start[v]; i < topo_.ring_start[v + 1] && interior; ++i)
+                interior = label(topo_.ring[i]) == label(v);
             supported[std::size_t(r)] = interior;
         }
-        // Each fleck vertex takes the label most of its neighbours outside
-        // the fleck carry.
-        std::vector<std::pair<std::int32_t, int>> moves;
+        std::vector<std::pair<std::int32_t, VertexLabel>> moves;
         for (const std::int32_t v : small) {
-            const std::int32_t r = comp[std::size_t(v)];
+            const std::int32_t r = comp_[std::size_t(v)];
             if (supported[std::size_t(r)]) continue;
-            int best = label[std::size_t(v)], best_count = 0;
-            for (std::int32_t i = topo.ring_start[v]; i < topo.ring_start[v + 1]; ++i) {
-                const std::int32_t w = topo.ring[i];
-                if (comp[std::size_t(w)] == r) continue;
-                const int candidate = label[std::size_t(w)];
+            VertexLabel best = label(v);
+            int best_count = 0;
+            for (std::int32_t i = topo_.ring_start[v]; i < topo_.ring_start[v + 1]; ++i) {
+                const std::int32_t w = topo_.ring[i];
+                if (comp_[std::size_t(w)] == r) continue;
+                const VertexLabel candidate = label(w);
                 int count = 0;
-                for (std::int32_t j = topo.ring_start[v]; j < topo.ring_start[v + 1]; ++j)
-                    count += comp[std::size_t(topo.ring[j])] != r && label[std::size_t(topo.ring[j])] == candidate;
+                for (std::int32_t j = topo_.ring_start[v]; j < topo_.ring_start[v + 1]; ++j)
+                    count += comp_[std::size_t(topo_.ring[j])] != r && label(topo_.ring[j]) == candidate;
                 if (count > best_count || (count == best_count && candidate > best)) best = candidate, best_count = count;
             }
-            if (best != label[std::size_t(v)]) moves.emplace_back(v, best);
+            if (best != label(v)) moves.emplace_back(v, best);
         }
-        if (moves.empty()) break;
-        {
-            // The moved vertices join the regions they now touch: regions
-            // grown again locally, joined where a moved vertex bridges two.
-            std::vector<std::int32_t> parent(comp_label.size());
-            for (std::size_t r = 0; r < parent.size(); ++r) parent[r] = std::int32_t(r);
-            auto find = [&](std::int32_t r) {
-                while (parent[std::size_t(r)] != r) r = parent[std::size_t(r)] = parent[std::size_t(parent[std::size_t(r)])];
-                return r;
-            };
-            for (const auto& [v, l] : moves) {
-                label[std::size_t(v)] = l;
-                comp[std::size_t(v)] = -2; // to be grown
+        return moves;
+    }
+
+    /// The moved vertices join the regions they now touch: regions grown
+    /// again locally, joined where a moved vertex bridges two, then numbered
+    /// again.
+    void regrow_moved(const std::vector<std::pair<std::int32_t, VertexLabel>>& moves) {
+        std::vector<std::int32_t> parent(comp_label_.size());
+        for (std::size_t r = 0; r < parent.size(); ++r) parent[r] = std::int32_t(r);
+        auto find = [&](std::int32_t r) {
+            while (parent[std::size_t(r)] != r) r = parent[std::size_t(r)] = parent[std::size_t(parent[std::size_t(r)])];
+            return r;
+        };
+        constexpr std::int32_t kToGrow = -2;
+        for (const auto& [v, l] : moves) {
+            label_[std::size_t(v)] = l;
+            comp_[std::size_t(v)] = kToGrow;
+        }
+        std::vector<std::int32_t> stack;
+        for (const auto& [v0, l0] : moves) {
+            if (comp_[std::size_t(v0)] != kToGrow) continue;
+            if (!l0.seen()) {
+                comp_[std::size_t(v0)] = -1;
+                continue;
             }
-            for (const auto& [v0, l0] : moves) {
-                if (comp[std::size_t(v0)] != -2) continue;
-                if (l0 < 0) {
-                    comp[std::size_t(v0)] = -1;
-                    continue;
-                }
-                const auto id = std::int32_t(comp_label.size());
-                comp_label.push_back(l0);
-                parent.push_back(id);
-                comp[std::size_t(v0)] = id;
-                stack.push_back(v0);
-                while (!stack.empty()) {
-                    const std::int32_t v = stack.back();
-                    stack.pop_back();
-                    for (std::int32_t i = topo.ring_start[v]; i < topo.ring_start[v + 1]; ++i) {
-                        const std::int32_t w = topo.ring[i];
-                        if (label[std::size_t(w)] != l0) continue;
-                        if (comp[std::size_t(w)] == -2) {
-                            comp[std::size_t(w)] = id;
-                            stack.push_back(w);
-                        } else if (comp[std::size_t(w)] >= 0) {
-                            parent[std::size_t(find(comp[std::size_t(w)]))] = find(id);
-                        }
+            const auto id = std::int32_t(comp_label_.size());
+            comp_label_.push_back(l0);
+            parent.push_back(id);
+            comp_[std::size_t(v0)] = id;
+            stack.push_back(v0);
+            while (!stack.empty()) {
+                const std::int32_t v = stack.back();
+                stack.pop_back();
+                for (std::int32_t i = topo_.ring_start[v]; i < topo_.ring_start[v + 1]; ++i) {
+                    const std::int32_t w = topo_.ring[i];
+                    if (label(w) != l0) continue;
+                    if (comp_[std::size_t(w)] == kToGrow) {
+                        comp_[std::size_t(w)] = id;
+                        stack.push_back(w);
+                    } else if (comp_[std::size_t(w)] >= 0) {
+                        parent[std::size_t(find(comp_[std::size_t(w)]))] = find(id);
                     }
                 }
             }
-            // Number the regions that still hold vertices.
-            std::vector<std::int32_t> index(comp_label.size(), -1);
-            std::vector<int> labels;
-            for (std::int32_t v = 0; v < V; ++v) {
-                std::int32_t& r = comp[std::size_t(v)];
-                if (r < 0) continue;
-                const std::int32_t root = find(r);
-                if (index[std::size_t(root)] < 0) {
-                    index[std::size_t(root)] = std::int32_t(labels.size());
-                    labels.push_back(comp_label[std::size_t(root)]);
-                }
-                r = index[std::size_t(root)];
-            }
-            comp_label = std::move(labels);
-            seeds += comp_label.size();
         }
-    }
-    map.stats.seeds = seeds;
-    for (const int l : label) {
-        if (l >= 0) ++map.stats.visible_vertices;
-        if (l == kOccluded) ++map.stats.occluded_vertices;
+        std::vector<std::int32_t> index(comp_label_.size(), -1);
+        std::vector<VertexLabel> labels;
+        for (std::int32_t v = 0; v < V_; ++v) {
+            std::int32_t& r = comp_[std::size_t(v)];
+            if (r < 0) continue;
+            const std::int32_t root = find(r);
+            if (index[std::size_t(root)] < 0) {
+                index[std::size_t(root)] = std::int32_t(labels.size());
+                labels.push_back(comp_label_[std::size_t(root)]);
+            }
+            r = index[std::size_t(root)];
+        }
+        comp_label_ = std::move(labels);
     }
 
-    // Where fronts stop on edges whose labels differ (rules 3 and 4).
-    std::vector<std::int32_t> cut_edges;
-    for (std::int32_t e = 0; e < E; ++e) {
-        const int la = label[std::size_t(topo.edge_vertices[e][0])], lb = label[std::size_t(topo.edge_vertices[e][1])];
-        if (la != lb) cut_edges.push_back(e); // both hidden: a junction may still use its middle
+    // ---- place edge points ----------------------------------------------
+
+    /// Where fronts stop on edges whose labels differ (rules 3 and 4).
+    void place_edge_points() {
+        for (std::int32_t e = 0; e < E_; ++e)
+            if (label(topo_.edge_vertices[e][0]) != label(topo_.edge_vertices[e][1]))
+                cut_edges_.push_back(e); // both hidden: a junction may still use its middle
+        edge_point_.assign(std::size_t(E_), glm::dvec3(0.0));
+        // Which faces are turned to the viewer (by their own winding).
+        front_face_.assign(topo_.n_faces(), 0);
+        parallel_for(topo_.n_faces(), [&](std::size_t f) {
+            const auto& fv = topo_.face_vertices[f];
+            const glm::dvec3 &p0 = position(fv[0]), &p1 = position(fv[1]), &p2 = position(fv[2]);
+            front_face_[f] = glm::dot(glm::cross(p1 - p0, p2 - p0), camera_.to_viewer((p0 + p1 + p2) / 3.0)) > 0.0;
+        }, 4096);
+        const ContourImage occluder(engine_, visual_, projection_, [&](const glm::dvec3& p) { return depth_of(p); });
+        parallel_for(cut_edges_.size(), [&](std::size_t i) {
+            const std::int32_t e = cut_edges_[i];
+            edge_point_[std::size_t(e)] = edge_point(e, occluder);
+        }, 64);
     }
-    std::vector<glm::dvec3> edge_point(static_cast<std::size_t>(E));
-    auto depth_of = [&](const glm::dvec3& p) {
-        return camera.orthographic() ? glm::dot(p, camera.forward()) : glm::dot(p - camera.eye, camera.forward());
-    };
-    // Which faces are turned to the viewer (by their own winding).
-    std::vector<char> front_face(topo.n_faces(), 0);
-    parallel_for(topo.n_faces(), [&](std::size_t f) {
-        const auto& fv = topo.face_vertices[f];
-        const glm::dvec3 &p0 = topo.positions[std::size_t(fv[0])], &p1 = topo.positions[std::size_t(fv[1])],
-                         &p2 = topo.positions[std::size_t(fv[2])];
-        front_face[f] = glm::dot(glm::cross(p1 - p0, p2 - p0), camera.to_viewer((p0 + p1 + p2) / 3.0)) > 0.0;
-    }, 4096);
-    const ContourImage occluder(engine, visual, projection, depth_of);
-    auto snaxel_point = [&](const ContourResult& r, std::int32_t e, int a, int b) {
+
+    /// Where @p r's front crosses edge @p e from @p a to @p b: its snaxel
+    /// there, else the root of its function's linear interpolant.
+    glm::dvec3 snaxel_point(const ContourResult& r, std::int32_t e, std::int32_t a, std::int32_t b) const {
         const std::int32_t s = r.fronts.edge_snaxel.empty() ? MeshTopology::kNone : r.fronts.edge_snaxel[std::size_t(e)];
-        if (s != MeshTopology::kNone) return engine.position(r.fronts.snaxels[std::size_t(s)]);
+        if (s != MeshTopology::kNone) return engine_.position(r.fronts.snaxels[std::size_t(s)]);
         const double t = linear_root(r.vertex_f[std::size_t(a)], r.vertex_f[std::size_t(b)]);
-        return glm::mix(topo.positions[std::size_t(a)], topo.positions[std::size_t(b)], t);
-    };
-    parallel_for(cut_edges.size(), [&](std::size_t i) {
-        const std::int32_t e = cut_edges[i];
-        const std::int32_t a = topo.edge_vertices[e][0], b = topo.edge_vertices[e][1];
-        const int la = label[std::size_t(a)], lb = label[std::size_t(b)];
-        glm::dvec3& out = edge_point[std::size_t(e)];
-        if (la < 0 && lb < 0) {
-            out = 0.5 * (topo.positions[std::size_t(a)] + topo.positions[std::size_t(b)]);
-        } else if (la == kAway || lb == kAway) {
-            out = snaxel_point(visual, e, a, b); // the visual contour (closed meshes)
-        } else if ((la >= kBack) != (lb >= kBack) && la >= 0 && lb >= 0) {
-            out = snaxel_point(visual, e, a, b); // the visual contour between the two sides
-        } else if (la == kOccluded || lb == kOccluded) {
-            // Rule 2: the visible side's front stops where the edge's image
-            // meets the image of a nearer front (the occluder's visual
-            // contour), so both sides of the occlusion share one curve. If
-            // no such crossing shows, the ray to the viewer is bisected.
-            const std::int32_t from = la < 0 ? b : a, to = la < 0 ? a : b;
-            const glm::dvec3& p0 = topo.positions[std::size_t(from)];
-            const glm::dvec3& p1 = topo.positions[std::size_t(to)];
-            const double t = occluder.first_crossing(projection.project(p0), projection.project(p1),
-                                                     [&](double s) { return depth_of(glm::mix(p0, p1, s)); });
-            if (t >= 0.0) {
-                out = glm::mix(p0, p1, t);
-            } else {
-                double lo = from == a ? 0.0 : 1.0, hi = 1.0 - lo; // lo visible, hi occluded
-                const double pixels = glm::length(projection.project(p0) - projection.project(p1));
-                const int steps = std::clamp(int(std::ceil(std::log2(std::max(pixels / in.tolerance_px, 1.0)))), 1,
-                                             in.bisection_steps);
-                for (int step = 0; step < steps; ++step) {
-                    const double mid = 0.5 * (lo + hi);
-                    (rays.occluded(sampler.edge_ray(e, mid)) ? hi : lo) = mid;
-                }
-                out = glm::mix(topo.positions[std::size_t(a)], topo.positions[std::size_t(b)], 0.5 * (lo + hi));
-            }
-        } else if (la >= kBack) {
-            // Two classes on the far side: the root of N.L at the level between them.
-            const int top = std::max(la, lb) - kBack;
-            const double level = levels[std::size_t(std::max(top - 1, 0))];
-            out = glm::mix(topo.positions[std::size_t(a)], topo.positions[std::size_t(b)],
-                           linear_root(nl[std::size_t(a)] - level, nl[std::size_t(b)] - level));
-        } else {
-            // Two shading classes: the front of the brighter one's kind.
-            const int top = std::max(la, lb);
-            const ContourResult* kind = top >= highlight ? in.gleams[std::size_t(top - highlight)]
-                                        : top >= 2       ? in.isophotes[std::size_t(top - 2)]
-                                                         : in.shadow;
-            out = kind ? snaxel_point(*kind, e, a, b)
-                       : 0.5 * (topo.positions[std::size_t(a)] + topo.positions[std::size_t(b)]);
-        }
-    }, 64);
+        return glm::mix(position(a), position(b), t);
+    }
 
-    // Each region's part of every face it touches, walked counter-clockwise
-    // over corners, edge points and (where three labels meet) a junction.
-    // Its steps across the face, or along a mesh boundary, are the region's
-    // outline; steps along interior edges are shared with the next face.
-    const std::int64_t junction_base = std::int64_t(V) + E;
-    std::vector<Step> steps;
-    std::vector<std::pair<std::int32_t, std::int32_t>> rim_faces; // (face, region) taken past the contour
-    // Points past the contour: where N.L crosses a level on a face edge (one
-    // per edge and level, shared by both faces) or across a face.
-    const std::int64_t level_base = junction_base + std::int64_t(topo.n_faces());
-    const std::int64_t across_base = level_base + std::int64_t(E) * std::int64_t(levels.size());
-    std::unordered_map<std::int64_t, glm::dvec3> extra_point;
-    std::unordered_map<std::int64_t, double> extra_nl;
-    // N.L of every vertex (those turned away were not lit above).
-    for (std::int32_t v = 0; v < V; ++v)
-        if (label[std::size_t(v)] == kAway) nl[std::size_t(v)] = glm::dot(topo.normals[std::size_t(v)], light.to_light(topo.positions[std::size_t(v)]));
-    auto class_of = [&](double value) {
-        int cls = in.shadow && value < 0.0 ? 0 : 1;
-        for (int k = 0; k < bands; ++k)
-            if (cls != 0 && value >= levels[std::size_t(k + 1)]) cls = 2 + k;
-        return cls;
+    glm::dvec3 edge_point(std::int32_t e, const ContourImage& occluder) const {
+        const std::int32_t a = topo_.edge_vertices[e][0], b = topo_.edge_vertices[e][1];
+        const VertexLabel la = label(a), lb = label(b);
+        if (!la.seen() && !lb.seen()) return 0.5 * (position(a) + position(b));
+        if (la.is_away() || lb.is_away()) return snaxel_point(visual_, e, a, b); // the visual contour (closed meshes)
+        if (la.on_far_side() != lb.on_far_side() && la.seen() && lb.seen())
+            return snaxel_point(visual_, e, a, b); // the visual contour between the two sides
+        if (la.is_occluded() || lb.is_occluded()) return occlusion_point(e, occluder);
+        if (la.on_far_side()) {
+            // Two classes on the far side: the root of N.L at the level between them.
+            const int top = std::max(la, lb).cls();
+            const double level = levels_[std::size_t(std::max(top - 1, 0))];
+            return glm::mix(position(a), position(b), linear_root(nl_[std::size_t(a)] - level, nl_[std::size_t(b)] - level));
+        }
+        // Two shading classes: the front of the brighter one's kind.
+        const int top = std::max(la, lb).cls();
+        const ContourResult* kind = top >= highlight_ ? in_.gleams[std::size_t(top - highlight_)]
+                                    : top >= 2        ? in_.isophotes[std::size_t(top - 2)]
+                                                      : in_.shadow;
+        return kind ? snaxel_point(*kind, e, a, b) : 0.5 * (position(a) + position(b));
+    }
+
+    /// Rule 2: the visible side's front stops where the edge's image meets
+    /// the image of a nearer front (the occluder's visual contour), so both
+    /// sides of the occlusion share one curve. If no such crossing shows,
+    /// the ray to the viewer is bisected.
+    glm::dvec3 occlusion_point(std::int32_t e, const ContourImage& occluder) const {
+        const std::int32_t a = topo_.edge_vertices[e][0], b = topo_.edge_vertices[e][1];
+        const std::int32_t from = label(a).seen() ? a : b, to = label(a).seen() ? b : a;
+        const glm::dvec3& p0 = position(from);
+        const glm::dvec3& p1 = position(to);
+        const double t = occluder.first_crossing(projection_.project(p0), projection_.project(p1),
+                                                 [&](double s) { return depth_of(glm::mix(p0, p1, s)); });
+        if (t >= 0.0) return glm::mix(p0, p1, t);
+        double lo = from == a ? 0.0 : 1.0, hi = 1.0 - lo; // lo visible, hi occluded
+        const double pixels = glm::length(projection_.project(p0) - projection_.project(p1));
+        const int steps =
+            std::clamp(int(std::ceil(std::log2(std::max(pixels / in_.tolerance_px, 1.0)))), 1, in_.bisection_steps);
+        for (int step = 0; step < steps; ++step) {
+            const double mid = 0.5 * (lo + hi);
+            (rays_.occluded(sampler_.edge_ray(e, mid)) ? hi : lo) = mid;
+        }
+        return glm::mix(position(a), position(b), 0.5 * (lo + hi));
+    }
+
+    // ---- walk faces -----------------------------------------------------
+
+    glm::dvec3 point_of(PointId id) const {
+        switch (ids_.kind(id)) {
+        case PointKind::Vertex: return position(ids_.element(id));
+        case PointKind::EdgePoint: return edge_point_[std::size_t(ids_.element(id))];
+        case PointKind::Junction: {
+            const auto& fe = topo_.face_edges[std::size_t(ids_.element(id))];
+            return (edge_point_[std::size_t(fe[0])] + edge_point_[std::size_t(fe[1])] + edge_point_[std::size_t(fe[2])]) / 3.0;
+        }
+        default: return extra_point_.at(id.value);
+        }
+    }
+    /// N.L at a point of a piece: at a vertex its own, on an edge
+    /// interpolated along it, at a junction the mean of its face's edge points'.
+    double nl_on_edge(std::int32_t e) const {
+        const std::int32_t u = topo_.edge_vertices[e][0], w = topo_.edge_vertices[e][1];
+        const double len = glm::length(position(w) - position(u));
+        const double t = len > 0.0 ? glm::length(edge_point_[std::size_t(e)] - position(u)) / len : 0.5;
+        return glm::mix(nl_[std::size_t(u)], nl_[std::size_t(w)], std::clamp(t, 0.0, 1.0));
+    }
+    double nl_of(PointId id) const {
+        switch (ids_.kind(id)) {
+        case PointKind::Vertex: return nl_[std::size_t(ids_.element(id))];
+        case PointKind::EdgePoint: return nl_on_edge(ids_.element(id));
+        default: {
+            const auto& fe = topo_.face_edges[std::size_t(ids_.element(id))];
+            return (nl_on_edge(fe[0]) + nl_on_edge(fe[1]) + nl_on_edge(fe[2])) / 3.0;
+        }
+        }
+    }
+
+    /// The faces the walk visits. A face turned away from the viewer that
+    /// lies in a region of the near side (past the contour, or at a crease
+    /// where the normals are averaged) is hidden, yet its image, wound the
+    /// other way, would cancel the faces it folds over: its pieces are
+    /// walked backwards, so they add nothing to their regions' images.
+    void select_faces() {
+        folded_.assign(topo_.n_faces(), 0);
+        std::vector<char> walked(topo_.n_faces(), 0);
+        parallel_for(topo_.n_faces(), [&](std::size_t f) {
+            const auto& fv = topo_.face_vertices[f];
+            const auto& fe = topo_.face_edges[f];
+            bool near_side = false;
+            for (int k = 0; k < 3; ++k) {
+                const std::int32_t r = comp_[std::size_t(fv[std::size_t(k)])];
+                near_side = near_side || (r >= 0 && !comp_label_[std::size_t(r)].on_far_side());
+            }
+            folded_[f] = near_side && !front_face_[f];
+            // Only faces with a cut edge or a seen mesh-boundary edge, and
+            // folded faces, have such steps.
+            bool walk = folded_[f];
+            for (int k = 0; k < 3 && !walk; ++k) {
+                const VertexLabel la = label(fv[std::size_t(k)]), lb = label(fv[std::size_t((k + 1) % 3)]);
+                walk = la != lb || (la.seen() && topo_.is_boundary_edge(fe[std::size_t(k)]));
+            }
+            walked[f] = walk;
+        }, 4096);
+        faces_.reserve(2 * cut_edges_.size());
+        for (std::size_t f = 0; f < topo_.n_faces(); ++f)
+            if (walked[f]) faces_.push_back(std::int32_t(f));
+    }
+
+    /// What a thread's share of the walk adds.
+    struct WalkOut {
+        std::vector<Step> steps;
+        std::vector<std::pair<std::int32_t, std::int32_t>> rim_faces; ///< (face, region) taken past the contour
     };
-    std::unordered_map<int, std::int32_t> outline_regions; // class -> region of the strips past the contour
-    std::vector<std::pair<std::int32_t, std::int32_t>> vertexless_faces; // (strip region, face): where the strips lie
-    auto outline_region = [&](int cls) {
-        const auto it = outline_regions.find(cls);
-        if (it != outline_regions.end()) return it->second;
-        const auto id = std::int32_t(comp_label.size());
-        comp_label.push_back(cls);
-        outline_regions[cls] = id;
+
+    /// Each region's part of every face it touches, walked counter-clockwise
+    /// over corners, edge points and (where three labels meet) a junction.
+    /// Its steps across the face, or along a mesh boundary, are the region's
+    /// outline; steps along interior edges are shared with the next face.
+    /// The faces are walked in parallel, each thread into its own lists.
+    void walk_faces() {
+        const auto first_strip = std::int32_t(comp_label_.size());
+        const std::size_t chunks = std::max<std::size_t>(1, std::thread::hardware_concurrency());
+        std::vector<WalkOut> walk(chunks);
+        parallel_for(chunks, [&](std::size_t chunk) {
+            for (std::size_t fi = chunk * faces_.size() / chunks; fi < (chunk + 1) * faces_.size() / chunks; ++fi)
+                walk_face(faces_[fi], walk[chunk]);
+        }, 1);
+        for (WalkOut& w : walk) {
+            steps_.insert(steps_.end(), w.steps.begin(), w.steps.end());
+            rim_faces_.insert(rim_faces_.end(), w.rim_faces.begin(), w.rim_faces.end());
+        }
+        number_strips_by_class(first_strip);
+    }
+
+    /// The strip regions were numbered as the threads came upon them: they
+    /// are numbered again in class order, so the map is the same every run.
+    void number_strips_by_class(std::int32_t first_strip) {
+        if (outline_regions_.empty()) return;
+        std::vector<std::pair<int, std::int32_t>> by_class(outline_regions_.begin(), outline_regions_.end());
+        std::sort(by_class.begin(), by_class.end());
+        std::vector<std::int32_t> renumbered(comp_label_.size());
+        for (std::size_t r = 0; r < renumbered.size(); ++r) renumbered[r] = std::int32_t(r);
+        for (std::size_t i = 0; i < by_class.size(); ++i) {
+            const std::int32_t id = first_strip + std::int32_t(i);
+            renumbered[std::size_t(by_class[i].second)] = id;
+            comp_label_[std::size_t(id)] = VertexLabel::near_side(by_class[i].first);
+            outline_regions_[by_class[i].first] = id;
+        }
+        for (Step& step : steps_) step = Step(renumbered[std::size_t(step.region())], step.from(), step.to);
+        for (auto& [r, f] : vertexless_faces_) r = renumbered[std::size_t(r)];
+    }
+
+    /// A face's corners, their labels and regions, and the pieces they cut it into.
+    struct FaceWalk {
+        std::int32_t f;
+        const std::array<std::int32_t, 3>& fv;
+        const std::array<std::int32_t, 3>& fe;
+        VertexLabel l[3];
+        std::int32_t c[3];
+        bool three; ///< three labels meet: the pieces share a junction
+        // The current piece: (id, face edge it leads along, or -1 across the face).
+        PointId ids[7];
+        int along[7];
+    };
+
+    /// The piece of the corners @p picks selects, counter-clockwise, into
+    /// w.ids and w.along; its number of points.
+    template <class Picks> int piece(FaceWalk& w, Picks&& picks) const {
+        int n = 0;
+        for (int k = 0; k < 3; ++k) {
+            const int k1 = (k + 1) % 3;
+            if (picks(k)) w.ids[n] = ids_.vertex(w.fv[std::size_t(k)]), w.along[n++] = k;
+            if (w.l[k] != w.l[k1] && (picks(k) || picks(k1))) {
+                w.ids[n] = ids_.edge(w.fe[std::size_t(k)]);
+                w.along[n++] = picks(k1) ? k : -1; // toward the next corner: along edge k; else across
+                if (w.three && picks(k)) w.ids[n] = ids_.junction(w.f), w.along[n++] = -1;
+            }
+        }
+        return n;
+    }
+
+    void walk_face(std::int32_t f, WalkOut& out) {
+        const auto& fv = topo_.face_vertices[std::size_t(f)];
+        const auto& fe = topo_.face_edges[std::size_t(f)];
+        FaceWalk w{f, fv, fe, {label(fv[0]), label(fv[1]), label(fv[2])},
+                   {comp_[std::size_t(fv[0])], comp_[std::size_t(fv[1])], comp_[std::size_t(fv[2])]}, false, {}, {}};
+        if (!w.l[0].seen() && !w.l[1].seen() && !w.l[2].seen()) return;
+        const bool uniform = w.l[0] == w.l[1] && w.l[1] == w.l[2];
+        const bool rim = topo_.is_boundary_edge(fe[0]) || topo_.is_boundary_edge(fe[1]) || topo_.is_boundary_edge(fe[2]);
+        if (uniform && !rim && !folded_[std::size_t(f)]) return;
+        w.three = w.l[0] != w.l[1] && w.l[1] != w.l[2] && w.l[0] != w.l[2];
+        for (int owner = 0; owner < 3; ++owner) {
+            const std::int32_t r = w.c[owner];
+            if (r < 0) continue;
+            bool seen = false; // each region once per face
+            for (int k = 0; k < owner; ++k) seen = seen || w.c[k] == r;
+            if (seen) continue;
+            const int n = piece(w, [&](int k) { return w.c[k] == r; });
+            // A folded piece: walked forwards and backwards its steps across
+            // the face and along the mesh's boundary cancel; its steps
+            // along interior edges remain, backwards.
+            const bool backwards = folded_[std::size_t(f)] && !comp_label_[std::size_t(r)].on_far_side();
+            for (int i = 0; i < n; ++i) {
+                const PointId a = w.ids[i], b = w.ids[(i + 1) % n];
+                const bool across = w.along[i] < 0 || (ids_.kind(a) != PointKind::Vertex && ids_.kind(b) != PointKind::Vertex);
+                const bool outline = across || topo_.is_boundary_edge(fe[std::size_t(w.along[i])]);
+                if (backwards) {
+                    if (!outline) out.steps.emplace_back(r, b, a);
+                } else if (outline) {
+                    out.steps.emplace_back(r, a, b);
+                }
+            }
+        }
+        walk_part_past_contour(w, out);
+    }
+
+    /// A face turned to the viewer with corners past the contour of
+    /// interpolated normals (turned away by their normals): the face is seen
+    /// whole, so its part past the contour joins the region of its seen
+    /// corners (the one holding most), up to the mesh's own outline instead
+    /// of the approximate one. The part's steps cancel the region's steps
+    /// across the face (and those of the next such face).
+    void walk_part_past_contour(FaceWalk& w, WalkOut& out) {
+        int away = 0, front = 0, most = 0;
+        std::int32_t region = -1;
+        for (int k = 0; k < 3; ++k) {
+            if (w.l[k].is_away()) ++away;
+            if (w.c[k] < 0) continue;
+            ++front;
+            int count = 0;
+            for (int j = 0; j < 3; ++j) count += w.c[j] == w.c[k];
+            if (count > most) most = count, region = w.c[k];
+        }
+        if (away == 0 || front == 0 || away + front != 3) return; // no hidden corner
+        if (region < 0 || !front_face_[std::size_t(w.f)]) return;
+        // Only where the face itself is seen (past a fold it may lie behind the nearer sheet).
+        if (face_hidden(w.f)) return;
+        const int n = piece(w, [&](int k) { return w.l[k].is_away(); });
+        // The part keeps its region's class where the shading there agrees.
+        double nls[7];
+        bool one_class = true;
+        for (int k = 0; k < n; ++k) {
+            nls[k] = nl_of(w.ids[k]);
+            one_class = one_class && VertexLabel::near_side(class_of(nls[k])) == comp_label_[std::size_t(region)];
+        }
+        if (one_class) { // the usual case: no level crosses the part
+            for (int k = 0; k < n; ++k) out.steps.emplace_back(region, w.ids[k], w.ids[(k + 1) % n]);
+        } else {
+            std::vector<RimPoint> part;
+            for (int k = 0; k < n; ++k) part.push_back({w.ids[k], w.along[k], point_of(w.ids[k]), nls[k]});
+            split_part_by_class(std::move(part), w.f, region, out);
+        }
+        out.rim_faces.emplace_back(w.f, region);
+    }
+
+    /// Where N.L crosses a level inside the part (a straight line: N.L is
+    /// linear over the face), the other side goes to the outline strip of
+    /// that class.
+    void split_part_by_class(std::vector<RimPoint> part, std::int32_t f, std::int32_t region, WalkOut& out) {
+        const std::lock_guard<std::mutex> lock(shared_points_);
+        const auto& fe = topo_.face_edges[std::size_t(f)];
+        std::vector<std::size_t> levels;
+        for (std::size_t level = in_.shadow ? 0 : 1; level < levels_.size(); ++level) levels.push_back(level);
+        const auto parts = detail::cut_polygon(std::move(part), levels, [&](const std::vector<RimPoint>& poly, std::size_t level) {
+            return split_rim(poly, f, level, fe);
+        });
+        for (const auto& poly : parts) {
+            double mid_nl = 0.0;
+            for (const RimPoint& q : poly) mid_nl += q.nl;
+            mid_nl /= double(poly.size());
+            const int cls = class_of(mid_nl);
+            const std::int32_t target =
+                VertexLabel::near_side(cls) == comp_label_[std::size_t(region)] ? region : outline_region(cls);
+            if (target != region) vertexless_faces_.emplace_back(target, f);
+            for (std::size_t k = 0; k < poly.size(); ++k) out.steps.emplace_back(target, poly[k].id, poly[(k + 1) % poly.size()].id);
+        }
+    }
+
+    /// The region of the strips of class @p cls past the contour (one per class).
+    std::int32_t outline_region(int cls) {
+        const auto it = outline_regions_.find(cls);
+        if (it != outline_regions_.end()) return it->second;
+        const auto id = std::int32_t(comp_label_.size());
+        comp_label_.push_back(VertexLabel::near_side(cls));
+        outline_regions_[cls] = id;
         return id;
-    };
-    auto split_rim = [&](const std::vector<RimPoint>& poly, std::int32_t f, std::size_t level, double value,
-                         const std::array<std::int32_t, 3>& fe) {
-        std::vector<RimPoint> below, above;
-        const std::size_t n = poly.size();
-        for (std::size_t k = 0; k < n; ++k) {
-            const RimPoint& a = poly[k];
-            const RimPoint& b = poly[(k + 1) % n];
-            (a.nl < value ? below : above).push_back(a);
-            if ((a.nl < value) == (b.nl < value)) continue;
+    }
+
+    /// @p poly cut where N.L crosses levels_[level]: the parts below and above.
+    std::pair<std::vector<RimPoint>, std::vector<RimPoint>> split_rim(const std::vector<RimPoint>& poly, std::int32_t f,
+                                                                      std::size_t level,
+                                                                      const std::array<std::int32_t, 3>& fe) {
+        const double value = levels_[level];
+        auto crossing = [&](const RimPoint& a, const RimPoint& b, std::size_t k) {
             RimPoint q;
             q.along = a.along;
             if (a.along >= 0) {
                 // On face edge a.along: the edge's own root, the same for both faces.
                 const std::int32_t e = fe[std::size_t(a.along)];
-                const std::int32_t u = topo.edge_vertices[e][0], w = topo.edge_vertices[e][1];
-                const double t = linear_root(nl[std::size_t(u)] - value, nl[std::size_t(w)] - value);
-                q.id = level_base + std::int64_t(e) * std::int64_t(levels.size()) + std::int64_t(level);
-                q.p = glm::mix(topo.positions[std::size_t(u)], topo.positions[std::size_t(w)], t);
+                const std::int32_t u = topo_.edge_vertices[e][0], w = topo_.edge_vertices[e][1];
+                const double t = linear_root(nl_[std::size_t(u)] - value, nl_[std::size_t(w)] - value);
+                q.id = ids_.level(e, level);
+                q.p = glm::mix(position(u), position(w), t);
             } else {
                 const double t = std::clamp((value - a.nl) / (b.nl - a.nl), 0.0, 1.0);
-                q.id = across_base + (std::int64_t(f) * std::int64_t(levels.size()) + std::int64_t(level)) * 8 + std::int64_t(k);
+                q.id = ids_.across(f, level, k);
                 q.p = glm::mix(a.p, b.p, t);
             }
             q.nl = value;
-            extra_point[q.id] = q.p;
-            below.push_back(q);
-            above.push_back(q);
-        }
-        return std::make_pair(std::move(below), std::move(above));
-    };
-    auto point_of = [&](std::int64_t id) -> glm::dvec3 {
-        if (id < V) return topo.positions[std::size_t(id)];
-        if (id < junction_base) return edge_point[std::size_t(id - V)];
-        if (id < std::int64_t(V) + E + std::int64_t(topo.n_faces())) {
-            const auto& fe = topo.face_edges[std::size_t(id - junction_base)];
-            return (edge_point[std::size_t(fe[0])] + edge_point[std::size_t(fe[1])] + edge_point[std::size_t(fe[2])]) / 3.0;
-        }
-        return extra_point.at(id);
-    };
-    // N.L at a point of a piece: at a vertex its own, on an edge
-    // interpolated along it, at a junction the mean of its face's edge points'.
-    auto nl_on_edge = [&](std::int32_t e) {
-        const std::int32_t u = topo.edge_vertices[e][0], w = topo.edge_vertices[e][1];
-        const double len = glm::length(topo.positions[std::size_t(w)] - topo.positions[std::size_t(u)]);
-        const double t = len > 0.0 ? glm::length(edge_point[std::size_t(e)] - topo.positions[std::size_t(u)]) / len : 0.5;
-        return glm::mix(nl[std::size_t(u)], nl[std::size_t(w)], std::clamp(t, 0.0, 1.0));
-    };
-    auto nl_of = [&](std::int64_t id) -> double {
-        if (id < V) return nl[std::size_t(id)];
-        if (id < junction_base) return nl_on_edge(std::int32_t(id - V));
-        const auto& fe = topo.face_edges[std::size_t(id - junction_base)];
-        return (nl_on_edge(fe[0]) + nl_on_edge(fe[1]) + nl_on_edge(fe[2])) / 3.0;
-    };
-    // A face turned away from the viewer that lies in a region of the
-    // near side (past the contour, or at a crease where the normals are
-    // averaged) is hidden, yet its image, wound the other way, would cancel
-    // the faces it folds over: its pieces are walked backwards, so they add
-    // nothing to their regions' images.
-    std::vector<char> folded(topo.n_faces(), 0), walked(topo.n_faces(), 0);
-    parallel_for(topo.n_faces(), [&](std::size_t f) {
-        const auto& fv = topo.face_vertices[f];
-        const auto& fe = topo.face_edges[f];
-        bool near_side = false;
-        for (int k = 0; k < 3; ++k) {
-            const std::int32_t r = comp[std::size_t(fv[std::size_t(k)])];
-            near_side = near_side || (r >= 0 && comp_label[std::size_t(r)] < kBack);
-        }
-        folded[f] = near_side && !front_face[f];
-        // Only faces with a cut edge or a seen mesh-boundary edge, and
-        // folded faces, have such steps.
-        bool walk = folded[f];
-        for (int k = 0; k < 3 && !walk; ++k) {
-            const int la = label[std::size_t(fv[std::size_t(k)])], lb = label[std::size_t(fv[std::size_t((k + 1) % 3)])];
-            walk = la != lb || (la >= 0 && topo.is_boundary_edge(fe[std::size_t(k)]));
-        }
-        walked[f] = walk;
-    }, 4096);
-    std::vector<std::int32_t> faces;
-    faces.reserve(2 * cut_edges.size());
-    for (std::size_t f = 0; f < topo.n_faces(); ++f)
-        if (walked[f]) faces.push_back(std::int32_t(f));
-    // The faces are walked in parallel, each thread into its own lists.
-    struct WalkOut {
-        std::vector<Step> steps;
-        std::vector<std::pair<std::int32_t, std::int32_t>> rim_faces;
-    };
-    const std::size_t chunks = std::max<std::size_t>(1, std::thread::hardware_concurrency());
-    std::vector<WalkOut> walk(chunks);
-    std::mutex shared_points; // the rare crossings past the contour, and strip regions
-    parallel_for(chunks, [&](std::size_t chunk) {
-      auto& out_steps = walk[chunk].steps;
-      auto& out_rim = walk[chunk].rim_faces;
-      for (std::size_t fi = chunk * faces.size() / chunks; fi < (chunk + 1) * faces.size() / chunks; ++fi) {
-        const std::int32_t f = faces[fi];
-        const auto& fv = topo.face_vertices[std::size_t(f)];
-        const auto& fe = topo.face_edges[std::size_t(f)];
-        const int l[3] = {label[std::size_t(fv[0])], label[std::size_t(fv[1])], label[std::size_t(fv[2])]};
-        if (l[0] < 0 && l[1] < 0 && l[2] < 0) continue;
-        const bool uniform = l[0] == l[1] && l[1] == l[2];
-        const bool rim = topo.is_boundary_edge(fe[0]) || topo.is_boundary_edge(fe[1]) || topo.is_boundary_edge(fe[2]);
-        if (uniform && !rim && !folded[std::size_t(f)]) continue;
-        const bool three = l[0] != l[1] && l[1] != l[2] && l[0] != l[2];
-        const std::int32_t c[3] = {comp[std::size_t(fv[0])], comp[std::size_t(fv[1])], comp[std::size_t(fv[2])]};
-        // The piece of the corners `picks` selects: (id, face edge it leads
-        // along, or -1 across the face), counter-clockwise.
-        std::int64_t ids[7];
-        int along[7];
-        auto piece = [&](auto&& picks) {
-            int n = 0;
-            for (int k = 0; k < 3; ++k) {
-                const int k1 = (k + 1) % 3;
-                if (picks(k)) ids[n] = fv[std::size_t(k)], along[n++] = k;
-                if (l[k] != l[k1] && (picks(k) || picks(k1))) {
-                    ids[n] = std::int64_t(V) + fe[std::size_t(k)];
-                    along[n++] = picks(k1) ? k : -1; // toward the next corner: along edge k; else across
-                    if (three && picks(k)) ids[n] = junction_base + f, along[n++] = -1;
-                }
-            }
-            return n;
+            extra_point_[q.id.value] = q.p;
+            return q;
         };
-        for (int owner = 0; owner < 3; ++owner) {
-            const std::int32_t r = c[owner];
-            if (r < 0) continue;
-            bool seen = false; // each region once per face
-            for (int k = 0; k < owner; ++k) seen = seen || c[k] == r;
-            if (seen) continue;
-            const int n = piece([&](int k) { return c[k] == r; });
-            // A folded piece: walked forwards and backwards its steps across
-            // the face and along the mesh's boundary cancel; its steps
-            // along interior edges remain, backwards.
-            const bool backwards = folded[std::size_t(f)] && comp_label[std::size_t(r)] < kBack;
-            for (int i = 0; i < n; ++i) {
-                const std::int64_t a = ids[i], b = ids[(i + 1) % n];
-                const bool across = along[i] < 0 || (a >= V && b >= V);
-                const bool outline = across || topo.is_boundary_edge(fe[std::size_t(along[i])]);
-                if (backwards) {
-                    if (!outline) out_steps.emplace_back(r, b, a);
-                } else if (outline) {
-                    out_steps.emplace_back(r, a, b);
-                }
-            }
-        }
-        // A face turned to the viewer with corners past the contour of
-        // interpolated normals (turned away by their normals): the face is
-        // seen whole, so its part past the contour joins the region of its
-        // seen corners (the one holding most), up to the mesh's own outline
-        // instead of the approximate one. The
-        // part's steps cancel the region's steps across the face (and those
-        // of the next such face).
-        int away = 0, front = 0, most = 0;
-        std::int32_t region = -1;
-        for (int k = 0; k < 3; ++k) {
-            if (l[k] == kAway) ++away;
-            if (c[k] < 0) continue;
-            ++front;
-            int count = 0;
-            for (int j = 0; j < 3; ++j) count += c[j] == c[k];
-            if (count > most) most = count, region = c[k];
-        }
-        if (away == 0 || front == 0 || away + front != 3) continue; // no hidden corner
-        if (away == 0 || region < 0 || !front_face[std::size_t(f)]) continue;
-        {
-            // Only where the face itself is seen (past a fold it may lie behind the nearer sheet).
-            const glm::dvec3 centroid = (topo.positions[std::size_t(fv[0])] + topo.positions[std::size_t(fv[1])] +
-                                         topo.positions[std::size_t(fv[2])]) / 3.0;
-            const glm::dvec3 n = glm::normalize(glm::cross(topo.positions[std::size_t(fv[1])] - topo.positions[std::size_t(fv[0])],
-                                                           topo.positions[std::size_t(fv[2])] - topo.positions[std::size_t(fv[0])]));
-            if (rays.occluded(sampler.face_ray(f, centroid, n))) continue;
-        }
-        const int n = piece([&](int k) { return l[k] == kAway; });
-        // The part past the contour keeps its region's class where the
-        // shading there agrees; where N.L crosses a level inside it (a
-        // straight line: N.L is linear over the face), the other side goes to
-        // the outline strip of that class.
-        double nls[7];
-        bool one_class = true;
-        for (int k = 0; k < n; ++k) {
-            nls[k] = nl_of(ids[k]);
-            one_class = one_class && class_of(nls[k]) == comp_label[std::size_t(region)];
-        }
-        if (one_class) { // the usual case: no level crosses the part
-            for (int k = 0; k < n; ++k) out_steps.emplace_back(region, ids[k], ids[(k + 1) % n]);
-            out_rim.emplace_back(f, region);
-            continue;
-        }
-        const std::lock_guard<std::mutex> lock(shared_points);
-        std::vector<RimPoint> part;
-        for (int k = 0; k < n; ++k) part.push_back({ids[k], along[k], point_of(ids[k]), nls[k]});
-        std::vector<std::vector<RimPoint>> parts{std::move(part)};
-        for (std::size_t level = 0; level < levels.size(); ++level) {
-            if (level == 0 && !in.shadow) continue;
-            std::vector<std::vector<RimPoint>> next;
-            for (const auto& poly : parts) {
-                auto [below, above] = split_rim(poly, f, level, levels[level], fe);
-                if (below.size() >= 3) next.push_back(std::move(below));
-                if (above.size() >= 3) next.push_back(std::move(above));
-            }
-            parts = std::move(next);
-        }
-        for (const auto& poly : parts) {
-            glm::dvec3 mid(0.0);
-            double mid_nl = 0.0;
-            for (const RimPoint& q : poly) mid += q.p, mid_nl += q.nl;
-            mid_nl /= double(poly.size());
-            const int cls = class_of(mid_nl);
-            const std::int32_t target = cls == comp_label[std::size_t(region)] ? region : outline_region(cls);
-            if (target != region) vertexless_faces.emplace_back(target, f);
-            for (std::size_t k = 0; k < poly.size(); ++k) out_steps.emplace_back(target, poly[k].id, poly[(k + 1) % poly.size()].id);
-        }
-        out_rim.emplace_back(f, region);
-      }
-    }, 1);
-    for (WalkOut& w : walk) {
-        steps.insert(steps.end(), w.steps.begin(), w.steps.end());
-        rim_faces.insert(rim_faces.end(), w.rim_faces.begin(), w.rim_faces.end());
+        return detail::split_polygon(poly, [&](const RimPoint& q) { return q.nl < value; }, crossing,
+                                     [](RimPoint&, RimPoint&, bool) {});
     }
-    // Past a crease the mesh's outline can lie a few faces beyond the
-    // contour: seen faces turned to the viewer whose corners are all turned
-    // away by their normals join the region of the face they adjoin (up to
-    // three rings).
-    {
+
+    // ---- take the rim past creases ----------------------------------------
+
+    /// Past a crease the mesh's outline can lie a few faces beyond the
+    /// contour: seen faces turned to the viewer whose corners are all turned
+    /// away by their normals join the region of the face they adjoin (up to
+    /// three rings).
+    void take_rim_rings() {
         std::unordered_map<std::int32_t, std::int32_t> taken;
-        for (const auto& [f, r] : rim_faces) taken[f] = r;
-        std::vector<std::pair<std::int32_t, std::int32_t>> ring = rim_faces;
+        for (const auto& [f, r] : rim_faces_) taken[f] = r;
+        std::vector<std::pair<std::int32_t, std::int32_t>> ring = rim_faces_;
         for (int step = 0; step < 3 && !ring.empty(); ++step) {
             std::vector<std::pair<std::int32_t, std::int32_t>> next;
             for (const auto& [f, r] : ring)
-                for (const std::int32_t e : topo.face_edges[std::size_t(f)])
-                    for (const std::int32_t g : topo.edge_faces[std::size_t(e)]) {
+                for (const std::int32_t e : topo_.face_edges[std::size_t(f)])
+                    for (const std::int32_t g : topo_.edge_faces[std::size_t(e)]) {
                         if (g == MeshTopology::kNone || taken.count(g)) continue;
-                        const auto& gv = topo.face_vertices[std::size_t(g)];
-                        if (label[std::size_t(gv[0])] != kAway || label[std::size_t(gv[1])] != kAway ||
-                            label[std::size_t(gv[2])] != kAway || !front_face[std::size_t(g)])
+                        const auto& gv = topo_.face_vertices[std::size_t(g)];
+                        if (!label(gv[0]).is_away() || !label(gv[1]).is_away() || !label(gv[2]).is_away() ||
+                            !front_face_[std::size_t(g)])
                             continue;
-                        const glm::dvec3 &p0 = topo.positions[std::size_t(gv[0])], &p1 = topo.positions[std::size_t(gv[1])],
-                                         &p2 = topo.positions[std::size_t(gv[2])];
-                        if (rays.occluded(sampler.face_ray(g, (p0 + p1 + p2) / 3.0, glm::normalize(glm::cross(p1 - p0, p2 - p0)))))
-                            continue;
+                        if (face_hidden(g)) continue;
                         taken[g] = r;
                         next.emplace_back(g, r);
-                        for (int k = 0; k < 3; ++k) steps.emplace_back(r, gv[std::size_t(k)], gv[std::size_t((k + 1) % 3)]);
+                        for (int k = 0; k < 3; ++k)
+                            steps_.emplace_back(r, ids_.vertex(gv[std::size_t(k)]), ids_.vertex(gv[std::size_t((k + 1) % 3)]));
                     }
             ring = std::move(next);
         }
     }
-    // Steps walked both ways (between two pieces of one region) cancel.
-    {
+
+    // ---- cancel steps walked both ways --------------------------------------
+
+    /// Steps walked both ways (between two pieces of one region, or by a
+    /// folded piece) cancel.
+    void cancel_opposite_steps() {
         // Sorted in parallel halves, then merged.
-        const auto middle = steps.begin() + std::ptrdiff_t(steps.size() / 2);
+        const auto middle = steps_.begin() + std::ptrdiff_t(steps_.size() / 2);
         parallel_for(2, [&](std::size_t half) {
-            if (half == 0) std::sort(steps.begin(), middle);
-            else std::sort(middle, steps.end());
+            if (half == 0) std::sort(steps_.begin(), middle);
+            else std::sort(middle, steps_.end());
         }, 1);
-        std::inplace_merge(steps.begin(), middle, steps.end());
-    }
-    {
-        std::vector<char> gone(steps.size(), 0);
-        for (std::size_t i = 0; i < steps.size(); ++i) {
+        std::inplace_merge(steps_.begin(), middle, steps_.end());
+        std::vector<char> gone(steps_.size(), 0);
+        for (std::size_t i = 0; i < steps_.size(); ++i) {
             if (gone[i]) continue;
-            const Step back(steps[i].region(), steps[i].to, steps[i].from());
-            auto it = std::lower_bound(steps.begin(), steps.end(), back);
-            while (it != steps.end() && *it == back && gone[std::size_t(it - steps.begin())]) ++it;
-            if (it != steps.end() && *it == back) gone[i] = gone[std::size_t(it - steps.begin())] = 1;
+            const Step back(steps_[i].region(), steps_[i].to, steps_[i].from());
+            auto it = std::lower_bound(steps_.begin(), steps_.end(), back);
+            while (it != steps_.end() && *it == back && gone[std::size_t(it - steps_.begin())]) ++it;
+            if (it != steps_.end() && *it == back) gone[i] = gone[std::size_t(it - steps_.begin())] = 1;
         }
         std::size_t kept = 0;
-        for (std::size_t i = 0; i < steps.size(); ++i)
-            if (!gone[i]) steps[kept++] = steps[i];
-        steps.resize(kept);
+        for (std::size_t i = 0; i < steps_.size(); ++i)
+            if (!gone[i]) steps_[kept++] = steps_[i];
+        steps_.resize(kept);
     }
 
-    // Chain each region's steps into loops and project them.
-    std::vector<char> used(steps.size(), 0);
-    std::vector<MapRegion> regions(comp_label.size());
-    std::vector<double> depth_sum(comp_label.size(), 0.0);
-    std::vector<std::size_t> depth_n(comp_label.size(), 0);
-    for (std::int32_t v = 0; v < V; ++v) {
-        const std::int32_t r = comp[std::size_t(v)];
-        if (r < 0) continue;
-        const glm::dvec3& p = topo.positions[std::size_t(v)];
-        depth_sum[std::size_t(r)] += camera.orthographic() ? glm::dot(p, camera.forward()) : glm::length(p - camera.eye);
-        ++depth_n[std::size_t(r)];
-    }
-    for (const auto& [r, f] : vertexless_faces) {
-        const auto& fv = topo.face_vertices[std::size_t(f)];
-        const glm::dvec3 p = (topo.positions[std::size_t(fv[0])] + topo.positions[std::size_t(fv[1])] + topo.positions[std::size_t(fv[2])]) / 3.0;
-        depth_sum[std::size_t(r)] += camera.orthographic() ? glm::dot(p, camera.forward()) : glm::length(p - camera.eye);
-        ++depth_n[std::size_t(r)];
-    }
-    for (std::size_t i = 0; i < steps.size(); ++i) {
-        if (used[i]) continue;
-        const std::int32_t r = steps[i].region();
-        const std::int64_t first = steps[i].from();
-        std::vector<glm::dvec2> loop;
-        std::size_t at = i;
-        while (true) {
-            used[at] = 1;
-            loop.push_back(projection.project(point_of(steps[at].from())));
-            const std::int64_t to = steps[at].to;
-            if (to == first) break;
-            auto it = std::lower_bound(steps.begin(), steps.end(), Step(r, to, -1));
-            while (it != steps.end() && it->region() == r && it->from() == to && used[std::size_t(it - steps.begin())]) ++it;
-            if (it == steps.end() || it->region() != r || it->from() != to) { // an outline that does not close
-                ++map.stats.open_outlines;
-                break;
+    // ---- chain outlines -----------------------------------------------------
+
+    /// Chain each region's steps into loops and project them.
+    void chain_outlines() {
+        regions_.assign(comp_label_.size(), MapRegion{});
+        std::vector<char> used(steps_.size(), 0);
+        for (std::size_t i = 0; i < steps_.size(); ++i) {
+            if (used[i]) continue;
+            const std::int32_t r = steps_[i].region();
+            const PointId first = steps_[i].from();
+            std::vector<glm::dvec2> loop;
+            std::size_t at = i;
+            while (true) {
+                used[at] = 1;
+                loop.push_back(projection_.project(point_of(steps_[at].from())));
+                const PointId to = steps_[at].to;
+                if (to == first) break;
+                auto it = std::lower_bound(steps_.begin(), steps_.end(), Step(r, to, PointId{-1}));
+                while (it != steps_.end() && it->region() == r && it->from() == to && used[std::size_t(it - steps_.begin())]) ++it;
+                if (it == steps_.end() || it->region() != r || it->from() != to) { // an outline that does not close
+                    ++map_.stats.open_outlines;
+                    break;
+                }
+                at = std::size_t(it - steps_.begin());
             }
-            at = std::size_t(it - steps.begin());
+            if (loop.size() >= 3) regions_[std::size_t(r)].polygons.push_back(std::move(loop));
         }
-        if (loop.size() >= 3) regions[std::size_t(r)].polygons.push_back(std::move(loop));
     }
-    // Classes, areas (signed loop areas add up: holes wind the other way)
-    // and depth order.
-    std::vector<std::size_t> order(regions.size());
-    for (std::size_t r = 0; r < regions.size(); ++r) {
-        const int cls = comp_label[r] >= kBack ? comp_label[r] - kBack : comp_label[r];
-        MapRegion& region = regions[r];
-        region.cls = cls == 0 ? RegionClass::Shadow : cls == 1 ? RegionClass::Lit : cls >= highlight ? RegionClass::Highlight : RegionClass::Band;
-        region.k = cls >= highlight ? in.gleams[std::size_t(cls - highlight)]->spec.k
-                   : cls >= 2      ? in.isophotes[std::size_t(cls - 2)]->spec.k
-                                   : 0.0;
-        double signed_area = 0.0;
-        for (const auto& poly : region.polygons)
-            for (std::size_t j = 0; j < poly.size(); ++j) {
-                const glm::dvec2& p = poly[j];
-                const glm::dvec2& q = poly[(j + 1) % poly.size()];
-                signed_area += p.x * q.y - q.x * p.y;
-            }
-        region.area = 0.5 * std::abs(signed_area);
-        order[r] = r;
+
+    // ---- class and rank regions ---------------------------------------------
+
+    /// Classes, areas (signed loop areas add up: holes wind the other way)
+    /// and depth order (by the mean distance of the region's vertices, and
+    /// of the faces of strips that hold none).
+    void class_and_rank_regions() {
+        std::vector<double> depth_sum(comp_label_.size(), 0.0);
+        std::vector<std::size_t> depth_n(comp_label_.size(), 0);
+        auto add_depth = [&](std::int32_t r, const glm::dvec3& p) {
+            depth_sum[std::size_t(r)] += camera_.orthographic() ? glm::dot(p, camera_.forward()) : glm::length(p - camera_.eye);
+            ++depth_n[std::size_t(r)];
+        };
+        for (std::int32_t v = 0; v < V_; ++v)
+            if (comp_[std::size_t(v)] >= 0) add_depth(comp_[std::size_t(v)], position(v));
+        for (const auto& [r, f] : vertexless_faces_) {
+            const auto& fv = topo_.face_vertices[std::size_t(f)];
+            add_depth(r, (position(fv[0]) + position(fv[1]) + position(fv[2])) / 3.0);
+        }
+        std::vector<std::size_t> order(regions_.size());
+        for (std::size_t r = 0; r < regions_.size(); ++r) {
+            const int cls = comp_label_[r].cls();
+            MapRegion& region = regions_[r];
+            region.cls = classes_.region_class(cls);
+            region.k = classes_.level(cls);
+            double signed_area = 0.0;
+            for (const auto& poly : region.polygons)
+                for (std::size_t j = 0; j < poly.size(); ++j) {
+                    const glm::dvec2& p = poly[j];
+                    const glm::dvec2& q = poly[(j + 1) % poly.size()];
+                    signed_area += p.x * q.y - q.x * p.y;
+                }
+            region.area = 0.5 * std::abs(signed_area);
+            order[r] = r;
+        }
+        auto mean = [&](std::size_t r) { return depth_sum[r] / double(std::max<std::size_t>(depth_n[r], 1)); };
+        std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return mean(a) < mean(b); });
+        for (std::size_t i = 0; i < order.size(); ++i) regions_[order[i]].depth = std::int32_t(i);
+        map_.regions = std::move(regions_);
     }
-    std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
-        return depth_sum[a] / double(std::max<std::size_t>(depth_n[a], 1)) < depth_sum[b] / double(std::max<std::size_t>(depth_n[b], 1));
-    });
-    std::vector<std::int32_t> rank(regions.size());
-    for (std::size_t i = 0; i < order.size(); ++i) rank[order[i]] = std::int32_t(i);
-    for (std::size_t r = 0; r < regions.size(); ++r) regions[r].depth = rank[r];
-    map.vertex_region = std::move(comp);
-    map.regions = std::move(regions);
-    map.stats.ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-    return map;
+
+    const SnaxelEngine& engine_;
+    const SnaxelMapInput& in_;
+    const RayScene& rays_;
+    const ImageProjection& projection_;
+    const Camera& camera_;
+    const Light& light_;
+    const MeshTopology& topo_;
+    const ContourResult& visual_;
+    const std::int32_t V_, E_;
+    const ShadingClasses classes_;
+    const int highlight_; ///< the first highlight class
+    const std::vector<double> levels_;
+    const PointIds ids_;
+    const VisibilitySampler sampler_;
+
+    std::vector<VertexLabel> label_;                         ///< per vertex
+    std::vector<double> nl_;                                 ///< per vertex: N.L
+    std::vector<std::int32_t> comp_;                         ///< per vertex: its region, or -1
+    std::vector<VertexLabel> comp_label_;                    ///< per region
+    std::vector<std::int32_t> cut_edges_;                    ///< edges whose labels differ
+    std::vector<glm::dvec3> edge_point_;                     ///< per edge: where fronts stop on it (cut edges)
+    std::vector<char> front_face_, folded_;                  ///< per face
+    std::vector<std::int32_t> faces_;                        ///< the faces walked
+    std::vector<Step> steps_;                                ///< every region's outline steps
+    std::vector<std::pair<std::int32_t, std::int32_t>> rim_faces_; ///< (face, region) taken past the contour
+    std::mutex shared_points_; ///< the rare crossings past the contour, and strip regions
+    std::unordered_map<std::int64_t, glm::dvec3> extra_point_;     ///< level and across points
+    std::unordered_map<int, std::int32_t> outline_regions_;        ///< class -> region of the strips past the contour
+    std::vector<std::pair<std::int32_t, std::int32_t>> vertexless_faces_; ///< (strip region, face): where the strips lie
+    std::vector<MapRegion> regions_;
+    SnaxelMap map_;
+};
+
+} // namespace
+
+SnaxelMap build_snaxel_map(const SnaxelEngine& engine, const SnaxelMapInput& in, const RayScene& rays,
+                           const ImageProjection& projection, const Camera& camera, const Light& light) {
+    return SnaxelMapBuilder(engine, in, rays, projection, camera, light).build();
 }
 
 } // namespace snaxels

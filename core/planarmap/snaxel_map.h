@@ -33,7 +33,9 @@
 
 #include <vector>
 
-#include "snaxels/planarmap/post_map.h"
+#include "snaxels/planarmap/region.h"
+#include "snaxels/scene/camera.h"
+#include "snaxels/snaxel/snaxel_engine.h"
 #include "snaxels/visibility/ray_scene.h"
 
 namespace snaxels {

@@ -19,6 +19,7 @@
 
 #include <glm/vec3.hpp>
 
+#include "snaxels/error.h"
 #include "snaxels/snaxel/fronts.h"
 #include "snaxels/snaxel/topology.h"
 #include "snaxels/snaxel/tracker.h"
@@ -41,8 +42,8 @@ struct ParabolicOptions {
     std::function<bool()> cancelled;
 };
 
-struct ParabolicCancelled : std::runtime_error {
-    ParabolicCancelled() : std::runtime_error("the parabolic search was cancelled") {}
+struct ParabolicCancelled : Cancelled {
+    ParabolicCancelled() : Cancelled("the parabolic search was cancelled") {}
 };
 
 /// One marked point: a visual event the tracker saw in one step, placed at

@@ -93,7 +93,7 @@ void ContourTracker::track(const Camera& camera, const Light& light) {
     const auto t0 = std::chrono::steady_clock::now();
     const SnaxelEngine engine(topo_);
     const ContourFunction f(spec_, camera, light);
-    TrackedFrame prev = std::move(frame_);
+    const TrackedFrame prev = std::move(frame_);
     const Fronts& old = prev.contour.fronts;
     const std::vector<glm::dvec3> old_position = std::move(snaxel_position_);
     frame_ = TrackedFrame{};
@@ -102,18 +102,43 @@ void ContourTracker::track(const Camera& camera, const Light& light) {
     result.spec = spec_;
 
     // 1. f everywhere (new regions may appear anywhere) and what changed side.
-    const std::size_t nv = topo_.n_vertices();
     f.evaluate_vertices(topo_.positions, topo_.normals, result.vertex_f);
-    std::vector<std::int32_t> changed;
-    for (std::size_t v = 0; v < nv; ++v)
-        if (std::uint8_t(result.vertex_f[v] >= 0.0) != inside_[v]) changed.push_back(std::int32_t(v));
-    for (const std::int32_t v : changed) inside_[v] ^= 1;
+    const std::vector<std::int32_t> changed = flip_changed_vertices();
+    sweep_parents(old, changed);
+    result.fronts = extract_fronts(topo_, inside_, crossing_edges(old, changed));
+    polish_snaxels(engine, f);
+    if (options_.check_invariants) {
+        if (const std::string problem = check_fronts(topo_, result.fronts, inside_); !problem.empty())
+            throw InternalError("tracked fronts broken at frame " + std::to_string(frame_number_) + ": " + problem);
+    }
+    match_loops(prev, old_position, assign_identities(prev, old_position));
+    result.stats.fanouts = frame_.fanouts;
+    result.stats.iterations = 1;
+    for (const VisualEvent& e : frame_.events) {
+        if (e.kind == EventKind::Merge) ++result.stats.merges;
+        if (e.kind == EventKind::Split) ++result.stats.splits;
+        if (e.kind == EventKind::Creation) ++result.stats.seeds;
+    }
+    result.stats.ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+}
 
-    // 2. Fronts move on: every changed vertex next to an old snaxel's edge
-    // is passed by that snaxel (fan-out when it joins R, retreat when it
-    // leaves), and the sweep carries the same parent on across connected
-    // changed vertices of the same kind.
-    vertex_parent_.assign(nv, kNone);
+/// The vertices whose side of the contour differs from inside_ (ascending),
+/// flipped there.
+std::vector<std::int32_t> ContourTracker::flip_changed_vertices() {
+    const std::vector<double>& vertex_f = frame_.contour.vertex_f;
+    std::vector<std::int32_t> changed;
+    for (std::size_t v = 0; v < topo_.n_vertices(); ++v)
+        if (std::uint8_t(vertex_f[v] >= 0.0) != inside_[v]) changed.push_back(std::int32_t(v));
+    for (const std::int32_t v : changed) inside_[v] ^= 1;
+    return changed;
+}
+
+/// 2. Fronts move on: every changed vertex next to an old snaxel's edge is
+/// passed by that snaxel (fan-out when it joins R, retreat when it leaves),
+/// and the sweep carries the same parent on across connected changed
+/// vertices of the same kind.
+void ContourTracker::sweep_parents(const Fronts& old, const std::vector<std::int32_t>& changed) {
+    vertex_parent_.assign(topo_.n_vertices(), kNone);
     std::vector<std::int32_t> queue;
     for (std::size_t s = 0; s < old.snaxels.size(); ++s) {
         for (const std::int32_t v : {old.snaxels[s].outside, old.snaxels[s].inside}) {
@@ -137,9 +162,12 @@ void ContourTracker::track(const Camera& camera, const Light& light) {
             }
         }
     }
+}
 
-    // 3. The edges the fronts now cross: old front edges that still cross,
-    // and the edges around every vertex that changed side.
+/// 3. The edges the fronts now cross: old front edges that still cross, and
+/// the edges around every vertex that changed side; ascending, as a scan
+/// would give them.
+std::vector<std::int32_t> ContourTracker::crossing_edges(const Fronts& old, const std::vector<std::int32_t>& changed) {
     edge_mark_.resize(topo_.n_edges(), 0);
     std::vector<std::int32_t> crossing;
     auto consider = [&](std::int32_t e) {
@@ -154,24 +182,30 @@ void ContourTracker::track(const Camera& camera, const Light& light) {
     for (const Snaxel& s : old.snaxels) edge_mark_[s.edge] = 0;
     for (const std::int32_t v : changed)
         for (std::int32_t k = topo_.ring_start[v]; k < topo_.ring_start[v + 1]; ++k) edge_mark_[topo_.ring_edge[k]] = 0;
-    std::sort(crossing.begin(), crossing.end()); // deterministic order, as a scan would give
+    std::sort(crossing.begin(), crossing.end());
+    return crossing;
+}
 
-    result.fronts = extract_fronts(topo_, inside_, crossing);
+/// Every new snaxel at its function's root on its edge.
+void ContourTracker::polish_snaxels(const SnaxelEngine& engine, const ContourFunction& f) {
+    ContourResult& result = frame_.contour;
     Fronts& fronts = result.fronts;
     const int scan = spec_.kind == ContourKind::Visual ? 1 : options_.polish_scan_samples;
     snaxel_position_.resize(fronts.snaxels.size());
     for (std::size_t s = 0; s < fronts.snaxels.size(); ++s) {
         Snaxel& sn = fronts.snaxels[s];
-        sn.t = polish_root(topo_, f, sn.inside, sn.outside, result.vertex_f[sn.inside],
-                           result.vertex_f[sn.outside], options_.polish_tolerance, scan);
+        sn.t = polish_root(topo_, f, sn.inside, sn.outside, result.vertex_f[sn.inside], result.vertex_f[sn.outside],
+                           options_.polish_tolerance, scan);
         snaxel_position_[s] = engine.position(sn);
     }
-    if (options_.check_invariants) {
-        if (const std::string problem = check_fronts(topo_, fronts, inside_); !problem.empty())
-            throw InternalError("tracked fronts broken at frame " + std::to_string(frame_number_) + ": " + problem);
-    }
+}
 
-    // 4. Identities. `source[s]` is the old snaxel this one continues or was born from.
+/// 4. Identities. Returns per new snaxel the old snaxel it continues or was
+/// born from (its source), or kNone.
+std::vector<std::int32_t> ContourTracker::assign_identities(const TrackedFrame& prev,
+                                                            const std::vector<glm::dvec3>& old_position) {
+    const Fronts& old = prev.contour.fronts;
+    const Fronts& fronts = frame_.contour.fronts;
     const std::size_t n = fronts.snaxels.size();
     frame_.snaxel_id.assign(n, 0);
     frame_.born_from.assign(n, 0);
@@ -204,14 +238,20 @@ void ContourTracker::track(const Camera& camera, const Light& light) {
             if (parent != kNone) frame_.born_from[s] = prev.snaxel_id[parent];
         }
     }
+    return source;
+}
 
-    // 5. Loops matched through their snaxels' sources: events and sequences.
+/// 5. Loops matched through their snaxels' sources: events and sequences.
+void ContourTracker::match_loops(const TrackedFrame& prev, const std::vector<glm::dvec3>& old_position,
+                                 const std::vector<std::int32_t>& source) {
+    const Fronts& old = prev.contour.fronts;
+    const Fronts& fronts = frame_.contour.fronts;
     const std::size_t old_loops = old.loops.size(), new_loops = fronts.loops.size();
     // (old loop, new loop) of every snaxel with a source, sorted: runs of
     // one pair count the snaxels linking them, in (old, new) order.
     std::vector<std::pair<std::int32_t, std::int32_t>> links;
-    links.reserve(n);
-    for (std::size_t s = 0; s < n; ++s)
+    links.reserve(source.size());
+    for (std::size_t s = 0; s < source.size(); ++s)
         if (source[s] != kNone) links.push_back({old.snaxels[source[s]].loop, fronts.snaxels[s].loop});
     std::sort(links.begin(), links.end());
     std::vector<std::pair<std::pair<std::int32_t, std::int32_t>, std::size_t>> shared; // (old, new) -> snaxels
@@ -242,8 +282,7 @@ void ContourTracker::track(const Camera& camera, const Light& light) {
     frame_.loop_sequence.assign(new_loops, 0);
     for (std::size_t l = 0; l < new_loops; ++l) {
         if (pred[l].empty()) {
-            frame_.events.push_back({EventKind::Creation, frame_number_,
-                                     loop_centroid(fronts, fronts.loops[l], snaxel_position_)});
+            frame_.events.push_back({EventKind::Creation, frame_number_, loop_centroid(fronts, fronts.loops[l], snaxel_position_)});
         } else if (pred[l].size() > 1) {
             const auto first = loop_points(old, old.loops[*pred[l].begin()], old_position);
             for (auto it = std::next(pred[l].begin()); it != pred[l].end(); ++it)
@@ -258,8 +297,7 @@ void ContourTracker::track(const Camera& camera, const Light& light) {
     }
     for (std::size_t l = 0; l < old_loops; ++l) {
         if (succ[l].empty()) {
-            frame_.events.push_back({EventKind::Annihilation, frame_number_,
-                                     loop_centroid(old, old.loops[l], old_position)});
+            frame_.events.push_back({EventKind::Annihilation, frame_number_, loop_centroid(old, old.loops[l], old_position)});
         } else if (succ[l].size() > 1) {
             const auto first = loop_points(fronts, fronts.loops[*succ[l].begin()], snaxel_position_);
             for (auto it = std::next(succ[l].begin()); it != succ[l].end(); ++it)
@@ -267,15 +305,6 @@ void ContourTracker::track(const Camera& camera, const Light& light) {
                                          closest_between(first, loop_points(fronts, fronts.loops[*it], snaxel_position_))});
         }
     }
-    result.stats.fanouts = frame_.fanouts;
-    result.stats.iterations = 1;
-    for (const VisualEvent& e : frame_.events) {
-        if (e.kind == EventKind::Merge) ++result.stats.merges;
-        if (e.kind == EventKind::Split) ++result.stats.splits;
-        if (e.kind == EventKind::Creation) ++result.stats.seeds;
-    }
-    result.stats.ms =
-        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
 }
 
 } // namespace snaxels

@@ -57,6 +57,14 @@ class ContourTracker {
   private:
     void start(const Camera& camera, const Light& light);
     void track(const Camera& camera, const Light& light);
+    // The stages of track(), in order.
+    std::vector<std::int32_t> flip_changed_vertices();
+    void sweep_parents(const Fronts& old, const std::vector<std::int32_t>& changed);
+    std::vector<std::int32_t> crossing_edges(const Fronts& old, const std::vector<std::int32_t>& changed);
+    void polish_snaxels(const SnaxelEngine& engine, const ContourFunction& f);
+    std::vector<std::int32_t> assign_identities(const TrackedFrame& prev, const std::vector<glm::dvec3>& old_position);
+    void match_loops(const TrackedFrame& prev, const std::vector<glm::dvec3>& old_position,
+                     const std::vector<std::int32_t>& source);
 
     const MeshTopology& topo_;
     ContourSpec spec_;

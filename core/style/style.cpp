@@ -238,19 +238,20 @@ struct Parser {
             } else if (name == "region") {
                 check_attributes(child, {"class", "k", "fill", "opacity", "erosion"});
                 RegionStyle rs;
-                rs.cls = choice(child, "class", "", {"shadow", "lit", "band", "highlight"});
-                if (rs.cls.empty()) fail(child, "<region> needs class=\"shadow|lit|band|highlight\"");
-                const bool needs_k = rs.cls == "band" || rs.cls == "highlight";
+                const std::string cls = choice(child, "class", "", {"shadow", "lit", "band", "highlight"});
+                if (cls.empty()) fail(child, "<region> needs class=\"shadow|lit|band|highlight\"");
+                rs.cls = *parse_region_class(cls); // choice() admits only the names
+                const bool needs_k = region_class_has_level(rs.cls);
                 if (needs_k && !child.attribute("k"))
-                    fail(child, "a " + rs.cls + " region needs k (" +
-                                    (rs.cls == "band" ? "the isophote level it starts at" : "the gleam threshold") + ")");
-                if (!needs_k && child.attribute("k")) fail(child, "a " + rs.cls + " region takes no k");
+                    fail(child, "a " + cls + " region needs k (" +
+                                    (rs.cls == RegionClass::Band ? "the isophote level it starts at" : "the gleam threshold") + ")");
+                if (!needs_k && child.attribute("k")) fail(child, "a " + cls + " region takes no k");
                 rs.k = number(child, "k", 0.0, -1.0, 1.0);
                 rs.fill = colour(child, "fill", rs.fill, false);
                 rs.opacity = number(child, "opacity", rs.opacity, 0.0, 1.0);
                 rs.erosion = number(child, "erosion", rs.erosion, 0.0, 100.0);
                 for (const RegionStyle& other : style.regions)
-                    if (other.cls == rs.cls && std::abs(other.k - rs.k) < 1e-9) fail(child, "a second <region> for " + rs.cls);
+                    if (other.cls == rs.cls && std::abs(other.k - rs.k) < 1e-9) fail(child, "a second <region> for " + cls);
                 style.regions.push_back(rs);
             } else {
                 warn(child, "unknown element <" + name + "> (expected <canvas>, <light>, <contour> or <region>)");
@@ -290,7 +291,7 @@ std::uint32_t colour_rgb(const std::string& colour) {
 }
 
 StyleError::StyleError(const std::string& source, StyleDiagnostic diagnostic)
-    : std::runtime_error(source + ":" + std::to_string(diagnostic.line) + ":" + std::to_string(diagnostic.column) +
+    : Error(source + ":" + std::to_string(diagnostic.line) + ":" + std::to_string(diagnostic.column) +
                          ": " + diagnostic.message),
       diagnostic_(std::move(diagnostic)) {}
 
@@ -322,16 +323,16 @@ std::vector<ContourSpec> Style::fill_contours() const {
     if (regions.empty()) return out;
     add({ContourKind::Visual, 0.0});
     for (const RegionStyle& r : regions) {
-        if (r.cls == "shadow" || r.cls == "lit" || r.cls == "band") add({ContourKind::Shadow, 0.0});
-        if (r.cls == "band") add({ContourKind::Isophote, r.k});
-        if (r.cls == "highlight") add({ContourKind::Gleam, r.k});
+        if (r.cls != RegionClass::Highlight) add({ContourKind::Shadow, 0.0});
+        if (r.cls == RegionClass::Band) add({ContourKind::Isophote, r.k});
+        if (r.cls == RegionClass::Highlight) add({ContourKind::Gleam, r.k});
     }
     return out;
 }
 
-const RegionStyle* Style::region(const std::string& cls, double k) const {
+const RegionStyle* Style::region(RegionClass cls, double k) const {
     for (const RegionStyle& r : regions)
-        if (r.cls == cls && (cls == "shadow" || cls == "lit" || std::abs(r.k - k) < 1e-9)) return &r;
+        if (r.cls == cls && (!region_class_has_level(cls) || std::abs(r.k - k) < 1e-9)) return &r;
     return nullptr;
 }
 

@@ -8,6 +8,8 @@
 #include <string>
 #include <vector>
 
+#include "snaxels/error.h"
+#include "snaxels/planarmap/region.h"
 #include "snaxels/scene/camera.h"
 #include "snaxels/snaxel/contour_function.h"
 
@@ -35,7 +37,7 @@ struct ContourStyle {
 
 /// How one class of planar-map region is filled.
 struct RegionStyle {
-    std::string cls;       ///< shadow | lit | band | highlight
+    RegionClass cls = RegionClass::Lit;
     double k = 0.0;        ///< band: the isophote level it starts at; highlight: the gleam threshold
     std::string fill = "#cccccc";
     double opacity = 1.0;
@@ -54,7 +56,7 @@ struct Style {
     /// for lit and shadow, an isophote per band, a gleam per highlight.
     std::vector<ContourSpec> fill_contours() const;
     /// The fill of a region class (nullptr: not filled).
-    const RegionStyle* region(const std::string& cls, double k) const;
+    const RegionStyle* region(RegionClass cls, double k) const;
 
     /// The style of @p spec: the matching <contour>, or the defaults for its kind.
     ContourStyle contour(const ContourSpec& spec) const;
@@ -78,7 +80,7 @@ struct StyleDiagnostic {
 };
 
 /// A style that cannot be used; what() is "SOURCE:LINE:COL: message".
-class StyleError : public std::runtime_error {
+class StyleError : public Error {
   public:
     StyleError(const std::string& source, StyleDiagnostic diagnostic);
     const StyleDiagnostic& diagnostic() const { return diagnostic_; }

@@ -124,3 +124,30 @@ TEST(IncludeGraph, PublicHeadersNeedOnlyPublicDependencies) {
         }
     }
 }
+
+TEST(Architecture, OneErrorRoot) {
+    // Every exception the library defines derives from snaxels::Error (one
+    // catch takes them all): none derives from a standard exception itself,
+    // except Error.
+    const std::regex standard_base(R"((class|struct)\s+(\w+)\s*(final\s*)?:\s*(public\s+)?std::(runtime_error|logic_error|exception|invalid_argument|out_of_range)\b)");
+    std::vector<std::string> roots;
+    std::size_t derived = 0;
+    const std::regex derived_from_error(R"((class|struct)\s+\w+\s*(final\s*)?:\s*(public\s+)?(Error|InternalError|Cancelled)\b)");
+    for (const auto& entry : fs::recursive_directory_iterator(fs::path(SNAXELS_SOURCE_DIR) / "core")) {
+        const std::string ext = entry.path().extension().string();
+        if (ext != ".h" && ext != ".cpp") continue;
+        std::ifstream in(entry.path());
+        const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+        for (auto it = std::sregex_iterator(text.begin(), text.end(), standard_base); it != std::sregex_iterator(); ++it)
+            roots.push_back((*it)[2].str() + " in " + entry.path().filename().string());
+        derived += std::size_t(std::distance(std::sregex_iterator(text.begin(), text.end(), derived_from_error), std::sregex_iterator()));
+    }
+    ASSERT_EQ(roots.size(), 1u) << "exception roots: " << [&] {
+        std::string all;
+        for (const auto& r : roots) all += r + "; ";
+        return all;
+    }();
+    EXPECT_EQ(roots.front(), "Error in error.h");
+    // InternalError, Cancelled, StyleError, ParabolicCancelled, AnimationCancelled at least.
+    EXPECT_GE(derived, 5u);
+}

@@ -254,7 +254,7 @@ TEST(AnimatedFills, OneRegionOnePath) {
         return s;
     };
     Style style = default_style();
-    style.regions.push_back({"lit", 0.0, "#ffcc00", 1.0, 0.0});
+    style.regions.push_back({RegionClass::Lit, 0.0, "#ffcc00", 1.0, 0.0});
     std::vector<AnimationFrame> frames;
     for (int f = 0; f < 24; ++f) {
         AnimationFrame fr = frame_with({});

@@ -248,7 +248,7 @@ TEST(Lottie, FillsAndDashes) {
     };
     Style style = default_style();
     style.background = "none";
-    style.regions.push_back({"lit", 0.0, "#ffcc00", 0.5, 0.0});
+    style.regions.push_back({RegionClass::Lit, 0.0, "#ffcc00", 0.5, 0.0});
     ContourStyle cs = style.contour(ContourSpec{});
     cs.visible.dash = {6.0, 4.0, 2.0};
     cs.visible.dash_on_surface = true;

@@ -92,10 +92,10 @@ TEST(Style, RegionFills) {
   <region class="highlight" k="0.95" fill="#fff"/>
 </style>)", "r.xml", nullptr);
     ASSERT_EQ(s.regions.size(), 3u);
-    EXPECT_EQ(s.region("lit", 0.0)->erosion, 1.5);
-    EXPECT_EQ(s.region("band", 0.7)->opacity, 0.5);
-    EXPECT_EQ(s.region("shadow", 0.0), nullptr);
-    EXPECT_EQ(s.region("band", 0.5), nullptr);
+    EXPECT_EQ(s.region(RegionClass::Lit, 0.0)->erosion, 1.5);
+    EXPECT_EQ(s.region(RegionClass::Band, 0.7)->opacity, 0.5);
+    EXPECT_EQ(s.region(RegionClass::Shadow, 0.0), nullptr);
+    EXPECT_EQ(s.region(RegionClass::Band, 0.5), nullptr);
     // The contours the fills need: visual, shadow, the band's isophote, the gleam.
     std::vector<std::string> labels;
     for (const ContourSpec& c : s.fill_contours()) labels.push_back(c.label());
