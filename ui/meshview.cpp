@@ -12,6 +12,8 @@
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/gtc/type_ptr.hpp>
 
+#include "snaxels/planarmap/region.h"
+
 namespace snaxels::ui {
 
 /// Where the light comes from, on a small globe in the view's corner: the
@@ -97,20 +99,16 @@ void main() {
 
 // Two-sided: open meshes show their inside, lit as well as the outside.
 // With region colouring the surface takes the colour of its planar-map
-// class (shadow, lit, isophote band, highlight), shaded lightly for form.
-const char* kFragmentShader = R"(#version 330 core
+// class (shadow, lit, isophote band, highlight), as region.h decides it,
+// shaded lightly for form. The class rule and the arrays' sizes are put in
+// by fragmentShader().
+const char* kFragmentHead = R"(#version 330 core
 in vec3 viewNormal;
 in float nDotL;
 in float rDotV;
 uniform bool regions;
-uniform vec3 shadowColour;
-uniform vec3 litColour;
-uniform int bandCount;
-uniform float bandK[8];
-uniform vec3 bandColour[8];
-uniform int highlightCount;
-uniform float highlightK[4];
-uniform vec3 highlightColour[4];
+)";
+const char* kFragmentMain = R"(
 out vec4 colour;
 void main() {
     vec3 n = normalize(viewNormal);
@@ -123,15 +121,17 @@ void main() {
         colour = vec4(base * (0.18 + 0.7 * diffuse + fill), 1.0);
         return;
     }
-    vec3 c = nDotL < 0.0 ? shadowColour : litColour;
-    for (int i = 0; i < bandCount; ++i)
-        if (nDotL >= bandK[i]) c = bandColour[i];
-    if (nDotL >= 0.0)
-        for (int i = 0; i < highlightCount; ++i)
-            if (rDotV >= highlightK[i]) c = highlightColour[i];
+    vec3 c = classColour[regionClass(nDotL, rDotV)];
     colour = vec4(c * (0.72 + 0.2 * diffuse + 0.12 * fill), 1.0);
 }
 )";
+
+/// The surface's fragment shader with room for @p bands and @p highlights levels.
+QByteArray fragmentShader(int bands, int highlights) {
+    return QByteArray(kFragmentHead) + QByteArray::fromStdString(region_class_glsl(bands, highlights)) +
+           "uniform vec3 classColour[" + QByteArray::number(2 + std::max(bands, 1) + std::max(highlights, 1)) + "];\n" +
+           kFragmentMain;
+}
 
 // Contours over the surface: hidden ones dashed by their arc length.
 const char* kLineVertexShader = R"(#version 330 core
@@ -270,6 +270,12 @@ void MeshView::setPose(MeshGeometry geometry) {
 
 void MeshView::setRegionShading(RegionShading shading) {
     shading_ = std::move(shading);
+    // Every level the style has is drawn: the shader grows to hold them.
+    if (int(shading_.bands.size()) > bandCapacity_ || int(shading_.highlights.size()) > highlightCapacity_) {
+        bandCapacity_ = std::max(bandCapacity_, int(shading_.bands.size()));
+        highlightCapacity_ = std::max(highlightCapacity_, int(shading_.highlights.size()));
+        programStale_ = true;
+    }
     update();
 }
 
@@ -277,25 +283,34 @@ void MeshView::setRegionUniforms() {
     const RegionShading& r = shading_;
     auto vec = [](const glm::dvec3& v) { return QVector3D(float(v.x), float(v.y), float(v.z)); };
     auto rgb = [](const glm::vec3& v) { return QVector3D(v.x, v.y, v.z); };
+    auto at = [](const char* name, std::size_t i) { return QString("%1[%2]").arg(name).arg(i).toLatin1(); };
     program_.setUniformValue("regions", r.enabled);
     program_.setUniformValue("eye", vec(camera().eye));
     program_.setUniformValue("lightDir", vec(r.light.dir));
     program_.setUniformValue("lightPos", vec(r.light.pos));
     program_.setUniformValue("lightIsPoint", r.light.point);
-    program_.setUniformValue("shadowColour", rgb(r.shadow));
-    program_.setUniformValue("litColour", rgb(r.lit));
-    const int bands = int(std::min<std::size_t>(r.bands.size(), 8));
-    program_.setUniformValue("bandCount", bands);
-    for (int i = 0; i < bands; ++i) {
-        program_.setUniformValue(QString("bandK[%1]").arg(i).toLatin1().constData(), float(r.bands[i].first));
-        program_.setUniformValue(QString("bandColour[%1]").arg(i).toLatin1().constData(), rgb(r.bands[i].second));
+    // Classes as ShadingClasses numbers them: shadow, lit, bands, highlights.
+    program_.setUniformValue("hasShadow", r.shadow_contour);
+    program_.setUniformValue("bandCount", int(r.bands.size()));
+    program_.setUniformValue("highlightCount", int(r.highlights.size()));
+    program_.setUniformValue(at("classColour", 0).constData(), rgb(r.shadow));
+    program_.setUniformValue(at("classColour", 1).constData(), rgb(r.lit));
+    for (std::size_t i = 0; i < r.bands.size(); ++i) {
+        program_.setUniformValue(at("bandK", i).constData(), float(r.bands[i].first));
+        program_.setUniformValue(at("classColour", 2 + i).constData(), rgb(r.bands[i].second));
     }
-    const int highlights = int(std::min<std::size_t>(r.highlights.size(), 4));
-    program_.setUniformValue("highlightCount", highlights);
-    for (int i = 0; i < highlights; ++i) {
-        program_.setUniformValue(QString("highlightK[%1]").arg(i).toLatin1().constData(), float(r.highlights[i].first));
-        program_.setUniformValue(QString("highlightColour[%1]").arg(i).toLatin1().constData(), rgb(r.highlights[i].second));
+    for (std::size_t i = 0; i < r.highlights.size(); ++i) {
+        program_.setUniformValue(at("highlightK", i).constData(), float(r.highlights[i].first));
+        program_.setUniformValue(at("classColour", 2 + r.bands.size() + i).constData(), rgb(r.highlights[i].second));
     }
+}
+
+void MeshView::buildSurfaceProgram() {
+    program_.removeAllShaders();
+    program_.addShaderFromSourceCode(QOpenGLShader::Vertex, kVertexShader);
+    program_.addShaderFromSourceCode(QOpenGLShader::Fragment, fragmentShader(bandCapacity_, highlightCapacity_));
+    program_.link();
+    programStale_ = false;
 }
 
 void MeshView::clearMesh() {
@@ -385,9 +400,7 @@ void MeshView::initializeGL() {
     if (renderer.contains("llvmpipe", Qt::CaseInsensitive) || renderer.contains("softpipe", Qt::CaseInsensitive) ||
         renderer.contains("SwiftShader", Qt::CaseInsensitive))
         face_budget = 250'000;
-    program_.addShaderFromSourceCode(QOpenGLShader::Vertex, kVertexShader);
-    program_.addShaderFromSourceCode(QOpenGLShader::Fragment, kFragmentShader);
-    program_.link();
+    buildSurfaceProgram();
     lineProgram_.addShaderFromSourceCode(QOpenGLShader::Vertex, kLineVertexShader);
     lineProgram_.addShaderFromSourceCode(QOpenGLShader::Fragment, kLineFragmentShader);
     lineProgram_.link();
@@ -427,6 +440,7 @@ void MeshView::paintGL() {
     if (!vertexCount_) return;
     if (dirty_) upload();
     glEnable(GL_DEPTH_TEST);
+    if (programStale_) buildSurfaceProgram(); // more levels than its arrays hold
     const glm::mat4 mv(viewMatrix());
     const glm::mat4 mvp(projectionMatrix() * viewMatrix());
     program_.bind();

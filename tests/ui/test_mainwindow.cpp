@@ -897,6 +897,45 @@ class TestMainWindow : public QObject {
         QVERIFY2(after.x() > before.x() + 5, qPrintable(QString("%1 -> %2").arg(before.x()).arg(after.x())));
     }
 
+    // Region colouring in the 3-D view classes the surface as the maps do
+    // (region.h), every band of the style: twelve bands of twelve hues on a
+    // sphere, each seen, the ninth to twelfth too.
+    void coloursEveryBandInTheView() {
+        MainWindow window;
+        QVERIFY(showWithMesh(window, "proc:sphere:20000"));
+        QString style = "<style version=\"1\">\n  <region class=\"lit\" fill=\"#808080\"/>\n"
+                        "  <region class=\"shadow\" fill=\"#404040\"/>\n";
+        constexpr int kBands = 12;
+        for (int i = 0; i < kBands; ++i)
+            style += QString("  <region class=\"band\" k=\"%1\" fill=\"%2\"/>\n")
+                         .arg(0.04 + 0.075 * i)
+                         .arg(QColor::fromHsv(30 * i, 255, 255).name());
+        style += "  <contour kind=\"visual\"><visible stroke=\"#000000\" width=\"1\"/></contour>\n</style>\n";
+        window.styleEditor()->setText(style, "bands.xml");
+        QVERIFY2(window.styleEditor()->problem().isEmpty(), qPrintable(window.styleEditor()->problem()));
+        QTRY_VERIFY_WITH_TIMEOUT(!window.contoursBusy(), 30000);
+        window.regionsAction()->setChecked(true);
+        QTest::qWait(300);
+        const QImage image = window.meshView()->grabFramebuffer().convertToFormat(QImage::Format_RGB32);
+        image.save(QString(SCREENSHOT_DIR) + "/mainwindow-twelve-bands.png");
+        std::vector<int> pixels(kBands, 0);
+        for (int y = 0; y < image.height(); ++y)
+            for (int x = 0; x < image.width(); ++x) {
+                const QColor c = image.pixelColor(x, y);
+                if (c.hsvSaturation() < 200 || c.value() < 100) continue; // grey tones, outlines, background
+                const int hue = c.hsvHue();
+                for (int i = 0; i < kBands; ++i) {
+                    const int d = std::abs(hue - 30 * i);
+                    if (std::min(d, 360 - d) <= 6) ++pixels[std::size_t(i)];
+                }
+            }
+        QString counts;
+        for (int i = 0; i < kBands; ++i) counts += QString(" %1").arg(pixels[std::size_t(i)]);
+        for (int i = 0; i < kBands; ++i)
+            QVERIFY2(pixels[std::size_t(i)] > 30, qPrintable("pixels per band:" + counts));
+        window.regionsAction()->setChecked(false);
+    }
+
     void opensWhatIsDropped() {
         QTemporaryDir dir;
         MainWindow window;
