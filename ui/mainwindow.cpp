@@ -32,12 +32,12 @@
 #include "snaxels/error.h"
 #include "snaxels/mesh/import.h"
 #include "snaxels/util/atomic_file.h"
+#include "ui/document.h"
 #include "ui/meshview.h"
 #include "ui/resources.h"
 #include "ui/styleeditor.h"
 #include "ui/svgpane.h"
 #include "ui/timeline.h"
-#include "ui/undo.h"
 #include "snaxels/animation/pipeline.h"
 
 namespace snaxels::ui {
@@ -65,8 +65,7 @@ LoadResult loadInBackground(const QString& spec) {
 MainWindow::MainWindow(QWidget* parent)
     : QMainWindow(parent), view_(new MeshView(this)), svgPane_(new SvgPane(this)),
       styleEditor_(new StyleEditor(this)), timeline_(new Timeline(this)), meshLabel_(new QLabel(this)),
-      busy_(new QProgressBar(this)), contourLabel_(new QLabel(this)), contourTimer_(new QTimer(this)),
-      undo_(new QUndoStack(this)) {
+      busy_(new QProgressBar(this)), contourLabel_(new QLabel(this)), contourTimer_(new QTimer(this)) {
     setWindowTitle("snaxels[*]");
     // The 3-D view and, beside it, the SVG the export writes for this view.
     auto* splitter = new QSplitter(this);
@@ -88,43 +87,18 @@ MainWindow::MainWindow(QWidget* parent)
         ensureParabolic(); // a style that draws parabolic curves needs them found
         scheduleContours();
     });
-    committedStyle_ = styleEditor_->text();
-    // Every part of the document that changes becomes one undo step.
+    document_ = new Document(styleEditor_->text(), this);
+    // Every edit in a widget goes to the document, as one undo step.
     connect(styleEditor_, &StyleEditor::textApplied, this, [this](const QString& text) {
-        if (restoring_ || text == committedStyle_) return;
-        undo_->push(new SetValueCommand<QString>(tr("Edit Style"), kUndoStyle, committedStyle_, text,
-                                                 [this](const QString& t) {
-                                                     ++restoring_;
-                                                     styleEditor_->setText(t, "style");
-                                                     committedStyle_ = t;
-                                                     --restoring_;
-                                                 }));
-        committedStyle_ = text;
+        if (!restoring_) document_->setStyleText(text);
     });
     connect(view_, &MeshView::viewEdited, this, [this] {
-        const OrbitView now = viewState();
-        if (restoring_ || now == committedView_) return;
-        undo_->push(new SetValueCommand<OrbitView>(tr("Move Camera"), kUndoCamera, committedView_, now,
-                                                   [this](const OrbitView& v) {
-                                                       ++restoring_;
-                                                       view_->setOrbit(v);
-                                                       committedView_ = viewState();
-                                                       --restoring_;
-                                                   }));
-        committedView_ = now;
+        if (!restoring_) document_->setView(viewState());
     });
     connect(view_, &MeshView::lightDragged, this, &MainWindow::onLightDragged);
     connect(view_, &MeshView::lightEdited, this, [this] {
-        if (restoring_ || light_ == committedLight_) return;
-        undo_->push(new SetValueCommand<std::optional<Light>>(tr("Move Light"), kUndoLight, committedLight_, light_,
-                                                              [this](const std::optional<Light>& l) {
-                                                                  light_ = committedLight_ = l;
-                                                                  scheduleContours();
-                                                              }));
-        committedLight_ = light_;
+        if (!restoring_) document_->setLight(light_);
     });
-    connect(undo_, &QUndoStack::cleanChanged, this, &MainWindow::updateTitle);
-    connect(undo_, &QUndoStack::indexChanged, this, &MainWindow::updateTitle);
 
     // The timeline, docked below: scrubbing turns the view or the light.
     auto* timelineDock = new QDockWidget(tr("Timeline"), this);
@@ -132,19 +106,11 @@ MainWindow::MainWindow(QWidget* parent)
     timelineDock->setWidget(timeline_);
     addDockWidget(Qt::BottomDockWidgetArea, timelineDock);
     connect(timeline_, &Timeline::changed, this, &MainWindow::applyFrame);
-    committedSpec_ = timeline_->spec();
+    document_->resetAnimation(timeline_->spec());
     connect(timeline_, &Timeline::specEdited, this, [this] {
-        const AnimationSpec now = timeline_->spec();
-        if (restoring_ || now == committedSpec_) return;
-        undo_->push(new SetValueCommand<AnimationSpec>(tr("Change Animation"), kUndoAnimation, committedSpec_, now,
-                                                       [this](const AnimationSpec& a) {
-                                                           ++restoring_;
-                                                           timeline_->setSpec(a);
-                                                           committedSpec_ = timeline_->spec();
-                                                           --restoring_;
-                                                       }));
-        committedSpec_ = now;
+        if (!restoring_) document_->setAnimation(timeline_->spec());
     });
+    observeDocument();
     setAcceptDrops(true);
     busy_->setRange(0, 0); // indeterminate: importers report no progress
     busy_->setMaximumWidth(160);
@@ -214,7 +180,7 @@ void MainWindow::applyFrame() {
     if (spec.kind == AnimationSpec::Kind::Turntable) {
         view_->centreView(); // turntables orbit the mesh's centre, as exports do
         view_->setTurntable(spec.degrees_per_frame * timeline_->sourceFrame());
-        if (!restoring_) committedView_ = viewState();
+        if (!restoring_) document_->resetView(viewState()); // the frame's view, not an edit
     } else {
         view_->setTurntable(0.0);
     }
@@ -264,18 +230,9 @@ void MainWindow::turnLight(double right, double down) {
 }
 
 Light MainWindow::frameLight() const {
-    // As FrameDriver poses it: the base light turned about the vertical axis.
-    const AnimationSpec spec = timeline_->spec();
-    Light light = baseLight();
-    const double angle = glm::radians(spec.degrees_per_frame * timeline_->sourceFrame());
-    const glm::dvec3 axis(0.0, 1.0, 0.0);
+    // As FrameDriver poses it, about the orbit's vertical axis.
     const glm::dvec3 centre = mesh_ ? 0.5 * (mesh_->report.bbox_min + mesh_->report.bbox_max) : glm::dvec3(0.0);
-    if (spec.kind == AnimationSpec::Kind::Turntable && !light.point) light.dir = glm::rotate(light.dir, angle, axis);
-    if (spec.kind == AnimationSpec::Kind::LightOrbit) {
-        if (light.point) light.pos = centre + glm::rotate(light.pos - centre, angle, axis);
-        else light.dir = glm::rotate(light.dir, angle, axis);
-    }
-    return light;
+    return light_at_frame(timeline_->spec(), baseLight(), timeline_->sourceFrame(), glm::dvec3(0.0, 1.0, 0.0), centre);
 }
 
 bool MainWindow::exportFrame(const QString& path) {
@@ -330,7 +287,7 @@ void MainWindow::exportAnimation(const QString& path, AnimationFormat format) {
     };
     job.cancelled = [cancelled] { return cancelled->load(); };
     const std::shared_ptr<const LoadedMesh> mesh = mesh_;
-    const std::string mesh_path = meshSpec_.toStdString();
+    const std::string mesh_path = document_->meshSpec().toStdString();
     auto* watcher = new QFutureWatcher<QString>(this);
     connect(watcher, &QFutureWatcher<QString>::finished, this, [this, watcher, guard, path] {
         const QString error = watcher->result();
@@ -512,9 +469,9 @@ void MainWindow::createMenus() {
     quit->setShortcut(QKeySequence::Quit);
 
     QMenu* edit = menuBar()->addMenu(tr("&Edit"));
-    QAction* undo = undo_->createUndoAction(this, tr("&Undo"));
+    QAction* undo = document_->undoStack()->createUndoAction(this, tr("&Undo"));
     undo->setShortcut(QKeySequence::Undo);
-    QAction* redo = undo_->createRedoAction(this, tr("&Redo"));
+    QAction* redo = document_->undoStack()->createRedoAction(this, tr("&Redo"));
     redo->setShortcut(QKeySequence::Redo);
     edit->addAction(undo);
     edit->addAction(redo);
@@ -659,13 +616,12 @@ void MainWindow::onLoadFinished() {
     ++meshGeneration_;
     ensureParabolic();
     view_->setContours({});
-    meshSpec_ = loadingSpec_;
     ++restoring_; // framing the new mesh is not an edit
     view_->setGeometry(std::move(*result.geometry)); // frames the camera, which schedules contours
     timeline_->setClips(scene_->clips);
     --restoring_;
-    committedView_ = viewState();
-    committedSpec_ = timeline_->spec();
+    document_->resetView(viewState());
+    document_->resetAnimation(timeline_->spec());
     const MeshReport& r = mesh_->report;
     meshLabel_->setText(tr("%1 vertices, %2 faces, %3 boundary edges%4%5")
                             .arg(r.vertices)
@@ -695,17 +651,17 @@ void MainWindow::onLoadFinished() {
         timeline_->setSequenceFiles(files.count);
         timeline_->setFrame(0);
         --restoring_;
-        committedSpec_ = timeline_->spec();
-        meshChanged_ = true;
+        document_->resetAnimation(timeline_->spec());
+        document_->setMesh(loadingSpec_, mesh_);
         statusBar()->showMessage(tr("Loaded a sequence of %1 files: %2").arg(files.count).arg(QFileInfo(QString::fromStdString(files.pattern)).fileName()), 6000);
         scheduleContours();
     } else {
-        meshChanged_ = true;
+        document_->setMesh(loadingSpec_, mesh_);
         if (!loadingSpec_.startsWith("proc:")) addRecentFile(QFileInfo(loadingSpec_).absoluteFilePath());
     }
     updateTitle();
     emit meshLoaded(loadingSpec_);
-    if (!projectPath_.isEmpty() && !meshChanged_) emit projectOpened(projectPath_);
+    if (!document_->projectPath().isEmpty() && !document_->isModified()) emit projectOpened(document_->projectPath());
 }
 
 void MainWindow::addRecentFile(const QString& path) {
@@ -753,11 +709,48 @@ void MainWindow::openFile(const QString& path) {
     else openMesh(path);
 }
 
-bool MainWindow::isModified() const { return meshChanged_ || !undo_->isClean(); }
+bool MainWindow::isModified() const { return document_->isModified(); }
+
+QUndoStack* MainWindow::undoStack() const { return document_->undoStack(); }
+
+QString MainWindow::projectPath() const { return document_->projectPath(); }
+
+void MainWindow::observeDocument() {
+    connect(document_, &Document::modifiedChanged, this, &MainWindow::updateTitle);
+    connect(document_, &Document::projectPathChanged, this, &MainWindow::updateTitle);
+    connect(document_->undoStack(), &QUndoStack::indexChanged, this, &MainWindow::updateTitle);
+    // An undo, a redo or an opened project: the widgets follow. (Their own
+    // edits come back here too, and change nothing.)
+    connect(document_, &Document::styleTextChanged, this, [this](const QString& text) {
+        if (styleEditor_->text() == text) return;
+        ++restoring_;
+        styleEditor_->setText(text, "style");
+        --restoring_;
+    });
+    connect(document_, &Document::viewChanged, this, [this](const OrbitView& v) {
+        if (viewState() == v) return;
+        ++restoring_;
+        view_->setOrbit(v);
+        --restoring_;
+    });
+    connect(document_, &Document::lightChanged, this, [this](const std::optional<Light>& l) {
+        light_ = l;
+        scheduleContours();
+    });
+    connect(document_, &Document::animationChanged, this, [this](const AnimationSpec& a) {
+        specAccepted_ = true;
+        if (timeline_->spec() == a) return;
+        ++restoring_;
+        specAccepted_ = timeline_->setSpec(a);
+        --restoring_;
+    });
+}
 
 void MainWindow::updateTitle() {
-    const QString name = !projectPath_.isEmpty() ? QFileInfo(projectPath_).fileName()
-                         : !meshSpec_.isEmpty()   ? QFileInfo(meshSpec_).fileName()
+    const QString& projectPath = document_->projectPath();
+    const QString& meshSpec = document_->meshSpec();
+    const QString name = !projectPath.isEmpty() ? QFileInfo(projectPath).fileName()
+                         : !meshSpec.isEmpty()   ? QFileInfo(meshSpec).fileName()
                                                   : QString();
     setWindowTitle(name.isEmpty() ? tr("snaxels[*]") : tr("%1[*] — snaxels").arg(name));
     setWindowModified(isModified());
@@ -765,7 +758,7 @@ void MainWindow::updateTitle() {
 
 bool MainWindow::maybeSave() {
     if (!isModified()) return true;
-    const QString name = projectPath_.isEmpty() ? tr("this project") : QFileInfo(projectPath_).fileName();
+    const QString name = document_->projectPath().isEmpty() ? tr("this project") : QFileInfo(document_->projectPath()).fileName();
     QMessageBox box(QMessageBox::Warning, tr("Unsaved changes"),
                     tr("Save the changes to %1 first?").arg(name),
                     QMessageBox::Save | QMessageBox::Discard | QMessageBox::Cancel, this);
@@ -784,7 +777,7 @@ bool MainWindow::saveProjectInteractive(bool ask_path) {
         QMessageBox::information(this, tr("Save Project"), tr("Open a mesh first: a project refers to one."));
         return false;
     }
-    QString path = projectPath_;
+    QString path = document_->projectPath();
     if (ask_path || path.isEmpty()) {
         path = QFileDialog::getSaveFileName(this, tr("Save Project"), QSettings().value("paths/lastDir").toString(),
                                             tr("Snaxels projects (*.snaxels)"));
@@ -796,26 +789,20 @@ bool MainWindow::saveProjectInteractive(bool ask_path) {
 
 bool MainWindow::saveProject(const QString& path) {
     if (!mesh_) return false;
-    Project p;
-    p.mesh = project_mesh_reference(path.toStdString(), meshSpec_.toStdString());
-    p.view = viewState();
-    p.light = light_;
-    p.animation = timeline_->spec();
-    if (p.animation.kind == AnimationSpec::Kind::Sequence) // relative to the project, as the mesh is
-        p.animation.pattern = project_mesh_reference(path.toStdString(), p.animation.pattern);
-    p.frame = timeline_->frame();
-    p.style = styleEditor_->text().toStdString();
+    // What the widgets hold that has not reached the document yet (typing
+    // not yet taken up, say) goes in first, as the edits it is.
+    document_->setStyleText(styleEditor_->text());
+    document_->setView(viewState());
+    document_->setAnimation(timeline_->spec());
+    document_->setFrame(timeline_->frame());
     try {
-        write_project(path.toStdString(), p);
+        document_->save(path);
     } catch (const std::exception& e) {
         const QString message = QString::fromStdString(e.what());
         QMessageBox::warning(this, tr("Save Project"), message);
         statusBar()->showMessage(message, 8000);
         return false;
     }
-    projectPath_ = path;
-    meshChanged_ = false;
-    undo_->setClean();
     updateTitle();
     addRecentFile(QFileInfo(path).absoluteFilePath());
     statusBar()->showMessage(tr("Saved %1").arg(QFileInfo(path).fileName()), 4000);
@@ -878,37 +865,23 @@ void MainWindow::openProject(const QString& path) {
 }
 
 void MainWindow::applyProject(const Project& p, const QString& path) {
-    ++restoring_;
-    styleEditor_->setText(p.style.empty() ? initial_style_text() : QString::fromStdString(p.style), "style");
-    AnimationSpec animation = p.animation;
-    int sequenceFiles = 0;
-    if (animation.kind == AnimationSpec::Kind::Sequence) {
-        // Stored relative to the project, as its mesh is.
-        animation.pattern = resolve_project_mesh(path.toStdString(), animation.pattern);
-        if (const auto files = find_sequence(sequence_file(animation, 0))) sequenceFiles = files->count;
-    }
-    const bool clipFound = timeline_->setSpec(animation);
-    if (sequenceFiles > 0) timeline_->setSequenceFiles(sequenceFiles);
+    ++restoring_; // the document sets the widgets: not edits
+    document_->load(p, path, loadingSpec_, mesh_);
+    const AnimationSpec& animation = document_->animation();
+    if (animation.kind == AnimationSpec::Kind::Sequence)
+        if (const auto files = find_sequence(sequence_file(animation, 0))) timeline_->setSequenceFiles(files->count);
     timeline_->setFrame(p.frame);
-    light_ = p.light;
-    view_->setOrbit(p.view);
     --restoring_;
-    committedStyle_ = styleEditor_->text();
-    committedView_ = viewState();
-    committedLight_ = light_;
-    committedSpec_ = timeline_->spec();
-    undo_->clear();
-    projectPath_ = path;
-    meshChanged_ = false;
     addRecentFile(QFileInfo(path).absoluteFilePath());
-    if (!clipFound) {
+    if (!specAccepted_) {
         const QString file = QFileInfo(path).fileName();
         const QString why = tr("%1: the mesh has no clip \"%2\"; the timeline shows a turntable")
                                 .arg(file, QString::fromStdString(p.animation.clip));
         statusBar()->showMessage(why, 10000);
-        meshChanged_ = true; // what the window shows is no longer what the file holds
-        updateTitle();
+        document_->resetAnimation(timeline_->spec());
+        document_->markModified(); // what the window shows is no longer what the file holds
     }
+    updateTitle();
     scheduleContours();
 }
 

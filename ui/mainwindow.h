@@ -27,6 +27,7 @@ class QUndoStack;
 
 namespace snaxels::ui {
 
+class Document;
 class MeshView;
 class StyleEditor;
 class SvgPane;
@@ -62,10 +63,12 @@ class MainWindow : public QMainWindow {
     void openProject(const QString& path);
     /// Saves the document as a project at @p path (atomically).
     bool saveProject(const QString& path);
-    QString projectPath() const { return projectPath_; }
+    QString projectPath() const;
     /// Unsaved changes: an edit since the last save or open, or a new mesh.
     bool isModified() const;
-    QUndoStack* undoStack() const { return undo_; }
+    QUndoStack* undoStack() const;
+    /// What the window edits: the project, the mesh and the undo stack.
+    Document* document() const { return document_; }
     /// The light the user set by dragging (none: the style's or the default).
     const std::optional<Light>& userLight() const { return light_; }
     /// Turns the light as a Shift+drag in the view does (radians about
@@ -125,6 +128,8 @@ class MainWindow : public QMainWindow {
     bool saveProjectInteractive(bool ask_path);
     void applyProject(const Project& project, const QString& path);
     void updateTitle();
+    /// Shows the document's changes in the widgets.
+    void observeDocument();
     /// The camera as the document keeps it (no turntable angle).
     OrbitView viewState() const;
     Light baseLight() const;
@@ -176,17 +181,13 @@ class MainWindow : public QMainWindow {
     bool contoursPending_ = false;
     std::size_t contourLoops_ = 0;
 
-    // The document: what a project file keeps, its undo stack and state.
-    QUndoStack* undo_;
-    QString meshSpec_;    ///< the mesh loaded now (path or proc: spec)
-    QString projectPath_; ///< empty until saved or opened
+    // The document: what a project file keeps, its undo stack and state. The
+    // widgets show it; their edits go to its setters.
+    Document* document_ = nullptr;
+    /// The light as it is now: the document's, or one being dragged.
     std::optional<Light> light_;
-    QString committedStyle_;
-    OrbitView committedView_;
-    std::optional<Light> committedLight_;
-    AnimationSpec committedSpec_;
-    bool meshChanged_ = false;
-    int restoring_ = 0; ///< set while an undo step or a project sets the document
+    bool specAccepted_ = true; ///< the timeline took the document's last animation (its clip exists)
+    int restoring_ = 0; ///< set while the document sets the widgets: not an edit
     std::optional<Project> pendingProject_;
     std::optional<SequenceFiles> pendingSequence_; ///< shown once its first file has loaded
     QString pendingProjectPath_;

@@ -1,0 +1,250 @@
+// The application's document without a window or OpenGL: edits as undo
+// steps, undo and redo restoring exact values and telling observers, the
+// modified state, and project files written and read back. Expected values
+// are spelled out here, not computed by the code under test.
+#include <QFile>
+#include <QSignalSpy>
+#include <QTemporaryDir>
+#include <QTest>
+#include <QUndoStack>
+
+#include "snaxels/error.h"
+#include "snaxels/project/project.h"
+#include "ui/document.h"
+
+using snaxels::AnimationSpec;
+using snaxels::Light;
+using snaxels::OrbitView;
+using snaxels::Project;
+using snaxels::ui::Document;
+
+namespace {
+
+OrbitView view(double yaw, double pitch, double distance) {
+    OrbitView v;
+    v.yaw = yaw;
+    v.pitch = pitch;
+    v.distance = distance;
+    return v;
+}
+
+Light directional(double x, double y, double z) {
+    Light l;
+    l.dir = {x, y, z};
+    return l;
+}
+
+/// Edits of one kind within 1.5 s merge into one step: waiting apart keeps
+/// them apart.
+void pastMergeWindow() { QTest::qWait(1600); }
+
+} // namespace
+
+class TestDocument : public QObject {
+    Q_OBJECT
+  private slots:
+    void startsCleanWithItsStyle() {
+        Document doc("<style/>");
+        QCOMPARE(doc.styleText(), QString("<style/>"));
+        QVERIFY(!doc.isModified());
+        QCOMPARE(doc.undoStack()->count(), 0);
+        QVERIFY(doc.projectPath().isEmpty());
+        QVERIFY(!doc.light().has_value());
+    }
+
+    void everyKindOfEditIsOneUndoStep() {
+        Document doc("<style/>");
+        QSignalSpy style(&doc, &Document::styleTextChanged);
+        QSignalSpy camera(&doc, &Document::viewChanged);
+        QSignalSpy light(&doc, &Document::lightChanged);
+        QSignalSpy animation(&doc, &Document::animationChanged);
+        QSignalSpy modified(&doc, &Document::modifiedChanged);
+
+        doc.setStyleText("<style><canvas width=\"400\"/></style>");
+        doc.setView(view(1.0, 0.5, 4.0));
+        doc.setLight(directional(0.0, 1.0, 0.0));
+        AnimationSpec turntable;
+        turntable.kind = AnimationSpec::Kind::Turntable;
+        turntable.degrees_per_frame = 3.0;
+        turntable.frames = 120;
+        doc.setAnimation(turntable);
+        QCOMPARE(doc.undoStack()->count(), 4);
+        QCOMPARE(style.count(), 1);
+        QCOMPARE(camera.count(), 1);
+        QCOMPARE(light.count(), 1);
+        QCOMPARE(animation.count(), 1);
+        QVERIFY(doc.isModified());
+        QCOMPARE(modified.count(), 1);
+        QCOMPARE(modified.last().at(0).toBool(), true);
+
+        // Setting what is already there is no edit.
+        doc.setView(view(1.0, 0.5, 4.0));
+        doc.setStyleText("<style><canvas width=\"400\"/></style>");
+        QCOMPARE(doc.undoStack()->count(), 4);
+        QCOMPARE(camera.count(), 1);
+
+        // Undo walks back through every kind, each observer told the old value.
+        doc.undoStack()->undo();
+        QCOMPARE(doc.animation(), AnimationSpec{});
+        QCOMPARE(animation.count(), 2);
+        QCOMPARE(animation.last().at(0).value<AnimationSpec>(), AnimationSpec{});
+        doc.undoStack()->undo();
+        QVERIFY(!doc.light().has_value());
+        QCOMPARE(light.count(), 2);
+        doc.undoStack()->undo();
+        QCOMPARE(doc.view(), OrbitView{});
+        QCOMPARE(camera.last().at(0).value<OrbitView>(), OrbitView{});
+        doc.undoStack()->undo();
+        QCOMPARE(doc.styleText(), QString("<style/>"));
+        QCOMPARE(style.last().at(0).toString(), QString("<style/>"));
+        QVERIFY(!doc.isModified()); // back where it started: clean
+        QCOMPARE(modified.last().at(0).toBool(), false);
+
+        // Redo replays them, exactly.
+        for (int i = 0; i < 4; ++i) doc.undoStack()->redo();
+        QCOMPARE(doc.styleText(), QString("<style><canvas width=\"400\"/></style>"));
+        QCOMPARE(doc.view(), view(1.0, 0.5, 4.0));
+        QCOMPARE(*doc.light(), directional(0.0, 1.0, 0.0));
+        QCOMPARE(doc.animation().kind, AnimationSpec::Kind::Turntable);
+        QCOMPARE(doc.animation().degrees_per_frame, 3.0);
+        QCOMPARE(doc.animation().frames, 120);
+        QVERIFY(doc.isModified());
+    }
+
+    void quickEditsOfOneKindMerge() {
+        Document doc("<style/>");
+        doc.setView(view(1.0, 0.3, 3.0)); // a drag or wheel turns: many edits in a row
+        doc.setView(view(1.1, 0.3, 3.0));
+        doc.setView(view(1.2, 0.3, 3.0));
+        QCOMPARE(doc.undoStack()->count(), 1);
+        pastMergeWindow();
+        doc.setView(view(2.0, 0.3, 3.0));
+        QCOMPARE(doc.undoStack()->count(), 2);
+        doc.undoStack()->undo();
+        QCOMPARE(doc.view(), view(1.2, 0.3, 3.0));
+        doc.undoStack()->undo();
+        QCOMPARE(doc.view(), OrbitView{});
+        // Edits that return to the start within the window leave no step.
+        Document back("<style/>");
+        back.setLight(directional(1.0, 0.0, 0.0));
+        back.setLight(std::nullopt);
+        QCOMPARE(back.undoStack()->count(), 0);
+        QVERIFY(!back.isModified());
+    }
+
+    void changesThatAreNotEditsLeaveNoStep() {
+        Document doc("<style/>");
+        QSignalSpy camera(&doc, &Document::viewChanged);
+        doc.resetView(view(0.5, 0.2, 9.0)); // framing a new mesh
+        AnimationSpec clip;
+        clip.kind = AnimationSpec::Kind::Clip;
+        clip.clip = "Walk";
+        doc.resetAnimation(clip);
+        doc.setFrame(17);
+        QCOMPARE(doc.undoStack()->count(), 0);
+        QCOMPARE(camera.count(), 1);
+        QCOMPARE(doc.view(), view(0.5, 0.2, 9.0));
+        QCOMPARE(doc.frame(), 17);
+        QVERIFY(!doc.isModified());
+        // A new mesh is unsaved work, though no step undoes it.
+        QSignalSpy mesh(&doc, &Document::meshChanged);
+        doc.setMesh("proc:torus", nullptr);
+        QCOMPARE(mesh.count(), 1);
+        QCOMPARE(doc.meshSpec(), QString("proc:torus"));
+        QVERIFY(doc.isModified());
+        QCOMPARE(doc.undoStack()->count(), 0);
+    }
+
+    void savesAndReadsBackTheSameProject() {
+        QTemporaryDir dir;
+        QVERIFY(dir.isValid());
+        const QString path = dir.filePath("scene.snaxels");
+        const QString sequence = dir.filePath("frames/pose_####.obj");
+        Document doc("<style/>");
+        doc.setMesh(dir.filePath("meshes/spot.obj"), nullptr);
+        doc.setStyleText("<style><contour kind=\"visual\"/></style>");
+        doc.setView(view(0.25, -0.125, 2.5));
+        doc.setLight(directional(0.5, 0.75, -1.0));
+        AnimationSpec seq;
+        seq.kind = AnimationSpec::Kind::Sequence;
+        seq.pattern = sequence.toStdString();
+        seq.first_file = 1;
+        seq.frames = 30;
+        seq.fps = 12.0;
+        doc.setAnimation(seq);
+        doc.setFrame(7);
+        QSignalSpy pathSpy(&doc, &Document::projectPathChanged);
+        doc.save(path);
+        QCOMPARE(pathSpy.count(), 1);
+        QCOMPARE(doc.projectPath(), path);
+        QVERIFY(!doc.isModified());
+        QCOMPARE(doc.undoStack()->count(), 4); // the four edits (a mesh and a frame are none); saving keeps them
+
+        // The file holds the document, paths relative to the project.
+        const Project read = snaxels::read_project(path.toStdString());
+        QCOMPARE(QString::fromStdString(read.mesh), QString("meshes/spot.obj"));
+        QCOMPARE(QString::fromStdString(read.animation.pattern), QString("frames/pose_####.obj"));
+        QCOMPARE(QString::fromStdString(read.style), QString("<style><contour kind=\"visual\"/></style>"));
+        QCOMPARE(read.frame, 7);
+        QCOMPARE(read.view, view(0.25, -0.125, 2.5));
+        QCOMPARE(*read.light, directional(0.5, 0.75, -1.0));
+        QCOMPARE(read.animation.frames, 30);
+        QCOMPARE(read.animation.fps, 12.0);
+
+        // Read into another document: the same values, clean, no history.
+        Document again("<default/>");
+        again.setStyleText("<edited/>"); // history that the opened project replaces
+        QSignalSpy style(&again, &Document::styleTextChanged);
+        again.load(read, path, QString::fromStdString(snaxels::resolve_project_mesh(path.toStdString(), read.mesh)),
+                   nullptr);
+        QCOMPARE(again.undoStack()->count(), 0);
+        QVERIFY(!again.isModified());
+        QCOMPARE(again.projectPath(), path);
+        QCOMPARE(again.meshSpec(), dir.filePath("meshes/spot.obj"));
+        QCOMPARE(again.styleText(), QString("<style><contour kind=\"visual\"/></style>"));
+        QCOMPARE(style.count(), 1);
+        QCOMPARE(QString::fromStdString(again.animation().pattern), sequence); // resolved against the project
+        QCOMPARE(again.frame(), 7);
+        QCOMPARE(again.view(), view(0.25, -0.125, 2.5));
+        QCOMPARE(*again.light(), directional(0.5, 0.75, -1.0));
+        // Saved again elsewhere, it writes what the first wrote there.
+        const QString copy = dir.filePath("copy.snaxels");
+        again.save(copy);
+        doc.save(dir.filePath("first.snaxels"));
+        QFile a(copy), b(dir.filePath("first.snaxels"));
+        QVERIFY(a.open(QIODevice::ReadOnly) && b.open(QIODevice::ReadOnly));
+        QCOMPARE(a.readAll(), b.readAll());
+        // Undo after opening changes nothing: the history started there.
+        QVERIFY(!again.undoStack()->canUndo());
+    }
+
+    void anEmptyStyleInAProjectIsTheDefaultStyle() {
+        Project p;
+        p.mesh = "proc:sphere";
+        Document doc("<default-style/>");
+        doc.load(p, "/nowhere/p.snaxels", "proc:sphere", nullptr);
+        QCOMPARE(doc.styleText(), QString("<default-style/>"));
+    }
+
+    void aFailedSaveChangesNothing() {
+        QTemporaryDir dir;
+        Document doc("<style/>");
+        doc.setMesh("proc:torus", nullptr);
+        doc.setStyleText("<edited/>");
+        const QString bad = dir.filePath("no-such-folder/p.snaxels");
+        bool threw = false;
+        try {
+            doc.save(bad);
+        } catch (const snaxels::Error& e) {
+            threw = true;
+            QVERIFY2(QString(e.what()).contains("no-such-folder"), e.what());
+        }
+        QVERIFY(threw);
+        QVERIFY(doc.isModified());
+        QVERIFY(doc.projectPath().isEmpty());
+        QVERIFY(!QFile::exists(bad));
+    }
+};
+
+QTEST_GUILESS_MAIN(TestDocument)
+#include "test_document.moc"

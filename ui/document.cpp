@@ -1,0 +1,132 @@
+#include "ui/document.h"
+
+#include <QUndoStack>
+
+#include "ui/undo.h"
+
+namespace snaxels::ui {
+
+Document::Document(QString style_text, QObject* parent)
+    : QObject(parent), undo_(new QUndoStack(this)), defaultStyle_(style_text), style_(std::move(style_text)) {
+    connect(undo_, &QUndoStack::cleanChanged, this, [this] { emit modifiedChanged(isModified()); });
+}
+
+bool Document::isModified() const { return meshChanged_ || !undo_->isClean(); }
+
+template <class T>
+void Document::edit(const T& now, const T& value, const char* text, int id, void (Document::*assign)(const T&)) {
+    if (value == now) return;
+    // The change happens here; the step's first redo does nothing.
+    undo_->push(new SetValueCommand<T>(tr(text), id, now, value, [this, assign](const T& v) { (this->*assign)(v); }));
+    (this->*assign)(value);
+}
+
+void Document::setStyleText(const QString& text) {
+    edit(style_, text, QT_TR_NOOP("Edit Style"), kUndoStyle, &Document::assignStyle);
+}
+
+void Document::setView(const OrbitView& view) {
+    edit(view_, view, QT_TR_NOOP("Move Camera"), kUndoCamera, &Document::assignView);
+}
+
+void Document::setLight(const std::optional<Light>& light) {
+    edit(light_, light, QT_TR_NOOP("Move Light"), kUndoLight, &Document::assignLight);
+}
+
+void Document::setAnimation(const AnimationSpec& animation) {
+    edit(animation_, animation, QT_TR_NOOP("Change Animation"), kUndoAnimation, &Document::assignAnimation);
+}
+
+void Document::assignStyle(const QString& text) {
+    style_ = text;
+    emit styleTextChanged(style_);
+}
+
+void Document::assignView(const OrbitView& view) {
+    view_ = view;
+    emit viewChanged(view_);
+}
+
+void Document::assignLight(const std::optional<Light>& light) {
+    light_ = light;
+    emit lightChanged(light_);
+}
+
+void Document::assignAnimation(const AnimationSpec& animation) {
+    animation_ = animation;
+    emit animationChanged(animation_);
+}
+
+void Document::setMeshChanged(bool changed) {
+    const bool was = isModified();
+    meshChanged_ = changed;
+    if (isModified() != was) emit modifiedChanged(isModified());
+}
+
+void Document::setFrame(int frame) {
+    if (frame == frame_) return;
+    frame_ = frame;
+    emit frameChanged(frame_);
+}
+
+void Document::setMesh(const QString& spec, std::shared_ptr<const LoadedMesh> mesh) {
+    meshSpec_ = spec;
+    mesh_ = std::move(mesh);
+    emit meshChanged();
+    setMeshChanged(true);
+}
+
+void Document::resetView(const OrbitView& view) {
+    if (view != view_) assignView(view);
+}
+
+void Document::resetAnimation(const AnimationSpec& animation) {
+    if (animation != animation_) assignAnimation(animation);
+}
+
+void Document::markModified() { setMeshChanged(true); }
+
+Project Document::project(const QString& path) const {
+    Project p;
+    p.mesh = project_mesh_reference(path.toStdString(), meshSpec_.toStdString());
+    p.view = view_;
+    p.light = light_;
+    p.animation = animation_;
+    if (p.animation.kind == AnimationSpec::Kind::Sequence) // relative to the project, as the mesh is
+        p.animation.pattern = project_mesh_reference(path.toStdString(), p.animation.pattern);
+    p.frame = frame_;
+    p.style = style_.toStdString();
+    return p;
+}
+
+void Document::save(const QString& path) {
+    write_project(path.toStdString(), project(path));
+    const bool moved = path != projectPath_;
+    projectPath_ = path;
+    undo_->setClean();
+    setMeshChanged(false);
+    if (moved) emit projectPathChanged(projectPath_);
+}
+
+void Document::load(const Project& project, const QString& path, const QString& mesh_spec,
+                    std::shared_ptr<const LoadedMesh> mesh) {
+    meshSpec_ = mesh_spec;
+    mesh_ = std::move(mesh);
+    emit meshChanged();
+    AnimationSpec animation = project.animation;
+    if (animation.kind == AnimationSpec::Kind::Sequence) // stored relative to the project, as its mesh is
+        animation.pattern = resolve_project_mesh(path.toStdString(), animation.pattern);
+    assignStyle(project.style.empty() ? defaultStyle_ : QString::fromStdString(project.style));
+    assignAnimation(animation);
+    frame_ = project.frame;
+    emit frameChanged(frame_);
+    assignLight(project.light);
+    assignView(project.view);
+    undo_->clear();
+    projectPath_ = path;
+    emit projectPathChanged(projectPath_);
+    setMeshChanged(false);
+    emit modifiedChanged(isModified());
+}
+
+} // namespace snaxels::ui

@@ -1,0 +1,112 @@
+#pragma once
+// The document the application edits: what a project file keeps (the mesh,
+// the style's text, the camera, the user's light, the animation and its
+// frame), the loaded mesh, and the undo stack its edits go on, as Tiled's
+// Document is. Widgets observe it: every change (an edit, an undo or redo,
+// a project opened) emits what changed, and the window passes the widgets'
+// edits to its setters. It needs no window and no OpenGL.
+
+#include <memory>
+#include <optional>
+
+#include <QObject>
+#include <QString>
+
+#include "snaxels/animation/frame_driver.h"
+#include "snaxels/mesh/build.h"
+#include "snaxels/project/project.h"
+#include "snaxels/scene/orbit.h"
+
+class QUndoStack;
+
+namespace snaxels::ui {
+
+class Document : public QObject {
+    Q_OBJECT
+  public:
+    /// An empty document with @p style_text (the style a new document starts with).
+    explicit Document(QString style_text, QObject* parent = nullptr);
+
+    QUndoStack* undoStack() const { return undo_; }
+
+    const QString& styleText() const { return style_; }
+    const OrbitView& view() const { return view_; }
+    /// The light the user set (none: the style's light, else the default one).
+    const std::optional<Light>& light() const { return light_; }
+    const AnimationSpec& animation() const { return animation_; }
+    int frame() const { return frame_; }
+    /// The mesh loaded now: its path or proc: spec, and the mesh.
+    const QString& meshSpec() const { return meshSpec_; }
+    const std::shared_ptr<const LoadedMesh>& mesh() const { return mesh_; }
+    /// Empty until saved or opened.
+    const QString& projectPath() const { return projectPath_; }
+    /// Unsaved changes: an edit since the last save or open, or a new mesh.
+    bool isModified() const;
+
+    // Edits: each is one undo step (quick successions of one kind merge into
+    // one) and emits what changed; setting the value it has does nothing.
+    void setStyleText(const QString& text);
+    void setView(const OrbitView& view);
+    void setLight(const std::optional<Light>& light);
+    void setAnimation(const AnimationSpec& animation);
+
+    // Changes that are not edits (no undo step), each emitting what changed.
+    /// Where playback stands: saved with the project, not undone.
+    void setFrame(int frame);
+    /// A new mesh (the document differs from its file, if any, from now on).
+    void setMesh(const QString& spec, std::shared_ptr<const LoadedMesh> mesh);
+    /// The camera framed on a new mesh.
+    void resetView(const OrbitView& view);
+    /// The animation a new mesh or sequence starts with.
+    void resetAnimation(const AnimationSpec& animation);
+    /// What the window shows is no longer what the file holds (a clip it
+    /// names is missing, say).
+    void markModified();
+
+    /// The project as it would be saved at @p path: the mesh and a
+    /// sequence's files relative to its folder.
+    Project project(const QString& path) const;
+    /// Writes the project to @p path atomically; the document is then clean
+    /// and at @p path. Throws snaxels::Error (nothing changes then).
+    void save(const QString& path);
+    /// Replaces the document with @p project, read from @p path, whose mesh
+    /// (@p mesh_spec, @p mesh) has been loaded: a sequence's pattern is
+    /// resolved against @p path, an empty style is the default style, the
+    /// undo history is cleared and the document is clean.
+    void load(const Project& project, const QString& path, const QString& mesh_spec,
+              std::shared_ptr<const LoadedMesh> mesh);
+
+  signals:
+    void styleTextChanged(const QString& text);
+    void viewChanged(const snaxels::OrbitView& view);
+    void lightChanged(const std::optional<snaxels::Light>& light);
+    void animationChanged(const snaxels::AnimationSpec& animation);
+    void frameChanged(int frame);
+    void meshChanged();
+    void projectPathChanged(const QString& path);
+    void modifiedChanged(bool modified);
+
+  private:
+    /// One undo step from @p now to @p value (none if they are equal), applied by @p assign.
+    template <class T>
+    void edit(const T& now, const T& value, const char* text, int id, void (Document::*assign)(const T&));
+    void assignStyle(const QString& text);
+    void assignView(const OrbitView& view);
+    void assignLight(const std::optional<Light>& light);
+    void assignAnimation(const AnimationSpec& animation);
+    void setMeshChanged(bool changed);
+
+    QUndoStack* undo_;
+    QString defaultStyle_;
+    QString style_;
+    OrbitView view_;
+    std::optional<Light> light_;
+    AnimationSpec animation_;
+    int frame_ = 0;
+    QString meshSpec_;
+    std::shared_ptr<const LoadedMesh> mesh_;
+    QString projectPath_;
+    bool meshChanged_ = false; ///< a new mesh, or a difference no undo step holds
+};
+
+} // namespace snaxels::ui
