@@ -71,7 +71,7 @@ void topology_bench(benchmark::State& state, const std::string& spec) {
     const Prepared& p = prepared(spec);
     for (auto _ : state) {
         MeshTopology t = build_topology(p.mesh.mesh);
-        benchmark::DoNotOptimize(t.ring.data());
+        benchmark::DoNotOptimize(t.ring().data());
     }
 }
 

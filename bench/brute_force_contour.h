@@ -27,15 +27,15 @@ inline BruteForceContour marching_triangles(const MeshTopology& topo, const Cont
                                         int scan = 256) {
     BruteForceContour out;
     std::vector<double> fv(topo.n_vertices());
-    for (std::size_t v = 0; v < fv.size(); ++v) fv[v] = f(topo.positions[v], topo.normals[v]);
+    for (std::size_t v = 0; v < fv.size(); ++v) fv[v] = f(topo.positions()[v], topo.normals()[v]);
     out.crossing_of_edge.assign(topo.n_edges(), -1);
     for (std::size_t e = 0; e < topo.n_edges(); ++e) {
-        auto [a, b] = topo.edge_vertices[e];
+        auto [a, b] = topo.edge_vertices()[e];
         if ((fv[a] >= 0.0) == (fv[b] >= 0.0)) continue;
         if (fv[a] < 0.0) std::swap(a, b); // a positive, b negative
         auto g = [&](double t) {
-            const glm::dvec3 p = (1.0 - t) * topo.positions[a] + t * topo.positions[b];
-            return f(p, slerp_normal(topo.normals[a], topo.normals[b], t));
+            const glm::dvec3 p = (1.0 - t) * topo.positions()[a] + t * topo.positions()[b];
+            return f(p, slerp_normal(topo.normals()[a], topo.normals()[b], t));
         };
         // f may cross zero several times on an edge: take the crossing
         // nearest the positive end, found by a fine scan, then bisect.
@@ -54,7 +54,7 @@ inline BruteForceContour marching_triangles(const MeshTopology& topo, const Cont
         }
         const double t = 0.5 * (lo + hi);
         out.crossing_of_edge[e] = static_cast<std::int32_t>(out.points.size());
-        out.points.push_back((1.0 - t) * topo.positions[a] + t * topo.positions[b]);
+        out.points.push_back((1.0 - t) * topo.positions()[a] + t * topo.positions()[b]);
     }
     std::vector<std::int32_t> parent(out.points.size());
     std::iota(parent.begin(), parent.end(), 0);
@@ -65,7 +65,7 @@ inline BruteForceContour marching_triangles(const MeshTopology& topo, const Cont
     std::vector<int> links(out.points.size(), 0);
     for (std::size_t f_ = 0; f_ < topo.n_faces(); ++f_) {
         std::int32_t found[3], n = 0;
-        for (const auto e : topo.face_edges[f_])
+        for (const auto e : topo.face_edges()[f_])
             if (out.crossing_of_edge[e] >= 0) found[n++] = out.crossing_of_edge[e];
         if (n != 2) continue; // a triangle is crossed on zero or two edges
         parent[find(found[0])] = find(found[1]);

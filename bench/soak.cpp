@@ -121,8 +121,10 @@ int main(int argc, char** argv) {
     }
     try {
         const LoadedMesh mesh = build_mesh(make_procedural("nose:" + std::to_string(faces)), "proc:nose");
-        MeshTopology topology = engine_topology(mesh.mesh, 0);
-        const std::vector<glm::dvec3> rest = topology.positions;
+        const MeshTopology rest_topology = engine_topology(mesh.mesh, 0);
+        MeshTopology topology = rest_topology;
+        const std::vector<glm::dvec3> rest(rest_topology.positions().begin(), rest_topology.positions().end());
+        std::vector<glm::dvec3> posed(rest.size());
         EngineOptions options;
         options.check_invariants = true;
         const std::vector<ContourSpec> kinds{ContourSpec{}, ContourSpec{ContourKind::Shadow, 0.0},
@@ -130,7 +132,7 @@ int main(int argc, char** argv) {
                                              ContourSpec{ContourKind::Gleam, 0.9}};
         std::vector<ContourTracker> trackers;
         trackers.reserve(kinds.size());
-        for (const ContourSpec& k : kinds) trackers.emplace_back(topology, k, options);
+        for (const ContourSpec& k : kinds) trackers.emplace_back(rest_topology, k, options);
 
         std::mt19937 rng(seed);
         std::normal_distribution<double> step(0.0, 1.0);
@@ -146,8 +148,8 @@ int main(int argc, char** argv) {
             pitch = std::clamp(pitch + 0.008 * step(rng), -1.2, 1.2);
             light_yaw += 0.015 * step(rng);
             light_pitch = std::clamp(light_pitch + 0.01 * step(rng), -1.3, 1.3);
-            pose(rest, k / fps, topology.positions);
-            recompute_normals(topology);
+            pose(rest, k / fps, posed);
+            topology = rest_topology.posed(std::make_shared<const MeshPose>(make_pose(*rest_topology.connectivity(), posed)));
             Camera camera;
             camera.projection = Camera::Projection::Perspective;
             camera.eye = 4.0 * glm::dvec3(std::cos(pitch) * std::sin(yaw), std::sin(pitch), std::cos(pitch) * std::cos(yaw));
@@ -157,7 +159,7 @@ int main(int argc, char** argv) {
                                    std::cos(light_pitch) * std::cos(light_yaw));
             const auto t0 = std::chrono::steady_clock::now();
             for (std::size_t c = 0; c < trackers.size(); ++c) {
-                const TrackedFrame& f = trackers[c].step(camera, light);
+                const TrackedFrame& f = trackers[c].step(topology, camera, light);
                 snaxels += f.contour.fronts.snaxels.size();
                 if (const std::string why = check_identities(f); !why.empty()) {
                     std::fprintf(stderr, "frame %d, %s: %s\n", k, kinds[c].label().c_str(), why.c_str());

@@ -60,12 +60,11 @@ RegionShading region_shading(const Style& style, const Light& light, bool enable
 
 std::shared_ptr<ContourScene> make_contour_scene(const LoadedMesh& mesh, const std::string& path) {
     auto scene = std::make_shared<ContourScene>();
-    scene->topology = engine_topology(mesh.mesh);
+    scene->rest = engine_topology(mesh.mesh);
+    scene->topology = scene->rest;
     scene->rays = std::make_unique<RayScene>(scene->topology);
     scene->mesh_path = path;
-    scene->rest_positions = scene->topology.positions;
-    scene->rest_normals = scene->topology.normals;
-    scene->tracking = std::make_unique<StillTracking>(scene->topology);
+    scene->tracking = std::make_unique<StillTracking>();
     // Only formats that carry animation are read a second time for clips.
     const QString suffix = QString::fromStdString(path).section('.', -1).toLower();
     static const QStringList animated{"gltf", "glb", "fbx", "dae", "x", "blend", "md5mesh", "ms3d", "b3d", "smd", "bvh"};
@@ -81,8 +80,7 @@ namespace {
 bool pose_scene(const LoadedMesh& mesh, ContourScene& scene, const std::optional<ClipPose>& pose) {
     if (!pose) {
         if (!scene.posed) return false;
-        scene.topology.positions = scene.rest_positions;
-        scene.topology.normals = scene.rest_normals;
+        scene.topology = scene.rest;
         scene.posed = false;
         if (scene.tracking) scene.tracking->jump();
     } else {
@@ -93,17 +91,15 @@ bool pose_scene(const LoadedMesh& mesh, ContourScene& scene, const std::optional
         if (!scene.driver || !(scene.driver_spec == pose->clip)) {
             scene.driver.reset();
             const glm::dvec3 centre = 0.5 * (mesh.report.bbox_min + mesh.report.bbox_max);
-            scene.driver = std::make_unique<FrameDriver>(pose->clip, mesh, scene.topology, Camera{}, Light{}, centre,
+            scene.driver = std::make_unique<FrameDriver>(pose->clip, mesh, scene.rest, Camera{}, Light{}, centre,
                                                          scene.mesh_path);
             scene.driver_spec = pose->clip;
         }
-        Camera unused_camera;
-        Light unused_light;
-        scene.driver->apply(pose->frame, unused_camera, unused_light);
+        scene.topology = scene.driver->pose(pose->frame).mesh;
         scene.posed = true;
         scene.posed_frame = pose->frame;
     }
-    scene.rays->refit();
+    scene.rays->refit(scene.topology);
     return true;
 }
 

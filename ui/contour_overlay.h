@@ -20,17 +20,17 @@
 namespace snaxels::ui {
 
 /// What contour computation needs of a loaded mesh, built once per mesh.
-/// For the mesh's own clips its topology is posed frame by frame; one
-/// computation at a time may use it.
+/// For the mesh's own clips the scene moves to another pose of the same
+/// connectivity frame by frame; one computation at a time may use it.
 struct ContourScene {
-    MeshTopology topology;
-    std::unique_ptr<RayScene> rays; ///< refers to topology: keep the scene where it is
+    MeshTopology rest;              ///< the mesh as loaded (its topology for the engine)
+    MeshTopology topology;          ///< the pose computed last: rest, or a clip frame
+    std::unique_ptr<RayScene> rays; ///< the BVH of topology's pose
     std::string mesh_path;          ///< the file clips are read from
     std::vector<AnimationClipInfo> clips;
-    std::vector<glm::dvec3> rest_positions, rest_normals; ///< the loaded pose
-    std::unique_ptr<FrameDriver> driver;                  ///< for the clip posed last
+    std::unique_ptr<FrameDriver> driver; ///< for the clip posed last
     AnimationSpec driver_spec;
-    bool posed = false; ///< the topology is not in the loaded pose
+    bool posed = false;  ///< topology is a clip frame, not rest
     int posed_frame = 0; ///< the clip frame posed last
     /// The contours of the last frame, followed to the next one (orbits,
     /// light turns and one-frame scrubs track; a jump starts anew).

@@ -372,22 +372,10 @@ void MainWindow::ensureParabolic() {
         return;
     }
     searchFor_ = meshGeneration_;
-    // The loaded pose's connectivity and positions (the overlay may be
-    // posing scene_->topology on its thread meanwhile: only the rest copies
-    // and the fixed connectivity are read here).
-    auto topology = std::make_shared<MeshTopology>();
-    const MeshTopology& t = scene_->topology;
-    topology->positions = scene_->rest_positions;
-    topology->normals = scene_->rest_normals;
-    topology->edge_vertices = t.edge_vertices;
-    topology->edge_faces = t.edge_faces;
-    topology->face_vertices = t.face_vertices;
-    topology->face_edges = t.face_edges;
-    topology->ring_start = t.ring_start;
-    topology->ring = t.ring;
-    topology->ring_edge = t.ring_edge;
-    topology->mean_edge_length = t.mean_edge_length;
-    topology->refinement = t.refinement;
+    // The mesh as loaded: a value sharing its connectivity and pose (the
+    // overlay's thread may move the scene to another pose meanwhile; the
+    // rest pose never changes).
+    const MeshTopology topology = scene_->rest;
     parabolicCancel_ = std::make_shared<std::atomic<bool>>(false);
     ParabolicOptions options;
     QPointer<QProgressBar> bar(parabolicProgress_);
@@ -407,7 +395,7 @@ void MainWindow::ensureParabolic() {
     parabolicError_ = std::make_shared<QString>(); // written by the search, read when it has finished
     parabolicWatcher_.setFuture(QtConcurrent::run([topology, options, error = parabolicError_]() -> std::shared_ptr<const ParabolicResult> {
         try {
-            return cached_parabolic(*topology, options);
+            return cached_parabolic(topology, options);
         } catch (const ParabolicCancelled&) {
             return nullptr;
         } catch (const std::exception& e) {
@@ -629,8 +617,8 @@ void MainWindow::onLoadFinished() {
                             .arg(r.boundary_edges)
                             .arg(r.split_vertices ? tr(", %1 vertices split").arg(r.split_vertices)
                                                   : QString())
-                            .arg(scene_->topology.refinement
-                                     ? tr(" (refined to %1 faces for contours)").arg(scene_->topology.n_faces())
+                            .arg(scene_->rest.refinement()
+                                     ? tr(" (refined to %1 faces for contours)").arg(scene_->rest.n_faces())
                                      : QString()));
     statusBar()->showMessage(tr("Loaded %1").arg(QFileInfo(loadingSpec_).fileName()), 4000);
     if (pendingProject_) {

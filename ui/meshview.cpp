@@ -198,7 +198,7 @@ std::size_t display_face_budget() { return face_budget.load(); }
 MeshGeometry mesh_geometry(const MeshTopology& mesh, std::size_t max_faces) {
     MeshGeometry g;
     glm::dvec3 lo(std::numeric_limits<double>::max()), hi(-std::numeric_limits<double>::max());
-    for (const glm::dvec3& p : mesh.positions) {
+    for (const glm::dvec3& p : mesh.positions()) {
         lo = glm::min(lo, p);
         hi = glm::max(hi, p);
     }
@@ -209,8 +209,8 @@ MeshGeometry mesh_geometry(const MeshTopology& mesh, std::size_t max_faces) {
     };
     if (max_faces == 0 || mesh.n_faces() <= max_faces) {
         g.vertices.reserve(mesh.n_faces() * 18);
-        for (const auto& f : mesh.face_vertices)
-            for (const std::int32_t v : f) corner(mesh.positions[v], mesh.normals[v]);
+        for (const auto& f : mesh.face_vertices())
+            for (const std::int32_t v : f) corner(mesh.positions()[v], mesh.normals()[v]);
         return g;
     }
     // Vertex clustering on a uniform grid: each cell's vertices merge into
@@ -224,13 +224,13 @@ MeshGeometry mesh_geometry(const MeshTopology& mesh, std::size_t max_faces) {
     std::vector<std::uint32_t> cluster(mesh.n_vertices());
     std::vector<glm::dvec3> sum_p, sum_n;
     for (std::size_t v = 0; v < mesh.n_vertices(); ++v) {
-        const glm::dvec3 q = glm::floor((mesh.positions[v] - lo) / cell);
+        const glm::dvec3 q = glm::floor((mesh.positions()[v] - lo) / cell);
         const std::uint64_t key = std::uint64_t(q.x) + std::uint64_t(dims.x) * (std::uint64_t(q.y) + std::uint64_t(dims.y) * std::uint64_t(q.z));
         auto [it, inserted] = cluster_of_cell.try_emplace(key, std::uint32_t(sum_p.size()));
         if (inserted) sum_p.emplace_back(0.0), sum_n.emplace_back(0.0);
         cluster[v] = it->second;
-        sum_p[it->second] += mesh.positions[v];
-        sum_n[it->second] += mesh.normals[v];
+        sum_p[it->second] += mesh.positions()[v];
+        sum_n[it->second] += mesh.normals()[v];
     }
     std::vector<std::uint32_t> count(sum_p.size(), 0);
     for (const auto c : cluster) ++count[c];
@@ -239,7 +239,7 @@ MeshGeometry mesh_geometry(const MeshTopology& mesh, std::size_t max_faces) {
         const double len = glm::length(sum_n[c]);
         sum_n[c] = len > 0.0 ? sum_n[c] / len : glm::dvec3(0.0, 0.0, 1.0);
     }
-    for (const auto& f : mesh.face_vertices) {
+    for (const auto& f : mesh.face_vertices()) {
         const std::uint32_t c[3] = {cluster[f[0]], cluster[f[1]], cluster[f[2]]};
         if (c[0] == c[1] || c[1] == c[2] || c[0] == c[2]) continue;
         // Clustering can fold a face over; such slivers would show dark.

@@ -77,7 +77,7 @@ int run_bench(const std::vector<std::string>& argv) {
               "(" + std::to_string(import_runs) + " runs)");
     MeshTopology topology;
     print_row("topology", time_it(repeat, [&] { topology = engine_topology(loaded.mesh); }),
-              topology.refinement ? "(refined to " + std::to_string(topology.n_faces()) + " faces)" : "");
+              topology.refinement() ? "(refined to " + std::to_string(topology.n_faces()) + " faces)" : "");
     const SnaxelEngine engine(topology);
     Camera camera;
     camera.view_dir = glm::normalize(glm::dvec3(0.4, -0.3, 1.0));

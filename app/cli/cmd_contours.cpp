@@ -83,7 +83,7 @@ int run_contours(const std::vector<std::string>& argv) {
     if (!json_out.empty()) {
         nlohmann::json doc = contours_to_json(report, camera, light, still.drawing, results,
                                               planar || !still.regions.empty() ? &still.regions : nullptr);
-        doc["engine"] = {{"refine_levels", topology.refinement ? topology.refinement->levels : 0},
+        doc["engine"] = {{"refine_levels", topology.refinement() ? topology.refinement()->levels : 0},
                          {"faces", topology.n_faces()}};
         emit(json_out, doc.dump() + "\n");
     }

@@ -71,12 +71,14 @@ int run_render(const std::vector<std::string>& argv) {
     find_parabolic_with_progress(topology, job.kinds); // on the pose as loaded, as the animation does
     const glm::dvec3 centre = 0.5 * (loaded.report.bbox_min + loaded.report.bbox_max);
     FrameDriver driver(job.animation, loaded, topology, job.camera, job.light, centre, mesh_path);
+    const FramePose pose = driver.pose(frame);
     StillJob still;
-    driver.apply(frame, still.camera, still.light);
+    still.camera = pose.camera;
+    still.light = pose.light;
     still.kinds = job.kinds;
     still.style = style;
     still.engine = job.engine;
-    const StillOutput out = render_still(loaded, topology, nullptr, still);
+    const StillOutput out = render_still(loaded, pose.mesh, nullptr, still);
     write_file_atomically(*output, out.svg);
     std::printf("%s: frame %d, %zu bytes\n", output->c_str(), frame, out.svg.size());
     return 0;

@@ -11,10 +11,11 @@
 
 namespace snaxels {
 
-FrameDriver::FrameDriver(const AnimationSpec& spec, const LoadedMesh& mesh, MeshTopology& topology,
+FrameDriver::FrameDriver(const AnimationSpec& spec, const LoadedMesh& mesh, const MeshTopology& topology,
                          const Camera& camera, const Light& light, const glm::dvec3& centre,
                          const std::string& mesh_path)
-    : spec_(spec), mesh_(mesh), topo_(topology), camera_(camera), light_(light), centre_(centre) {
+    : spec_(spec), vertex_source_(mesh.vertex_source), rest_(topology), camera_(camera), light_(light),
+      centre_(centre) {
     if (spec_.kind == AnimationSpec::Kind::Clip) clip_ = std::make_unique<MeshAnimation>(mesh_path, spec_.clip);
     if (spec_.kind == AnimationSpec::Kind::Sequence) {
         if (spec_.first_file < 0) {
@@ -110,46 +111,47 @@ Light light_at_frame(const AnimationSpec& spec, const Light& light, double sourc
     return out;
 }
 
-void FrameDriver::apply(int k, Camera& camera, Light& light) {
-    camera = camera_;
-    light = light_;
+FramePose FrameDriver::pose(int k) {
+    FramePose out{camera_, light_, rest_};
     k += spec_.start;
     const double angle = glm::radians(spec_.degrees_per_frame * k);
     const glm::dvec3 axis = glm::normalize(camera_.up);
     switch (spec_.kind) {
     case AnimationSpec::Kind::Turntable:
         // The camera orbits the target about the up axis, as on a turntable.
-        if (camera.orthographic()) {
-            camera.view_dir = glm::rotate(camera_.view_dir, angle, axis);
+        if (out.camera.orthographic()) {
+            out.camera.view_dir = glm::rotate(camera_.view_dir, angle, axis);
         } else {
-            camera.eye = camera_.target + glm::rotate(camera_.eye - camera_.target, angle, axis);
+            out.camera.eye = camera_.target + glm::rotate(camera_.eye - camera_.target, angle, axis);
         }
-        light = light_at_frame(spec_, light_, double(k), axis, centre_);
+        out.light = light_at_frame(spec_, light_, double(k), axis, centre_);
         break;
-    case AnimationSpec::Kind::LightOrbit:
-        light = light_at_frame(spec_, light_, double(k), axis, centre_);
-        break;
+    case AnimationSpec::Kind::LightOrbit: out.light = light_at_frame(spec_, light_, double(k), axis, centre_); break;
     case AnimationSpec::Kind::Clip:
+    case AnimationSpec::Kind::Sequence: out.mesh = mesh_pose(k); break;
+    case AnimationSpec::Kind::Still: break;
+    }
+    return out;
+}
+
+MeshTopology FrameDriver::mesh_pose(int k) {
+    std::vector<glm::dvec3> positions(rest_.n_base_vertices());
+    if (spec_.kind == AnimationSpec::Kind::Clip) {
         clip_->pose(double(k) / spec_.fps, soup_);
-        for (std::size_t v = 0; v < topo_.n_base_vertices(); ++v) topo_.positions[v] = soup_[mesh_.vertex_source[v]];
-        recompute_normals(topo_);
-        break;
-    case AnimationSpec::Kind::Sequence: {
+        for (std::size_t v = 0; v < positions.size(); ++v) positions[v] = soup_[vertex_source_[v]];
+    } else {
         const std::string path = sequence_path(k);
         const TriangleSoup soup = read_triangle_soup(path);
         if (soup.positions.size() != soup_size_)
             throw Error(path + ": has " + std::to_string(soup.positions.size()) +
                         " vertices where the sequence's first file has " + std::to_string(soup_size_) +
                         " (every file must share one connectivity)");
-        for (std::size_t v = 0; v < topo_.n_base_vertices(); ++v) topo_.positions[v] = soup.positions[mesh_.vertex_source[v]];
-        for (const auto& p : topo_.positions)
+        for (std::size_t v = 0; v < positions.size(); ++v) positions[v] = soup.positions[vertex_source_[v]];
+        for (const auto& p : positions)
             if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z))
                 throw Error(path + ": a vertex has a non-finite coordinate");
-        recompute_normals(topo_);
-        break;
     }
-    case AnimationSpec::Kind::Still: break;
-    }
+    return rest_.posed(std::make_shared<const MeshPose>(make_pose(*rest_.connectivity(), std::move(positions))));
 }
 
 } // namespace snaxels

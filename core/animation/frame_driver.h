@@ -36,29 +36,42 @@ struct AnimationSpec {
 Light light_at_frame(const AnimationSpec& spec, const Light& light, double source_frame, const glm::dvec3& axis,
                      const glm::dvec3& centre);
 
+/// What one frame shows: where the camera and the light are, and the mesh
+/// in its pose (the loaded one unless a clip or a sequence moves it).
+struct FramePose {
+    Camera camera;
+    Light light;
+    MeshTopology mesh;
+};
+
 /// Poses the scene for each frame: camera, light, and (for clips and
-/// sequences) the mesh's positions and normals in @p topology.
+/// sequences) the mesh, as a pose of its one shared connectivity.
 class FrameDriver {
   public:
-    /// @p mesh is the loaded first frame (or bind pose); @p centre the point
-    /// the camera and light orbit (the mesh's bounding-box centre).
-    FrameDriver(const AnimationSpec& spec, const LoadedMesh& mesh, MeshTopology& topology,
+    /// @p mesh is the loaded first frame (or bind pose) and @p topology the
+    /// engine's topology of it (refined or not); @p centre the point the
+    /// camera and light orbit (the mesh's bounding-box centre).
+    FrameDriver(const AnimationSpec& spec, const LoadedMesh& mesh, const MeshTopology& topology,
                 const Camera& camera, const Light& light, const glm::dvec3& centre,
                 const std::string& mesh_path);
     ~FrameDriver();
 
     bool mesh_moves() const;
-    /// Poses frame @p k (0-based, counted from the spec's start); throws snaxels::Error if a sequence file
-    /// is missing or does not match the first frame's connectivity.
-    void apply(int k, Camera& camera, Light& light);
+    /// Frame @p k (0-based, counted from the spec's start); throws
+    /// snaxels::Error if a sequence file is missing or does not match the
+    /// first frame's connectivity.
+    FramePose pose(int k);
 
     /// The file of sequence frame @p k.
     std::string sequence_path(int k) const;
 
   private:
+    /// The mesh at frame @p k of a clip or a sequence.
+    MeshTopology mesh_pose(int k);
+
     AnimationSpec spec_;
-    const LoadedMesh& mesh_;
-    MeshTopology& topo_;
+    std::vector<std::uint32_t> vertex_source_; ///< per mesh vertex: its vertex in the file's triangle soup
+    MeshTopology rest_;
     Camera camera_;
     Light light_;
     glm::dvec3 centre_;

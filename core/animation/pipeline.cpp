@@ -86,19 +86,16 @@ struct ImageFrame {
 /// The image frame: the mesh's bounding sphere over every frame; a mesh that
 /// moves is framed on the union of its poses over the animation (its rest
 /// pose, as loaded, may stand elsewhere and at another scale).
-ImageFrame frame_image(FrameDriver& driver, const MeshTopology& topology, const LoadedMesh& mesh, const AnimationJob& job,
-                       int frames) {
+ImageFrame frame_image(FrameDriver& driver, const LoadedMesh& mesh, const AnimationJob& job, int frames) {
     const glm::dvec3 mesh_centre = 0.5 * (mesh.report.bbox_min + mesh.report.bbox_max);
     glm::dvec3 lo = mesh.report.bbox_min, hi = mesh.report.bbox_max;
     ImageFrame out;
     out.camera = job.camera;
     if (driver.mesh_moves()) {
         lo = glm::dvec3(1e300), hi = glm::dvec3(-1e300);
-        Camera c;
-        Light l;
         for (int k = 0; k < frames; ++k) {
-            driver.apply(k, c, l);
-            for (const auto& p : topology.positions) lo = glm::min(lo, p), hi = glm::max(hi, p);
+            const FramePose pose = driver.pose(k); // named: the positions are a view into it
+            for (const auto& p : pose.mesh.positions()) lo = glm::min(lo, p), hi = glm::max(hi, p);
         }
         // A perspective camera aimed at the loaded mesh's centre (the
         // default) follows it to the poses' centre.
@@ -154,7 +151,7 @@ void fasten_dashes(SurfaceDashPhase& phase, const Fronts& fronts, DrawnContour& 
         loops.push_back(std::move(pl));
     }
     const std::vector<double> phases = phase.step(loops, [&](const SurfacePoint& sp) {
-        return projection.project((1.0 - sp.t) * topology.positions[sp.a] + sp.t * topology.positions[sp.b]);
+        return projection.project((1.0 - sp.t) * topology.positions()[sp.a] + sp.t * topology.positions()[sp.b]);
     });
     for (std::size_t l = 0; l < phases.size(); ++l) drawn.loops[l].dash_phase = phases[l];
 }
@@ -183,13 +180,13 @@ void finish_output(AnimationWriter& writer, AtomicFile* file, AnimationOutput& o
 
 AnimationOutput run_animation(const LoadedMesh& mesh, const std::string& mesh_path, const AnimationJob& job) {
     AnimationOutput out;
-    MeshTopology topology = engine_topology(mesh.mesh, job.refine);
-    attach_parabolic(topology, job);
+    MeshTopology rest = engine_topology(mesh.mesh, job.refine); // the mesh as loaded
+    attach_parabolic(rest, job);
     const glm::dvec3 mesh_centre = 0.5 * (mesh.report.bbox_min + mesh.report.bbox_max);
-    FrameDriver driver(job.animation, mesh, topology, job.camera, job.light, mesh_centre, mesh_path);
+    FrameDriver driver(job.animation, mesh, rest, job.camera, job.light, mesh_centre, mesh_path);
     const int frames = frame_count(job, mesh_path);
     out.frames = frames;
-    const ImageFrame image = frame_image(driver, topology, mesh, job, frames);
+    const ImageFrame image = frame_image(driver, mesh, job, frames);
 
     if (!job.frames_dir.empty()) {
         std::error_code ec;
@@ -199,7 +196,7 @@ AnimationOutput run_animation(const LoadedMesh& mesh, const std::string& mesh_pa
     std::vector<ContourTracker> trackers;
     std::vector<std::unique_ptr<SurfaceDashPhase>> dash_phases; // per kind
     for (const ContourSpec& spec : job.kinds) {
-        trackers.emplace_back(topology, spec, job.engine);
+        trackers.emplace_back(rest, spec, job.engine);
         dash_phases.push_back(surface_dash_phase(job, spec));
     }
     // Fills: the planar map's contours the drawn ones lack are tracked too.
@@ -209,25 +206,26 @@ AnimationOutput run_animation(const LoadedMesh& mesh, const std::string& mesh_pa
     if (fills)
         for (const ContourSpec& spec : fill_specs)
             if (std::none_of(job.kinds.begin(), job.kinds.end(), [&](const ContourSpec& k) { return k.same_as(spec); }))
-                fill_trackers.emplace_back(topology, spec, job.engine);
+                fill_trackers.emplace_back(rest, spec, job.engine);
     RegionTracker region_tracker;
     std::unique_ptr<RayScene> rays;
-    const SnaxelEngine engine(topology);
     // Frames are encoded as they come; the document is written at the end.
     AnimationWriter writer(job.format, std::size_t(frames), job.animation.fps, job.svg, job.style);
     std::unique_ptr<AtomicFile> file;
     if (!job.output.empty()) file = std::make_unique<AtomicFile>(job.output); // fails early on a bad path
     for (int k = 0; k < frames; ++k) {
         if (job.cancelled && job.cancelled()) throw AnimationCancelled();
-        Camera camera;
-        Light light;
-        driver.apply(k, camera, light);
+        FramePose pose = driver.pose(k);
+        const MeshTopology& topology = pose.mesh;
+        const Light& light = pose.light;
+        Camera& camera = pose.camera;
         if (driver.mesh_moves()) camera = image.camera; // a moving mesh's camera stays (framed on its poses)
-        require_mesh_in_front(camera, topology.positions, image.radius);
+        require_mesh_in_front(camera, topology.positions(), image.radius);
         if (job.visibility || fills) {
             if (!rays) rays = std::make_unique<RayScene>(topology);
-            else if (driver.mesh_moves()) rays->refit();
+            else if (driver.mesh_moves()) rays->refit(topology);
         }
+        const SnaxelEngine engine(topology);
         std::vector<ContourResult> results;
         std::vector<ContourVisibility> visibility;
         AnimationFrame frame;
@@ -235,8 +233,8 @@ AnimationOutput run_animation(const LoadedMesh& mesh, const std::string& mesh_pa
         // The kinds track independently: in parallel.
         std::vector<const TrackedFrame*> tracked(trackers.size() + fill_trackers.size());
         parallel_for(tracked.size(), [&](std::size_t c) {
-            tracked[c] = c < trackers.size() ? &trackers[c].step(camera, light)
-                                             : &fill_trackers[c - trackers.size()].step(camera, light);
+            tracked[c] = c < trackers.size() ? &trackers[c].step(topology, camera, light)
+                                             : &fill_trackers[c - trackers.size()].step(topology, camera, light);
         }, 1);
         for (std::size_t c = 0; c < trackers.size(); ++c) {
             const TrackedFrame& tf = *tracked[c];

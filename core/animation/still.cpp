@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <memory>
+#include <stdexcept>
 
 #include "snaxels/export/svg.h"
 #include "snaxels/util/detail/parallel.h"
@@ -30,8 +31,7 @@ StillJob make_still_job(const Style& style, const Camera& camera, const std::opt
     return job;
 }
 
-StillTracking::StillTracking(const MeshTopology& topology, double max_step_deg)
-    : topo_(topology), max_step_deg_(max_step_deg) {}
+StillTracking::StillTracking(double max_step_deg) : max_step_deg_(max_step_deg) {}
 
 namespace {
 
@@ -41,15 +41,17 @@ double angle_deg(const glm::dvec3& a, const glm::dvec3& b) {
 
 } // namespace
 
-std::vector<ContourResult> StillTracking::compute(const std::vector<ContourSpec>& specs, const Camera& camera,
-                                                  const Light& light, const EngineOptions& options,
-                                                  const glm::dvec3& centre) {
-    // A far step: what the view and the light look like from the mesh's centre.
-    bool far = !camera_ || !light_ || camera_->projection != camera.projection || light_->point != light.point;
+std::vector<ContourResult> StillTracking::compute(const MeshTopology& topology, const std::vector<ContourSpec>& specs,
+                                                  const Camera& camera, const Light& light,
+                                                  const EngineOptions& options, const glm::dvec3& centre) {
+    // A far step: another mesh, or what the view and the light look like
+    // from the mesh's centre.
+    bool far = connectivity_ != topology.connectivity() || !camera_ || !light_ || camera_->projection != camera.projection || light_->point != light.point;
     if (!far)
         far = angle_deg(camera_->to_viewer(centre), camera.to_viewer(centre)) > max_step_deg_ ||
               angle_deg(light_->to_light(centre), light.to_light(centre)) > max_step_deg_;
     if (far) trackers_.clear();
+    connectivity_ = topology.connectivity();
     camera_ = camera;
     light_ = light;
     // Trackers for the kinds asked for, in order; the others forgotten.
@@ -63,7 +65,7 @@ std::vector<ContourResult> StillTracking::compute(const std::vector<ContourSpec>
             auto old = trackers_.find(key);
             std::unique_ptr<ContourTracker> t = old != trackers_.end() && old->second
                                                     ? std::move(old->second)
-                                                    : std::make_unique<ContourTracker>(topo_, specs[i], options);
+                                                    : std::make_unique<ContourTracker>(topology, specs[i], options);
             it = kept.emplace(key, std::move(t)).first;
         }
         tracker[i] = it->second.get();
@@ -71,7 +73,7 @@ std::vector<ContourResult> StillTracking::compute(const std::vector<ContourSpec>
     trackers_ = std::move(kept);
     std::vector<ContourResult> results(specs.size());
     std::vector<char> fresh(specs.size(), 0);
-    const SnaxelEngine engine(topo_);
+    const SnaxelEngine engine(topology);
     // One tracker may serve two equal specs: each tracker steps once.
     std::vector<std::size_t> first_of(specs.size());
     for (std::size_t i = 0; i < specs.size(); ++i) {
@@ -87,7 +89,7 @@ std::vector<ContourResult> StillTracking::compute(const std::vector<ContourSpec>
             results[i] = engine.compute(specs[i], camera, light, options);
         } else if (first_of[i] == i) {
             fresh[i] = tracker[i]->frames() == 0;
-            results[i] = tracker[i]->step(camera, light).contour;
+            results[i] = tracker[i]->step(topology, camera, light).contour;
         }
     }, 1);
     for (std::size_t i = 0; i < specs.size(); ++i) {
@@ -103,7 +105,9 @@ StillOutput render_still(const LoadedMesh& mesh, const MeshTopology& topology, c
     const MeshReport& report = mesh.report;
     const glm::dvec3 centre = 0.5 * (report.bbox_min + report.bbox_max);
     const double radius = std::max(0.5 * glm::length(report.bbox_max - report.bbox_min), 1e-12);
-    require_mesh_in_front(job.camera, topology.positions, radius);
+    if (rays && rays->topology().pose() != topology.pose())
+        throw std::invalid_argument("render_still: the ray scene is of another pose than the topology");
+    require_mesh_in_front(job.camera, topology.positions(), radius);
     const SnaxelEngine engine(topology);
 
     // Every contour at once (in parallel): the drawn kinds, then those the
@@ -122,7 +126,7 @@ StillOutput render_still(const LoadedMesh& mesh, const MeshTopology& topology, c
     }
     std::vector<ContourResult> all;
     if (tracking) {
-        all = tracking->compute(specs, job.camera, job.light, job.engine, centre);
+        all = tracking->compute(topology, specs, job.camera, job.light, job.engine, centre);
     } else {
         all.resize(specs.size());
         parallel_for(specs.size(), [&](std::size_t i) { all[i] = engine.compute(specs[i], job.camera, job.light, job.engine); }, 1);

@@ -60,14 +60,16 @@ std::vector<ContourSpec> style_kinds(const Style& style);
 /// curves, the mesh's own, are never tracked.
 class StillTracking {
   public:
-    /// @p topology may move between frames (a posed mesh); its connectivity may not.
-    explicit StillTracking(const MeshTopology& topology, double max_step_deg = 10.0);
+    explicit StillTracking(double max_step_deg = 10.0);
 
-    /// The next frame's contour of every kind in @p specs (in order), each
-    /// tracked from its last frame or computed from scratch; kinds not asked
-    /// for are forgotten. The kinds run in parallel.
-    std::vector<ContourResult> compute(const std::vector<ContourSpec>& specs, const Camera& camera, const Light& light,
-                                       const EngineOptions& options, const glm::dvec3& centre);
+    /// The next frame's contour of every kind in @p specs (in order) on
+    /// @p topology, each tracked from its last frame or computed from
+    /// scratch; kinds not asked for are forgotten. The kinds run in
+    /// parallel. The mesh may move between frames (another pose of its
+    /// connectivity); another mesh starts every kind anew.
+    std::vector<ContourResult> compute(const MeshTopology& topology, const std::vector<ContourSpec>& specs,
+                                       const Camera& camera, const Light& light, const EngineOptions& options,
+                                       const glm::dvec3& centre);
 
     /// The mesh jumped (another pose, edited geometry): every kind starts anew.
     void jump() { trackers_.clear(); }
@@ -76,8 +78,8 @@ class StillTracking {
     std::size_t restarts() const { return restarts_; }       ///< kind-frames computed from scratch
 
   private:
-    const MeshTopology& topo_;
     double max_step_deg_;
+    std::shared_ptr<const MeshConnectivity> connectivity_; ///< of the mesh tracked
     std::map<std::string, std::unique_ptr<ContourTracker>> trackers_; ///< by ContourSpec::label()
     std::optional<Camera> camera_;
     std::optional<Light> light_;

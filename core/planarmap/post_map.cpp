@@ -122,7 +122,7 @@ class PostMapBuilder {
         if (a > 0.0) regions_.push_back({classes_.region_class(cls), classes_.level(cls), depth, from_paths(paths), a});
     }
     bool facing(const std::array<std::int32_t, 3>& f) const {
-        const glm::dvec3 &a = topo_.positions[f[0]], &b = topo_.positions[f[1]], &c = topo_.positions[f[2]];
+        const glm::dvec3 &a = topo_.positions()[f[0]], &b = topo_.positions()[f[1]], &c = topo_.positions()[f[2]];
         return glm::dot(glm::cross(b - a, c - a), camera_.to_viewer((a + b + c) / 3.0)) > 0.0;
     }
     bool corners_face_viewer(const std::array<std::int32_t, 3>& f) const {
@@ -132,7 +132,7 @@ class PostMapBuilder {
     /// The mean N.L of a face's corners.
     double face_nl(const std::array<std::int32_t, 3>& f) const {
         double nl = 0.0;
-        for (const auto v : f) nl += glm::dot(topo_.normals[v], light_.to_light(topo_.positions[v]));
+        for (const auto v : f) nl += glm::dot(topo_.normals()[v], light_.to_light(topo_.positions()[v]));
         return nl / 3.0;
     }
 
@@ -150,8 +150,8 @@ class PostMapBuilder {
         bool open = false;
         for (std::size_t e = 0; e < topo_.n_edges() && !open; ++e) open = topo_.is_boundary_edge(std::int32_t(e));
         parallel_for(topo_.n_faces(), [&](std::size_t i) {
-            const auto& f = topo_.face_vertices[i];
-            const glm::dvec3 &a = topo_.positions[f[0]], &b = topo_.positions[f[1]], &c = topo_.positions[f[2]];
+            const auto& f = topo_.face_vertices()[i];
+            const glm::dvec3 &a = topo_.positions()[f[0]], &b = topo_.positions()[f[1]], &c = topo_.positions()[f[2]];
             const glm::dvec3 n = glm::normalize(glm::cross(b - a, c - a));
             if (!facing(f)) {
                 // Turned away inside a patch (its corners face the viewer by
@@ -180,11 +180,11 @@ class PostMapBuilder {
         Outline outline;
         for (std::size_t i = 0; i < topo_.n_faces(); ++i) {
             if (!take(i)) continue;
-            auto f = topo_.face_vertices[i];
+            auto f = topo_.face_vertices()[i];
             if (shows_[i] == kBackShown) std::swap(f[1], f[2]);
             for (int k = 0; k < 3; ++k) outline.walk(f[std::size_t(k)], f[std::size_t((k + 1) % 3)]);
         }
-        return outline.paths([&](std::int64_t v) { return projection_.project(topo_.positions[std::size_t(v)]); });
+        return outline.paths([&](std::int64_t v) { return projection_.project(topo_.positions()[std::size_t(v)]); });
     }
 
     // ---- the shown faces cut into classes -----------------------------------
@@ -202,10 +202,10 @@ class PostMapBuilder {
     void shading_values() {
         std::vector<double> nl(topo_.n_vertices()), rv(topo_.n_vertices());
         for (std::size_t v = 0; v < topo_.n_vertices(); ++v) {
-            const glm::dvec3& n = topo_.normals[v];
-            const glm::dvec3 l = light_.to_light(topo_.positions[v]);
+            const glm::dvec3& n = topo_.normals()[v];
+            const glm::dvec3 l = light_.to_light(topo_.positions()[v]);
             nl[v] = glm::dot(n, l);
-            rv[v] = glm::dot(camera_.to_viewer(topo_.positions[v]), 2.0 * nl[v] * n - l);
+            rv[v] = glm::dot(camera_.to_viewer(topo_.positions()[v]), 2.0 * nl[v] * n - l);
         }
         auto minus = [](const std::vector<double>& x, double k) {
             std::vector<double> out(x.size());
@@ -248,10 +248,10 @@ class PostMapBuilder {
         };
         for (std::size_t i = 0; i < topo_.n_faces(); ++i) {
             if (shows_[i] == kBackShown) {
-                auto f = topo_.face_vertices[i];
+                auto f = topo_.face_vertices()[i];
                 std::swap(f[1], f[2]); // seen from behind: walked the way it winds in the image
                 std::vector<Corner> piece;
-                for (const auto v : f) piece.push_back({v, -1, topo_.positions[std::size_t(v)], {}});
+                for (const auto v : f) piece.push_back({v, -1, topo_.positions()[std::size_t(v)], {}});
                 add_piece(count_ + face_class_[i], piece);
                 continue;
             }
@@ -282,10 +282,10 @@ class PostMapBuilder {
     /// Face @p i cut where each function crosses zero; @p inner numbers the
     /// cut points inside faces.
     std::vector<std::vector<Corner>> cut_face(std::size_t i, std::int64_t& inner) const {
-        const auto& fv = topo_.face_vertices[i];
+        const auto& fv = topo_.face_vertices()[i];
         std::vector<Corner> poly;
         for (int k = 0; k < 3; ++k) {
-            Corner c{fv[std::size_t(k)], k, topo_.positions[std::size_t(fv[std::size_t(k)])], {}};
+            Corner c{fv[std::size_t(k)], k, topo_.positions()[std::size_t(fv[std::size_t(k)])], {}};
             for (const auto& fn : value_) c.f.push_back(fn[std::size_t(fv[std::size_t(k)])]);
             poly.push_back(std::move(c));
         }
@@ -298,7 +298,7 @@ class PostMapBuilder {
     /// A part of face @p i split where function @p j crosses zero.
     std::pair<std::vector<Corner>, std::vector<Corner>> split_part(const std::vector<Corner>& part, std::size_t i,
                                                                    std::size_t j, std::int64_t& inner) const {
-        const auto& fe = topo_.face_edges[i];
+        const auto& fe = topo_.face_edges()[i];
         const std::size_t K = value_.size();
         auto crossing = [&](const Corner& a, const Corner& b, std::size_t) {
             Corner q;
@@ -307,11 +307,11 @@ class PostMapBuilder {
             if (a.along >= 0) {
                 // On a mesh edge: the edge's own root, the same for both faces.
                 const std::int32_t e = fe[std::size_t(a.along)];
-                const std::int32_t u = topo_.edge_vertices[e][0], w = topo_.edge_vertices[e][1];
+                const std::int32_t u = topo_.edge_vertices()[e][0], w = topo_.edge_vertices()[e][1];
                 const double fu = value_[j][std::size_t(u)], fw = value_[j][std::size_t(w)];
                 const double t = fu == fw ? 0.5 : std::clamp(fu / (fu - fw), 0.0, 1.0);
                 q.id = std::int64_t(topo_.n_vertices()) + std::int64_t(e) * std::int64_t(K) + std::int64_t(j);
-                q.p = glm::mix(topo_.positions[std::size_t(u)], topo_.positions[std::size_t(w)], t);
+                q.p = glm::mix(topo_.positions()[std::size_t(u)], topo_.positions()[std::size_t(w)], t);
                 for (std::size_t m = 0; m < K; ++m) q.f[m] = glm::mix(value_[m][std::size_t(u)], value_[m][std::size_t(w)], t);
             } else {
                 const double fa = a.f[j], fb = b.f[j];
@@ -402,7 +402,7 @@ class PostMapBuilder {
             const auto found = open_patch_.find(patch);
             const char how = found == open_patch_.end() ? 0 : found->second;
             const Paths shape = how == 2 ? outline_of([&](std::size_t i) {
-                const auto& f = topo_.face_vertices[i];
+                const auto& f = topo_.face_vertices()[i];
                 return facing(f) && patch_of_[std::size_t(f[0])] == patch && patch_of_[std::size_t(f[1])] == patch &&
                        patch_of_[std::size_t(f[2])] == patch;
             }) : patches_.at(patch);
@@ -485,7 +485,7 @@ class PostMapBuilder {
         const int shading = 2 + bands_n_; // the band's classes: shadow, lit, bands
         std::vector<int> nl_class(topo_.n_faces(), -1);
         for (std::size_t i = 0; i < topo_.n_faces(); ++i) {
-            const auto& f = topo_.face_vertices[i];
+            const auto& f = topo_.face_vertices()[i];
             if (corners_face_viewer(f) && !fold[f[0]] && !fold[f[1]] && !fold[f[2]]) continue;
             if (!facing(f)) continue; // turned away: hidden on closed meshes
             int cls = 1;
@@ -516,15 +516,15 @@ class PostMapBuilder {
             if (!fold[v]) fold[v] = 1, frontier.push_back(v);
         };
         for (const Snaxel& s : visual_.fronts.snaxels) mark(s.inside), mark(s.outside);
-        for (const auto& f : topo_.face_vertices) {
+        for (const auto& f : topo_.face_vertices()) {
             if (!corners_face_viewer(f) || facing(f)) continue;
             for (const auto v : f) mark(v);
         }
         for (int ring = 0; ring < 2; ++ring) {
             std::vector<std::int32_t> next;
             for (const std::int32_t v : frontier)
-                for (std::int32_t i = topo_.ring_start[v]; i < topo_.ring_start[v + 1]; ++i)
-                    if (!fold[topo_.ring[i]]) fold[topo_.ring[i]] = 1, next.push_back(topo_.ring[i]);
+                for (std::int32_t i = topo_.ring_start()[v]; i < topo_.ring_start()[v + 1]; ++i)
+                    if (!fold[topo_.ring()[i]]) fold[topo_.ring()[i]] = 1, next.push_back(topo_.ring()[i]);
             frontier = std::move(next);
         }
         return fold;

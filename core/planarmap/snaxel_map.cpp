@@ -246,13 +246,13 @@ class SnaxelMapBuilder {
 
     /// The shading class of a point on the far side of the surface from N.L alone.
     int class_of(double nl) const { return classes_.from_nl(nl); }
-    const glm::dvec3& position(std::int32_t v) const { return topo_.positions[std::size_t(v)]; }
+    const glm::dvec3& position(std::int32_t v) const { return topo_.positions()[std::size_t(v)]; }
     VertexLabel label(std::int32_t v) const { return label_[std::size_t(v)]; }
     double depth_of(const glm::dvec3& p) const {
         return camera_.orthographic() ? glm::dot(p, camera_.forward()) : glm::dot(p - camera_.eye, camera_.forward());
     }
     bool face_hidden(std::int32_t f) const {
-        const auto& fv = topo_.face_vertices[std::size_t(f)];
+        const auto& fv = topo_.face_vertices()[std::size_t(f)];
         const glm::dvec3 &p0 = position(fv[0]), &p1 = position(fv[1]), &p2 = position(fv[2]);
         return rays_.occluded(sampler_.face_ray(f, (p0 + p1 + p2) / 3.0, glm::normalize(glm::cross(p1 - p0, p2 - p0))));
     }
@@ -271,7 +271,7 @@ class SnaxelMapBuilder {
         parallel_for(std::size_t(V_), [&](std::size_t i) { label_[i] = label_vertex(std::int32_t(i), open); }, 256);
         // N.L of the vertices turned away too, which the walk past the contour uses.
         for (std::int32_t v = 0; v < V_; ++v)
-            if (label(v).is_away()) nl_[std::size_t(v)] = glm::dot(topo_.normals[std::size_t(v)], light_.to_light(position(v)));
+            if (label(v).is_away()) nl_[std::size_t(v)] = glm::dot(topo_.normals()[std::size_t(v)], light_.to_light(position(v)));
     }
 
     VertexLabel label_vertex(std::int32_t v, bool open) {
@@ -283,7 +283,7 @@ class SnaxelMapBuilder {
             // not, and faces past the contour may still be seen whole.
             return turned_away ? VertexLabel::away() : VertexLabel::occluded();
         }
-        nl_[i] = glm::dot(topo_.normals[i], light_.to_light(topo_.positions[i]));
+        nl_[i] = glm::dot(topo_.normals()[i], light_.to_light(topo_.positions()[i]));
         // Seen although turned away: through a hole of an open mesh, or a
         // corner past the contour of interpolated normals. Its side of the
         // surface forms its own regions, classed by N.L alone.
@@ -326,10 +326,10 @@ class SnaxelMapBuilder {
     /// (each face meets two of the vertex's ring edges).
     double vertex_area(std::int32_t v) const {
         double area = 0.0;
-        for (std::int32_t i = topo_.ring_start[v]; i < topo_.ring_start[v + 1]; ++i)
-            for (const std::int32_t f : topo_.edge_faces[std::size_t(topo_.ring_edge[i])]) {
+        for (std::int32_t i = topo_.ring_start()[v]; i < topo_.ring_start()[v + 1]; ++i)
+            for (const std::int32_t f : topo_.edge_faces()[std::size_t(topo_.ring_edge()[i])]) {
                 if (f == MeshTopology::kNone) continue;
-                const auto& fv = topo_.face_vertices[std::size_t(f)];
+                const auto& fv = topo_.face_vertices()[std::size_t(f)];
                 const glm::dvec2 p0 = projection_.project(position(fv[0]));
                 const glm::dvec2 p1 = projection_.project(position(fv[1]));
                 const glm::dvec2 p2 = projection_.project(position(fv[2]));
@@ -358,9 +358,9 @@ class SnaxelMapBuilder {
         for (const std::int32_t v : small) {
             const std::int32_t r = comp_[std::size_t(v)];
             if (supported[std::size_t(r)]) continue;
-            bool interior = topo_.ring_start[v + 1] > topo_.ring_start[v];
-            for (std::int32_t i = topo_.ring_start[v]; i < topo_.ring_start[v + 1] && interior; ++i)
-                interior = label(topo_.ring[i]) == label(v);
+            bool interior = topo_.ring_start()[v + 1] > topo_.ring_start()[v];
+            for (std::int32_t i = topo_.ring_start()[v]; i < topo_.ring_start()[v + 1] && interior; ++i)
+                interior = label(topo_.ring()[i]) == label(v);
             supported[std::size_t(r)] = interior;
         }
         std::vector<std::pair<std::int32_t, VertexLabel>> moves;
@@ -369,13 +369,13 @@ class SnaxelMapBuilder {
             if (supported[std::size_t(r)]) continue;
             VertexLabel best = label(v);
             int best_count = 0;
-            for (std::int32_t i = topo_.ring_start[v]; i < topo_.ring_start[v + 1]; ++i) {
-                const std::int32_t w = topo_.ring[i];
+            for (std::int32_t i = topo_.ring_start()[v]; i < topo_.ring_start()[v + 1]; ++i) {
+                const std::int32_t w = topo_.ring()[i];
                 if (comp_[std::size_t(w)] == r) continue;
                 const VertexLabel candidate = label(w);
                 int count = 0;
-                for (std::int32_t j = topo_.ring_start[v]; j < topo_.ring_start[v + 1]; ++j)
-                    count += comp_[std::size_t(topo_.ring[j])] != r && label(topo_.ring[j]) == candidate;
+                for (std::int32_t j = topo_.ring_start()[v]; j < topo_.ring_start()[v + 1]; ++j)
+                    count += comp_[std::size_t(topo_.ring()[j])] != r && label(topo_.ring()[j]) == candidate;
                 if (count > best_count || (count == best_count && candidate > best)) best = candidate, best_count = count;
             }
             if (best != label(v)) moves.emplace_back(v, best);
@@ -413,8 +413,8 @@ class SnaxelMapBuilder {
             while (!stack.empty()) {
                 const std::int32_t v = stack.back();
                 stack.pop_back();
-                for (std::int32_t i = topo_.ring_start[v]; i < topo_.ring_start[v + 1]; ++i) {
-                    const std::int32_t w = topo_.ring[i];
+                for (std::int32_t i = topo_.ring_start()[v]; i < topo_.ring_start()[v + 1]; ++i) {
+                    const std::int32_t w = topo_.ring()[i];
                     if (label(w) != l0) continue;
                     if (comp_[std::size_t(w)] == kToGrow) {
                         comp_[std::size_t(w)] = id;
@@ -445,13 +445,13 @@ class SnaxelMapBuilder {
     /// Where fronts stop on edges whose labels differ (rules 3 and 4).
     void place_edge_points() {
         for (std::int32_t e = 0; e < E_; ++e)
-            if (label(topo_.edge_vertices[e][0]) != label(topo_.edge_vertices[e][1]))
+            if (label(topo_.edge_vertices()[e][0]) != label(topo_.edge_vertices()[e][1]))
                 cut_edges_.push_back(e); // both hidden: a junction may still use its middle
         edge_point_.assign(std::size_t(E_), glm::dvec3(0.0));
         // Which faces are turned to the viewer (by their own winding).
         front_face_.assign(topo_.n_faces(), 0);
         parallel_for(topo_.n_faces(), [&](std::size_t f) {
-            const auto& fv = topo_.face_vertices[f];
+            const auto& fv = topo_.face_vertices()[f];
             const glm::dvec3 &p0 = position(fv[0]), &p1 = position(fv[1]), &p2 = position(fv[2]);
             front_face_[f] = glm::dot(glm::cross(p1 - p0, p2 - p0), camera_.to_viewer((p0 + p1 + p2) / 3.0)) > 0.0;
         }, 4096);
@@ -472,7 +472,7 @@ class SnaxelMapBuilder {
     }
 
     glm::dvec3 edge_point(std::int32_t e, const ContourImage& occluder) const {
-        const std::int32_t a = topo_.edge_vertices[e][0], b = topo_.edge_vertices[e][1];
+        const std::int32_t a = topo_.edge_vertices()[e][0], b = topo_.edge_vertices()[e][1];
         const VertexLabel la = label(a), lb = label(b);
         if (!la.seen() && !lb.seen()) return 0.5 * (position(a) + position(b));
         if (la.is_away() || lb.is_away()) return snaxel_point(visual_, e, a, b); // the visual contour (closed meshes)
@@ -498,7 +498,7 @@ class SnaxelMapBuilder {
     /// sides of the occlusion share one curve. If no such crossing shows,
     /// the ray to the viewer is bisected.
     glm::dvec3 occlusion_point(std::int32_t e, const ContourImage& occluder) const {
-        const std::int32_t a = topo_.edge_vertices[e][0], b = topo_.edge_vertices[e][1];
+        const std::int32_t a = topo_.edge_vertices()[e][0], b = topo_.edge_vertices()[e][1];
         const std::int32_t from = label(a).seen() ? a : b, to = label(a).seen() ? b : a;
         const glm::dvec3& p0 = position(from);
         const glm::dvec3& p1 = position(to);
@@ -523,7 +523,7 @@ class SnaxelMapBuilder {
         case PointKind::Vertex: return position(ids_.element(id));
         case PointKind::EdgePoint: return edge_point_[std::size_t(ids_.element(id))];
         case PointKind::Junction: {
-            const auto& fe = topo_.face_edges[std::size_t(ids_.element(id))];
+            const auto& fe = topo_.face_edges()[std::size_t(ids_.element(id))];
             return (edge_point_[std::size_t(fe[0])] + edge_point_[std::size_t(fe[1])] + edge_point_[std::size_t(fe[2])]) / 3.0;
         }
         default: return extra_point_.at(id.value);
@@ -532,7 +532,7 @@ class SnaxelMapBuilder {
     /// N.L at a point of a piece: at a vertex its own, on an edge
     /// interpolated along it, at a junction the mean of its face's edge points'.
     double nl_on_edge(std::int32_t e) const {
-        const std::int32_t u = topo_.edge_vertices[e][0], w = topo_.edge_vertices[e][1];
+        const std::int32_t u = topo_.edge_vertices()[e][0], w = topo_.edge_vertices()[e][1];
         const double len = glm::length(position(w) - position(u));
         const double t = len > 0.0 ? glm::length(edge_point_[std::size_t(e)] - position(u)) / len : 0.5;
         return glm::mix(nl_[std::size_t(u)], nl_[std::size_t(w)], std::clamp(t, 0.0, 1.0));
@@ -542,7 +542,7 @@ class SnaxelMapBuilder {
         case PointKind::Vertex: return nl_[std::size_t(ids_.element(id))];
         case PointKind::EdgePoint: return nl_on_edge(ids_.element(id));
         default: {
-            const auto& fe = topo_.face_edges[std::size_t(ids_.element(id))];
+            const auto& fe = topo_.face_edges()[std::size_t(ids_.element(id))];
             return (nl_on_edge(fe[0]) + nl_on_edge(fe[1]) + nl_on_edge(fe[2])) / 3.0;
         }
         }
@@ -557,8 +557,8 @@ class SnaxelMapBuilder {
         folded_.assign(topo_.n_faces(), 0);
         std::vector<char> walked(topo_.n_faces(), 0);
         parallel_for(topo_.n_faces(), [&](std::size_t f) {
-            const auto& fv = topo_.face_vertices[f];
-            const auto& fe = topo_.face_edges[f];
+            const auto& fv = topo_.face_vertices()[f];
+            const auto& fe = topo_.face_edges()[f];
             bool near_side = false;
             for (int k = 0; k < 3; ++k) {
                 const std::int32_t r = comp_[std::size_t(fv[std::size_t(k)])];
@@ -653,8 +653,8 @@ class SnaxelMapBuilder {
     }
 
     void walk_face(std::int32_t f, WalkOut& out) {
-        const auto& fv = topo_.face_vertices[std::size_t(f)];
-        const auto& fe = topo_.face_edges[std::size_t(f)];
+        const auto& fv = topo_.face_vertices()[std::size_t(f)];
+        const auto& fe = topo_.face_edges()[std::size_t(f)];
         FaceWalk w{f, fv, fe, {label(fv[0]), label(fv[1]), label(fv[2])},
                    {comp_[std::size_t(fv[0])], comp_[std::size_t(fv[1])], comp_[std::size_t(fv[2])]}, false, {}, {}};
         if (!w.l[0].seen() && !w.l[1].seen() && !w.l[2].seen()) return;
@@ -731,7 +731,7 @@ class SnaxelMapBuilder {
     /// that class.
     void split_part_by_class(std::vector<RimPoint> part, std::int32_t f, std::int32_t region, WalkOut& out) {
         const std::lock_guard<std::mutex> lock(shared_points_);
-        const auto& fe = topo_.face_edges[std::size_t(f)];
+        const auto& fe = topo_.face_edges()[std::size_t(f)];
         std::vector<std::size_t> levels;
         for (std::size_t level = in_.shadow ? 0 : 1; level < levels_.size(); ++level) levels.push_back(level);
         const auto parts = detail::cut_polygon(std::move(part), levels, [&](const std::vector<RimPoint>& poly, std::size_t level) {
@@ -770,7 +770,7 @@ class SnaxelMapBuilder {
             if (a.along >= 0) {
                 // On face edge a.along: the edge's own root, the same for both faces.
                 const std::int32_t e = fe[std::size_t(a.along)];
-                const std::int32_t u = topo_.edge_vertices[e][0], w = topo_.edge_vertices[e][1];
+                const std::int32_t u = topo_.edge_vertices()[e][0], w = topo_.edge_vertices()[e][1];
                 const double t = linear_root(nl_[std::size_t(u)] - value, nl_[std::size_t(w)] - value);
                 q.id = ids_.level(e, level);
                 q.p = glm::mix(position(u), position(w), t);
@@ -800,10 +800,10 @@ class SnaxelMapBuilder {
         for (int step = 0; step < 3 && !ring.empty(); ++step) {
             std::vector<std::pair<std::int32_t, std::int32_t>> next;
             for (const auto& [f, r] : ring)
-                for (const std::int32_t e : topo_.face_edges[std::size_t(f)])
-                    for (const std::int32_t g : topo_.edge_faces[std::size_t(e)]) {
+                for (const std::int32_t e : topo_.face_edges()[std::size_t(f)])
+                    for (const std::int32_t g : topo_.edge_faces()[std::size_t(e)]) {
                         if (g == MeshTopology::kNone || taken.count(g)) continue;
-                        const auto& gv = topo_.face_vertices[std::size_t(g)];
+                        const auto& gv = topo_.face_vertices()[std::size_t(g)];
                         if (!label(gv[0]).is_away() || !label(gv[1]).is_away() || !label(gv[2]).is_away() ||
                             !front_face_[std::size_t(g)])
                             continue;
@@ -887,7 +887,7 @@ class SnaxelMapBuilder {
         for (std::int32_t v = 0; v < V_; ++v)
             if (comp_[std::size_t(v)] >= 0) add_depth(comp_[std::size_t(v)], position(v));
         for (const auto& [r, f] : vertexless_faces_) {
-            const auto& fv = topo_.face_vertices[std::size_t(f)];
+            const auto& fv = topo_.face_vertices()[std::size_t(f)];
             add_depth(r, (position(fv[0]) + position(fv[1]) + position(fv[2])) / 3.0);
         }
         std::vector<std::size_t> order(regions_.size());

@@ -27,7 +27,7 @@ Light default_light(const Camera& camera) {
     return light;
 }
 
-void require_mesh_in_front(const Camera& camera, const std::vector<glm::dvec3>& positions, double radius) {
+void require_mesh_in_front(const Camera& camera, std::span<const glm::dvec3> positions, double radius) {
     if (camera.orthographic()) return;
     const glm::dvec3 f = camera.forward();
     const double near = 1e-3 * radius;

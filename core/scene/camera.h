@@ -1,6 +1,7 @@
 #pragma once
 /// Camera, light and the projection to image (SVG pixel) coordinates.
 
+#include <span>
 #include <vector>
 
 #include <glm/glm.hpp>
@@ -51,7 +52,7 @@ Light default_light(const Camera& camera);
 /// mirrored or infinitely far). Throws snaxels::Error saying so, and what to
 /// do, when any of @p positions lies less than a thousandth of @p radius in
 /// front of the eye (the eye inside the mesh, or the mesh around it).
-void require_mesh_in_front(const Camera& camera, const std::vector<glm::dvec3>& positions, double radius);
+void require_mesh_in_front(const Camera& camera, std::span<const glm::dvec3> positions, double radius);
 
 /// Maps world points to image pixels (x right, y down). Orthographic views
 /// fit the given bounding sphere into the image within a margin; perspective

@@ -119,7 +119,7 @@ double ContourFunction::first_zero(const glm::dvec3& na, const glm::dvec3& nb, d
     return std::clamp(x / w, 0.0, 1.0);
 }
 
-void ContourFunction::evaluate_vertices(const std::vector<glm::dvec3>& positions, const std::vector<glm::dvec3>& normals,
+void ContourFunction::evaluate_vertices(std::span<const glm::dvec3> positions, std::span<const glm::dvec3> normals,
                                         std::vector<double>& out) const {
     out.resize(positions.size());
     if (linear_) {

@@ -3,6 +3,7 @@
 /// evaluated at a surface point with its (slerped) normal. f >= 0 is inside.
 
 #include <string>
+#include <span>
 #include <vector>
 
 #include <glm/glm.hpp>
@@ -57,7 +58,7 @@ class ContourFunction {
     double first_zero(const glm::dvec3& na, const glm::dvec3& nb, double f_a, double f_b) const;
 
     /// f at every vertex into @p out (sized to the vertices).
-    void evaluate_vertices(const std::vector<glm::dvec3>& positions, const std::vector<glm::dvec3>& normals,
+    void evaluate_vertices(std::span<const glm::dvec3> positions, std::span<const glm::dvec3> normals,
                            std::vector<double>& out) const;
 
   private:

@@ -9,7 +9,7 @@ constexpr std::int32_t kNone = MeshTopology::kNone;
 Fronts extract_fronts(const MeshTopology& topo, const std::vector<std::uint8_t>& inside) {
     std::vector<std::int32_t> crossing;
     for (std::size_t e = 0; e < topo.n_edges(); ++e) {
-        const auto [a, b] = topo.edge_vertices[e];
+        const auto [a, b] = topo.edge_vertices()[e];
         if (inside[a] != inside[b]) crossing.push_back(static_cast<std::int32_t>(e));
     }
     return extract_fronts(topo, inside, crossing);
@@ -21,7 +21,7 @@ Fronts extract_fronts(const MeshTopology& topo, const std::vector<std::uint8_t>&
     fronts.edge_snaxel.assign(topo.n_edges(), kNone);
     fronts.snaxels.reserve(crossing_edges.size());
     for (const std::int32_t e : crossing_edges) {
-        const auto [a, b] = topo.edge_vertices[e];
+        const auto [a, b] = topo.edge_vertices()[e];
         Snaxel s;
         s.edge = e;
         s.inside = inside[a] ? a : b;
@@ -34,14 +34,14 @@ Fronts extract_fronts(const MeshTopology& topo, const std::vector<std::uint8_t>&
     // linking leave -> enter keeps R on the left of every loop. Every face
     // the front crosses is reached from one of its crossing edges.
     for (std::size_t i = 0; i < fronts.snaxels.size(); ++i) {
-        for (const std::int32_t f : topo.edge_faces[fronts.snaxels[i].edge]) {
+        for (const std::int32_t f : topo.edge_faces()[fronts.snaxels[i].edge]) {
             if (f == kNone) continue;
-            const auto& fv = topo.face_vertices[f];
+            const auto& fv = topo.face_vertices()[f];
             std::int32_t leave = kNone, enter = kNone;
             for (int k = 0; k < 3; ++k) {
                 const bool here = inside[fv[k]], there = inside[fv[(k + 1) % 3]];
-                if (here && !there) leave = fronts.edge_snaxel[topo.face_edges[f][k]];
-                if (!here && there) enter = fronts.edge_snaxel[topo.face_edges[f][k]];
+                if (here && !there) leave = fronts.edge_snaxel[topo.face_edges()[f][k]];
+                if (!here && there) enter = fronts.edge_snaxel[topo.face_edges()[f][k]];
             }
             if (leave == kNone || enter == kNone) continue; // an incomplete edge list; check_fronts says so
             fronts.snaxels[leave].next = enter;
@@ -77,7 +77,7 @@ std::string check_fronts(const MeshTopology& topo, const Fronts& fronts,
         const Snaxel& s = fronts.snaxels[i];
         const std::string at = "snaxel " + std::to_string(i) + ": ";
         if (s.edge < 0 || std::size_t(s.edge) >= topo.n_edges()) return at + "not on a live edge";
-        const auto [a, b] = topo.edge_vertices[s.edge];
+        const auto [a, b] = topo.edge_vertices()[s.edge];
         if (!((s.inside == a && s.outside == b) || (s.inside == b && s.outside == a)))
             return at + "its ends are not its edge's vertices";
         if (!inside[s.inside] || inside[s.outside]) return at + "does not separate R from the rest";
@@ -90,8 +90,8 @@ std::string check_fronts(const MeshTopology& topo, const Fronts& fronts,
                 continue;
             }
             if (other < 0 || other >= n) return at + "links outside the pool";
-            const auto& f1 = topo.edge_faces[s.edge];
-            const auto& f2 = topo.edge_faces[fronts.snaxels[other].edge];
+            const auto& f1 = topo.edge_faces()[s.edge];
+            const auto& f2 = topo.edge_faces()[fronts.snaxels[other].edge];
             bool common = false;
             for (const auto x : f1)
                 for (const auto y : f2) common |= x != kNone && x == y;
@@ -101,7 +101,7 @@ std::string check_fronts(const MeshTopology& topo, const Fronts& fronts,
         if (s.loop < 0 || std::size_t(s.loop) >= fronts.loops.size()) return at + "belongs to no loop";
     }
     for (std::size_t e = 0; e < topo.n_edges(); ++e) {
-        const auto [a, b] = topo.edge_vertices[e];
+        const auto [a, b] = topo.edge_vertices()[e];
         if (inside[a] != inside[b] && !edge_used[e])
             return "edge " + std::to_string(e) + " crosses the front but holds no snaxel";
     }

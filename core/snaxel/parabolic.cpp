@@ -8,6 +8,7 @@
 #include <list>
 #include <mutex>
 #include <queue>
+#include <span>
 #include <tuple>
 #include <unordered_map>
 
@@ -24,7 +25,7 @@ constexpr std::int32_t kNone = MeshTopology::kNone;
 /// Points hashed into cubes of side @p cell, for neighbours within a cell.
 class PointGrid {
   public:
-    PointGrid(const std::vector<glm::dvec3>& points, double cell) : points_(points), cell_(cell) {
+    PointGrid(std::span<const glm::dvec3> points, double cell) : points_(points), cell_(cell) {
         for (std::size_t i = 0; i < points.size(); ++i) cells_[key(points[i])].push_back(std::int32_t(i));
     }
     /// Calls fn(j) for every point within @p radius (<= cell) of @p p.
@@ -69,7 +70,7 @@ class PointGrid {
         return (std::int64_t(c.x) & 0x1fffff) | (std::int64_t(c.y) & 0x1fffff) << 21 | (std::int64_t(c.z) & 0x1fffff) << 42;
     }
     std::int64_t key(const glm::dvec3& p) const { return pack(cell_of(p)); }
-    const std::vector<glm::dvec3>& points_;
+    std::span<const glm::dvec3> points_;
     double cell_;
     std::unordered_map<std::int64_t, std::vector<std::int32_t>> cells_;
 };
@@ -98,8 +99,8 @@ glm::dvec3 closest_on_triangle(const glm::dvec3& p, const glm::dvec3& a, const g
 
 /// The faces around vertex @p v.
 template <class Fn> void for_each_face_around(const MeshTopology& topo, std::int32_t v, Fn&& fn) {
-    for (std::int32_t k = topo.ring_start[std::size_t(v)]; k < topo.ring_start[std::size_t(v) + 1]; ++k)
-        for (const std::int32_t f : topo.edge_faces[std::size_t(topo.ring_edge[std::size_t(k)])])
+    for (std::int32_t k = topo.ring_start()[std::size_t(v)]; k < topo.ring_start()[std::size_t(v) + 1]; ++k)
+        for (const std::int32_t f : topo.edge_faces()[std::size_t(topo.ring_edge()[std::size_t(k)])])
             if (f != kNone) fn(f);
 }
 
@@ -116,9 +117,9 @@ SurfacePoint project_to_surface(const MeshTopology& topo, const PointGrid& verti
     if (v < 0) return best;
     double best_d = std::numeric_limits<double>::max();
     for_each_face_around(topo, v, [&](std::int32_t f) {
-        const auto& fv = topo.face_vertices[std::size_t(f)];
-        const glm::dvec3 q = closest_on_triangle(p, topo.positions[std::size_t(fv[0])], topo.positions[std::size_t(fv[1])],
-                                                 topo.positions[std::size_t(fv[2])]);
+        const auto& fv = topo.face_vertices()[std::size_t(f)];
+        const glm::dvec3 q = closest_on_triangle(p, topo.positions()[std::size_t(fv[0])], topo.positions()[std::size_t(fv[1])],
+                                                 topo.positions()[std::size_t(fv[2])]);
         const double d = glm::length(q - p);
         if (d < best_d) best_d = d, best = {q, f};
     });
@@ -160,18 +161,18 @@ void critical_crossings(const MeshTopology& topo, const std::vector<std::uint8_t
     if (omega <= 0.0) return;
     const double so = std::sin(omega), co = std::cos(omega);
     for (std::size_t v = 0; v < topo.n_vertices(); ++v) {
-        const double a = glm::dot(topo.normals[v], d0), b = glm::dot(topo.normals[v], d1);
+        const double a = glm::dot(topo.normals()[v], d0), b = glm::dot(topo.normals()[v], d1);
         if ((a >= 0.0) == (b >= 0.0) || boundary[v]) continue;
         // a sin((1-t)w) + b sin(tw) = 0 on the slerp d0 -> d1.
         const double s = a >= 0.0 ? 1.0 : -1.0;
         const double tw = std::atan2(s * a * so, s * (a * co - b));
         const glm::dvec3 dir = glm::normalize(std::sin(omega - tw) * d0 + std::sin(tw) * d1);
-        const std::int32_t begin = topo.ring_start[v], end = topo.ring_start[v + 1];
+        const std::int32_t begin = topo.ring_start()[v], end = topo.ring_start()[v + 1];
         if (end - begin < 3) continue;
         int changes = 0;
-        bool last = glm::dot(topo.normals[std::size_t(topo.ring[std::size_t(end - 1)])], dir) >= 0.0;
+        bool last = glm::dot(topo.normals()[std::size_t(topo.ring()[std::size_t(end - 1)])], dir) >= 0.0;
         for (std::int32_t k = begin; k < end; ++k) {
-            const bool sign = glm::dot(topo.normals[std::size_t(topo.ring[std::size_t(k)])], dir) >= 0.0;
+            const bool sign = glm::dot(topo.normals()[std::size_t(topo.ring()[std::size_t(k)])], dir) >= 0.0;
             changes += sign != last;
             last = sign;
         }
@@ -182,7 +183,7 @@ void critical_crossings(const MeshTopology& topo, const std::vector<std::uint8_t
 std::vector<std::uint8_t> boundary_vertices(const MeshTopology& topo) {
     std::vector<std::uint8_t> boundary(topo.n_vertices(), 0);
     for (std::size_t e = 0; e < topo.n_edges(); ++e)
-        if (topo.is_boundary_edge(std::int32_t(e))) boundary[std::size_t(topo.edge_vertices[e][0])] = boundary[std::size_t(topo.edge_vertices[e][1])] = 1;
+        if (topo.is_boundary_edge(std::int32_t(e))) boundary[std::size_t(topo.edge_vertices()[e][0])] = boundary[std::size_t(topo.edge_vertices()[e][1])] = 1;
     return boundary;
 }
 
@@ -234,8 +235,8 @@ std::vector<std::int32_t> tree_diameter(const std::vector<std::vector<std::pair<
 /// The mesh's bounding radius.
 double bounding_radius(const MeshTopology& topo) {
     glm::dvec3 lo(std::numeric_limits<double>::max()), hi(-std::numeric_limits<double>::max());
-    for (const glm::dvec3& p : topo.positions) lo = glm::min(lo, p), hi = glm::max(hi, p);
-    return topo.positions.empty() ? 0.0 : 0.5 * glm::length(hi - lo);
+    for (const glm::dvec3& p : topo.positions()) lo = glm::min(lo, p), hi = glm::max(hi, p);
+    return topo.positions().empty() ? 0.0 : 0.5 * glm::length(hi - lo);
 }
 
 /// Traces the surface from @p a (in face a.face) to @p b (in face b.face)
@@ -248,37 +249,37 @@ bool trace_between(const MeshTopology& topo, const SurfacePoint& a, const Surfac
     const double len2 = glm::dot(along, along);
     if (len2 <= 0.0) return true;
     auto face_normal = [&](std::int32_t f) {
-        const auto& fv = topo.face_vertices[std::size_t(f)];
-        const glm::dvec3 n = glm::cross(topo.positions[std::size_t(fv[1])] - topo.positions[std::size_t(fv[0])],
-                                        topo.positions[std::size_t(fv[2])] - topo.positions[std::size_t(fv[0])]);
+        const auto& fv = topo.face_vertices()[std::size_t(f)];
+        const glm::dvec3 n = glm::cross(topo.positions()[std::size_t(fv[1])] - topo.positions()[std::size_t(fv[0])],
+                                        topo.positions()[std::size_t(fv[2])] - topo.positions()[std::size_t(fv[0])]);
         const double l = glm::length(n);
         return l > 0.0 ? n / l : glm::dvec3(0.0);
     };
     glm::dvec3 m = glm::cross(along, face_normal(a.face) + face_normal(b.face));
     if (glm::length(m) <= 0.0) return false;
     m = glm::normalize(m);
-    auto side = [&](std::int32_t v) { return glm::dot(m, topo.positions[std::size_t(v)] - a.p); };
+    auto side = [&](std::int32_t v) { return glm::dot(m, topo.positions()[std::size_t(v)] - a.p); };
     std::int32_t face = a.face, came_over = kNone;
-    const int limit = 64 + int(8.0 * std::sqrt(len2) / std::max(topo.mean_edge_length, 1e-300));
+    const int limit = 64 + int(8.0 * std::sqrt(len2) / std::max(topo.mean_edge_length(), 1e-300));
     for (int step = 0; step < limit; ++step) {
         if (face == b.face) return true;
         // The edge of this face the plane crosses going on towards b.
         std::int32_t best_edge = kNone;
         double best_t = 0.0, best_ahead = -std::numeric_limits<double>::max();
-        for (const std::int32_t e : topo.face_edges[std::size_t(face)]) {
+        for (const std::int32_t e : topo.face_edges()[std::size_t(face)]) {
             if (e == came_over) continue;
-            const std::int32_t u = topo.edge_vertices[std::size_t(e)][0], w = topo.edge_vertices[std::size_t(e)][1];
+            const std::int32_t u = topo.edge_vertices()[std::size_t(e)][0], w = topo.edge_vertices()[std::size_t(e)][1];
             const double su = side(u), sw = side(w);
             if ((su >= 0.0) == (sw >= 0.0)) continue;
             const double t = su / (su - sw);
-            const glm::dvec3 x = glm::mix(topo.positions[std::size_t(u)], topo.positions[std::size_t(w)], t);
+            const glm::dvec3 x = glm::mix(topo.positions()[std::size_t(u)], topo.positions()[std::size_t(w)], t);
             const double ahead = glm::dot(x - a.p, along);
             if (ahead > best_ahead) best_ahead = ahead, best_edge = e, best_t = t;
         }
         if (best_edge == kNone) return false;
         if (best_ahead > len2 * 1.5) return false; // went past b without meeting its face
-        const std::int32_t u = topo.edge_vertices[std::size_t(best_edge)][0], w = topo.edge_vertices[std::size_t(best_edge)][1];
-        const auto& ef = topo.edge_faces[std::size_t(best_edge)];
+        const std::int32_t u = topo.edge_vertices()[std::size_t(best_edge)][0], w = topo.edge_vertices()[std::size_t(best_edge)][1];
+        const auto& ef = topo.edge_faces()[std::size_t(best_edge)];
         const std::int32_t next = ef[0] == face ? ef[1] : ef[0];
         if (next == kNone) return false;
         // Going back over the edge just crossed undoes that crossing.
@@ -287,7 +288,7 @@ bool trace_between(const MeshTopology& topo, const SurfacePoint& a, const Surfac
             if (!curve.faces.empty()) curve.faces.pop_back();
         } else {
             if (!curve.edges.empty()) curve.faces.push_back(face);
-            curve.points.push_back(glm::mix(topo.positions[std::size_t(u)], topo.positions[std::size_t(w)], best_t));
+            curve.points.push_back(glm::mix(topo.positions()[std::size_t(u)], topo.positions()[std::size_t(w)], best_t));
             curve.edges.push_back(best_edge);
             curve.t.push_back(best_t);
         }
@@ -306,17 +307,22 @@ int smoothing_passes(double scale, double edge) {
     return int(std::min(400.0, std::ceil(r * r * 7.0 / 3.0)));
 }
 
-void smooth_normals(MeshTopology& topo, int passes) {
+/// @p topo with its normals smoothed by @p passes of one-ring averaging.
+MeshTopology smooth_normals(const MeshTopology& topo, int passes) {
+    if (passes <= 0) return topo;
+    auto pose = std::make_shared<MeshPose>(*topo.pose());
+    std::vector<glm::dvec3>& normals = pose->normals;
     std::vector<glm::dvec3> next(topo.n_vertices());
     for (int pass = 0; pass < passes; ++pass) {
         parallel_for(topo.n_vertices(), [&](std::size_t v) {
-            glm::dvec3 sum = topo.normals[v];
-            for (std::int32_t k = topo.ring_start[v]; k < topo.ring_start[v + 1]; ++k) sum += topo.normals[std::size_t(topo.ring[std::size_t(k)])];
+            glm::dvec3 sum = normals[v];
+            for (std::int32_t k = topo.ring_start()[v]; k < topo.ring_start()[v + 1]; ++k) sum += normals[std::size_t(topo.ring()[std::size_t(k)])];
             const double l = glm::length(sum);
-            next[v] = l > 0.0 ? sum / l : topo.normals[v];
+            next[v] = l > 0.0 ? sum / l : normals[v];
         }, 4096);
-        topo.normals.swap(next);
+        normals.swap(next);
     }
+    return topo.posed(std::move(pose));
 }
 
 /// The chains of marks: per cluster of marks (linked within @p link), the
@@ -492,10 +498,10 @@ std::vector<ParabolicCurve> chain_curves(const MeshTopology& topo, const std::ve
                                          double link, double reach, int min_members) {
     std::vector<ParabolicCurve> curves;
     if (points.empty()) return curves;
-    const double edge = std::max(topo.mean_edge_length, 1e-300);
+    const double edge = std::max(topo.mean_edge_length(), 1e-300);
     std::vector<std::vector<glm::dvec3>> chains = mark_chains(points, link, 2.0 * edge, min_members);
     const std::vector<bool> closed = join_chains(chains, reach, 2.0 * link);
-    const PointGrid vertices(topo.positions, 2.0 * edge);
+    const PointGrid vertices(topo.positions(), 2.0 * edge);
     for (std::size_t c = 0; c < chains.size(); ++c) {
         std::vector<glm::dvec3>& chain = chains[c];
         // A stub no longer than two links is a lone pair of marks, not a curve.
@@ -526,8 +532,8 @@ std::vector<ParabolicCurve> chain_curves(const MeshTopology& topo, const std::ve
                 if (curve.closed) {
                     // The last segment runs in the face the first and last points share.
                     std::int32_t shared = kNone;
-                    const auto& f0 = topo.edge_faces[std::size_t(curve.edges.front())];
-                    const auto& f1 = topo.edge_faces[std::size_t(curve.edges.back())];
+                    const auto& f0 = topo.edge_faces()[std::size_t(curve.edges.front())];
+                    const auto& f1 = topo.edge_faces()[std::size_t(curve.edges.back())];
                     for (const std::int32_t f : f0)
                         if (f != kNone && (f == f1[0] || f == f1[1])) shared = f;
                     if (shared == kNone) curve.closed = false;
@@ -620,11 +626,10 @@ ParabolicResult find_parabolic(const MeshTopology& mesh_topo, const ParabolicOpt
     const auto t0 = std::chrono::steady_clock::now();
     // The normals the contour is tracked with, smoothed at the asked scale
     // (mesh noise makes visual events everywhere; docs/parabolic.md).
-    MeshTopology topo = mesh_topo;
-    const double radius = bounding_radius(topo);
-    const double edge = std::max(topo.mean_edge_length, 1e-300);
+    const double radius = bounding_radius(mesh_topo);
+    const double edge = std::max(mesh_topo.mean_edge_length(), 1e-300);
     const int passes = smoothing_passes(options.smoothing * radius, edge);
-    smooth_normals(topo, passes);
+    const MeshTopology topo = smooth_normals(mesh_topo, passes);
     ParabolicResult result;
     const std::vector<std::vector<glm::dvec3>> walks = parabolic_walks(options.samples, options.orders);
     result.walks = int(walks.size());
@@ -669,7 +674,7 @@ ParabolicResult find_parabolic(const MeshTopology& mesh_topo, const ParabolicOpt
                     for (int pass = 0; pass < 2 && !best; ++pass) // a crossing of the event's type first
                         for (const CriticalCrossing& c : crossings) {
                             if (pass == 0 && c.saddle != saddle) continue;
-                            const double d = glm::length(topo.positions[std::size_t(c.vertex)] - e.where);
+                            const double d = glm::length(topo.positions()[std::size_t(c.vertex)] - e.where);
                             if (d < best_d && d <= place_limit) best_d = d, best = &c;
                         }
                     if (!best) {
@@ -681,7 +686,7 @@ ParabolicResult find_parabolic(const MeshTopology& mesh_topo, const ParabolicOpt
                     ParabolicPoint p;
                     p.kind = e.kind;
                     p.vertex = best->vertex;
-                    p.where = topo.positions[std::size_t(best->vertex)];
+                    p.where = topo.positions()[std::size_t(best->vertex)];
                     p.dir = best->dir;
                     p.from_dir = walk[k - 1];
                     p.to_dir = walk[k];
@@ -735,8 +740,8 @@ std::shared_ptr<const ParabolicResult> cached_parabolic(const MeshTopology& topo
         const auto* p = static_cast<const unsigned char*>(data);
         for (std::size_t i = 0; i < bytes; ++i) h = (h ^ p[i]) * 1099511628211ull;
     };
-    mix(topo.positions.data(), topo.positions.size() * sizeof(glm::dvec3));
-    mix(topo.face_vertices.data(), topo.face_vertices.size() * sizeof(topo.face_vertices[0]));
+    mix(topo.positions().data(), topo.positions().size() * sizeof(glm::dvec3));
+    mix(topo.face_vertices().data(), topo.face_vertices().size() * sizeof(topo.face_vertices()[0]));
     mix(&options.samples, sizeof options.samples);
     static std::list<std::pair<std::uint64_t, std::shared_ptr<const ParabolicResult>>> cache; // newest first
     {
@@ -764,8 +769,8 @@ Fronts parabolic_fronts(const MeshTopology& topo, const ParabolicResult& result)
         for (std::int32_t k = 0; k < n; ++k) {
             Snaxel s;
             s.edge = curve.edges[std::size_t(k)];
-            s.inside = topo.edge_vertices[std::size_t(s.edge)][0];
-            s.outside = topo.edge_vertices[std::size_t(s.edge)][1];
+            s.inside = topo.edge_vertices()[std::size_t(s.edge)][0];
+            s.outside = topo.edge_vertices()[std::size_t(s.edge)][1];
             s.t = curve.t[std::size_t(k)];
             s.loop = loop;
             s.prev = k > 0 ? first + k - 1 : curve.closed ? first + n - 1 : kNone;

@@ -29,16 +29,17 @@ MeshTopology refine_topology(const MeshTopology& t, int levels) {
     auto r = std::make_shared<MeshRefinement>();
     r->levels = levels;
     r->base_vertices = t.n_vertices();
-    r->base_faces = t.face_vertices;
-    std::vector<glm::dvec3> positions = t.positions, normals = t.normals;
+    r->base_faces.assign(t.face_vertices().begin(), t.face_vertices().end());
+    std::vector<glm::dvec3> positions(t.positions().begin(), t.positions().end()),
+        normals(t.normals().begin(), t.normals().end());
     auto add = [&](const std::array<std::int32_t, 3>& from, const glm::dvec3& w) {
         const auto id = std::int32_t(positions.size());
-        positions.push_back(w.x * t.positions[std::size_t(from[0])] + w.y * t.positions[std::size_t(from[1])] +
-                            w.z * t.positions[std::size_t(from[2])]);
-        const glm::dvec3 normal = w.x * t.normals[std::size_t(from[0])] + w.y * t.normals[std::size_t(from[1])] +
-                                  w.z * t.normals[std::size_t(from[2])];
+        positions.push_back(w.x * t.positions()[std::size_t(from[0])] + w.y * t.positions()[std::size_t(from[1])] +
+                            w.z * t.positions()[std::size_t(from[2])]);
+        const glm::dvec3 normal = w.x * t.normals()[std::size_t(from[0])] + w.y * t.normals()[std::size_t(from[1])] +
+                                  w.z * t.normals()[std::size_t(from[2])];
         const double len = glm::length(normal);
-        normals.push_back(len > 0.0 ? normal / len : t.normals[std::size_t(from[0])]);
+        normals.push_back(len > 0.0 ? normal / len : t.normals()[std::size_t(from[0])]);
         r->from.push_back(from);
         r->weights.push_back(w);
         return id;
@@ -46,7 +47,7 @@ MeshTopology refine_topology(const MeshTopology& t, int levels) {
     // Points along each edge, from its first vertex, shared by its faces.
     std::vector<std::int32_t> edge_first(t.n_edges());
     for (std::size_t e = 0; e < t.n_edges(); ++e) {
-        const std::int32_t a = t.edge_vertices[e][0], b = t.edge_vertices[e][1];
+        const std::int32_t a = t.edge_vertices()[e][0], b = t.edge_vertices()[e][1];
         edge_first[e] = std::int32_t(positions.size());
         for (std::int32_t i = 1; i < n; ++i) {
             const double s = double(i) / double(n);
@@ -55,7 +56,7 @@ MeshTopology refine_topology(const MeshTopology& t, int levels) {
     }
     // The point at step i of n along edge e, counted from vertex v.
     auto on_edge = [&](std::int32_t e, std::int32_t v, std::int32_t i) {
-        const std::int32_t along = t.edge_vertices[std::size_t(e)][0] == v ? i : n - i;
+        const std::int32_t along = t.edge_vertices()[std::size_t(e)][0] == v ? i : n - i;
         return edge_first[std::size_t(e)] + along - 1;
     };
     std::vector<std::array<std::int32_t, 3>> faces;
@@ -63,8 +64,8 @@ MeshTopology refine_topology(const MeshTopology& t, int levels) {
     r->face_origin.reserve(faces.capacity());
     std::vector<std::int32_t> grid(std::size_t(n + 1) * std::size_t(n + 1));
     for (std::size_t f = 0; f < t.n_faces(); ++f) {
-        const auto& c = t.face_vertices[f];
-        const auto& fe = t.face_edges[f]; // edge k joins corners k and k + 1
+        const auto& c = t.face_vertices()[f];
+        const auto& fe = t.face_edges()[f]; // edge k joins corners k and k + 1
         // Point (a, b) of the face's grid: a steps from corner 0 toward 1,
         // b from corner 0 toward 2.
         for (std::int32_t a = 0; a <= n; ++a)
@@ -101,9 +102,8 @@ MeshTopology refine_topology(const MeshTopology& t, int levels) {
         if (!mesh.add_face(handles[std::size_t(f[0])], handles[std::size_t(f[1])], handles[std::size_t(f[2])]).is_valid())
             return t; // cannot happen on a manifold topology; the mesh is then used as it is
     }
-    MeshTopology out = build_topology(mesh); // faces keep the order they were added in
+    MeshTopology out = build_topology(mesh, r); // faces keep the order they were added in
     if (out.n_faces() != faces.size()) return t;
-    out.refinement = std::move(r);
     return out;
 }
 

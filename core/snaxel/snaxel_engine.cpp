@@ -59,8 +59,8 @@ class Sweep {
         for (std::int32_t v = 0; v < std::int32_t(topo_.n_vertices()); ++v) {
             if (!on_side(v) || label_[v] != kNone) continue;
             bool extremum = true;
-            for (std::int32_t k = topo_.ring_start[v]; k < topo_.ring_start[v + 1] && extremum; ++k)
-                extremum = sign_ > 0 ? f_[v] >= f_[topo_.ring[k]] : f_[v] <= f_[topo_.ring[k]];
+            for (std::int32_t k = topo_.ring_start()[v]; k < topo_.ring_start()[v + 1] && extremum; ++k)
+                extremum = sign_ > 0 ? f_[v] >= f_[topo_.ring()[k]] : f_[v] <= f_[topo_.ring()[k]];
             if (!extremum) continue;
             label_[v] = regions_.add();
             info_.push_back({sign_, v, 0});
@@ -72,10 +72,10 @@ class Sweep {
     // The front of u's region fans out past every neighbour on this side.
     void advance(std::int32_t u, std::vector<std::int32_t>& next) {
         const std::int32_t mine = regions_.find(label_[u]);
-        for (std::int32_t k = topo_.ring_start[u]; k < topo_.ring_start[u + 1]; ++k) {
-            const std::int32_t w = topo_.ring[k];
+        for (std::int32_t k = topo_.ring_start()[u]; k < topo_.ring_start()[u + 1]; ++k) {
+            const std::int32_t w = topo_.ring()[k];
             if (!on_side(w)) { // the front stops on this edge: f changes sign
-                stopped_.push_back(topo_.ring_edge[k]);
+                stopped_.push_back(topo_.ring_edge()[k]);
                 continue;
             }
             if (label_[w] == kNone) {
@@ -93,10 +93,10 @@ class Sweep {
     // Around w, the runs of neighbours already swept by `region`: a front
     // that reaches w from two or more sides meets itself there.
     std::size_t self_contacts(std::int32_t w, std::int32_t region) {
-        const std::int32_t begin = topo_.ring_start[w], end = topo_.ring_start[w + 1];
+        const std::int32_t begin = topo_.ring_start()[w], end = topo_.ring_start()[w + 1];
         if (end - begin < 2) return 0;
         auto in = [&](std::int32_t k) {
-            const std::int32_t l = label_[topo_.ring[k]];
+            const std::int32_t l = label_[topo_.ring()[k]];
             return l != kNone && regions_.find(l) == region;
         };
         std::size_t runs = 0;
@@ -131,8 +131,8 @@ class Sweep {
 double polish_root(const MeshTopology& topo, const ContourFunction& f, std::int32_t inside,
                    std::int32_t outside, double f_inside, double f_outside, double tolerance,
                    int scan_samples) {
-    const glm::dvec3 pa = topo.positions[inside], pb = topo.positions[outside];
-    const glm::dvec3 na = topo.normals[inside], nb = topo.normals[outside];
+    const glm::dvec3 pa = topo.positions()[inside], pb = topo.positions()[outside];
+    const glm::dvec3 na = topo.normals()[inside], nb = topo.normals()[outside];
     if (f.linear_in_normal()) // N.v on a slerp: one sinusoid, solved exactly
         return slerp_dot_root(na, nb, f_inside, f_outside);
     if (f.closed_form()) // sinusoids: the first crossing, exactly (no scan needed)
@@ -189,7 +189,7 @@ ContourResult SnaxelEngine::compute(const ContourSpec& spec, const Camera& camer
     const ContourFunction f(spec, camera, light);
     const std::size_t nv = topo_.n_vertices();
 
-    f.evaluate_vertices(topo_.positions, topo_.normals, result.vertex_f);
+    f.evaluate_vertices(topo_.positions(), topo_.normals(), result.vertex_f);
 
     std::vector<std::int32_t> label(nv, kNone);
     RegionUnion regions;

@@ -65,10 +65,10 @@ class SnaxelEngine {
 
     /// 3-D position and slerped normal of a snaxel.
     glm::dvec3 position(const Snaxel& s) const {
-        return (1.0 - s.t) * topo_.positions[s.inside] + s.t * topo_.positions[s.outside];
+        return (1.0 - s.t) * topo_.positions()[s.inside] + s.t * topo_.positions()[s.outside];
     }
     glm::dvec3 normal(const Snaxel& s) const {
-        return slerp_normal(topo_.normals[s.inside], topo_.normals[s.outside], s.t);
+        return slerp_normal(topo_.normals()[s.inside], topo_.normals()[s.outside], s.t);
     }
     const MeshTopology& topology() const { return topo_; }
 

@@ -1,19 +1,52 @@
 #include "snaxels/snaxel/topology.h"
 
+#include <stdexcept>
+#include <string>
+
 #include <glm/glm.hpp>
 
 #include "snaxels/snaxel/refine.h"
 
 namespace snaxels {
 
-MeshTopology build_topology(const Mesh& mesh) {
-    MeshTopology t;
+MeshTopology::MeshTopology()
+    : MeshTopology(std::make_shared<const MeshConnectivity>(), std::make_shared<const MeshPose>()) {}
+
+MeshTopology::MeshTopology(std::shared_ptr<const MeshConnectivity> connectivity, std::shared_ptr<const MeshPose> pose)
+    : connectivity_(std::move(connectivity)), pose_(std::move(pose)) {
+    if (!connectivity_ || !pose_) throw std::invalid_argument("MeshTopology: no connectivity or no pose");
+    if (pose_->positions.size() != connectivity_->n_vertices() || pose_->normals.size() != pose_->positions.size())
+        throw std::invalid_argument("MeshTopology: a pose of " + std::to_string(pose_->positions.size()) +
+                                    " vertices for a connectivity of " + std::to_string(connectivity_->n_vertices()));
+    const MeshConnectivity& c = *connectivity_;
+    positions_ = pose_->positions;
+    normals_ = pose_->normals;
+    edge_vertices_ = c.edge_vertices;
+    edge_faces_ = c.edge_faces;
+    face_vertices_ = c.face_vertices;
+    face_edges_ = c.face_edges;
+    ring_start_ = c.ring_start;
+    ring_ = c.ring;
+    ring_edge_ = c.ring_edge;
+}
+
+MeshTopology MeshTopology::posed(std::shared_ptr<const MeshPose> pose) const {
+    MeshTopology out(connectivity_, std::move(pose));
+    out.parabolic = parabolic;
+    return out;
+}
+
+MeshTopology build_topology(const Mesh& mesh, std::shared_ptr<const MeshRefinement> refinement) {
+    auto c = std::make_shared<MeshConnectivity>();
+    c->refinement = std::move(refinement);
+    auto pose = std::make_shared<MeshPose>();
+    MeshConnectivity& t = *c;
     const auto nv = mesh.n_vertices(), ne = mesh.n_edges(), nf = mesh.n_faces();
-    t.positions.resize(nv);
-    t.normals.resize(nv);
+    pose->positions.resize(nv);
+    pose->normals.resize(nv);
     for (const auto vh : mesh.vertices()) {
-        t.positions[vh.idx()] = to_glm(mesh.point(vh));
-        t.normals[vh.idx()] = to_glm(mesh.normal(vh));
+        pose->positions[vh.idx()] = to_glm(mesh.point(vh));
+        pose->normals[vh.idx()] = to_glm(mesh.normal(vh));
     }
     t.edge_vertices.resize(ne);
     t.edge_faces.resize(ne);
@@ -23,7 +56,7 @@ MeshTopology build_topology(const Mesh& mesh) {
         const int a = mesh.from_vertex_handle(h0).idx(), b = mesh.to_vertex_handle(h0).idx();
         t.edge_vertices[eh.idx()] = {a, b};
         t.edge_faces[eh.idx()] = {mesh.face_handle(h0).idx(), mesh.face_handle(h1).idx()};
-        total += glm::length(t.positions[a] - t.positions[b]);
+        total += glm::length(pose->positions[a] - pose->positions[b]);
     }
     t.mean_edge_length = ne ? total / double(ne) : 0.0;
     t.face_vertices.resize(nf);
@@ -47,20 +80,22 @@ MeshTopology build_topology(const Mesh& mesh) {
         }
     }
     t.ring_start[nv] = static_cast<std::int32_t>(t.ring.size());
-    return t;
+    return MeshTopology(std::move(c), std::move(pose));
 }
 
-} // namespace snaxels
+std::size_t MeshConnectivity::n_base_vertices() const { return refinement ? refinement->base_vertices : n_vertices(); }
 
-namespace snaxels {
-
-std::size_t MeshTopology::n_base_vertices() const { return refinement ? refinement->base_vertices : n_vertices(); }
-
-void recompute_normals(MeshTopology& t) {
-    if (t.refinement) {
-        const MeshRefinement& r = *t.refinement;
+MeshPose make_pose(const MeshConnectivity& c, std::vector<glm::dvec3> positions) {
+    MeshPose t;
+    if (positions.size() < c.n_base_vertices())
+        throw std::invalid_argument("make_pose: " + std::to_string(positions.size()) + " positions for " +
+                                    std::to_string(c.n_base_vertices()) + " vertices");
+    t.positions = std::move(positions);
+    t.positions.resize(c.n_vertices());
+    t.normals.assign(c.n_vertices(), glm::dvec3(0.0));
+    if (c.refinement) {
+        const MeshRefinement& r = *c.refinement;
         const std::size_t base = r.base_vertices;
-        std::fill(t.normals.begin(), t.normals.begin() + std::ptrdiff_t(base), glm::dvec3(0.0));
         for (const auto& f : r.base_faces) {
             const glm::dvec3 a = t.positions[std::size_t(f[0])];
             const glm::dvec3 n = glm::cross(t.positions[std::size_t(f[1])] - a, t.positions[std::size_t(f[2])] - a);
@@ -80,18 +115,18 @@ void recompute_normals(MeshTopology& t) {
             const double len = glm::length(n);
             t.normals[base + i] = len > 0.0 ? n / len : t.normals[std::size_t(from[0])];
         }
-        return;
+        return t;
     }
-    std::fill(t.normals.begin(), t.normals.end(), glm::dvec3(0.0));
-    for (const auto& f : t.face_vertices) {
-        const glm::dvec3 a = t.positions[f[0]];
-        const glm::dvec3 n = glm::cross(t.positions[f[1]] - a, t.positions[f[2]] - a);
-        for (const auto v : f) t.normals[v] += n;
+    for (const auto& f : c.face_vertices) {
+        const glm::dvec3 a = t.positions[std::size_t(f[0])];
+        const glm::dvec3 n = glm::cross(t.positions[std::size_t(f[1])] - a, t.positions[std::size_t(f[2])] - a);
+        for (const auto v : f) t.normals[std::size_t(v)] += n;
     }
     for (auto& n : t.normals) {
         const double len = glm::length(n);
         n = len > 0.0 ? n / len : glm::dvec3(0.0, 0.0, 1.0);
     }
+    return t;
 }
 
 } // namespace snaxels

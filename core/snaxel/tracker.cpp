@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <chrono>
 #include <limits>
+#include <stdexcept>
 
 #include "snaxels/error.h"
 
@@ -49,6 +50,13 @@ const char* event_name(EventKind kind) {
 ContourTracker::ContourTracker(const MeshTopology& topology, const ContourSpec& spec,
                                const EngineOptions& options)
     : topo_(topology), spec_(spec), options_(options) {}
+
+const TrackedFrame& ContourTracker::step(const MeshTopology& pose, const Camera& camera, const Light& light) {
+    if (!pose.same_connectivity(topo_))
+        throw std::invalid_argument("ContourTracker::step: a pose of another mesh (its connectivity differs)");
+    topo_ = pose;
+    return step(camera, light);
+}
 
 const TrackedFrame& ContourTracker::step(const Camera& camera, const Light& light) {
     ++frame_number_;
@@ -102,7 +110,7 @@ void ContourTracker::track(const Camera& camera, const Light& light) {
     result.spec = spec_;
 
     // 1. f everywhere (new regions may appear anywhere) and what changed side.
-    f.evaluate_vertices(topo_.positions, topo_.normals, result.vertex_f);
+    f.evaluate_vertices(topo_.positions(), topo_.normals(), result.vertex_f);
     const std::vector<std::int32_t> changed = flip_changed_vertices();
     sweep_parents(old, changed);
     result.fronts = extract_fronts(topo_, inside_, crossing_edges(old, changed));
@@ -153,8 +161,8 @@ void ContourTracker::sweep_parents(const Fronts& old, const std::vector<std::int
     for (std::size_t q = 0; q < queue.size(); ++q) {
         const std::int32_t v = queue[q];
         (inside_[v] ? frame_.fanouts : frame_.retreats) += 1;
-        for (std::int32_t k = topo_.ring_start[v]; k < topo_.ring_start[v + 1]; ++k) {
-            const std::int32_t w = topo_.ring[k];
+        for (std::int32_t k = topo_.ring_start()[v]; k < topo_.ring_start()[v + 1]; ++k) {
+            const std::int32_t w = topo_.ring()[k];
             if (vertex_parent_[w] != kNone || inside_[w] != inside_[v]) continue;
             if (std::binary_search(changed.begin(), changed.end(), w)) { // changed the same way
                 vertex_parent_[w] = vertex_parent_[v];
@@ -173,15 +181,15 @@ std::vector<std::int32_t> ContourTracker::crossing_edges(const Fronts& old, cons
     auto consider = [&](std::int32_t e) {
         if (edge_mark_[e]) return;
         edge_mark_[e] = 1;
-        const auto [a, b] = topo_.edge_vertices[e];
+        const auto [a, b] = topo_.edge_vertices()[e];
         if (inside_[a] != inside_[b]) crossing.push_back(e);
     };
     for (const Snaxel& s : old.snaxels) consider(s.edge);
     for (const std::int32_t v : changed)
-        for (std::int32_t k = topo_.ring_start[v]; k < topo_.ring_start[v + 1]; ++k) consider(topo_.ring_edge[k]);
+        for (std::int32_t k = topo_.ring_start()[v]; k < topo_.ring_start()[v + 1]; ++k) consider(topo_.ring_edge()[k]);
     for (const Snaxel& s : old.snaxels) edge_mark_[s.edge] = 0;
     for (const std::int32_t v : changed)
-        for (std::int32_t k = topo_.ring_start[v]; k < topo_.ring_start[v + 1]; ++k) edge_mark_[topo_.ring_edge[k]] = 0;
+        for (std::int32_t k = topo_.ring_start()[v]; k < topo_.ring_start()[v + 1]; ++k) edge_mark_[topo_.ring_edge()[k]] = 0;
     std::sort(crossing.begin(), crossing.end());
     return crossing;
 }

@@ -42,13 +42,16 @@ struct TrackedFrame {
 
 class ContourTracker {
   public:
-    /// @p topology's positions and normals may change between steps (a
-    /// moving mesh); its connectivity may not.
+    /// Tracks @p spec on @p topology's mesh, starting in its pose.
     ContourTracker(const MeshTopology& topology, const ContourSpec& spec,
                    const EngineOptions& options = {});
 
-    /// Advances to the next frame: from scratch on the first call, tracked after.
+    /// Advances to the next frame, the mesh in the pose it was in: from
+    /// scratch on the first call, tracked after.
     const TrackedFrame& step(const Camera& camera, const Light& light);
+    /// Advances to the next frame with the mesh in @p pose (a moving mesh):
+    /// another pose of the same connectivity, else std::invalid_argument.
+    const TrackedFrame& step(const MeshTopology& pose, const Camera& camera, const Light& light);
 
     const TrackedFrame& current() const { return frame_; }
     /// Frames stepped so far (0: the next step starts from scratch).
@@ -66,7 +69,7 @@ class ContourTracker {
     void match_loops(const TrackedFrame& prev, const std::vector<glm::dvec3>& old_position,
                      const std::vector<std::int32_t>& source);
 
-    const MeshTopology& topo_;
+    MeshTopology topo_; ///< the mesh in the pose of the current frame
     ContourSpec spec_;
     EngineOptions options_;
     TrackedFrame frame_;

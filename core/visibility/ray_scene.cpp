@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <limits>
+#include <stdexcept>
 
 #include <embree3/rtcore.h>
 
@@ -36,7 +37,7 @@ bool ignored(const CountContext& c, std::uint32_t prim) {
                 if (v == c.ignore_base[std::size_t(i)]) return true;
         return false;
     }
-    for (const std::int32_t v : c.topo->face_vertices[prim])
+    for (const std::int32_t v : c.topo->face_vertices()[prim])
         for (const std::int32_t w : c.ray->ignore)
             if (v == w) return true;
     return false;
@@ -51,9 +52,9 @@ void count_filter(const RTCFilterFunctionNArguments* args) {
         if (ignored(*c, prim)) continue;
         if (std::find(c->seen.begin(), c->seen.end(), prim) != c->seen.end()) continue;
         c->seen.push_back(prim);
-        const auto& fv = c->topo->face_vertices[prim];
-        const glm::dvec3 a = c->topo->positions[fv[0]];
-        const glm::dvec3 normal = glm::cross(c->topo->positions[fv[1]] - a, c->topo->positions[fv[2]] - a);
+        const auto& fv = c->topo->face_vertices()[prim];
+        const glm::dvec3 a = c->topo->positions()[fv[0]];
+        const glm::dvec3 normal = glm::cross(c->topo->positions()[fv[1]] - a, c->topo->positions()[fv[2]] - a);
         if (glm::dot(normal, c->ray->dir) > 0.0) ++c->crossings.front;
         else ++c->crossings.back;
     }
@@ -94,10 +95,10 @@ RTCDevice shared_device() {
 
 } // namespace
 
-RayScene::RayScene(const MeshTopology& topology) : topo_(topology) {
-    if (!topo_.positions.empty()) {
-        glm::dvec3 lo = topo_.positions[0], hi = lo;
-        for (const glm::dvec3& p : topo_.positions) {
+RayScene::RayScene(MeshTopology topology) : topo_(std::move(topology)) {
+    if (!topo_.positions().empty()) {
+        glm::dvec3 lo = topo_.positions()[0], hi = lo;
+        for (const glm::dvec3& p : topo_.positions()) {
             lo = glm::min(lo, p);
             hi = glm::max(hi, p);
         }
@@ -119,7 +120,7 @@ RayScene::RayScene(const MeshTopology& topology) : topo_(topology) {
         geom, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, 3 * sizeof(std::uint32_t), topo_.n_faces()));
     if (!vertices_ || !index) throw Error("out of memory building the ray-tracing scene");
     for (std::size_t f = 0; f < topo_.n_faces(); ++f)
-        for (int k = 0; k < 3; ++k) index[3 * f + k] = std::uint32_t(topo_.face_vertices[f][k]);
+        for (int k = 0; k < 3; ++k) index[3 * f + k] = std::uint32_t(topo_.face_vertices()[f][k]);
     upload_positions();
     rtcCommitGeometry(geom);
     rtcAttachGeometry(scene, geom);
@@ -133,10 +134,13 @@ RayScene::~RayScene() {
 
 void RayScene::upload_positions() {
     for (std::size_t v = 0; v < topo_.n_vertices(); ++v)
-        for (int k = 0; k < 3; ++k) vertices_[3 * v + k] = float(topo_.positions[v][k] - origin_[k]);
+        for (int k = 0; k < 3; ++k) vertices_[3 * v + k] = float(topo_.positions()[v][k] - origin_[k]);
 }
 
-void RayScene::refit() {
+void RayScene::refit(const MeshTopology& pose) {
+    if (!pose.same_connectivity(topo_))
+        throw std::invalid_argument("RayScene::refit: a pose of another mesh (its connectivity differs)");
+    topo_ = pose;
     auto geom = static_cast<RTCGeometry>(geometry_);
     rtcSetGeometryBuildQuality(geom, RTC_BUILD_QUALITY_REFIT);
     upload_positions();
@@ -150,8 +154,8 @@ void RayScene::init_context(CountContext& c, const VisibilityRay& r, bool counti
     c.embree.filter = counting ? count_filter : occlusion_filter;
     c.topo = &topo_;
     c.ray = &r;
-    if (topo_.refinement && r.original_neighbourhood) {
-        const MeshRefinement& refinement = *topo_.refinement;
+    if (topo_.refinement() && r.original_neighbourhood) {
+        const MeshRefinement& refinement = *topo_.refinement();
         c.refinement = &refinement;
         auto add = [&](std::int32_t v) {
             for (int i = 0; i < c.n_ignore_base; ++i)

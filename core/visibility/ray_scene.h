@@ -44,15 +44,16 @@ struct CountContext;
 
 class RayScene {
   public:
-    /// Builds the BVH of @p topology's faces at its current positions.
-    explicit RayScene(const MeshTopology& topology);
+    /// Builds the BVH of @p topology's faces in its pose (the scene keeps
+    /// the topology, a shared value).
+    explicit RayScene(MeshTopology topology);
     ~RayScene();
     RayScene(const RayScene&) = delete;
     RayScene& operator=(const RayScene&) = delete;
 
-    /// Refits the BVH to @p topology's positions (same connectivity), for
-    /// meshes that move between frames.
-    void refit();
+    /// Refits the BVH to @p pose, another pose of the same connectivity (else
+    /// std::invalid_argument), for meshes that move between frames.
+    void refit(const MeshTopology& pose);
 
     /// Every crossing of the ray segment, each face once.
     Crossings count(const VisibilityRay& ray) const;
@@ -67,7 +68,7 @@ class RayScene {
     void upload_positions();
     void init_context(CountContext& context, const VisibilityRay& ray, bool counting) const;
 
-    const MeshTopology& topo_;
+    MeshTopology topo_;
     /// Embree works in float: vertices and rays are taken relative to the
     /// mesh's centre (in double), so a mesh far from the origin (1e7 away)
     /// keeps its detail.

@@ -8,9 +8,9 @@
 namespace snaxels {
 
 std::int32_t common_face(const MeshTopology& topo, const Snaxel& a, const Snaxel& b) {
-    for (const std::int32_t f : topo.edge_faces[a.edge])
+    for (const std::int32_t f : topo.edge_faces()[a.edge])
         if (f != MeshTopology::kNone &&
-            (f == topo.edge_faces[b.edge][0] || f == topo.edge_faces[b.edge][1]))
+            (f == topo.edge_faces()[b.edge][0] || f == topo.edge_faces()[b.edge][1]))
             return f;
     return MeshTopology::kNone;
 }
@@ -34,7 +34,7 @@ VisibilityRay VisibilitySampler::make_ray(const glm::dvec3& p, const glm::dvec3&
 VisibilityRay VisibilitySampler::snaxel_ray(const Snaxel& s, const glm::dvec3& p,
                                             const glm::dvec3& n) const {
     const MeshTopology& topo = scene_.topology();
-    const double len = glm::length(topo.positions[s.inside] - topo.positions[s.outside]);
+    const double len = glm::length(topo.positions()[s.inside] - topo.positions()[s.outside]);
     VisibilityRay ray = make_ray(p, n, len);
     ray.ignore = {s.inside, s.outside, MeshTopology::kNone};
     return ray;
@@ -43,10 +43,10 @@ VisibilityRay VisibilitySampler::snaxel_ray(const Snaxel& s, const glm::dvec3& p
 VisibilityRay VisibilitySampler::face_ray(std::int32_t face, const glm::dvec3& p,
                                           const glm::dvec3& n) const {
     const MeshTopology& topo = scene_.topology();
-    const auto& fv = topo.face_vertices[face];
-    const double len = (glm::length(topo.positions[fv[0]] - topo.positions[fv[1]]) +
-                        glm::length(topo.positions[fv[1]] - topo.positions[fv[2]]) +
-                        glm::length(topo.positions[fv[2]] - topo.positions[fv[0]])) / 3.0;
+    const auto& fv = topo.face_vertices()[face];
+    const double len = (glm::length(topo.positions()[fv[0]] - topo.positions()[fv[1]]) +
+                        glm::length(topo.positions()[fv[1]] - topo.positions()[fv[2]]) +
+                        glm::length(topo.positions()[fv[2]] - topo.positions()[fv[0]])) / 3.0;
     VisibilityRay ray = make_ray(p, n, len);
     ray.ignore = {fv[0], fv[1], fv[2]};
     return ray;
@@ -55,20 +55,20 @@ VisibilityRay VisibilitySampler::face_ray(std::int32_t face, const glm::dvec3& p
 VisibilityRay VisibilitySampler::vertex_ray(std::int32_t v, bool back_side) const {
     const MeshTopology& topo = scene_.topology();
     double len = 0.0;
-    const std::int32_t begin = topo.ring_start[v], end = topo.ring_start[v + 1];
-    for (std::int32_t i = begin; i < end; ++i) len += glm::length(topo.positions[topo.ring[i]] - topo.positions[v]);
-    len = end > begin ? len / (end - begin) : topo.mean_edge_length;
-    VisibilityRay ray = make_ray(topo.positions[v], back_side ? -topo.normals[v] : topo.normals[v], len);
+    const std::int32_t begin = topo.ring_start()[v], end = topo.ring_start()[v + 1];
+    for (std::int32_t i = begin; i < end; ++i) len += glm::length(topo.positions()[topo.ring()[i]] - topo.positions()[v]);
+    len = end > begin ? len / (end - begin) : topo.mean_edge_length();
+    VisibilityRay ray = make_ray(topo.positions()[v], back_side ? -topo.normals()[v] : topo.normals()[v], len);
     ray.ignore = {v, MeshTopology::kNone, MeshTopology::kNone};
     return ray;
 }
 
 VisibilityRay VisibilitySampler::edge_ray(std::int32_t e, double t) const {
     const MeshTopology& topo = scene_.topology();
-    const std::int32_t a = topo.edge_vertices[e][0], b = topo.edge_vertices[e][1];
-    const glm::dvec3 p = glm::mix(topo.positions[a], topo.positions[b], t);
-    const glm::dvec3 n = slerp_normal(topo.normals[a], topo.normals[b], t);
-    VisibilityRay ray = make_ray(p, n, glm::length(topo.positions[a] - topo.positions[b]));
+    const std::int32_t a = topo.edge_vertices()[e][0], b = topo.edge_vertices()[e][1];
+    const glm::dvec3 p = glm::mix(topo.positions()[a], topo.positions()[b], t);
+    const glm::dvec3 n = slerp_normal(topo.normals()[a], topo.normals()[b], t);
+    VisibilityRay ray = make_ray(p, n, glm::length(topo.positions()[a] - topo.positions()[b]));
     ray.ignore = {a, b, MeshTopology::kNone};
     return ray;
 }

@@ -67,8 +67,8 @@ int main(int argc, char** argv) {
     }
     const MeshTopology topo = build_topology(m.mesh);
     double edge_px = 0.0;
-    for (const auto& e : topo.edge_vertices)
-        edge_px += glm::length(proj.project(topo.positions[e[0]]) - proj.project(topo.positions[e[1]]));
+    for (const auto& e : topo.edge_vertices())
+        edge_px += glm::length(proj.project(topo.positions()[e[0]]) - proj.project(topo.positions()[e[1]]));
     edge_px /= double(topo.n_edges());
     // Smooth (normal-interpolated) silhouettes can sit a fraction of an edge
     // inside the polygonal outline.

@@ -18,6 +18,7 @@
 #include <cstdint>
 #include <map>
 #include <numeric>
+#include <span>
 #include <vector>
 
 #include <glm/glm.hpp>
@@ -42,8 +43,8 @@ struct OracleContour {
 };
 
 /// Area-weighted vertex normals of a triangle list.
-inline std::vector<glm::dvec3> oracle_normals(const std::vector<glm::dvec3>& positions,
-                                              const std::vector<std::array<std::int32_t, 3>>& faces) {
+inline std::vector<glm::dvec3> oracle_normals(std::span<const glm::dvec3> positions,
+                                              std::span<const std::array<std::int32_t, 3>> faces) {
     std::vector<glm::dvec3> n(positions.size(), glm::dvec3(0.0));
     for (const auto& f : faces) {
         const glm::dvec3 c = glm::cross(positions[std::size_t(f[1])] - positions[std::size_t(f[0])],
@@ -78,10 +79,11 @@ inline glm::dvec3 oracle_slerp(const glm::dvec3& a, const glm::dvec3& b, double 
 
 /// With @p normals given (a mesh whose animation defines its normals), else
 /// the oracle's own.
-inline OracleContour marching_triangles(const std::vector<glm::dvec3>& positions,
-                                        const std::vector<std::array<std::int32_t, 3>>& faces, const OracleSetup& setup,
-                                        int scan = 256, const std::vector<glm::dvec3>* normals = nullptr) {
-    const std::vector<glm::dvec3> normal = normals ? *normals : oracle_normals(positions, faces);
+inline OracleContour marching_triangles(std::span<const glm::dvec3> positions,
+                                        std::span<const std::array<std::int32_t, 3>> faces, const OracleSetup& setup,
+                                        int scan = 256, std::span<const glm::dvec3> normals = {}) {
+    const std::vector<glm::dvec3> normal =
+        !normals.empty() ? std::vector<glm::dvec3>(normals.begin(), normals.end()) : oracle_normals(positions, faces);
     std::vector<double> fv(positions.size());
     for (std::size_t v = 0; v < fv.size(); ++v) fv[v] = oracle_f(setup, positions[v], normal[v]);
     OracleContour out;

@@ -3,12 +3,15 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <stdexcept>
+#include <vector>
 
 #include "snaxels/error.h"
 #include "snaxels/mesh/import.h"
 #include "snaxels/mesh/mesh_animation.h"
 #include "snaxels/mesh/procedural.h"
 #include "snaxels/animation/frame_driver.h"
+#include "snaxels/snaxel/refine.h"
 #include "snaxels/snaxel/tracker.h"
 #include "tests/support/assets.h"
 #include "tests/support/oracle_setup.h"
@@ -21,8 +24,8 @@ namespace {
 // against the oracle on the posed mesh; returns how far the mesh moved.
 double track_clip(const std::string& path, const std::string& clip, int frames, double fps) {
     const LoadedMesh mesh = import_mesh(path);
-    MeshTopology topo = build_topology(mesh.mesh);
-    const std::vector<glm::dvec3> rest = topo.positions;
+    const MeshTopology rest_topo = build_topology(mesh.mesh);
+    const std::span<const glm::dvec3> rest = rest_topo.positions();
     AnimationSpec spec;
     spec.kind = AnimationSpec::Kind::Clip;
     spec.clip = clip;
@@ -30,19 +33,21 @@ double track_clip(const std::string& path, const std::string& clip, int frames, 
     spec.fps = fps;
     Camera camera;
     camera.view_dir = glm::normalize(glm::dvec3(0.2, -0.1, -1.0));
-    FrameDriver driver(spec, mesh, topo, camera, default_light(camera), glm::dvec3(0.0), path);
+    FrameDriver driver(spec, mesh, rest_topo, camera, default_light(camera), glm::dvec3(0.0), path);
     EXPECT_TRUE(driver.mesh_moves());
-    ContourTracker tracker(topo, ContourSpec{});
+    ContourTracker tracker(rest_topo, ContourSpec{});
     double moved = 0.0;
     for (int k = 0; k < frames; ++k) {
-        Camera cam;
-        Light light;
-        driver.apply(k, cam, light);
-        for (std::size_t v = 0; v < topo.n_vertices(); ++v) moved = std::max(moved, glm::length(topo.positions[v] - rest[v]));
-        const TrackedFrame& tf = tracker.step(cam, light);
+        const FramePose pose = driver.pose(k);
+        const MeshTopology& topo = pose.mesh;
+        const Camera& cam = pose.camera;
+        const Light& light = pose.light;
+        EXPECT_TRUE(topo.same_connectivity(rest_topo)); // one connectivity, shared
+        for (std::size_t v = 0; v < topo.n_vertices(); ++v) moved = std::max(moved, glm::length(topo.positions()[v] - rest[v]));
+        const TrackedFrame& tf = tracker.step(topo, cam, light);
         // A moving mesh's normals are what its animation makes them.
-        const auto oracle = test::marching_triangles(topo.positions, topo.face_vertices, test::oracle_setup({}, cam, light), 1,
-                                                     &topo.normals);
+        const auto oracle = test::marching_triangles(topo.positions(), topo.face_vertices(), test::oracle_setup({}, cam, light), 1,
+                                                     topo.normals());
         EXPECT_EQ(tf.contour.fronts.snaxels.size(), oracle.crossing.size()) << path << " frame " << k;
         EXPECT_EQ(tf.contour.fronts.loops.size(), oracle.loops) << path << " frame " << k;
         for (const auto& loop : tf.contour.fronts.loops) EXPECT_TRUE(loop.closed);
@@ -109,23 +114,22 @@ TEST(FrameDriver, FileSequence) {
     spec.pattern = (dir / "blob_####.obj").string();
     spec.frames = 4;
     const LoadedMesh mesh = import_mesh((dir / "blob_0001.obj").string());
-    MeshTopology topo = build_topology(mesh.mesh);
-    Camera cam;
-    Light light;
-    FrameDriver driver(spec, mesh, topo, cam, light, glm::dvec3(0.0), "");
+    const MeshTopology topo = build_topology(mesh.mesh);
+    FrameDriver driver(spec, mesh, topo, Camera{}, Light{}, glm::dvec3(0.0), "");
     EXPECT_EQ(driver.sequence_path(2), (dir / "blob_0003.obj").string());
     double base_x = 0.0;
     for (const auto& p : base.positions) base_x = std::max(base_x, p.x);
     for (int k = 0; k < 4; ++k) {
-        driver.apply(k, cam, light);
+        const FramePose pose = driver.pose(k);
+        EXPECT_TRUE(pose.mesh.same_connectivity(topo));
         double max_x = 0.0;
-        for (const auto& p : topo.positions) max_x = std::max(max_x, p.x);
+        for (const auto& p : pose.mesh.positions()) max_x = std::max(max_x, p.x);
         EXPECT_NEAR(max_x, base_x * (1.0 + 0.2 * (k + 1)), 1e-5); // files hold 6 significant digits
     }
     // A file with other connectivity is refused by name.
     std::ofstream(dir / "blob_0003.obj") << "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n";
     try {
-        driver.apply(2, cam, light);
+        driver.pose(2);
         FAIL();
     } catch (const Error& e) {
         EXPECT_NE(std::string(e.what()).find("blob_0003.obj: has 3 vertices"), std::string::npos) << e.what();
@@ -181,15 +185,14 @@ TEST(FrameDriver, TurntableAndLightOrbit) {
     spec.kind = AnimationSpec::Kind::Turntable;
     spec.degrees_per_frame = 90.0;
     FrameDriver turn(spec, mesh, topo, base, light0, glm::dvec3(0.0), "");
-    Camera cam;
-    Light light;
-    turn.apply(1, cam, light);
-    EXPECT_NEAR(cam.view_dir.x, 1.0, 1e-12); // +Z turned 90 degrees about +Y
+    const FramePose turned = turn.pose(1);
+    EXPECT_NEAR(turned.camera.view_dir.x, 1.0, 1e-12); // +Z turned 90 degrees about +Y
+    EXPECT_EQ(turned.mesh.pose(), topo.pose());        // the mesh stays as loaded: the same pose, not a copy
     spec.kind = AnimationSpec::Kind::LightOrbit;
     FrameDriver orbit(spec, mesh, topo, base, light0, glm::dvec3(0.0), "");
-    orbit.apply(2, cam, light);
-    EXPECT_NEAR(light.dir.x, -1.0, 1e-12);
-    EXPECT_NEAR(cam.view_dir.z, 1.0, 1e-12);
+    const FramePose orbited = orbit.pose(2);
+    EXPECT_NEAR(orbited.light.dir.x, -1.0, 1e-12);
+    EXPECT_NEAR(orbited.camera.view_dir.z, 1.0, 1e-12);
 }
 
 // An in point (spec.start) shifts the source: frame k of an animation
@@ -207,25 +210,59 @@ TEST(FrameDriver, StartIsAnInPoint) {
     FrameDriver from_zero(spec, sphere, topo, base, light0, glm::dvec3(0.0), "");
     spec.start = 10;
     FrameDriver from_ten(spec, sphere, topo, base, light0, glm::dvec3(0.0), "");
-    Camera a, b;
-    Light la, lb;
-    from_zero.apply(13, a, la);
-    from_ten.apply(3, b, lb);
-    EXPECT_EQ(a.view_dir, b.view_dir);
-    EXPECT_EQ(la.dir, lb.dir);
+    EXPECT_EQ(from_zero.pose(13).camera.view_dir, from_ten.pose(3).camera.view_dir);
+    EXPECT_EQ(from_zero.pose(13).light.dir, from_ten.pose(3).light.dir);
 
     const std::string path = test::asset("anim/skinned-bar.gltf");
     const LoadedMesh bar = import_mesh(path);
-    MeshTopology t0 = build_topology(bar.mesh), t1 = build_topology(bar.mesh);
+    const MeshTopology t0 = build_topology(bar.mesh), t1 = build_topology(bar.mesh);
     AnimationSpec clip;
     clip.kind = AnimationSpec::Kind::Clip;
     clip.fps = 24.0;
     FrameDriver clip_zero(clip, bar, t0, base, light0, glm::dvec3(0.0), path);
     clip.start = 6;
     FrameDriver clip_six(clip, bar, t1, base, light0, glm::dvec3(0.0), path);
-    clip_zero.apply(9, a, la);
-    clip_six.apply(3, b, lb);
-    EXPECT_EQ(t0.positions, t1.positions);
-    clip_six.apply(0, b, lb);
-    EXPECT_NE(t0.positions, t1.positions);
+    auto positions = [](const FramePose& p) {
+        return std::vector<glm::dvec3>(p.mesh.positions().begin(), p.mesh.positions().end());
+    };
+    EXPECT_EQ(positions(clip_zero.pose(9)), positions(clip_six.pose(3)));
+    EXPECT_NE(positions(clip_zero.pose(9)), positions(clip_six.pose(0)));
+}
+
+// A frame's mesh is a value: later frames, and the tracker stepping through
+// them, leave an earlier pose and the loaded one as they were; every pose
+// shares the loaded mesh's one connectivity.
+TEST(FrameDriver, PosesAreValuesOfOneSharedConnectivity) {
+    const std::string path = test::asset("anim/skinned-bar.gltf");
+    const LoadedMesh bar = import_mesh(path);
+    const MeshTopology rest = engine_topology(bar.mesh); // refined: the added vertices follow too
+    ASSERT_TRUE(rest.refinement());
+    const std::vector<glm::dvec3> loaded(rest.positions().begin(), rest.positions().end());
+    AnimationSpec clip;
+    clip.kind = AnimationSpec::Kind::Clip;
+    clip.fps = 24.0;
+    Camera camera;
+    camera.view_dir = glm::normalize(glm::dvec3(0.2, -0.1, -1.0));
+    FrameDriver driver(clip, bar, rest, camera, default_light(camera), glm::dvec3(0.0), path);
+    const FramePose early = driver.pose(3);
+    const std::vector<glm::dvec3> early_positions(early.mesh.positions().begin(), early.mesh.positions().end());
+    ContourTracker tracker(rest, ContourSpec{});
+    tracker.step(early.mesh, early.camera, early.light);
+    const FramePose late = driver.pose(20);
+    tracker.step(late.mesh, late.camera, late.light);
+
+    EXPECT_EQ(early.mesh.connectivity(), rest.connectivity()); // shared, not copied
+    EXPECT_EQ(late.mesh.connectivity(), rest.connectivity());
+    EXPECT_EQ(std::vector<glm::dvec3>(early.mesh.positions().begin(), early.mesh.positions().end()), early_positions);
+    EXPECT_EQ(std::vector<glm::dvec3>(rest.positions().begin(), rest.positions().end()), loaded);
+    double moved = 0.0;
+    for (std::size_t v = 0; v < early_positions.size(); ++v)
+        moved = std::max(moved, glm::length(late.mesh.positions()[v] - early_positions[v]));
+    EXPECT_GT(moved, 0.1); // the bar bent between the two frames
+
+    // A pose of another mesh is refused, not tracked as if it were this one.
+    const LoadedMesh sphere = load_mesh("proc:sphere:500");
+    EXPECT_THROW(tracker.step(build_topology(sphere.mesh), late.camera, late.light), std::invalid_argument);
+    // Neither is a pose with another vertex count.
+    EXPECT_THROW(rest.posed(build_topology(sphere.mesh).pose()), std::invalid_argument);
 }

@@ -51,7 +51,7 @@ TEST(StillTracking, TrackedStillsEqualStillsFromScratch) {
     const Style toon = load_style(std::string(SNAXELS_STYLES_DIR) + "/toon.xml", nullptr);
     const glm::dvec3 centre = 0.5 * (mesh.report.bbox_min + mesh.report.bbox_max);
     OrbitView view = framing_view(centre, 0.5 * glm::length(mesh.report.bbox_max - mesh.report.bbox_min));
-    StillTracking tracking(topo);
+    StillTracking tracking;
     glm::dvec3 light_dir(-1.0, 1.0, 1.0);
     std::size_t compared = 0;
     for (int step = 0; step < 40; ++step) {

@@ -83,9 +83,9 @@ TEST(PostMap, RegionsPartitionTheSilhouette) {
                 }
             // Against the projection of every triangle of the mesh.
             ClipperLib::Paths triangles;
-            for (const auto& f : topo.face_vertices) {
+            for (const auto& f : topo.face_vertices()) {
                 std::vector<glm::dvec2> tri;
-                for (const auto v : f) tri.push_back(proj.project(topo.positions[v]));
+                for (const auto v : f) tri.push_back(proj.project(topo.positions()[v]));
                 triangles.push_back(to_paths({tri})[0]);
             }
             // Triangles of either winding: orient them all the same way first.

@@ -32,10 +32,10 @@ TEST(ClosedForm, SphereContoursFollowThePapersFormulas) {
     const LoadedMesh mesh = load_mesh("proc:sphere:80000");
     const MeshTopology topo = build_topology(mesh.mesh);
     // The sphere is the unit sphere about the origin.
-    for (const glm::dvec3& p : topo.positions) ASSERT_NEAR(glm::length(p), 1.0, 1e-9);
+    for (const glm::dvec3& p : topo.positions()) ASSERT_NEAR(glm::length(p), 1.0, 1e-9);
     // Edges from the face list: vertex pair -> number of snaxels found on it.
     std::map<std::pair<std::int32_t, std::int32_t>, int> edges;
-    for (const auto& f : topo.face_vertices)
+    for (const auto& f : topo.face_vertices())
         for (int k = 0; k < 3; ++k) {
             const std::int32_t a = f[std::size_t(k)], b = f[std::size_t((k + 1) % 3)];
             edges[{std::min(a, b), std::max(a, b)}] = 0;
@@ -43,7 +43,7 @@ TEST(ClosedForm, SphereContoursFollowThePapersFormulas) {
     // Vertex normals: area-weighted face normals (the design's definition).
     // Vertex normals: area-weighted face normals (the design's definition),
     // computed by the tests' oracle (tests/support/marching_triangles.h).
-    const std::vector<glm::dvec3> normal = test::oracle_normals(topo.positions, topo.face_vertices);
+    const std::vector<glm::dvec3> normal = test::oracle_normals(topo.positions(), topo.face_vertices());
     const SnaxelEngine engine(topo);
     std::mt19937 rng(5);
     std::normal_distribution<double> nd;
@@ -75,8 +75,8 @@ TEST(ClosedForm, SphereContoursFollowThePapersFormulas) {
                 r.fronts.for_each_in_loop(loop, [&](std::int32_t s) {
                     const Snaxel& sn = r.fronts.snaxels[std::size_t(s)];
                     worst_root = std::max(worst_root, std::abs(f(test::oracle_slerp(normal[std::size_t(sn.inside)], normal[std::size_t(sn.outside)], sn.t))));
-                    const glm::dvec3 n = glm::normalize((1.0 - sn.t) * topo.positions[std::size_t(sn.inside)] +
-                                                        sn.t * topo.positions[std::size_t(sn.outside)]);
+                    const glm::dvec3 n = glm::normalize((1.0 - sn.t) * topo.positions()[std::size_t(sn.inside)] +
+                                                        sn.t * topo.positions()[std::size_t(sn.outside)]);
                     worst_exact = std::max(worst_exact, std::abs(f(n)));
                     // Where the curve is the light's circle (not the outline), as a circle.
                     if ((spec.kind == ContourKind::Shadow || spec.kind == ContourKind::Isophote) && glm::dot(n, V) > on_curve)

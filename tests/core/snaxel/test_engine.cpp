@@ -30,7 +30,7 @@ struct ViewSetup {
 
 ViewSetup random_setup(std::mt19937& rng, const MeshTopology& topo, int i) {
     glm::dvec3 lo(1e300), hi(-1e300);
-    for (const auto& p : topo.positions) lo = glm::min(lo, p), hi = glm::max(hi, p);
+    for (const auto& p : topo.positions()) lo = glm::min(lo, p), hi = glm::max(hi, p);
     const glm::dvec3 centre = 0.5 * (lo + hi);
     const double radius = 0.5 * glm::length(hi - lo);
     std::uniform_real_distribution<double> u(0.0, 1.0);
@@ -58,7 +58,7 @@ ViewSetup random_setup(std::mt19937& rng, const MeshTopology& topo, int i) {
 void expect_matches_oracle(const SnaxelEngine& engine, const MeshTopology& topo, const ContourResult& r,
                            const test::OracleSetup& setup, bool closed_mesh) {
     // Only positions and the face list go to the oracle.
-    const auto oracle = test::marching_triangles(topo.positions, topo.face_vertices, setup);
+    const auto oracle = test::marching_triangles(topo.positions(), topo.face_vertices(), setup);
     ASSERT_EQ(oracle.edges, topo.n_edges());
     ASSERT_EQ(r.fronts.snaxels.size(), oracle.crossing.size());
     EXPECT_EQ(r.fronts.loops.size(), oracle.loops);
@@ -69,12 +69,12 @@ void expect_matches_oracle(const SnaxelEngine& engine, const MeshTopology& topo,
         EXPECT_EQ(open, 0u);
     }
     for (std::size_t e = 0; e < topo.n_edges(); ++e) {
-        const auto [a, b] = topo.edge_vertices[e];
+        const auto [a, b] = topo.edge_vertices()[e];
         const std::int32_t s = r.fronts.edge_snaxel[e];
         const auto o = oracle.crossing.find({std::min(a, b), std::max(a, b)});
         ASSERT_EQ(s >= 0, o != oracle.crossing.end()) << "edge " << e;
         if (s < 0) continue;
-        const double len = glm::length(topo.positions[a] - topo.positions[b]);
+        const double len = glm::length(topo.positions()[a] - topo.positions()[b]);
         const double d = glm::length(engine.position(r.fronts.snaxels[s]) - o->second);
         ASSERT_LE(d, 1e-6 * len) << "edge " << e << " of " << r.spec.label();
     }
@@ -220,11 +220,11 @@ TEST(Engine, EyeOrLightAtAVertex) {
     options.check_invariants = true;
     Camera cam;
     cam.projection = Camera::Projection::Perspective;
-    cam.eye = topo.positions[7];
+    cam.eye = topo.positions()[7];
     cam.target = glm::dvec3(0.0);
     Light light;
     light.point = true;
-    light.pos = topo.positions[11];
+    light.pos = topo.positions()[11];
     for (const ContourSpec kind : {ContourSpec{}, ContourSpec{ContourKind::Shadow, 0.0}, ContourSpec{ContourKind::Gleam, 0.8}})
         EXPECT_NO_THROW(engine.compute(kind, cam, light, options)) << kind.label();
 }

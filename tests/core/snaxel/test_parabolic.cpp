@@ -33,8 +33,8 @@ struct SignChanges {
     double mean_edge = 0.0;
 };
 
-SignChanges gaussian_sign_changes(const std::vector<glm::dvec3>& positions,
-                                  const std::vector<std::array<std::int32_t, 3>>& faces) {
+SignChanges gaussian_sign_changes(std::span<const glm::dvec3> positions,
+                                  std::span<const std::array<std::int32_t, 3>> faces) {
     const std::size_t nv = positions.size();
     std::vector<double> angle_sum(nv, 0.0);
     std::map<std::pair<std::int32_t, std::int32_t>, int> edge_uses;
@@ -159,7 +159,7 @@ TEST_P(ParabolicOnSurfaces, MarksLieWhereGaussianCurvatureChangesSign) {
     const LoadedMesh m = load(GetParam());
     const MeshTopology topo = build_topology(m.mesh);
     const ParabolicResult r = find_parabolic(topo);
-    const SignChanges reference = gaussian_sign_changes(topo.positions, topo.face_vertices);
+    const SignChanges reference = gaussian_sign_changes(topo.positions(), topo.face_vertices());
     std::vector<glm::dvec3> marks;
     for (const ParabolicPoint& p : r.points) marks.push_back(p.where);
     const double share = share_near(marks, reference.places, 2.0 * reference.mean_edge);
@@ -251,13 +251,15 @@ TEST(Parabolic, TrackedCurvesKeepTheirIdentityAndMoveWithTheMesh) {
     const TrackedFrame first = tracker.step(camera, default_light(camera));
     ASSERT_FALSE(first.contour.fronts.snaxels.empty());
     const glm::dvec3 p0 = SnaxelEngine(topo).position(first.contour.fronts.snaxels[0]);
-    for (glm::dvec3& p : topo.positions) p += glm::dvec3(0.5, 0.0, 0.0); // the mesh moves
+    auto moved = std::make_shared<MeshPose>(*topo.pose());
+    for (glm::dvec3& p : moved->positions) p += glm::dvec3(0.5, 0.0, 0.0); // the mesh moves
+    const MeshTopology posed = topo.posed(moved);
     camera.view_dir = glm::normalize(glm::dvec3(0.5, 0.2, 1.0));
-    const TrackedFrame& second = tracker.step(camera, default_light(camera));
+    const TrackedFrame& second = tracker.step(posed, camera, default_light(camera));
     EXPECT_EQ(second.snaxel_id, first.snaxel_id);
     EXPECT_EQ(second.loop_sequence, first.loop_sequence);
     EXPECT_TRUE(second.events.empty());
-    const glm::dvec3 p1 = SnaxelEngine(topo).position(second.contour.fronts.snaxels[0]);
+    const glm::dvec3 p1 = SnaxelEngine(posed).position(second.contour.fronts.snaxels[0]);
     EXPECT_NEAR(glm::length(p1 - p0 - glm::dvec3(0.5, 0.0, 0.0)), 0.0, 1e-12);
 }
 

@@ -12,6 +12,7 @@
 #include "snaxels/snaxel/snaxel_engine.h"
 #include "snaxels/visibility/visibility.h"
 #include "tests/support/assets.h"
+#include "tests/support/marching_triangles.h"
 #include "tests/support/views.h"
 
 using namespace snaxels;
@@ -22,10 +23,10 @@ using Weights = std::map<std::int32_t, double>; // original vertex -> weight
 
 /// Where a vertex of a refined topology lies on the original mesh.
 Weights origin(const MeshTopology& t, std::int32_t v) {
-    if (!t.refinement || std::size_t(v) < t.refinement->base_vertices) return {{v, 1.0}};
-    const std::size_t i = std::size_t(v) - t.refinement->base_vertices;
+    if (!t.refinement() || std::size_t(v) < t.refinement()->base_vertices) return {{v, 1.0}};
+    const std::size_t i = std::size_t(v) - t.refinement()->base_vertices;
     Weights w;
-    for (int k = 0; k < 3; ++k) w[t.refinement->from[i][std::size_t(k)]] += t.refinement->weights[i][k];
+    for (int k = 0; k < 3; ++k) w[t.refinement()->from[i][std::size_t(k)]] += t.refinement()->weights[i][k];
     return w;
 }
 
@@ -39,7 +40,7 @@ Weights mix(const Weights& a, const Weights& b, double s) {
 /// The original mesh's smooth (Phong) normal at a point given by weights.
 glm::dvec3 phong_normal(const MeshTopology& base, const Weights& w) {
     glm::dvec3 n(0.0);
-    for (const auto& [v, x] : w) n += x * base.normals[std::size_t(v)];
+    for (const auto& [v, x] : w) n += x * base.normals()[std::size_t(v)];
     return glm::normalize(n);
 }
 
@@ -63,7 +64,7 @@ std::vector<double> isophote_errors(const MeshTopology& base, const MeshTopology
             if (prev != MeshTopology::kNone) {
                 const Weights mid = mix(point(prev), point(s), 0.5);
                 glm::dvec3 p(0.0);
-                for (const auto& [v, x] : mid) p += x * base.positions[std::size_t(v)];
+                for (const auto& [v, x] : mid) p += x * base.positions()[std::size_t(v)];
                 errors.push_back(std::abs(f(p, phong_normal(base, mid))));
             }
             prev = s;
@@ -109,7 +110,7 @@ TEST(Refine, SplitsFacesOnTheirPlanesWithInterpolatedNormals) {
         const MeshTopology base = build_topology(mesh.mesh);
         for (int levels = 1; levels <= 2; ++levels) {
             const MeshTopology t = refine_topology(base, levels);
-            ASSERT_TRUE(t.refinement) << file;
+            ASSERT_TRUE(t.refinement()) << file;
             const std::size_t n = std::size_t(1) << levels;
             EXPECT_EQ(t.n_faces(), base.n_faces() * n * n) << file;
             EXPECT_EQ(t.n_base_vertices(), base.n_vertices());
@@ -118,29 +119,29 @@ TEST(Refine, SplitsFacesOnTheirPlanesWithInterpolatedNormals) {
             for (std::int32_t e = 0; e < std::int32_t(t.n_edges()); ++e) boundary += t.is_boundary_edge(e);
             EXPECT_EQ(boundary, base_boundary * n) << file;
             for (std::size_t v = 0; v < base.n_vertices(); ++v) {
-                ASSERT_EQ(t.positions[v], base.positions[v]);
-                ASSERT_EQ(t.normals[v], base.normals[v]);
+                ASSERT_EQ(t.positions()[v], base.positions()[v]);
+                ASSERT_EQ(t.normals()[v], base.normals()[v]);
             }
             for (std::size_t v = base.n_vertices(); v < t.n_vertices(); ++v) {
                 const Weights w = origin(t, std::int32_t(v));
                 glm::dvec3 p(0.0);
                 double sum = 0.0;
-                for (const auto& [u, x] : w) p += x * base.positions[std::size_t(u)], sum += x;
+                for (const auto& [u, x] : w) p += x * base.positions()[std::size_t(u)], sum += x;
                 ASSERT_NEAR(sum, 1.0, 1e-12);
-                ASSERT_LT(glm::length(t.positions[v] - p), 1e-12);
-                ASSERT_LT(glm::length(t.normals[v] - phong_normal(base, w)), 1e-12);
+                ASSERT_LT(glm::length(t.positions()[v] - p), 1e-12);
+                ASSERT_LT(glm::length(t.normals()[v] - phong_normal(base, w)), 1e-12);
             }
             // Every refined face lies in one original face's plane, facing its way.
             std::map<std::array<std::int32_t, 3>, std::size_t> face_of;
             for (std::size_t f = 0; f < base.n_faces(); ++f) {
-                std::array<std::int32_t, 3> key = base.face_vertices[f];
+                std::array<std::int32_t, 3> key = base.face_vertices()[f];
                 std::sort(key.begin(), key.end());
                 face_of[key] = f;
             }
             auto unit_normal = [](const glm::dvec3& a, const glm::dvec3& b, const glm::dvec3& c) {
                 return glm::normalize(glm::cross(b - a, c - a));
             };
-            for (const auto& f : t.face_vertices) {
+            for (const auto& f : t.face_vertices()) {
                 Weights corners;
                 for (const std::int32_t v : f)
                     for (const auto& [u, x] : origin(t, v)) if (x > 0.0) corners[u] = 1.0;
@@ -150,38 +151,43 @@ TEST(Refine, SplitsFacesOnTheirPlanesWithInterpolatedNormals) {
                 for (const auto& [u, x] : corners) key[i++] = u;
                 const auto it = face_of.find(key);
                 ASSERT_NE(it, face_of.end()) << file;
-                const auto& bf = base.face_vertices[it->second];
-                const glm::dvec3 n0 = unit_normal(base.positions[std::size_t(bf[0])], base.positions[std::size_t(bf[1])],
-                                                  base.positions[std::size_t(bf[2])]);
-                const glm::dvec3 n1 = unit_normal(t.positions[std::size_t(f[0])], t.positions[std::size_t(f[1])],
-                                                  t.positions[std::size_t(f[2])]);
+                const auto& bf = base.face_vertices()[it->second];
+                const glm::dvec3 n0 = unit_normal(base.positions()[std::size_t(bf[0])], base.positions()[std::size_t(bf[1])],
+                                                  base.positions()[std::size_t(bf[2])]);
+                const glm::dvec3 n1 = unit_normal(t.positions()[std::size_t(f[0])], t.positions()[std::size_t(f[1])],
+                                                  t.positions()[std::size_t(f[2])]);
                 ASSERT_GT(glm::dot(n0, n1), 1.0 - 1e-9) << file;
             }
         }
     }
 }
 
-// After the original vertices move (a posed frame), recompute_normals puts
-// the added vertices back on the moved faces with the new smooth normals.
+// After the original vertices move (a posed frame), make_pose puts the
+// added vertices back on the moved faces with the new smooth normals.
 TEST(Refine, AddedVerticesFollowAPose) {
     const LoadedMesh mesh = import_mesh(test::asset("suzanne.obj"));
-    MeshTopology base = build_topology(mesh.mesh);
-    MeshTopology t = refine_topology(base, 2);
+    const MeshTopology rest = build_topology(mesh.mesh);
+    const MeshTopology refined = refine_topology(rest, 2);
     std::mt19937 rng(5);
     std::normal_distribution<double> jitter(0.0, 0.02);
-    for (std::size_t v = 0; v < base.n_vertices(); ++v) {
-        base.positions[v] += glm::dvec3(jitter(rng), jitter(rng), jitter(rng)) + glm::dvec3(0.3, 0.0, 0.0);
-        t.positions[v] = base.positions[v];
-    }
-    recompute_normals(base);
-    recompute_normals(t);
+    std::vector<glm::dvec3> moved(rest.positions().begin(), rest.positions().end());
+    for (glm::dvec3& p : moved) p += glm::dvec3(jitter(rng), jitter(rng), jitter(rng)) + glm::dvec3(0.3, 0.0, 0.0);
+    const MeshTopology base = rest.posed(std::make_shared<const MeshPose>(make_pose(*rest.connectivity(), moved)));
+    const MeshTopology t = refined.posed(std::make_shared<const MeshPose>(make_pose(*refined.connectivity(), moved)));
+    EXPECT_TRUE(t.same_connectivity(refined));
+    // The base pose's normals are the area-weighted ones (the tests' own oracle).
+    const std::vector<glm::dvec3> oracle = test::oracle_normals(base.positions(), base.face_vertices());
+    for (std::size_t v = 0; v < base.n_vertices(); ++v) ASSERT_LT(glm::length(base.normals()[v] - oracle[v]), 1e-12);
     for (std::size_t v = 0; v < t.n_vertices(); ++v) {
         const Weights w = origin(t, std::int32_t(v));
         glm::dvec3 p(0.0);
-        for (const auto& [u, x] : w) p += x * base.positions[std::size_t(u)];
-        ASSERT_LT(glm::length(t.positions[v] - p), 1e-12);
-        ASSERT_LT(glm::length(t.normals[v] - phong_normal(base, w)), 1e-12);
+        for (const auto& [u, x] : w) p += x * base.positions()[std::size_t(u)];
+        ASSERT_LT(glm::length(t.positions()[v] - p), 1e-12);
+        ASSERT_LT(glm::length(t.normals()[v] - phong_normal(base, w)), 1e-12);
     }
+    // The loaded poses are values: posing made new ones and left them as they were.
+    EXPECT_EQ(refined.positions()[0], rest.positions()[0]);
+    EXPECT_NE(t.positions()[0], refined.positions()[0]);
 }
 
 // What refining is for: on a coarse mesh an isophote cuts straight across
@@ -224,7 +230,7 @@ TEST(Refine, VisibilityIsThatOfTheMeshAsLoaded) {
         const LoadedMesh mesh = import_mesh(test::asset(file));
         const MeshTopology base = build_topology(mesh.mesh);
         const MeshTopology refined = engine_topology(mesh.mesh);
-        ASSERT_TRUE(refined.refinement);
+        ASSERT_TRUE(refined.refinement());
         const RayScene base_rays(base), refined_rays(refined);
         std::mt19937 rng(23);
         double sum = 0.0;
@@ -261,7 +267,7 @@ TEST(Refine, VisibilityIsThatOfTheMeshAsLoaded) {
             double agree = 0.0, all = 0.0;
             for (const Piece& p : fine) {
                 const Piece* nearest = nullptr;
-                double best = 0.5 * base.mean_edge_length; // stretches the contour as loaded has nothing near are left out
+                double best = 0.5 * base.mean_edge_length(); // stretches the contour as loaded has nothing near are left out
                 for (const Piece& q : as_loaded) {
                     const double d = glm::length(across(p.mid - q.mid));
                     if (d < best) best = d, nearest = &q;

@@ -52,7 +52,7 @@ DriftResult measure_drift(bool on_surface) {
         });
         loop.q = f.q;
         const auto phases = dashes.step({loop}, [&](const SurfacePoint& sp) {
-            return proj.project((1.0 - sp.t) * topo.positions[sp.a] + sp.t * topo.positions[sp.b]);
+            return proj.project((1.0 - sp.t) * topo.positions()[sp.a] + sp.t * topo.positions()[sp.b]);
         });
         f.phase = on_surface ? phases[0] : 0.0; // screen dashes start at the loop's first point
         frames.push_back(std::move(f));

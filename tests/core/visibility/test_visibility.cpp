@@ -35,8 +35,8 @@ BruteQi brute_force_qi(const MeshTopology& topo, const glm::dvec3& origin, const
     bool grazing = false;
     constexpr double margin = 1e-5;
     for (std::size_t f = 0; f < topo.n_faces(); ++f) {
-        const auto& fv = topo.face_vertices[f];
-        const glm::dvec3 a = topo.positions[fv[0]], b = topo.positions[fv[1]], c = topo.positions[fv[2]];
+        const auto& fv = topo.face_vertices()[f];
+        const glm::dvec3 a = topo.positions()[fv[0]], b = topo.positions()[fv[1]], c = topo.positions()[fv[2]];
         const glm::dvec3 e1 = b - a, e2 = c - a, p = glm::cross(dir, e2);
         const double det = glm::dot(e1, p);
         if (std::abs(det) < 1e-300) continue;
@@ -116,7 +116,7 @@ TEST(Visibility, MatchesBruteForceIntersection) {
             Light light;
             light.dir = random_unit(rng);
             const VisibilitySampler sampler(rays, cam);
-            const std::vector<glm::dvec3> normal = test::oracle_normals(topo.positions, topo.face_vertices);
+            const std::vector<glm::dvec3> normal = test::oracle_normals(topo.positions(), topo.face_vertices());
             for (const ContourSpec kind : {ContourSpec{}, ContourSpec{ContourKind::Shadow, 0.0}}) {
                 const ContourResult r = engine.compute(kind, cam, light);
                 const ContourVisibility vis = sampler.classify(engine, r);
@@ -134,7 +134,7 @@ TEST(Visibility, MatchesBruteForceIntersection) {
                         const Snaxel& s = r.fronts.snaxels[order[k]];
                         const glm::dvec3 p = engine.position(s);
                         const glm::dvec3 n = test::oracle_slerp(normal[std::size_t(s.inside)], normal[std::size_t(s.outside)], s.t);
-                        const double h = glm::length(topo.positions[s.inside] - topo.positions[s.outside]);
+                        const double h = glm::length(topo.positions()[s.inside] - topo.positions()[s.outside]);
                         BruteQi at[3];
                         const double offsets[3] = {0.05, 0.2, 0.5};
                         for (int i = 0; i < 3; ++i) {
@@ -272,13 +272,18 @@ TEST(Visibility, ObliqueTorusHidesItsInnerContourWhereExpected) {
 // The BVH follows a moving mesh: refit gives what a fresh build gives.
 TEST(Visibility, RefitMatchesRebuild) {
     const LoadedMesh m = load_mesh("proc:nose:6000");
-    MeshTopology topo = build_topology(m.mesh);
+    const MeshTopology rest = build_topology(m.mesh);
+    RayScene rays(rest);
+    auto moved = std::make_shared<MeshPose>(*rest.pose());
+    for (auto& p : moved->positions) p = glm::dvec3(p.y, -p.x, p.z) + glm::dvec3(0.3, 0.0, 0.1); // turn and move
+    const MeshTopology topo = rest.posed(moved);
+    rays.refit(topo);
+    EXPECT_EQ(rays.topology().pose(), topo.pose());
     const SnaxelEngine engine(topo);
-    RayScene rays(topo);
-    for (auto& p : topo.positions) p = glm::dvec3(p.y, -p.x, p.z) + glm::dvec3(0.3, 0.0, 0.1); // turn and move
-    rays.refit();
-    const MeshTopology fresh_topo = topo;
+    // A fresh build of the moved mesh from its own connectivity.
+    const MeshTopology fresh_topo(std::make_shared<MeshConnectivity>(*rest.connectivity()), moved);
     const RayScene fresh(fresh_topo);
+    EXPECT_THROW(rays.refit(fresh_topo), std::invalid_argument); // not a pose of the scene's mesh
     Camera cam;
     cam.view_dir = glm::normalize(glm::dvec3(1.0, 0.3, -0.5));
     const ContourResult r = engine.compute({}, cam, Light{});
