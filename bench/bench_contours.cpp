@@ -9,6 +9,7 @@
 
 #include "bench/brute_force_contour.h"
 #include "snaxels/mesh/import.h"
+#include "snaxels/snaxel/curvature.h"
 #include "snaxels/snaxel/snaxel_engine.h"
 
 using namespace snaxels;
@@ -86,3 +87,14 @@ BENCHMARK_CAPTURE(engine_bench, bumpy1M_visual, "proc:bumpy:1000000", ContourSpe
 BENCHMARK_CAPTURE(oracle_bench, bumpy1M_visual, "proc:bumpy:1000000", ContourSpec{})->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(engine_bench, torus1M_visual, "proc:torus:1000000", ContourSpec{})->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(topology_bench, horse, "horse.ply")->Unit(benchmark::kMillisecond);
+
+// Per-vertex curvature tensors of one pose (#21: under 30 ms on the horse).
+void curvature_bench(benchmark::State& state, const std::string& spec) {
+    const Prepared& p = prepared(spec);
+    for (auto _ : state) {
+        CurvatureField field = vertex_curvatures(p.topology);
+        benchmark::DoNotOptimize(field.k1.data());
+    }
+    state.counters["vertices"] = double(p.topology.n_vertices());
+}
+BENCHMARK_CAPTURE(curvature_bench, horse, "horse.ply")->Unit(benchmark::kMillisecond);

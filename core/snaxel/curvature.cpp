@@ -1,0 +1,196 @@
+#include "snaxels/snaxel/curvature.h"
+
+#include <array>
+#include <cmath>
+#include <utility>
+
+#include <glm/glm.hpp>
+
+#include "snaxels/util/detail/parallel.h"
+
+namespace snaxels {
+
+double CurvatureField::normal_curvature(std::size_t v, const glm::dvec3& w) const {
+    const double c = glm::dot(w, dir1[v]), s = glm::dot(w, dir2[v]);
+    const double len2 = c * c + s * s;
+    return len2 > 0.0 ? (k1[v] * c * c + k2[v] * s * s) / len2 : 0.0;
+}
+
+namespace {
+
+/// A face's second fundamental form in its own frame (t, b): the symmetric
+/// matrix [ku kuv; kuv kv], with the face's share of each corner's area.
+struct FaceForm {
+    glm::dvec3 t{0.0}, b{0.0};
+    double ku = 0.0, kuv = 0.0, kv = 0.0;
+    std::array<double, 3> corner{0.0, 0.0, 0.0}; ///< 0 for a face of no area: it then counts nowhere
+};
+
+/// The parts of a triangle's area nearest each corner (Meyer et al. 2003's
+/// mixed Voronoi areas: a corner's Voronoi cell, or for an obtuse triangle
+/// half the area at the obtuse corner and a quarter at the others).
+std::array<double, 3> corner_areas(const std::array<glm::dvec3, 3>& e, double area) {
+    const std::array<double, 3> l2{glm::dot(e[0], e[0]), glm::dot(e[1], e[1]), glm::dot(e[2], e[2])};
+    // Barycentric weights of the circumcentre (times a common factor).
+    const std::array<double, 3> bcw{l2[0] * (l2[1] + l2[2] - l2[0]), l2[1] * (l2[2] + l2[0] - l2[1]),
+                                    l2[2] * (l2[0] + l2[1] - l2[2])};
+    std::array<double, 3> c{};
+    for (int j = 0; j < 3; ++j) {
+        if (bcw[std::size_t(j)] > 0.0) continue;
+        // Obtuse at corner j: the circumcentre lies outside, past the edge opposite j.
+        const std::size_t a = std::size_t(j), n = std::size_t((j + 1) % 3), p = std::size_t((j + 2) % 3);
+        c[n] = -0.25 * l2[p] * area / glm::dot(e[a], e[p]);
+        c[p] = -0.25 * l2[n] * area / glm::dot(e[a], e[n]);
+        c[a] = area - c[n] - c[p];
+        return c;
+    }
+    const double scale = 0.5 * area / (bcw[0] + bcw[1] + bcw[2]);
+    for (std::size_t j = 0; j < 3; ++j) c[j] = scale * (bcw[(j + 1) % 3] + bcw[(j + 2) % 3]);
+    return c;
+}
+
+/// Fits face @p f's second fundamental form to the change of the vertex
+/// normals along its edges (least squares over the three edges).
+FaceForm face_form(const MeshTopology& topo, std::size_t f) {
+    FaceForm form;
+    const auto& fv = topo.face_vertices()[f];
+    const auto P = topo.positions();
+    const auto N = topo.normals();
+    // Edge j is opposite corner j, running from corner j+1 to corner j+2.
+    const std::array<glm::dvec3, 3> e{P[std::size_t(fv[2])] - P[std::size_t(fv[1])],
+                                      P[std::size_t(fv[0])] - P[std::size_t(fv[2])],
+                                      P[std::size_t(fv[1])] - P[std::size_t(fv[0])]};
+    const glm::dvec3 cross = glm::cross(e[0], e[1]);
+    const double twice_area = glm::length(cross);
+    const double e0 = glm::length(e[0]);
+    if (!(twice_area > 0.0) || !(e0 > 0.0)) return form;
+    const glm::dvec3 n = cross / twice_area;
+    form.t = e[0] / e0;
+    form.b = glm::cross(n, form.t);
+    // Normal equations of [u v 0; 0 u v] (ku kuv kv) = (dn.t dn.b) over the edges.
+    double w00 = 0.0, w01 = 0.0, w22 = 0.0, m0 = 0.0, m1 = 0.0, m2 = 0.0;
+    for (std::size_t j = 0; j < 3; ++j) {
+        const double u = glm::dot(e[j], form.t), v = glm::dot(e[j], form.b);
+        w00 += u * u;
+        w01 += u * v;
+        w22 += v * v;
+        const glm::dvec3 dn = N[std::size_t(fv[(j + 2) % 3])] - N[std::size_t(fv[(j + 1) % 3])];
+        const double dnu = glm::dot(dn, form.t), dnv = glm::dot(dn, form.b);
+        m0 += dnu * u;
+        m1 += dnu * v + dnv * u;
+        m2 += dnv * v;
+    }
+    const glm::dmat3 w(w00, w01, 0.0, w01, w00 + w22, w01, 0.0, w01, w22); // symmetric
+    const double det = glm::determinant(w);
+    if (!(std::abs(det) > 1e-30 * std::pow(w00 + w22, 3))) return form;
+    const glm::dvec3 k = glm::inverse(w) * glm::dvec3(m0, m1, m2);
+    form.ku = k.x;
+    form.kuv = k.y;
+    form.kv = k.z;
+    form.corner = corner_areas(e, 0.5 * twice_area);
+    return form;
+}
+
+/// The frame (u, v) turned about u x v onto the plane of normal @p n: the
+/// smallest rotation taking u x v to n.
+std::pair<glm::dvec3, glm::dvec3> turn_frame(const glm::dvec3& u, const glm::dvec3& v, const glm::dvec3& n) {
+    const glm::dvec3 old_n = glm::cross(u, v);
+    const double ndot = glm::dot(old_n, n);
+    if (ndot <= -1.0) return {-u, -v};
+    const glm::dvec3 perp = n - ndot * old_n;
+    const glm::dvec3 dperp = (old_n + n) / (1.0 + ndot);
+    return {u - dperp * glm::dot(u, perp), v - dperp * glm::dot(v, perp)};
+}
+
+/// @p form, a form in the frame (ou, ov), as a form in the frame (nu, nv).
+std::array<double, 3> project_form(const FaceForm& form, const glm::dvec3& nu, const glm::dvec3& nv) {
+    const auto [ru, rv] = turn_frame(nu, nv, glm::cross(form.t, form.b));
+    const double u1 = glm::dot(ru, form.t), v1 = glm::dot(ru, form.b);
+    const double u2 = glm::dot(rv, form.t), v2 = glm::dot(rv, form.b);
+    return {form.ku * u1 * u1 + form.kuv * (2.0 * u1 * v1) + form.kv * v1 * v1,
+            form.ku * u1 * u2 + form.kuv * (u1 * v2 + u2 * v1) + form.kv * v1 * v2,
+            form.ku * u2 * u2 + form.kuv * (2.0 * u2 * v2) + form.kv * v2 * v2};
+}
+
+/// A unit tangent frame (u, v) at vertex @p v, u toward its first neighbour.
+std::pair<glm::dvec3, glm::dvec3> vertex_frame(const MeshTopology& topo, std::size_t v) {
+    const glm::dvec3 n = topo.normals()[v];
+    glm::dvec3 u(0.0);
+    if (topo.ring_start()[v] < topo.ring_start()[v + 1]) {
+        const glm::dvec3 d = topo.positions()[std::size_t(topo.ring()[std::size_t(topo.ring_start()[v])])] - topo.positions()[v];
+        u = d - glm::dot(d, n) * n;
+    }
+    if (!(glm::length(u) > 0.0)) { // no neighbour, or one along the normal: any tangent
+        u = glm::cross(n, std::abs(n.x) < 0.9 ? glm::dvec3(1.0, 0.0, 0.0) : glm::dvec3(0.0, 1.0, 0.0));
+    }
+    u = glm::normalize(u);
+    return {u, glm::cross(n, u)};
+}
+
+} // namespace
+
+CurvatureField vertex_curvatures(const MeshTopology& topo) {
+    const std::size_t nv = topo.n_vertices(), nf = topo.n_faces();
+    std::vector<FaceForm> forms(nf);
+    parallel_for(nf, [&](std::size_t f) { forms[f] = face_form(topo, f); }, 2048);
+
+    CurvatureField out;
+    out.k1.assign(nv, 0.0);
+    out.k2.assign(nv, 0.0);
+    out.dir1.assign(nv, glm::dvec3(0.0));
+    out.dir2.assign(nv, glm::dvec3(0.0));
+    out.area.assign(nv, 0.0);
+    const auto face_vertices = topo.face_vertices();
+    parallel_for(nv, [&](std::size_t v) {
+        const auto [u, w] = vertex_frame(topo, v);
+        // Each face at v once: the face in which the edge to a neighbour
+        // leaves v (the neighbour follows v in the face's corner order).
+        double area = 0.0, ku = 0.0, kuv = 0.0, kv = 0.0;
+        for (std::int32_t i = topo.ring_start()[v]; i < topo.ring_start()[v + 1]; ++i) {
+            const std::int32_t neighbour = topo.ring()[std::size_t(i)];
+            for (const std::int32_t f : topo.edge_faces()[std::size_t(topo.ring_edge()[std::size_t(i)])]) {
+                if (f == MeshTopology::kNone) continue;
+                const auto& fv = face_vertices[std::size_t(f)];
+                std::size_t c = 0;
+                while (c < 3 && std::size_t(fv[c]) != v) ++c;
+                if (c == 3 || fv[(c + 1) % 3] != neighbour) continue;
+                const FaceForm& form = forms[std::size_t(f)];
+                const double weight = form.corner[c];
+                if (!(weight > 0.0)) continue;
+                const std::array<double, 3> k = project_form(form, u, w);
+                area += weight;
+                ku += weight * k[0];
+                kuv += weight * k[1];
+                kv += weight * k[2];
+            }
+        }
+        out.area[v] = area;
+        if (!(area > 0.0)) {
+            out.dir1[v] = u;
+            out.dir2[v] = w;
+            return;
+        }
+        ku /= area, kuv /= area, kv /= area;
+        // The Jacobi rotation that diagonalizes [ku kuv; kuv kv].
+        double c = 1.0, s = 0.0, tt = 0.0;
+        if (kuv != 0.0) {
+            const double h = 0.5 * (kv - ku) / kuv;
+            tt = h < 0.0 ? 1.0 / (h - std::sqrt(1.0 + h * h)) : 1.0 / (h + std::sqrt(1.0 + h * h));
+            c = 1.0 / std::sqrt(1.0 + tt * tt);
+            s = tt * c;
+        }
+        double k1 = ku - tt * kuv, k2 = kv + tt * kuv;
+        glm::dvec3 d1 = c * u - s * w;
+        if (std::abs(k1) < std::abs(k2)) {
+            std::swap(k1, k2);
+            d1 = s * u + c * w;
+        }
+        out.k1[v] = k1;
+        out.k2[v] = k2;
+        out.dir1[v] = d1;
+        out.dir2[v] = glm::cross(topo.normals()[v], d1);
+    }, 1024);
+    return out;
+}
+
+} // namespace snaxels

@@ -1,0 +1,38 @@
+#pragma once
+/// Per-vertex curvature of a posed mesh, estimated as Rusinkiewicz does
+/// ("Estimating Curvatures and Their Derivatives on Triangle Meshes",
+/// 3DPVT 2004): each face's second fundamental form is fitted, by least
+/// squares, to how the vertex normals change along its three edges; each
+/// vertex averages the forms of its faces, turned into its own tangent
+/// plane and weighted by the face's share of the vertex's (mixed Voronoi)
+/// area; the average's eigenvectors are the principal directions.
+///
+/// Curvature is positive where the surface bends away from its normal, as
+/// on a sphere with outward normals (1/radius there).
+
+#include <vector>
+
+#include <glm/vec3.hpp>
+
+#include "snaxels/snaxel/topology.h"
+
+namespace snaxels {
+
+/// The principal curvatures and directions of every vertex of one pose.
+struct CurvatureField {
+    std::vector<double> k1, k2;            ///< #V, principal curvatures, |k1| >= |k2|
+    std::vector<glm::dvec3> dir1, dir2;    ///< #V, unit principal directions in the tangent plane
+    std::vector<double> area;              ///< #V, the vertex's mixed Voronoi area
+
+    std::size_t size() const { return k1.size(); }
+    /// The normal curvature of vertex @p v in tangent direction @p w (need
+    /// not be unit; 0 for a zero one): k1 cos^2 + k2 sin^2 of its angle to dir1.
+    double normal_curvature(std::size_t v, const glm::dvec3& w) const;
+};
+
+/// The curvature of @p topology in its pose (positions and vertex normals),
+/// computed in parallel. A vertex with no face of non-zero area gets zero
+/// curvatures and an arbitrary tangent frame.
+CurvatureField vertex_curvatures(const MeshTopology& topology);
+
+} // namespace snaxels

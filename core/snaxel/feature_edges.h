@@ -1,0 +1,42 @@
+#pragma once
+/// Lines that lie on the mesh whatever the view: creases (edges where two
+/// faces meet at a sharp angle) and borders (edges with a face on one side
+/// only), chained into polylines along the mesh's edges. They move with the
+/// surface: only their projection and visibility change from frame to
+/// frame.
+
+#include <cstdint>
+#include <vector>
+
+#include "snaxels/snaxel/topology.h"
+
+namespace snaxels {
+
+/// The default crease angle (degrees) of a `kind="crease"` line.
+constexpr double kDefaultCreaseDegrees = 30.0;
+
+/// The edges whose two faces' normals (of the faces' planes, in the
+/// topology's pose) differ by more than @p degrees, ascending. A border
+/// edge is no crease; a face of no area makes none.
+std::vector<std::int32_t> crease_edges(const MeshTopology& topology, double degrees);
+
+/// The edges with a face on one side only, ascending.
+std::vector<std::int32_t> border_edges(const MeshTopology& topology);
+
+/// A polyline along mesh edges: vertices[i] and vertices[i + 1] are the
+/// ends of edges[i]. A closed chain ends where it starts (its last vertex
+/// is its first).
+struct EdgeChain {
+    std::vector<std::int32_t> vertices;
+    std::vector<std::int32_t> edges;
+    bool closed = false;
+};
+
+/// @p edges chained: a chain goes on through every vertex where exactly two
+/// of them meet, and ends at a vertex where one or three and more meet (an
+/// end, a corner of a part, a junction); edges that meet only in twos make
+/// closed chains. Each edge is in one chain once; chains come in the order
+/// of their first edge, open ones from their lower-numbered end.
+std::vector<EdgeChain> chain_edges(const MeshTopology& topology, const std::vector<std::int32_t>& edges);
+
+} // namespace snaxels

@@ -1,0 +1,148 @@
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include <glm/glm.hpp>
+
+#include "snaxels/mesh/import.h"
+#include "snaxels/snaxel/curvature.h"
+#include "snaxels/snaxel/refine.h"
+
+using namespace snaxels;
+
+namespace {
+
+// proc:torus: major radius 1 about +Z, minor radius 0.4 (core/mesh/procedural.cpp).
+constexpr double kR = 1.0, kr = 0.4;
+
+/// The torus's analytic principal curvatures and directions at the point
+/// nearest @p p: around the tube 1/r; along the parallel
+/// cos(theta) / (R + r cos(theta)), theta measured from the outer equator.
+struct TorusCurvature {
+    double tube, parallel;
+    glm::dvec3 tube_dir, parallel_dir;
+};
+
+TorusCurvature torus_at(const glm::dvec3& p) {
+    const double phi = std::atan2(p.y, p.x);
+    const double theta = std::atan2(p.z, std::hypot(p.x, p.y) - kR);
+    TorusCurvature c;
+    c.tube = 1.0 / kr;
+    c.parallel = std::cos(theta) / (kR + kr * std::cos(theta));
+    c.tube_dir = {-std::sin(theta) * std::cos(phi), -std::sin(theta) * std::sin(phi), std::cos(theta)};
+    c.parallel_dir = {-std::sin(phi), std::cos(phi), 0.0};
+    return c;
+}
+
+struct Errors {
+    double tube = 0.0, parallel = 0.0, direction = 0.0; ///< worst over the vertices
+    double mean_tube = 0.0, mean_parallel = 0.0;
+};
+
+Errors torus_errors(const MeshTopology& topo) {
+    const CurvatureField field = vertex_curvatures(topo);
+    EXPECT_EQ(field.size(), topo.n_vertices());
+    Errors worst;
+    for (std::size_t v = 0; v < topo.n_vertices(); ++v) {
+        const TorusCurvature expected = torus_at(topo.positions()[v]);
+        // |1/r| > |parallel| everywhere on this torus: k1 is the tube's.
+        worst.tube = std::max(worst.tube, std::abs(field.k1[v] - expected.tube));
+        worst.parallel = std::max(worst.parallel, std::abs(field.k2[v] - expected.parallel));
+        worst.mean_tube += std::abs(field.k1[v] - expected.tube) / double(topo.n_vertices());
+        worst.mean_parallel += std::abs(field.k2[v] - expected.parallel) / double(topo.n_vertices());
+        worst.direction = std::max(worst.direction, 1.0 - std::abs(glm::dot(field.dir1[v], expected.tube_dir)));
+        EXPECT_NEAR(std::abs(glm::dot(field.dir2[v], expected.parallel_dir)), 1.0, 1e-2) << "vertex " << v;
+        EXPECT_NEAR(glm::length(field.dir1[v]), 1.0, 1e-9);
+        EXPECT_NEAR(glm::dot(field.dir1[v], topo.normals()[v]), 0.0, 1e-9);
+        // Normal curvature along a principal direction is that curvature.
+        EXPECT_NEAR(field.normal_curvature(v, 3.0 * field.dir2[v]), field.k2[v], 1e-9);
+    }
+    return worst;
+}
+
+} // namespace
+
+// The estimate agrees with the torus's analytic curvature, both signs (the
+// outer half is convex, the inner half saddle-shaped), and its principal
+// directions are the tube's and the parallel's.
+TEST(Curvature, MatchesTheAnalyticTorus) {
+    const LoadedMesh mesh = load_mesh("proc:torus:40000");
+    const Errors e = torus_errors(build_topology(mesh.mesh));
+    std::printf("torus 40000 faces: worst |k1 - 1/r| %.4f, |k2 - k_parallel| %.4f, 1 - |cos| %.2e\n", e.tube,
+                e.parallel, e.direction);
+    EXPECT_LT(e.tube, 0.02 * (1.0 / kr));
+    EXPECT_LT(e.parallel, 0.02);
+    EXPECT_LT(e.direction, 1e-3);
+}
+
+// Finer meshes give closer estimates (the estimate converges).
+TEST(Curvature, ConvergesOnFinerMeshes) {
+    const Errors coarse = torus_errors(build_topology(load_mesh("proc:torus:4000").mesh));
+    const Errors fine = torus_errors(build_topology(load_mesh("proc:torus:64000").mesh));
+    EXPECT_LT(fine.tube, 0.5 * coarse.tube);
+    EXPECT_LT(fine.parallel, 0.5 * coarse.parallel);
+}
+
+// On the engine's topology of a coarse mesh (refined, the added vertices
+// taking interpolated normals) the curvature is that of the smooth surface
+// the normals describe.
+TEST(Curvature, FollowsTheSmoothShadingOfARefinedCoarseMesh) {
+    const LoadedMesh mesh = load_mesh("proc:torus:3000");
+    const MeshTopology refined = engine_topology(mesh.mesh);
+    ASSERT_TRUE(refined.refinement());
+    const Errors e = torus_errors(refined);
+    std::printf("torus 3000 faces refined to %zu: worst |k1 - 1/r| %.4f (mean %.4f), |k2 - k_parallel| %.4f (mean %.4f)\n",
+                refined.n_faces(), e.tube, e.mean_tube, e.parallel, e.mean_parallel);
+    EXPECT_LT(e.tube, 0.1 * (1.0 / kr));
+    EXPECT_LT(e.parallel, 0.1 * (1.0 / kr));
+    EXPECT_LT(e.mean_tube, 0.02 * (1.0 / kr));
+    EXPECT_LT(e.mean_parallel, 0.02 * (1.0 / kr));
+}
+
+// A sphere of radius 2 (outward normals): both curvatures 1/2 everywhere;
+// the sign says convex;
+// the vertex areas sum to its surface area.
+TEST(Curvature, SphereIsUmbilicAndAreasSumToTheSurface) {
+    const LoadedMesh mesh = load_mesh("proc:sphere:20000");
+    const MeshTopology unit = build_topology(mesh.mesh);
+    auto scaled = std::make_shared<MeshPose>(*unit.pose());
+    for (std::size_t v = 0; v < scaled->positions.size(); ++v) {
+        glm::dvec3& p = scaled->positions[v];
+        scaled->normals[v] = glm::normalize(p); // the sphere's own normals (the estimate follows the normals it is given)
+        p = 2.0 * scaled->normals[v];
+    }
+    const MeshTopology sphere = unit.posed(scaled);
+    const CurvatureField field = vertex_curvatures(sphere);
+    // The cube sphere's eight valence-3 vertices and their neighbours are
+    // the worst.
+    double area = 0.0, mean = 0.0;
+    for (std::size_t v = 0; v < field.size(); ++v) {
+        EXPECT_NEAR(field.k1[v], 0.5, 0.03 * 0.5) << v;
+        EXPECT_NEAR(field.k2[v], 0.5, 0.03 * 0.5) << v;
+        mean += (std::abs(field.k1[v] - 0.5) + std::abs(field.k2[v] - 0.5)) / double(2 * field.size());
+        area += field.area[v];
+    }
+    EXPECT_LT(mean, 0.003 * 0.5);
+    double faces = 0.0; // the triangles' own areas, summed here
+    for (const auto& f : sphere.face_vertices()) {
+        const glm::dvec3 a = sphere.positions()[std::size_t(f[0])];
+        faces += 0.5 * glm::length(glm::cross(sphere.positions()[std::size_t(f[1])] - a, sphere.positions()[std::size_t(f[2])] - a));
+    }
+    EXPECT_NEAR(area, faces, 1e-9 * faces);
+    EXPECT_NEAR(area, 4.0 * M_PI * 4.0, 0.01 * 4.0 * M_PI * 4.0);
+}
+
+// Degenerate input gives zeros, not NaN: a mesh with a face of no area.
+TEST(Curvature, DegenerateFacesCountNowhere) {
+    const LoadedMesh mesh = load_mesh("proc:sphere:500");
+    const MeshTopology topo = build_topology(mesh.mesh);
+    auto flat = std::make_shared<MeshPose>(*topo.pose());
+    for (glm::dvec3& p : flat->positions) p = glm::dvec3(0.0); // every face collapsed
+    const CurvatureField field = vertex_curvatures(topo.posed(flat));
+    for (std::size_t v = 0; v < field.size(); ++v) {
+        EXPECT_EQ(field.k1[v], 0.0);
+        EXPECT_EQ(field.area[v], 0.0);
+        EXPECT_TRUE(std::isfinite(field.dir1[v].x));
+    }
+}
