@@ -193,4 +193,37 @@ CurvatureField vertex_curvatures(const MeshTopology& topo) {
     return out;
 }
 
+std::vector<double> radial_curvature(const MeshTopology& topo, const CurvatureField& field, const Camera& camera) {
+    std::vector<double> out(topo.n_vertices(), 0.0);
+    const auto P = topo.positions();
+    const auto N = topo.normals();
+    parallel_for(out.size(), [&](std::size_t v) {
+        const glm::dvec3 view = camera.to_viewer(P[v]);
+        const glm::dvec3 w = view - glm::dot(view, N[v]) * N[v];
+        out[v] = field.normal_curvature(v, w);
+    }, 4096);
+    return out;
+}
+
+double derivative_along_view(const MeshTopology& topo, const std::vector<double>& f, std::int32_t face,
+                             const glm::dvec3& p, const Camera& camera) {
+    const auto& fv = topo.face_vertices()[std::size_t(face)];
+    const auto P = topo.positions();
+    const glm::dvec3 a = P[std::size_t(fv[0])], b = P[std::size_t(fv[1])], c = P[std::size_t(fv[2])];
+    const glm::dvec3 normal = glm::cross(b - a, c - a);
+    const double twice_area2 = glm::dot(normal, normal);
+    if (!(twice_area2 > 0.0)) return 0.0;
+    // The gradient of the linear interpolant: sum of f_i times the gradient
+    // of corner i's barycentric coordinate, (n x opposite edge) / (2 area).
+    const glm::dvec3 gradient = (f[std::size_t(fv[0])] * glm::cross(normal, c - b) +
+                                 f[std::size_t(fv[1])] * glm::cross(normal, a - c) +
+                                 f[std::size_t(fv[2])] * glm::cross(normal, b - a)) /
+                                twice_area2;
+    const glm::dvec3 n = normal / std::sqrt(twice_area2);
+    const glm::dvec3 view = camera.to_viewer(p);
+    const glm::dvec3 w = view - glm::dot(view, n) * n;
+    const double len = glm::length(w);
+    return len > 0.0 ? glm::dot(gradient, w) / len : 0.0;
+}
+
 } // namespace snaxels

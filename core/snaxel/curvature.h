@@ -14,6 +14,7 @@
 
 #include <glm/vec3.hpp>
 
+#include "snaxels/scene/camera.h"
 #include "snaxels/snaxel/topology.h"
 
 namespace snaxels {
@@ -34,5 +35,20 @@ struct CurvatureField {
 /// computed in parallel. A vertex with no face of non-zero area gets zero
 /// curvatures and an arbitrary tangent frame.
 CurvatureField vertex_curvatures(const MeshTopology& topology);
+
+/// The radial curvature of every vertex of @p topology seen from @p camera
+/// (DeCarlo et al. 2003): the normal curvature in the direction w of the
+/// view vector (toward the viewer) projected onto the tangent plane. Its
+/// zeros where it grows along w are the suggestive contours. 0 where the
+/// view is along the normal (w vanishes).
+std::vector<double> radial_curvature(const MeshTopology& topology, const CurvatureField& field, const Camera& camera);
+
+/// The derivative along w (unit) of the piecewise-linear field @p f of
+/// vertex values, in face @p face, seen from @p camera at point @p p of the
+/// face: the face's gradient of f dotted with the unit projection of the
+/// view vector at p onto the face's plane (0 when the view is along its
+/// normal or the face has no area).
+double derivative_along_view(const MeshTopology& topology, const std::vector<double>& f, std::int32_t face,
+                             const glm::dvec3& p, const Camera& camera);
 
 } // namespace snaxels

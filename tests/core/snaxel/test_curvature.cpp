@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <random>
 
 #include <glm/glm.hpp>
 
@@ -145,4 +146,101 @@ TEST(Curvature, DegenerateFacesCountNowhere) {
         EXPECT_EQ(field.area[v], 0.0);
         EXPECT_TRUE(std::isfinite(field.dir1[v].x));
     }
+}
+
+namespace {
+
+/// The torus point at (theta, phi), and the analytic radial curvature there seen from @p camera.
+glm::dvec3 torus_point(double theta, double phi) {
+    const double ring = kR + kr * std::cos(theta);
+    return {ring * std::cos(phi), ring * std::sin(phi), kr * std::sin(theta)};
+}
+
+double torus_radial(double theta, double phi, const Camera& camera) {
+    const glm::dvec3 p = torus_point(theta, phi);
+    const TorusCurvature c = torus_at(p);
+    const glm::dvec3 n{std::cos(theta) * std::cos(phi), std::cos(theta) * std::sin(phi), std::sin(theta)};
+    const glm::dvec3 view = camera.to_viewer(p);
+    const glm::dvec3 w = view - glm::dot(view, n) * n;
+    const double a = glm::dot(w, c.tube_dir), b = glm::dot(w, c.parallel_dir);
+    return (c.tube * a * a + c.parallel * b * b) / (a * a + b * b);
+}
+
+/// Whether the analytic radial curvature changes sign within @p reach of the
+/// torus point at (theta, phi) (sampled on a disk of that radius on the
+/// surface), and its derivative along w at the point.
+struct NearZero {
+    bool within;
+    double along_w;
+};
+
+NearZero torus_near_zero(double theta, double phi, double reach, const Camera& camera) {
+    const double ring = kR + kr * std::cos(theta);
+    const double f = torus_radial(theta, phi, camera);
+    bool within = f == 0.0;
+    for (int i = 1; i <= 8 && !within; ++i)
+        for (int k = 0; k < 32 && !within; ++k) {
+            const double rho = reach * i / 8.0, angle = 2.0 * M_PI * k / 32.0;
+            const double g = torus_radial(theta + rho * std::cos(angle) / kr, phi + rho * std::sin(angle) / ring, camera);
+            within = (g < 0.0) != (f < 0.0);
+        }
+    const double eps = 1e-6;
+    const double ft = (torus_radial(theta + eps, phi, camera) - torus_radial(theta - eps, phi, camera)) / (2 * eps * kr);
+    const double fp = (torus_radial(theta, phi + eps, camera) - torus_radial(theta, phi - eps, camera)) / (2 * eps * ring);
+    const glm::dvec3 p = torus_point(theta, phi);
+    const TorusCurvature c = torus_at(p);
+    const glm::dvec3 n{std::cos(theta) * std::cos(phi), std::cos(theta) * std::sin(phi), std::sin(theta)};
+    const glm::dvec3 view = camera.to_viewer(p);
+    const glm::dvec3 w = glm::normalize(view - glm::dot(view, n) * n);
+    return {within, glm::dot(w, c.tube_dir) * ft + glm::dot(w, c.parallel_dir) * fp};
+}
+
+} // namespace
+
+// Suggestive contours' function: every zero of the estimated radial
+// curvature lies within two mean edge lengths of the analytic torus's, over
+// ten random views (five orthographic, five perspective); where the
+// estimate grows clearly along w, the analytic one does too (all but a
+// handful, next to where w vanishes).
+TEST(Curvature, RadialCurvatureZerosMatchTheTorus) {
+    const MeshTopology topo = build_topology(load_mesh("proc:torus:40000").mesh);
+    const CurvatureField field = vertex_curvatures(topo);
+    const double h = topo.mean_edge_length();
+    std::mt19937 rng(21);
+    std::normal_distribution<double> gauss;
+    std::size_t crossings = 0, positive = 0, agree = 0;
+    for (int view = 0; view < 10; ++view) {
+        Camera camera;
+        const glm::dvec3 d = glm::normalize(glm::dvec3(gauss(rng), gauss(rng), gauss(rng)));
+        if (view % 2) {
+            camera.view_dir = d;
+        } else {
+            camera.projection = Camera::Projection::Perspective;
+            camera.eye = -4.0 * d;
+            camera.target = glm::dvec3(0.0);
+        }
+        const std::vector<double> kr_est = radial_curvature(topo, field, camera);
+        for (std::size_t e = 0; e < topo.n_edges(); ++e) {
+            const auto [a, b] = topo.edge_vertices()[e];
+            const double fa = kr_est[std::size_t(a)], fb = kr_est[std::size_t(b)];
+            if ((fa < 0.0) == (fb < 0.0)) continue;
+            const double t = fa / (fa - fb);
+            const glm::dvec3 x = (1.0 - t) * topo.positions()[std::size_t(a)] + t * topo.positions()[std::size_t(b)];
+            const double phi = std::atan2(x.y, x.x), theta = std::atan2(x.z, std::hypot(x.x, x.y) - kR);
+            const NearZero z = torus_near_zero(theta, phi, 2.0 * h, camera);
+            ++crossings;
+            EXPECT_TRUE(z.within) << "view " << view << ", edge " << e << ": no analytic zero within two edge lengths";
+            // Where the estimate clearly grows along w, so does the torus's curvature.
+            const double along = derivative_along_view(topo, kr_est, topo.edge_faces()[e][0], x, camera);
+            if (along > 0.5) {
+                ++positive;
+                agree += z.along_w > 0.0;
+            }
+        }
+    }
+    std::printf("%zu zero crossings over 10 views; %zu grow clearly along w, of which %zu do on the torus\n", crossings,
+                positive, agree);
+    EXPECT_GE(double(agree), 0.995 * double(positive));
+    EXPECT_GT(crossings, 1000u);
+    EXPECT_GT(positive, 100u);
 }
