@@ -20,6 +20,8 @@ const char* view_colour(ContourKind kind) {
     case ContourKind::Isophote: return "#a05fd0";
     case ContourKind::Gleam: return "#ffc000";
     case ContourKind::Parabolic: return "#3ddc84";
+    case ContourKind::Crease: return "#f0f0f0";
+    case ContourKind::Border: return "#ff7ac8";
     }
     return "#e8402a";
 }

@@ -30,8 +30,10 @@ int run_contours(const std::vector<std::string>& argv) {
             "Finds contours on MESH with snaxels and writes them as JSON (docs/contours-json.md)\n"
             "and/or SVG; without --json or --svg prints a summary. KIND is visual (N.V = 0),\n"
             "shadow (N.L = 0 on front faces), isophote:K (N.L = K), gleam:K (V.R = K), K a\n"
-            "cosine in [-1, 1], or parabolic (the mesh's parabolic curves, found from visual\n"
-            "events over all views: see `snaxels-cli parabolic`). The default view is\n"
+            "cosine in [-1, 1], parabolic (the mesh's parabolic curves, found from visual\n"
+            "events over all views: see `snaxels-cli parabolic`), crease[:DEG] (edges whose\n"
+            "faces meet at more than DEG degrees, default 30) or border (edges with one face).\n"
+            "The default view is\n"
             "orthographic along +Z (looking toward +Z)\n"
             "and the default light comes from the viewer's upper left.\n\n") +
             kMeshArgumentHelp,

@@ -58,7 +58,7 @@ std::vector<ContourResult> StillTracking::compute(const MeshTopology& topology, 
     std::map<std::string, std::unique_ptr<ContourTracker>> kept;
     std::vector<ContourTracker*> tracker(specs.size(), nullptr);
     for (std::size_t i = 0; i < specs.size(); ++i) {
-        if (specs[i].kind == ContourKind::Parabolic) continue;
+        if (specs[i].on_surface()) continue; // the mesh's own lines: found, not tracked
         const std::string key = specs[i].label();
         auto it = kept.find(key);
         if (it == kept.end()) {

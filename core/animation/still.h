@@ -56,8 +56,8 @@ std::vector<ContourSpec> style_kinds(const Style& style);
 /// only faster while little changes between frames, so a jump (the view or
 /// the light turned by more than max_step_deg as seen from the mesh's
 /// centre, a change of projection, a pose not next to the last: see jump())
-/// starts from scratch, as a kind seen for the first time does. Parabolic
-/// curves, the mesh's own, are never tracked.
+/// starts from scratch, as a kind seen for the first time does. The mesh's
+/// own lines (parabolic curves, creases, borders) are found, never tracked.
 class StillTracking {
   public:
     explicit StillTracking(double max_step_deg = 10.0);

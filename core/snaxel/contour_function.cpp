@@ -6,6 +6,7 @@
 #include <limits>
 
 #include "snaxels/error.h"
+#include "snaxels/snaxel/feature_edges.h"
 
 namespace snaxels {
 
@@ -16,12 +17,16 @@ std::string ContourSpec::kind_name() const {
     case ContourKind::Isophote: return "isophote";
     case ContourKind::Gleam: return "gleam";
     case ContourKind::Parabolic: return "parabolic";
+    case ContourKind::Crease: return "crease";
+    case ContourKind::Border: return "border";
     }
     return "visual";
 }
 
 std::string ContourSpec::label() const {
-    if (kind == ContourKind::Visual || kind == ContourKind::Shadow || kind == ContourKind::Parabolic) return kind_name();
+    if (kind == ContourKind::Visual || kind == ContourKind::Shadow || kind == ContourKind::Parabolic ||
+        kind == ContourKind::Border)
+        return kind_name();
     char buf[64];
     std::snprintf(buf, sizeof buf, "%s:%g", kind_name().c_str(), k);
     return buf;
@@ -35,15 +40,29 @@ ContourSpec ContourSpec::parse(const std::string& text) {
     const auto colon = text.find(':');
     const std::string name = text.substr(0, colon);
     ContourSpec spec;
-    if (name == "visual" || name == "shadow" || name == "parabolic") {
+    if (name == "visual" || name == "shadow" || name == "parabolic" || name == "border") {
         if (colon != std::string::npos)
             throw Error("contour kind '" + text + "': " + name + " takes no value");
-        spec.kind = name == "visual" ? ContourKind::Visual : name == "shadow" ? ContourKind::Shadow : ContourKind::Parabolic;
+        spec.kind = name == "visual"   ? ContourKind::Visual
+                    : name == "shadow" ? ContourKind::Shadow
+                    : name == "border" ? ContourKind::Border
+                                       : ContourKind::Parabolic;
+        return spec;
+    }
+    if (name == "crease") {
+        spec.kind = ContourKind::Crease;
+        spec.k = kDefaultCreaseDegrees;
+        if (colon == std::string::npos) return spec;
+        const std::string value = text.substr(colon + 1);
+        const auto [end, ec] = std::from_chars(value.data(), value.data() + value.size(), spec.k);
+        if (ec != std::errc() || end != value.data() + value.size() || !std::isfinite(spec.k) || spec.k <= 0.0 ||
+            spec.k >= 180.0)
+            throw Error("contour kind '" + text + "': the crease angle must be a number of degrees above 0 and below 180");
         return spec;
     }
     if (name != "isophote" && name != "gleam")
         throw Error("unknown contour kind '" + text +
-                    "' (expected visual, shadow, isophote:K, gleam:K or parabolic)");
+                    "' (expected visual, shadow, isophote:K, gleam:K, parabolic, crease[:DEG] or border)");
     spec.kind = name == "isophote" ? ContourKind::Isophote : ContourKind::Gleam;
     if (colon == std::string::npos)
         throw Error("contour kind '" + text + "' needs a value, for example " + name +
@@ -62,7 +81,7 @@ ContourFunction::ContourFunction(const ContourSpec& spec, const Camera& camera, 
     if (linear_) v_ = -glm::normalize(camera.view_dir);
     const bool view_fixed = camera.orthographic() && glm::length(camera.view_dir) > 0.0;
     const bool light_fixed = spec.kind == ContourKind::Visual || (!light.point && glm::length(light.dir) > 0.0);
-    closed_ = spec.kind != ContourKind::Parabolic && view_fixed && light_fixed;
+    closed_ = !spec.on_surface() && view_fixed && light_fixed;
     if (closed_) {
         v_ = camera.to_viewer(glm::dvec3(0.0));
         if (spec.kind != ContourKind::Visual) l_ = light.to_light(glm::dvec3(0.0));
@@ -169,7 +188,9 @@ double ContourFunction::evaluate(const glm::dvec3& p, const glm::dvec3& n) const
     const double nv = glm::dot(n, v);
     switch (spec_.kind) {
     case ContourKind::Visual:
-    case ContourKind::Parabolic: return nv; // not a contour function; see ContourKind
+    case ContourKind::Parabolic:
+    case ContourKind::Crease:
+    case ContourKind::Border: return nv; // not a contour function; see ContourKind
     case ContourKind::Shadow: return std::min(glm::dot(n, light_.to_light(p)), nv);
     case ContourKind::Isophote: return std::min(glm::dot(n, light_.to_light(p)) - spec_.k, nv);
     case ContourKind::Gleam: {

@@ -2,8 +2,8 @@
 /// The implicit contour functions of the paper's "NPR Contouring" section,
 /// evaluated at a surface point with its (slerped) normal. f >= 0 is inside.
 
-#include <string>
 #include <span>
+#include <string>
 #include <vector>
 
 #include <glm/glm.hpp>
@@ -12,20 +12,30 @@
 
 namespace snaxels {
 
-enum class ContourKind { Visual, Shadow, Isophote, Gleam, Parabolic };
+enum class ContourKind { Visual, Shadow, Isophote, Gleam, Parabolic, Crease, Border };
 
 /// Which contour: visual N.V; shadow min(N.L, N.V); diffuse isophote
 /// min(N.L - k, N.V); specular gleam min(V.R - k, N.V) with R = 2(N.L)N - L.
-/// Parabolic curves have no contour function: they are the mesh's, found
-/// from visual events over all views (core/parabolic), the same from any view.
+/// Parabolic curves, creases and borders have no contour function: they
+/// are lines of the mesh, the same from any view (on_surface()). Parabolic
+/// curves are found from visual events over all views (core/parabolic);
+/// creases are the edges whose faces meet at more than k degrees, borders
+/// the edges with one face (core/snaxel/feature_edges.h).
 struct ContourSpec {
     ContourKind kind = ContourKind::Visual;
     double k = 0.0;
 
-    /// "visual", "shadow", "isophote", "gleam" or "parabolic".
+    /// "visual", "shadow", "isophote", "gleam", "parabolic", "crease" or "border".
     std::string kind_name() const;
-    /// "visual", "shadow", "isophote:0.5", "gleam:0.9", "parabolic": what parse() reads.
+    /// "visual", "shadow", "isophote:0.5", "gleam:0.9", "parabolic",
+    /// "crease:30", "border": what parse() reads.
     std::string label() const;
+    /// A line of the mesh itself (parabolic, crease, border), not the zero
+    /// set of a function of the view and light: fixed on the surface, the
+    /// same snaxels every frame, bounding no region.
+    bool on_surface() const {
+        return kind == ContourKind::Parabolic || kind == ContourKind::Crease || kind == ContourKind::Border;
+    }
     /// Parses the CLI's --kind values; throws snaxels::Error when malformed.
     static ContourSpec parse(const std::string& text);
     /// The same contour (kind, and k within 1e-9).

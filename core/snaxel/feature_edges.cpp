@@ -98,4 +98,32 @@ std::vector<EdgeChain> chain_edges(const MeshTopology& topo, const std::vector<s
     return chains;
 }
 
+Fronts chain_fronts(const MeshTopology& topo, const std::vector<EdgeChain>& chains) {
+    Fronts fronts;
+    fronts.edge_snaxel.assign(topo.n_edges(), MeshTopology::kNone);
+    for (const EdgeChain& chain : chains) {
+        if (chain.edges.empty()) continue;
+        const std::int32_t loop = std::int32_t(fronts.loops.size()), first = std::int32_t(fronts.snaxels.size());
+        // A closed chain's last vertex is its first: one snaxel for both.
+        const std::int32_t n = std::int32_t(chain.closed ? chain.edges.size() : chain.vertices.size());
+        for (std::int32_t k = 0; k < n; ++k) {
+            Snaxel s;
+            // The edge leaving the vertex along the chain; at an open chain's end, the edge arriving.
+            s.edge = chain.edges[std::size_t(std::min<std::int32_t>(k, std::int32_t(chain.edges.size()) - 1))];
+            const auto& ends = topo.edge_vertices()[std::size_t(s.edge)];
+            s.inside = ends[0];
+            s.outside = ends[1];
+            s.t = chain.vertices[std::size_t(k)] == ends[0] ? 0.0 : 1.0;
+            s.loop = loop;
+            s.prev = k > 0 ? first + k - 1 : chain.closed ? first + n - 1 : MeshTopology::kNone;
+            s.next = k + 1 < n ? first + k + 1 : chain.closed ? first : MeshTopology::kNone;
+            if (fronts.edge_snaxel[std::size_t(s.edge)] == MeshTopology::kNone)
+                fronts.edge_snaxel[std::size_t(s.edge)] = first + k;
+            fronts.snaxels.push_back(s);
+        }
+        fronts.loops.push_back({first, n, chain.closed});
+    }
+    return fronts;
+}
+
 } // namespace snaxels

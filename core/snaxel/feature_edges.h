@@ -8,6 +8,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "snaxels/snaxel/fronts.h"
 #include "snaxels/snaxel/topology.h"
 
 namespace snaxels {
@@ -38,5 +39,12 @@ struct EdgeChain {
 /// closed chains. Each edge is in one chain once; chains come in the order
 /// of their first edge, open ones from their lower-numbered end.
 std::vector<EdgeChain> chain_edges(const MeshTopology& topology, const std::vector<std::int32_t>& edges);
+
+/// The chains as a snaxel front set, as parabolic_fronts makes of parabolic
+/// curves: every chain vertex a snaxel at that vertex (t 0 or 1 on the
+/// chain's edge there), every chain a loop, open or closed, so that the
+/// drawing, hidden-line and export stages take them like any contour.
+/// No vertex set bounds them: edge_snaxel holds each edge's first snaxel.
+Fronts chain_fronts(const MeshTopology& topology, const std::vector<EdgeChain>& chains);
 
 } // namespace snaxels

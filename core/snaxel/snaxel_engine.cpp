@@ -1,5 +1,6 @@
 #include "snaxels/snaxel/snaxel_engine.h"
 
+#include "snaxels/snaxel/feature_edges.h"
 #include "snaxels/snaxel/parabolic.h"
 
 #include <algorithm>
@@ -179,10 +180,16 @@ ContourResult SnaxelEngine::compute(const ContourSpec& spec, const Camera& camer
     const auto start = std::chrono::steady_clock::now();
     ContourResult result;
     result.spec = spec;
-    if (spec.kind == ContourKind::Parabolic) {
-        // The mesh's parabolic curves: the same from every view (no f, no regions).
-        const std::shared_ptr<const ParabolicResult> curves = topo_.parabolic ? topo_.parabolic : cached_parabolic(topo_);
-        result.fronts = parabolic_fronts(topo_, *curves);
+    if (spec.on_surface()) {
+        // Lines of the mesh: the same from every view (no f, no regions).
+        if (spec.kind == ContourKind::Parabolic) {
+            const std::shared_ptr<const ParabolicResult> curves = topo_.parabolic ? topo_.parabolic : cached_parabolic(topo_);
+            result.fronts = parabolic_fronts(topo_, *curves);
+        } else {
+            const std::vector<std::int32_t> edges =
+                spec.kind == ContourKind::Crease ? crease_edges(topo_, spec.k) : border_edges(topo_);
+            result.fronts = chain_fronts(topo_, chain_edges(topo_, edges));
+        }
         result.stats.ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
         return result;
     }

@@ -64,8 +64,8 @@ const TrackedFrame& ContourTracker::step(const Camera& camera, const Light& ligh
         throw InternalError("fault injected in the tracker at frame " + std::to_string(frame_number_) + " (SNAXELS_FAULT)");
     if (frame_number_ == 0) {
         start(camera, light);
-    } else if (spec_.kind == ContourKind::Parabolic) {
-        // The mesh's own curves: the same snaxels on the same edges every
+    } else if (spec_.on_surface()) {
+        // The mesh's own lines: the same snaxels on the same edges every
         // frame (they move with a moving mesh), no events.
         frame_.frame = frame_number_;
         frame_.events.clear();

@@ -13,6 +13,7 @@
 #include <pugixml.hpp>
 
 #include "snaxels/error.h"
+#include "snaxels/snaxel/feature_edges.h"
 
 namespace snaxels {
 namespace {
@@ -211,18 +212,26 @@ struct Parser {
                 }
                 style.light = light;
             } else if (name == "contour") {
-                check_attributes(child, {"kind", "k"});
+                check_attributes(child, {"kind", "k", "angle"});
                 const std::string kind = child.attribute("kind").value();
                 ContourSpec spec;
-                if (kind == "visual" || kind == "shadow" || kind == "parabolic") {
+                if (kind != "crease" && child.attribute("angle")) fail(child, "only a crease contour takes an angle");
+                if (kind == "visual" || kind == "shadow" || kind == "parabolic" || kind == "border") {
                     if (child.attribute("k")) fail(child, "a " + kind + " contour takes no k");
-                    spec.kind = kind == "visual" ? ContourKind::Visual : kind == "shadow" ? ContourKind::Shadow : ContourKind::Parabolic;
+                    spec.kind = kind == "visual"   ? ContourKind::Visual
+                                : kind == "shadow" ? ContourKind::Shadow
+                                : kind == "border" ? ContourKind::Border
+                                                   : ContourKind::Parabolic;
+                } else if (kind == "crease") {
+                    if (child.attribute("k")) fail(child, "a crease contour takes angle=\"DEGREES\", not k");
+                    spec.kind = ContourKind::Crease;
+                    spec.k = number(child, "angle", kDefaultCreaseDegrees, 0.01, 179.99);
                 } else if (kind == "isophote" || kind == "gleam") {
                     if (!child.attribute("k")) fail(child, "an " + kind + " contour needs k (a cosine in -1 .. 1)");
                     spec.kind = kind == "isophote" ? ContourKind::Isophote : ContourKind::Gleam;
                     spec.k = number(child, "k", 0.0, -1.0, 1.0);
                 } else {
-                    fail(child, "kind=\"" + kind + "\" must be visual, shadow, isophote, gleam or parabolic");
+                    fail(child, "kind=\"" + kind + "\" must be visual, shadow, isophote, gleam, parabolic, crease or border");
                 }
                 for (const ContourStyle& existing : style.contours)
                     if (existing.spec.label() == spec.label()) fail(child, "a second <contour> for " + spec.label());
@@ -272,6 +281,8 @@ const char* default_stroke(ContourKind kind) {
     case ContourKind::Isophote: return "#8a4fb0";
     case ContourKind::Gleam: return "#d98c00";
     case ContourKind::Parabolic: return "#1f8a4c";
+    case ContourKind::Crease: return "#333333";
+    case ContourKind::Border: return "#111111";
     }
     return "#111111";
 }

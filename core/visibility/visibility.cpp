@@ -12,6 +12,19 @@ std::int32_t common_face(const MeshTopology& topo, const Snaxel& a, const Snaxel
         if (f != MeshTopology::kNone &&
             (f == topo.edge_faces()[b.edge][0] || f == topo.edge_faces()[b.edge][1]))
             return f;
+    // Snaxels at the two ends of an edge (a crease or border chain's step):
+    // a face of the edge they share.
+    auto vertex = [](const Snaxel& s) {
+        return s.t == 0.0 ? s.inside : s.t == 1.0 ? s.outside : MeshTopology::kNone;
+    };
+    const std::int32_t va = vertex(a), vb = vertex(b);
+    if (va == MeshTopology::kNone || vb == MeshTopology::kNone || va == vb) return MeshTopology::kNone;
+    for (const std::int32_t e : {a.edge, b.edge}) {
+        const auto& ends = topo.edge_vertices()[std::size_t(e)];
+        if ((ends[0] == va && ends[1] == vb) || (ends[0] == vb && ends[1] == va))
+            for (const std::int32_t f : topo.edge_faces()[std::size_t(e)])
+                if (f != MeshTopology::kNone) return f;
+    }
     return MeshTopology::kNone;
 }
 

@@ -208,6 +208,15 @@ TEST(ContourSpec, ParsesAndRejects) {
     EXPECT_THROW(ContourSpec::parse("isophote:x"), Error);
     EXPECT_THROW(ContourSpec::parse("visual:1"), Error);
     EXPECT_THROW(ContourSpec::parse("outline"), Error);
+    EXPECT_EQ(ContourSpec::parse("crease").label(), "crease:30"); // the default angle
+    EXPECT_DOUBLE_EQ(ContourSpec::parse("crease:45").k, 45.0);
+    EXPECT_EQ(ContourSpec::parse("border").label(), "border");
+    EXPECT_TRUE(ContourSpec::parse("border").on_surface());
+    EXPECT_FALSE(ContourSpec::parse("visual").on_surface());
+    EXPECT_THROW(ContourSpec::parse("crease:0"), Error);
+    EXPECT_THROW(ContourSpec::parse("crease:180"), Error);
+    EXPECT_THROW(ContourSpec::parse("crease:sharp"), Error);
+    EXPECT_THROW(ContourSpec::parse("border:1"), Error);
 }
 
 // An eye or a point light exactly at a vertex leaves V or L undefined there;

@@ -34,6 +34,8 @@ TEST(Style, ParsesEveryElementAndAttribute) {
     <hidden draw="false"/>
   </contour>
   <contour kind="gleam" k="0.9"><visible stroke="orange"/></contour>
+  <contour kind="crease" angle="42.5"><visible stroke="teal"/></contour>
+  <contour kind="border"><visible stroke="navy"/></contour>
 </style>)", "t.xml", &warnings);
     EXPECT_TRUE(warnings.empty());
     EXPECT_EQ(s.width, 640);
@@ -42,7 +44,10 @@ TEST(Style, ParsesEveryElementAndAttribute) {
     EXPECT_EQ(s.background, "none");
     ASSERT_TRUE(s.light && s.light->point);
     EXPECT_EQ(s.light->pos, glm::dvec3(1, 2, 3));
-    ASSERT_EQ(s.contours.size(), 2u);
+    ASSERT_EQ(s.contours.size(), 4u);
+    EXPECT_EQ(s.contours[2].spec.label(), "crease:42.5");
+    EXPECT_EQ(s.contour(ContourSpec{ContourKind::Crease, 42.5}).visible.colour, "teal");
+    EXPECT_EQ(s.contour(ContourSpec{ContourKind::Border, 0.0}).visible.colour, "navy");
     const ContourStyle v = s.contour(ContourSpec{});
     EXPECT_EQ(v.visible.colour, "#abc");
     EXPECT_EQ(v.visible.width, 2.5);
@@ -73,6 +78,11 @@ TEST(Style, ErrorsNameLineAndColumn) {
     EXPECT_NE(d.message.find("a second <contour> for visual"), std::string::npos);
     EXPECT_NE(error_of("<style><light dir=\"1,2\"/></style>").message.find("three numbers"), std::string::npos);
     EXPECT_NE(error_of("<style><contour kind=\"outline\"/></style>").message.find("must be visual"), std::string::npos);
+    EXPECT_NE(error_of("<style><contour kind=\"crease\" k=\"30\"/></style>").message.find("angle=\"DEGREES\", not k"),
+              std::string::npos);
+    EXPECT_NE(error_of("<style><contour kind=\"visual\" angle=\"30\"/></style>").message.find("only a crease"),
+              std::string::npos);
+    EXPECT_NE(error_of("<style><contour kind=\"crease\" angle=\"200\"/></style>").message.find("angle"), std::string::npos);
     EXPECT_NE(error_of("<styles/>").message.find("root element must be <style>"), std::string::npos);
     EXPECT_NE(error_of("<style><canvas margin=\"500\"/></style>").message.find("no room"), std::string::npos);
     d = error_of("<style>\n<canvas");
