@@ -592,6 +592,9 @@ class SnaxelMapBuilder {
     /// The faces are walked in parallel, each thread into its own lists.
     void walk_faces() {
         const auto first_strip = std::int32_t(comp_label_.size());
+        // Strip regions are added while other threads read the labels: room
+        // for one per class is made first, so adding one never moves them.
+        comp_label_.reserve(comp_label_.size() + std::size_t(classes_.count()));
         const std::size_t chunks = std::max<std::size_t>(1, std::thread::hardware_concurrency());
         std::vector<WalkOut> walk(chunks);
         parallel_for(chunks, [&](std::size_t chunk) {
@@ -749,7 +752,8 @@ class SnaxelMapBuilder {
         }
     }
 
-    /// The region of the strips of class @p cls past the contour (one per class).
+    /// The region of the strips of class @p cls past the contour (one per
+    /// class; called under shared_points_, within the room walk_faces made).
     std::int32_t outline_region(int cls) {
         const auto it = outline_regions_.find(cls);
         if (it != outline_regions_.end()) return it->second;
