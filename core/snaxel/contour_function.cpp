@@ -33,7 +33,7 @@ std::string ContourSpec::label() const {
 }
 
 bool ContourSpec::same_as(const ContourSpec& other) const {
-    return kind == other.kind && std::abs(k - other.k) < 1e-9;
+    return kind == other.kind && std::abs(k - other.k) < 1e-9 && std::abs(min_length - other.min_length) < 1e-9;
 }
 
 ContourSpec ContourSpec::parse(const std::string& text) {

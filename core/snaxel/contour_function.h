@@ -24,6 +24,10 @@ enum class ContourKind { Visual, Shadow, Isophote, Gleam, Parabolic, Crease, Bor
 struct ContourSpec {
     ContourKind kind = ContourKind::Visual;
     double k = 0.0;
+    /// Creases and borders: chains shorter than this fraction of the mesh's
+    /// bounding-box diagonal are left out (the short, scattered creases of a
+    /// scanned surface); 0 keeps every edge.
+    double min_length = 0.0;
 
     /// "visual", "shadow", "isophote", "gleam", "parabolic", "crease" or "border".
     std::string kind_name() const;
@@ -38,7 +42,7 @@ struct ContourSpec {
     }
     /// Parses the CLI's --kind values; throws snaxels::Error when malformed.
     static ContourSpec parse(const std::string& text);
-    /// The same contour (kind, and k within 1e-9).
+    /// The same contour (kind, and k and min_length within 1e-9).
     bool same_as(const ContourSpec& other) const;
 };
 

@@ -98,6 +98,18 @@ std::vector<EdgeChain> chain_edges(const MeshTopology& topo, const std::vector<s
     return chains;
 }
 
+std::vector<EdgeChain> chains_at_least(const MeshTopology& topo, std::vector<EdgeChain> chains, double length) {
+    if (length <= 0.0) return chains;
+    const auto P = topo.positions();
+    std::erase_if(chains, [&](const EdgeChain& c) {
+        double sum = 0.0;
+        for (std::size_t i = 0; i + 1 < c.vertices.size(); ++i)
+            sum += glm::length(P[std::size_t(c.vertices[i + 1])] - P[std::size_t(c.vertices[i])]);
+        return sum < length;
+    });
+    return chains;
+}
+
 Fronts chain_fronts(const MeshTopology& topo, const std::vector<EdgeChain>& chains) {
     Fronts fronts;
     fronts.edge_snaxel.assign(topo.n_edges(), MeshTopology::kNone);

@@ -40,6 +40,9 @@ struct EdgeChain {
 /// of their first edge, open ones from their lower-numbered end.
 std::vector<EdgeChain> chain_edges(const MeshTopology& topology, const std::vector<std::int32_t>& edges);
 
+/// @p chains without those shorter than @p length (in the topology's pose).
+std::vector<EdgeChain> chains_at_least(const MeshTopology& topology, std::vector<EdgeChain> chains, double length);
+
 /// The chains as a snaxel front set, as parabolic_fronts makes of parabolic
 /// curves: every chain vertex a snaxel at that vertex (t 0 or 1 on the
 /// chain's edge there), every chain a loop, open or closed, so that the

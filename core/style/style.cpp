@@ -212,10 +212,13 @@ struct Parser {
                 }
                 style.light = light;
             } else if (name == "contour") {
-                check_attributes(child, {"kind", "k", "angle"});
+                check_attributes(child, {"kind", "k", "angle", "min-length"});
                 const std::string kind = child.attribute("kind").value();
                 ContourSpec spec;
                 if (kind != "crease" && child.attribute("angle")) fail(child, "only a crease contour takes an angle");
+                if (kind != "crease" && kind != "border" && child.attribute("min-length"))
+                    fail(child, "only crease and border contours take a min-length");
+                spec.min_length = number(child, "min-length", 0.0, 0.0, 1.0);
                 if (kind == "visual" || kind == "shadow" || kind == "parabolic" || kind == "border") {
                     if (child.attribute("k")) fail(child, "a " + kind + " contour takes no k");
                     spec.kind = kind == "visual"   ? ContourKind::Visual

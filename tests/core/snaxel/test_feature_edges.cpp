@@ -297,3 +297,39 @@ TEST(FeatureEdges, HiddenCreasesAreDashedWhereTheStyleSaysSo) {
     const std::string group = out.svg.substr(hidden_group, out.svg.find('>', hidden_group) - hidden_group);
     EXPECT_NE(group.find("stroke-dasharray=\"6 3\""), std::string::npos) << group;
 }
+
+// min-length leaves out exactly the chains shorter than that fraction of the
+// mesh's diagonal: on a scanned surface (the bunny) most of its scattered
+// sharp edges, on a machined part (fandisk) none of its long creases.
+TEST(FeatureEdges, MinLengthLeavesOutExactlyTheShortChains) {
+    for (const std::string file : {"stanford-bunny.obj", "fandisk.obj"}) {
+        const MeshTopology topo = build_topology(import_mesh(test::asset(file)).mesh);
+        const SnaxelEngine engine(topo);
+        glm::dvec3 lo(1e300), hi(-1e300);
+        for (const glm::dvec3& p : topo.positions()) lo = glm::min(lo, p), hi = glm::max(hi, p);
+        const double limit = 0.04 * glm::length(hi - lo);
+        auto lengths = [&](const ContourResult& r) {
+            std::multiset<double> out;
+            for (const FrontLoop& loop : r.fronts.loops) {
+                std::vector<glm::dvec3> p;
+                r.fronts.for_each_in_loop(loop, [&](std::int32_t s) { p.push_back(engine.position(r.fronts.snaxels[std::size_t(s)])); });
+                if (loop.closed) p.push_back(p.front());
+                double sum = 0.0;
+                for (std::size_t i = 0; i + 1 < p.size(); ++i) sum += glm::length(p[i + 1] - p[i]);
+                out.insert(sum);
+            }
+            return out;
+        };
+        Camera camera;
+        ContourSpec all{ContourKind::Crease, 30.0}, long_only{ContourKind::Crease, 30.0, 0.04};
+        const std::multiset<double> every = lengths(engine.compute(all, camera, default_light(camera)));
+        const std::multiset<double> kept = lengths(engine.compute(long_only, camera, default_light(camera)));
+        std::multiset<double> expected;
+        for (const double l : every)
+            if (l >= limit) expected.insert(l);
+        EXPECT_EQ(kept, expected) << file;
+        std::printf("%s: %zu crease chains, %zu of at least 4 per cent of the diagonal\n", file.c_str(), every.size(), kept.size());
+        if (file == "fandisk.obj") EXPECT_GE(kept.size(), every.size() - 2);
+        else EXPECT_LT(kept.size(), every.size() / 10);
+    }
+}

@@ -34,7 +34,7 @@ TEST(Style, ParsesEveryElementAndAttribute) {
     <hidden draw="false"/>
   </contour>
   <contour kind="gleam" k="0.9"><visible stroke="orange"/></contour>
-  <contour kind="crease" angle="42.5"><visible stroke="teal"/></contour>
+  <contour kind="crease" angle="42.5" min-length="0.05"><visible stroke="teal"/></contour>
   <contour kind="border"><visible stroke="navy"/></contour>
 </style>)", "t.xml", &warnings);
     EXPECT_TRUE(warnings.empty());
@@ -46,7 +46,8 @@ TEST(Style, ParsesEveryElementAndAttribute) {
     EXPECT_EQ(s.light->pos, glm::dvec3(1, 2, 3));
     ASSERT_EQ(s.contours.size(), 4u);
     EXPECT_EQ(s.contours[2].spec.label(), "crease:42.5");
-    EXPECT_EQ(s.contour(ContourSpec{ContourKind::Crease, 42.5}).visible.colour, "teal");
+    EXPECT_EQ(s.contours[2].spec.min_length, 0.05);
+    EXPECT_EQ(s.contour(ContourSpec{ContourKind::Crease, 42.5, 0.05}).visible.colour, "teal");
     EXPECT_EQ(s.contour(ContourSpec{ContourKind::Border, 0.0}).visible.colour, "navy");
     const ContourStyle v = s.contour(ContourSpec{});
     EXPECT_EQ(v.visible.colour, "#abc");
@@ -83,6 +84,10 @@ TEST(Style, ErrorsNameLineAndColumn) {
     EXPECT_NE(error_of("<style><contour kind=\"visual\" angle=\"30\"/></style>").message.find("only a crease"),
               std::string::npos);
     EXPECT_NE(error_of("<style><contour kind=\"crease\" angle=\"200\"/></style>").message.find("angle"), std::string::npos);
+    EXPECT_NE(error_of("<style><contour kind=\"visual\" min-length=\"0.1\"/></style>").message.find("only crease and border"),
+              std::string::npos);
+    EXPECT_NE(error_of("<style><contour kind=\"border\" min-length=\"2\"/></style>").message.find("min-length"),
+              std::string::npos);
     EXPECT_NE(error_of("<styles/>").message.find("root element must be <style>"), std::string::npos);
     EXPECT_NE(error_of("<style><canvas margin=\"500\"/></style>").message.find("no room"), std::string::npos);
     d = error_of("<style>\n<canvas");
