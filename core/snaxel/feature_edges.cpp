@@ -138,4 +138,11 @@ Fronts chain_fronts(const MeshTopology& topo, const std::vector<EdgeChain>& chai
     return fronts;
 }
 
+Fronts feature_fronts(const MeshTopology& topo, const ContourSpec& spec) {
+    const std::vector<std::int32_t> edges =
+        spec.kind == ContourKind::Crease ? crease_edges(topo, spec.k) : border_edges(topo);
+    const double min_length = spec.min_length > 0.0 ? spec.min_length * 2.0 * bounding_radius(topo) : 0.0;
+    return chain_fronts(topo, chains_at_least(topo, chain_edges(topo, edges), min_length));
+}
+
 } // namespace snaxels

@@ -8,6 +8,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "snaxels/snaxel/contour_function.h"
 #include "snaxels/snaxel/fronts.h"
 #include "snaxels/snaxel/topology.h"
 
@@ -49,5 +50,10 @@ std::vector<EdgeChain> chains_at_least(const MeshTopology& topology, std::vector
 /// drawing, hidden-line and export stages take them like any contour.
 /// No vertex set bounds them: edge_snaxel holds each edge's first snaxel.
 Fronts chain_fronts(const MeshTopology& topology, const std::vector<EdgeChain>& chains);
+
+/// The fronts of a crease or border @p spec on @p topology: its edges
+/// (crease_edges at spec.k degrees, or border_edges), chained, the chains
+/// shorter than spec.min_length of the bounding-box diagonal left out.
+Fronts feature_fronts(const MeshTopology& topology, const ContourSpec& spec);
 
 } // namespace snaxels

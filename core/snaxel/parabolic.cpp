@@ -233,12 +233,6 @@ std::vector<std::int32_t> tree_diameter(const std::vector<std::vector<std::pair<
 }
 
 /// The mesh's bounding radius.
-double bounding_radius(const MeshTopology& topo) {
-    glm::dvec3 lo(std::numeric_limits<double>::max()), hi(-std::numeric_limits<double>::max());
-    for (const glm::dvec3& p : topo.positions()) lo = glm::min(lo, p), hi = glm::max(hi, p);
-    return topo.positions().empty() ? 0.0 : 0.5 * glm::length(hi - lo);
-}
-
 /// Traces the surface from @p a (in face a.face) to @p b (in face b.face)
 /// along the plane through both that holds their mean normal: the edges it
 /// crosses, in order, are appended to @p curve. False when the walk does not

@@ -186,16 +186,7 @@ ContourResult SnaxelEngine::compute(const ContourSpec& spec, const Camera& camer
             const std::shared_ptr<const ParabolicResult> curves = topo_.parabolic ? topo_.parabolic : cached_parabolic(topo_);
             result.fronts = parabolic_fronts(topo_, *curves);
         } else {
-            const std::vector<std::int32_t> edges =
-                spec.kind == ContourKind::Crease ? crease_edges(topo_, spec.k) : border_edges(topo_);
-            double diagonal = 0.0;
-            if (spec.min_length > 0.0 && topo_.n_vertices() > 0) {
-                glm::dvec3 lo = topo_.positions()[0], hi = lo;
-                for (const glm::dvec3& p : topo_.positions()) lo = glm::min(lo, p), hi = glm::max(hi, p);
-                diagonal = glm::length(hi - lo);
-            }
-            result.fronts =
-                chain_fronts(topo_, chains_at_least(topo_, chain_edges(topo_, edges), spec.min_length * diagonal));
+            result.fronts = feature_fronts(topo_, spec);
         }
         result.stats.ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
         return result;

@@ -1,5 +1,6 @@
 #include "snaxels/snaxel/topology.h"
 
+#include <limits>
 #include <stdexcept>
 #include <string>
 
@@ -81,6 +82,12 @@ MeshTopology build_topology(const Mesh& mesh, std::shared_ptr<const MeshRefineme
     }
     t.ring_start[nv] = static_cast<std::int32_t>(t.ring.size());
     return MeshTopology(std::move(c), std::move(pose));
+}
+
+double bounding_radius(const MeshTopology& topo) {
+    glm::dvec3 lo(std::numeric_limits<double>::max()), hi(-std::numeric_limits<double>::max());
+    for (const glm::dvec3& p : topo.positions()) lo = glm::min(lo, p), hi = glm::max(hi, p);
+    return topo.positions().empty() ? 0.0 : 0.5 * glm::length(hi - lo);
 }
 
 std::size_t MeshConnectivity::n_base_vertices() const { return refinement ? refinement->base_vertices : n_vertices(); }

@@ -147,6 +147,9 @@ std::int32_t grow_vertex_sets(const MeshTopology& topo, std::vector<std::int32_t
 
 namespace snaxels {
 
+/// Half the diagonal of @p topology's bounding box in its pose (0 for no vertices).
+double bounding_radius(const MeshTopology& topology);
+
 /// The pose of @p connectivity whose own vertices are at @p positions (its
 /// first n_base_vertices() entries; the rest, on a refined mesh, follow
 /// them over the original faces), with area-weighted vertex normals as on

@@ -22,30 +22,48 @@ using namespace snaxels;
 
 namespace {
 
-/// The edges of a mesh file's own face list (read by the tests' reader,
-/// not the importer) whose two faces' planes differ by more than @p degrees, and
-/// its edges with one face.
-struct ObjEdges {
-    std::size_t creases = 0, borders = 0;
-};
+/// The drawn segments of @p result: consecutive snaxel positions along each
+/// loop, each as its pair of end points (ordered), so that they compare
+/// with the face list's edges whatever the vertex numbering.
+using Segment = std::pair<std::array<double, 3>, std::array<double, 3>>;
 
-ObjEdges count_obj_edges(const std::string& path, double degrees) {
-    const ref::Mesh m = ref::read_mesh(path); // the tests' own reader: welds equal positions as the importer does
-    const std::vector<glm::dvec3>& v = m.positions;
-    const std::vector<std::array<int, 3>>& faces = m.faces;
-    std::map<std::pair<int, int>, std::vector<glm::dvec3>> normals_at_edge;
-    for (const auto& f : faces) {
-        const glm::dvec3 n = glm::normalize(glm::cross(v[std::size_t(f[1])] - v[std::size_t(f[0])], v[std::size_t(f[2])] - v[std::size_t(f[0])]));
-        for (int k = 0; k < 3; ++k) {
-            const int a = f[std::size_t(k)], b = f[std::size_t((k + 1) % 3)];
-            normals_at_edge[{std::min(a, b), std::max(a, b)}].push_back(n);
+std::set<Segment> drawn_segments(const SnaxelEngine& engine, const ContourResult& result) {
+    std::set<Segment> out;
+    const Fronts& fronts = result.fronts;
+    for (const FrontLoop& loop : fronts.loops) {
+        std::vector<glm::dvec3> points;
+        fronts.for_each_in_loop(loop, [&](std::int32_t s) { points.push_back(engine.position(fronts.snaxels[std::size_t(s)])); });
+        if (loop.closed) points.push_back(points.front());
+        for (std::size_t i = 0; i + 1 < points.size(); ++i) {
+            std::array<double, 3> a{points[i].x, points[i].y, points[i].z}, b{points[i + 1].x, points[i + 1].y, points[i + 1].z};
+            EXPECT_TRUE(out.insert({std::min(a, b), std::max(a, b)}).second) << "a segment drawn twice";
         }
     }
-    ObjEdges out;
+    return out;
+}
+
+/// The face list's edges (the tests' own reader) that are creases over
+/// @p degrees, or (degrees < 0) borders, as position pairs.
+std::set<Segment> face_list_segments(const std::string& path, double degrees) {
+    const ref::Mesh m = ref::read_mesh(path);
+    std::map<std::pair<int, int>, std::vector<glm::dvec3>> normals_at_edge;
+    for (const auto& f : m.faces) {
+        const glm::dvec3 a = m.positions[std::size_t(f[0])];
+        const glm::dvec3 n = glm::normalize(glm::cross(m.positions[std::size_t(f[1])] - a, m.positions[std::size_t(f[2])] - a));
+        for (int k = 0; k < 3; ++k) {
+            const int u = f[std::size_t(k)], w = f[std::size_t((k + 1) % 3)];
+            normals_at_edge[{std::min(u, w), std::max(u, w)}].push_back(n);
+        }
+    }
+    std::set<Segment> out;
     for (const auto& [edge, n] : normals_at_edge) {
-        if (n.size() == 1) ++out.borders;
-        if (n.size() == 2 && std::acos(std::clamp(glm::dot(n[0], n[1]), -1.0, 1.0)) > degrees * M_PI / 180.0)
-            ++out.creases;
+        const bool take = degrees < 0.0 ? n.size() == 1
+                                        : n.size() == 2 && std::acos(std::clamp(glm::dot(n[0], n[1]), -1.0, 1.0)) >
+                                                               degrees * M_PI / 180.0;
+        if (!take) continue;
+        const glm::dvec3 a = m.positions[std::size_t(edge.first)], b = m.positions[std::size_t(edge.second)];
+        const std::array<double, 3> pa{a.x, a.y, a.z}, pb{b.x, b.y, b.z};
+        out.insert({std::min(pa, pb), std::max(pa, pb)});
     }
     return out;
 }
@@ -87,10 +105,10 @@ TEST(FeatureEdges, FandiskCreasesMatchTheFaceList) {
     const std::string path = test::asset("fandisk.obj");
     const MeshTopology topo = build_topology(import_mesh(path).mesh);
     for (const double degrees : {20.0, 30.0, 45.0, 60.0}) {
-        const ObjEdges expected = count_obj_edges(path, degrees);
+        const std::size_t expected = face_list_segments(path, degrees).size();
         const std::vector<std::int32_t> creases = crease_edges(topo, degrees);
         std::printf("fandisk: %zu creases over %g degrees\n", creases.size(), degrees);
-        EXPECT_EQ(creases.size(), expected.creases) << degrees << " degrees";
+        EXPECT_EQ(creases.size(), expected) << degrees << " degrees";
         EXPECT_GT(creases.size(), 0u);
         check_chains(topo, creases, chain_edges(topo, creases));
     }
@@ -104,7 +122,7 @@ TEST(FeatureEdges, BordersOfOpenMeshes) {
         const std::string path = test::asset(file);
         const MeshTopology topo = build_topology(import_mesh(path).mesh);
         const std::vector<std::int32_t> borders = border_edges(topo);
-        EXPECT_EQ(borders.size(), count_obj_edges(path, 180.0).borders) << file;
+        EXPECT_EQ(borders.size(), face_list_segments(path, -1.0).size()) << file;
         ASSERT_GT(borders.size(), 0u) << file;
         const std::vector<EdgeChain> chains = chain_edges(topo, borders);
         check_chains(topo, borders, chains);
@@ -152,55 +170,6 @@ TEST(FeatureEdges, ChainsLoopsPathsAndJunctions) {
     check_chains(topo, path, open);
 }
 
-namespace {
-
-/// The drawn segments of @p result: consecutive snaxel positions along each
-/// loop, each as its pair of end points (ordered), so that they compare
-/// with the face list's edges whatever the vertex numbering.
-using Segment = std::pair<std::array<double, 3>, std::array<double, 3>>;
-
-std::set<Segment> drawn_segments(const SnaxelEngine& engine, const ContourResult& result) {
-    std::set<Segment> out;
-    const Fronts& fronts = result.fronts;
-    for (const FrontLoop& loop : fronts.loops) {
-        std::vector<glm::dvec3> points;
-        fronts.for_each_in_loop(loop, [&](std::int32_t s) { points.push_back(engine.position(fronts.snaxels[std::size_t(s)])); });
-        if (loop.closed) points.push_back(points.front());
-        for (std::size_t i = 0; i + 1 < points.size(); ++i) {
-            std::array<double, 3> a{points[i].x, points[i].y, points[i].z}, b{points[i + 1].x, points[i + 1].y, points[i + 1].z};
-            EXPECT_TRUE(out.insert({std::min(a, b), std::max(a, b)}).second) << "a segment drawn twice";
-        }
-    }
-    return out;
-}
-
-/// The face list's edges (the tests' own reader) that are creases over
-/// @p degrees, or (degrees < 0) borders, as position pairs.
-std::set<Segment> face_list_segments(const std::string& path, double degrees) {
-    const ref::Mesh m = ref::read_mesh(path);
-    std::map<std::pair<int, int>, std::vector<glm::dvec3>> normals_at_edge;
-    for (const auto& f : m.faces) {
-        const glm::dvec3 a = m.positions[std::size_t(f[0])];
-        const glm::dvec3 n = glm::normalize(glm::cross(m.positions[std::size_t(f[1])] - a, m.positions[std::size_t(f[2])] - a));
-        for (int k = 0; k < 3; ++k) {
-            const int u = f[std::size_t(k)], w = f[std::size_t((k + 1) % 3)];
-            normals_at_edge[{std::min(u, w), std::max(u, w)}].push_back(n);
-        }
-    }
-    std::set<Segment> out;
-    for (const auto& [edge, n] : normals_at_edge) {
-        const bool take = degrees < 0.0 ? n.size() == 1
-                                        : n.size() == 2 && std::acos(std::clamp(glm::dot(n[0], n[1]), -1.0, 1.0)) >
-                                                               degrees * M_PI / 180.0;
-        if (!take) continue;
-        const glm::dvec3 a = m.positions[std::size_t(edge.first)], b = m.positions[std::size_t(edge.second)];
-        const std::array<double, 3> pa{a.x, a.y, a.z}, pb{b.x, b.y, b.z};
-        out.insert({std::min(pa, pb), std::max(pa, pb)});
-    }
-    return out;
-}
-
-} // namespace
 
 // Done-when 1: on fandisk every edge over the angle is drawn, and nothing
 // else; on the teapot and the bunny every boundary edge is drawn. The drawn
