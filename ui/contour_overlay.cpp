@@ -22,6 +22,7 @@ const char* view_colour(ContourKind kind) {
     case ContourKind::Parabolic: return "#3ddc84";
     case ContourKind::Crease: return "#f0f0f0";
     case ContourKind::Border: return "#ff7ac8";
+    case ContourKind::Suggestive: return "#ff9a3c";
     }
     return "#e8402a";
 }
@@ -147,6 +148,7 @@ OverlayResult compute_overlay(const LoadedMesh& mesh, ContourScene& scene, const
         out.snaxels += r.fronts.snaxels.size();
         for (const LoopVisibility& loop : still.visibility[c].loops)
             for (const VisibilityRun& run : loop.runs) {
+                if (run.qi == kNotDrawn) continue; // a part the contour leaves out
                 ContourStrip strip;
                 strip.colour = glm::vec3(float(colour.redF()), float(colour.greenF()), float(colour.blueF()));
                 strip.hidden = run.qi > 0;

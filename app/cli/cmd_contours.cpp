@@ -32,7 +32,11 @@ int run_contours(const std::vector<std::string>& argv) {
             "shadow (N.L = 0 on front faces), isophote:K (N.L = K), gleam:K (V.R = K), K a\n"
             "cosine in [-1, 1], parabolic (the mesh's parabolic curves, found from visual\n"
             "events over all views: see `snaxels-cli parabolic`), crease[:DEG] (edges whose\n"
-            "faces meet at more than DEG degrees, default 30) or border (edges with one face).\n"
+            "faces meet at more than DEG degrees, default 30), border (edges with one face) or\n"
+            "suggestive[:D[:DEG]] (zeros of the radial curvature, drawn where its derivative\n"
+            "toward the viewer, over the mesh's typical curvature squared, is at least D\n"
+            "(default 4) and the surface is seen at DEG degrees or more from its normal,\n"
+            "default 15).\n"
             "The default view is\n"
             "orthographic along +Z (looking toward +Z)\n"
             "and the default light comes from the viewer's upper left.\n\n") +

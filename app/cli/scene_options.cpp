@@ -63,7 +63,7 @@ std::vector<OptionSpec> scene_option_specs() {
             {"up", "X,Y,Z", "the world direction shown upward (default 0,1,0)"},
             {"light-dir", "X,Y,Z", "directional light: the direction toward the light"},
             {"light-pos", "X,Y,Z", "point light at this position"},
-            {"kind", "KIND", "contour to find: visual, shadow, isophote:K, gleam:K, parabolic, crease[:DEG], border (default visual)", true},
+            {"kind", "KIND", "contour to find: visual, shadow, isophote:K, gleam:K, parabolic, crease[:DEG], border, suggestive[:D[:DEG]] (default visual)", true},
             {"style", "FILE.xml", "how to draw: strokes per contour kind, canvas, light (docs/styles.md)"},
             {"size", "WxH", "image size in pixels (default: the style's canvas, 800x800)"},
             {"no-visibility", "", "skip hidden-line classification (no qi, no dashed runs)"},

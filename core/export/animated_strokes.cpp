@@ -8,6 +8,7 @@
 #include "snaxels/export/animated_paths.h"
 #include "snaxels/export/path_keys.h"
 #include "snaxels/export/detail/polyline.h"
+#include "snaxels/visibility/visibility.h"
 
 namespace snaxels {
 
@@ -123,13 +124,14 @@ ParamLoop parameterize(const DrawnLoop& dl, const AnimatedLoop& al) {
     return p;
 }
 
-// Where the loop's visibility class (visible: QI 0, hidden: QI > 0) changes,
+// Where the loop's visibility class (visible: QI 0, hidden: QI > 0, left
+// out: kNotDrawn, which is never drawn) changes,
 // in u, once the anchor is known: on the segment before each snaxel whose
 // class differs from its predecessor's, at the change point.
 std::vector<ClassSpan> spans_of(const ParamLoop& p, const DrawnLoop& dl, double min_run_px) {
     if (dl.qi.empty()) return {{0, p.closed, 0.0, 1.0}};
     const std::size_t n = p.pts.size();
-    auto cls = [&](std::size_t k) { return dl.qi[k] > 0 ? 1 : 0; };
+    auto cls = [&](std::size_t k) { return dl.qi[k] == kNotDrawn ? kLeftOut : dl.qi[k] > 0 ? 1 : 0; };
     std::vector<std::pair<double, int>> changes;
     for (std::size_t k = 0; k < n; ++k) {
         if (!p.closed && k == 0) continue;
@@ -200,7 +202,7 @@ struct Run {
 struct LifeFrame {
     const ParamLoop* loop = nullptr;
     bool jump = false; ///< not interpolated from the frame before
-    std::vector<Run> runs[2]; ///< per class, sorted by id
+    std::vector<Run> runs[3]; ///< per class (visible, hidden, kLeftOut: not drawn), sorted by id
 };
 
 double extent(const ClassSpan& s) { return s.whole ? 1.0 : s.u1 - s.u0; }

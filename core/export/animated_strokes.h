@@ -12,8 +12,11 @@
 namespace snaxels {
 
 /// A stretch of a loop's arc-length parameter u of one visibility class
-/// (0 visible, 1 hidden): [u0, u1] (u1 may pass 1 on closed loops), or the
+/// (0 visible, 1 hidden, kLeftOut: a part its contour leaves out): [u0, u1] (u1 may pass 1 on closed loops), or the
 /// whole closed loop.
+/// The class of the stretches of a loop that are not drawn (kNotDrawn).
+constexpr int kLeftOut = 2;
+
 struct ClassSpan {
     int cls = 0;
     bool whole = false;

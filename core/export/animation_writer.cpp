@@ -452,8 +452,7 @@ void AnimationWriter::add(AnimationFrame frame) {
         m.height = frame.drawing.height;
         for (const DrawnContour& c : frame.drawing.contours) m.specs.push_back(c.spec);
     }
-    for (const DrawnContour& c : frame.drawing.contours)
-        for (const DrawnLoop& loop : c.loops) m.with_visibility |= !loop.qi.empty();
+    m.with_visibility |= has_hidden_lines(frame.drawing);
     m.buffer.push_back(std::move(frame));
     if (m.buffer.size() == kChunkFrames + 1) {
         m.encode_chunk(false);

@@ -37,11 +37,21 @@ struct DrawnContour {
 
 struct Drawing {
     int width = 800, height = 800;
+    /// Visibility was computed: loops carry their QI and runs, hidden runs
+    /// included. Without it, only contours that leave parts out (suggestive
+    /// contours) have runs, of QI 0 and kNotDrawn; the others none.
+    bool hidden_lines = false;
     std::vector<DrawnContour> contours;
 };
 
+/// Whether @p drawing has hidden lines to draw: visibility was computed
+/// (hidden_lines), or a loop has a snaxel of QI above 0 (a drawing made by
+/// hand, with its QIs filled in).
+bool has_hidden_lines(const Drawing& drawing);
+
 /// Projects every loop of @p results with @p projection; with @p visibility
-/// (parallel to @p results) the loops carry their QI and runs too.
+/// (parallel to @p results) the loops carry their QI and runs too; without
+/// it, a contour that leaves parts out is cut into runs by drawn_parts().
 Drawing make_drawing(const SnaxelEngine& engine, const std::vector<ContourResult>& results,
                      const ImageProjection& projection,
                      const std::vector<ContourVisibility>* visibility = nullptr);

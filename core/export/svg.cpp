@@ -259,12 +259,10 @@ std::string to_svg(const Drawing& drawing, const Style& style, const std::vector
         }
         out += "</g>\n";
     }
-    bool with_visibility = false;
-    for (const DrawnContour& c : drawing.contours)
-        for (const DrawnLoop& loop : c.loops) with_visibility |= !loop.runs.empty();
     // Hidden lines first, so visible strokes are drawn over them.
+    const bool with_hidden = has_hidden_lines(drawing);
     for (const bool hidden : {true, false}) {
-        if (hidden && !with_visibility) continue;
+        if (hidden && !with_hidden) continue;
         out += hidden ? "<g id=\"hidden\">\n" : "<g id=\"visible\">\n";
         for (const DrawnContour& c : drawing.contours) {
             const ContourStyle cs = style.contour(c.spec);
@@ -272,12 +270,12 @@ std::string to_svg(const Drawing& drawing, const Style& style, const std::vector
             if (!stroke.draw) continue;
             out += svg::kind_group(c.spec, stroke);
             for (const DrawnLoop& loop : c.loops) {
-                if (!with_visibility) {
-                    append_path(out, loop.q, loop.closed, stroke, loop.dash_phase);
+                if (loop.runs.empty()) { // no visibility: drawn whole, as visible
+                    if (!hidden) append_path(out, loop.q, loop.closed, stroke, loop.dash_phase);
                     continue;
                 }
                 for (const DrawnRun& run : loop.runs) {
-                    if ((run.qi > 0) != hidden || run.q.empty()) continue;
+                    if (run.qi == kNotDrawn || (run.qi > 0) != hidden || run.q.empty()) continue;
                     const double phase = stroke.dash_on_surface && !run.closed
                                              ? loop.dash_phase + arc_to(loop.q, loop.closed, run.q.front())
                                              : loop.dash_phase;

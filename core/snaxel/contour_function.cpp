@@ -6,6 +6,7 @@
 #include <limits>
 
 #include "snaxels/error.h"
+#include "snaxels/snaxel/curvature.h"
 #include "snaxels/snaxel/feature_edges.h"
 
 namespace snaxels {
@@ -19,6 +20,7 @@ std::string ContourSpec::kind_name() const {
     case ContourKind::Parabolic: return "parabolic";
     case ContourKind::Crease: return "crease";
     case ContourKind::Border: return "border";
+    case ContourKind::Suggestive: return "suggestive";
     }
     return "visual";
 }
@@ -27,13 +29,15 @@ std::string ContourSpec::label() const {
     if (kind == ContourKind::Visual || kind == ContourKind::Shadow || kind == ContourKind::Parabolic ||
         kind == ContourKind::Border)
         return kind_name();
-    char buf[64];
-    std::snprintf(buf, sizeof buf, "%s:%g", kind_name().c_str(), k);
+    char buf[96];
+    if (kind == ContourKind::Suggestive) std::snprintf(buf, sizeof buf, "suggestive:%g:%g", k, min_angle);
+    else std::snprintf(buf, sizeof buf, "%s:%g", kind_name().c_str(), k);
     return buf;
 }
 
 bool ContourSpec::same_as(const ContourSpec& other) const {
-    return kind == other.kind && std::abs(k - other.k) < 1e-9 && std::abs(min_length - other.min_length) < 1e-9;
+    return kind == other.kind && std::abs(k - other.k) < 1e-9 && std::abs(min_length - other.min_length) < 1e-9 &&
+           std::abs(min_angle - other.min_angle) < 1e-9;
 }
 
 ContourSpec ContourSpec::parse(const std::string& text) {
@@ -60,9 +64,28 @@ ContourSpec ContourSpec::parse(const std::string& text) {
             throw Error("contour kind '" + text + "': the crease angle must be a number of degrees above 0 and below 180");
         return spec;
     }
+    if (name == "suggestive") {
+        spec.kind = ContourKind::Suggestive;
+        spec.k = kDefaultSuggestiveDerivative;
+        spec.min_angle = kDefaultSuggestiveAngle;
+        if (colon == std::string::npos) return spec;
+        const std::string rest = text.substr(colon + 1);
+        const auto second = rest.find(':');
+        auto read = [&](const std::string& value, double& out, double lo, double hi, const char* what) {
+            const auto [end, ec] = std::from_chars(value.data(), value.data() + value.size(), out);
+            if (ec != std::errc() || end != value.data() + value.size() || !std::isfinite(out) || out < lo || out > hi)
+                throw Error("contour kind '" + text + "': " + what);
+        };
+        read(rest.substr(0, second), spec.k, 0.0, 1e6, "the least derivative D must be a number of at least 0");
+        if (second != std::string::npos)
+            read(rest.substr(second + 1), spec.min_angle, 0.0, 89.0,
+                 "the least angle must be a number of degrees from 0 to 89");
+        return spec;
+    }
     if (name != "isophote" && name != "gleam")
         throw Error("unknown contour kind '" + text +
-                    "' (expected visual, shadow, isophote:K, gleam:K, parabolic, crease[:DEG] or border)");
+                    "' (expected visual, shadow, isophote:K, gleam:K, parabolic, crease[:DEG], border or "
+                    "suggestive[:D[:DEG]])");
     spec.kind = name == "isophote" ? ContourKind::Isophote : ContourKind::Gleam;
     if (colon == std::string::npos)
         throw Error("contour kind '" + text + "' needs a value, for example " + name +
@@ -81,7 +104,7 @@ ContourFunction::ContourFunction(const ContourSpec& spec, const Camera& camera, 
     if (linear_) v_ = -glm::normalize(camera.view_dir);
     const bool view_fixed = camera.orthographic() && glm::length(camera.view_dir) > 0.0;
     const bool light_fixed = spec.kind == ContourKind::Visual || (!light.point && glm::length(light.dir) > 0.0);
-    closed_ = !spec.on_surface() && view_fixed && light_fixed;
+    closed_ = !spec.on_surface() && spec.kind != ContourKind::Suggestive && view_fixed && light_fixed;
     if (closed_) {
         v_ = camera.to_viewer(glm::dvec3(0.0));
         if (spec.kind != ContourKind::Visual) l_ = light.to_light(glm::dvec3(0.0));
@@ -138,6 +161,11 @@ double ContourFunction::first_zero(const glm::dvec3& na, const glm::dvec3& nb, d
     return std::clamp(x / w, 0.0, 1.0);
 }
 
+void ContourFunction::evaluate_vertices(const MeshTopology& topology, std::vector<double>& out) const {
+    if (spec_.kind == ContourKind::Suggestive) out = radial_curvature(topology, *pose_curvature(topology), camera_);
+    else evaluate_vertices(topology.positions(), topology.normals(), out);
+}
+
 void ContourFunction::evaluate_vertices(std::span<const glm::dvec3> positions, std::span<const glm::dvec3> normals,
                                         std::vector<double>& out) const {
     out.resize(positions.size());
@@ -190,7 +218,8 @@ double ContourFunction::evaluate(const glm::dvec3& p, const glm::dvec3& n) const
     case ContourKind::Visual:
     case ContourKind::Parabolic:
     case ContourKind::Crease:
-    case ContourKind::Border: return nv; // not a contour function; see ContourKind
+    case ContourKind::Border:
+    case ContourKind::Suggestive: return nv; // not a function of the point alone; see ContourKind
     case ContourKind::Shadow: return std::min(glm::dot(n, light_.to_light(p)), nv);
     case ContourKind::Isophote: return std::min(glm::dot(n, light_.to_light(p)) - spec_.k, nv);
     case ContourKind::Gleam: {

@@ -9,10 +9,17 @@
 #include <glm/glm.hpp>
 
 #include "snaxels/scene/camera.h"
+#include "snaxels/snaxel/topology.h"
 
 namespace snaxels {
 
-enum class ContourKind { Visual, Shadow, Isophote, Gleam, Parabolic, Crease, Border };
+enum class ContourKind { Visual, Shadow, Isophote, Gleam, Parabolic, Crease, Border, Suggestive };
+
+/// Suggestive contours' defaults: the least scale-free derivative of the
+/// radial curvature (ContourSpec::k) and the least angle, in degrees,
+/// between the normal and the view (ContourSpec::min_angle).
+constexpr double kDefaultSuggestiveDerivative = 4.0;
+constexpr double kDefaultSuggestiveAngle = 15.0;
 
 /// Which contour: visual N.V; shadow min(N.L, N.V); diffuse isophote
 /// min(N.L - k, N.V); specular gleam min(V.R - k, N.V) with R = 2(N.L)N - L.
@@ -20,7 +27,12 @@ enum class ContourKind { Visual, Shadow, Isophote, Gleam, Parabolic, Crease, Bor
 /// are lines of the mesh, the same from any view (on_surface()). Parabolic
 /// curves are found from visual events over all views (core/parabolic);
 /// creases are the edges whose faces meet at more than k degrees, borders
-/// the edges with one face (core/snaxel/feature_edges.h).
+/// the edges with one face (core/snaxel/feature_edges.h). Suggestive
+/// contours are the zeros of the radial curvature kappa_r (a function of
+/// the vertices, from the pose's curvature: core/snaxel/curvature.h),
+/// linear along an edge; the drawing keeps the parts where kappa_r grows
+/// toward the viewer fast enough and the surface is seen at a slant
+/// (suggestive_margins).
 struct ContourSpec {
     ContourKind kind = ContourKind::Visual;
     double k = 0.0;
@@ -28,11 +40,17 @@ struct ContourSpec {
     /// bounding-box diagonal are left out (the short, scattered creases of a
     /// scanned surface); 0 keeps every edge.
     double min_length = 0.0;
+    /// Suggestive contours: parts where the angle between the normal and the
+    /// view is below this many degrees are not drawn (k is then the least
+    /// derivative of kappa_r along the view, times the squared bounding-box
+    /// diagonal, that is drawn).
+    double min_angle = 0.0;
 
-    /// "visual", "shadow", "isophote", "gleam", "parabolic", "crease" or "border".
+    /// "visual", "shadow", "isophote", "gleam", "parabolic", "crease",
+    /// "border" or "suggestive".
     std::string kind_name() const;
     /// "visual", "shadow", "isophote:0.5", "gleam:0.9", "parabolic",
-    /// "crease:30", "border": what parse() reads.
+    /// "crease:30", "border", "suggestive:0.5:15": what parse() reads.
     std::string label() const;
     /// A line of the mesh itself (parabolic, crease, border), not the zero
     /// set of a function of the view and light: fixed on the surface, the
@@ -42,7 +60,7 @@ struct ContourSpec {
     }
     /// Parses the CLI's --kind values; throws snaxels::Error when malformed.
     static ContourSpec parse(const std::string& text);
-    /// The same contour (kind, and k and min_length within 1e-9).
+    /// The same contour (kind, and k, min_length and min_angle within 1e-9).
     bool same_as(const ContourSpec& other) const;
 };
 
@@ -57,6 +75,11 @@ class ContourFunction {
     /// seen by an orthographic camera): f at a vertex is then one dot
     /// product, and its zero on a slerped edge has a closed form.
     bool linear_in_normal() const { return linear_; }
+    /// True when f is a function of the vertices interpolated linearly
+    /// along an edge (suggestive contours' kappa_r): its zero on an edge is
+    /// then f_a / (f_a - f_b), and the vertex values come from the pose's
+    /// curvature (vertex_radial_curvature), not from evaluate_vertices.
+    bool linear_on_edge() const { return spec_.kind == ContourKind::Suggestive; }
     /// That v (the unit vector toward the viewer) when linear_in_normal().
     const glm::dvec3& normal_coefficient() const { return v_; }
 
@@ -71,6 +94,9 @@ class ContourFunction {
     /// (rounding): the caller then brackets the root numerically.
     double first_zero(const glm::dvec3& na, const glm::dvec3& nb, double f_a, double f_b) const;
 
+    /// f at every vertex of @p topology's pose into @p out: evaluate_vertices
+    /// below, or for suggestive contours kappa_r from the pose's curvature.
+    void evaluate_vertices(const MeshTopology& topology, std::vector<double>& out) const;
     /// f at every vertex into @p out (sized to the vertices).
     void evaluate_vertices(std::span<const glm::dvec3> positions, std::span<const glm::dvec3> normals,
                            std::vector<double>& out) const;

@@ -1,5 +1,6 @@
 #include "snaxels/snaxel/curvature.h"
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <utility>
@@ -190,7 +191,24 @@ CurvatureField vertex_curvatures(const MeshTopology& topo) {
         out.dir1[v] = d1;
         out.dir2[v] = glm::cross(topo.normals()[v], d1);
     }, 1024);
+    std::vector<double> magnitudes;
+    magnitudes.reserve(nv);
+    for (std::size_t v = 0; v < nv; ++v)
+        if (out.area[v] > 0.0) magnitudes.push_back(std::abs(out.k1[v]));
+    if (!magnitudes.empty()) {
+        const auto middle = magnitudes.begin() + std::ptrdiff_t(magnitudes.size() / 2);
+        std::nth_element(magnitudes.begin(), middle, magnitudes.end());
+        out.typical = *middle;
+    }
     return out;
+}
+
+std::shared_ptr<const CurvatureField> pose_curvature(const MeshTopology& topo) {
+    const MeshPose::CurvatureCache& cache = topo.pose()->curvature;
+    if (auto kept = cache.get()) return kept;
+    // Computed outside the lock: the computation runs parallel loops, whose
+    // workers may be asked for the same pose's curvature meanwhile.
+    return cache.keep(std::make_shared<const CurvatureField>(vertex_curvatures(topo)));
 }
 
 std::vector<double> radial_curvature(const MeshTopology& topo, const CurvatureField& field, const Camera& camera) {
@@ -205,21 +223,106 @@ std::vector<double> radial_curvature(const MeshTopology& topo, const CurvatureFi
     return out;
 }
 
-double derivative_along_view(const MeshTopology& topo, const std::vector<double>& f, std::int32_t face,
-                             const glm::dvec3& p, const Camera& camera) {
+namespace {
+
+/// The gradient of the piecewise-linear field @p f in face @p face (0 for a
+/// face of no area), and the face's area through @p area.
+glm::dvec3 face_gradient(const MeshTopology& topo, const std::vector<double>& f, std::int32_t face, double& area) {
     const auto& fv = topo.face_vertices()[std::size_t(face)];
     const auto P = topo.positions();
     const glm::dvec3 a = P[std::size_t(fv[0])], b = P[std::size_t(fv[1])], c = P[std::size_t(fv[2])];
     const glm::dvec3 normal = glm::cross(b - a, c - a);
     const double twice_area2 = glm::dot(normal, normal);
-    if (!(twice_area2 > 0.0)) return 0.0;
-    // The gradient of the linear interpolant: sum of f_i times the gradient
-    // of corner i's barycentric coordinate, (n x opposite edge) / (2 area).
-    const glm::dvec3 gradient = (f[std::size_t(fv[0])] * glm::cross(normal, c - b) +
-                                 f[std::size_t(fv[1])] * glm::cross(normal, a - c) +
-                                 f[std::size_t(fv[2])] * glm::cross(normal, b - a)) /
-                                twice_area2;
-    const glm::dvec3 n = normal / std::sqrt(twice_area2);
+    area = 0.5 * std::sqrt(twice_area2);
+    if (!(twice_area2 > 0.0)) return glm::dvec3(0.0);
+    // Sum of f_i times the gradient of corner i's barycentric coordinate,
+    // (n x opposite edge) / (2 area).
+    return (f[std::size_t(fv[0])] * glm::cross(normal, c - b) + f[std::size_t(fv[1])] * glm::cross(normal, a - c) +
+            f[std::size_t(fv[2])] * glm::cross(normal, b - a)) /
+           twice_area2;
+}
+
+/// The derivative of @p f along the unit view direction projected onto
+/// vertex @p v's tangent plane, from the area-weighted mean of the gradients
+/// of the faces around v (smoother than one face's).
+double vertex_derivative_along_view(const MeshTopology& topo, const std::vector<double>& f, std::int32_t v,
+                                    const Camera& camera) {
+    glm::dvec3 sum(0.0);
+    double total = 0.0;
+    for (std::int32_t i = topo.ring_start()[std::size_t(v)]; i < topo.ring_start()[std::size_t(v) + 1]; ++i) {
+        // Each face once: the one in which the edge to a neighbour leaves v.
+        const std::int32_t neighbour = topo.ring()[std::size_t(i)];
+        for (const std::int32_t face : topo.edge_faces()[std::size_t(topo.ring_edge()[std::size_t(i)])]) {
+            if (face == MeshTopology::kNone) continue;
+            const auto& fv = topo.face_vertices()[std::size_t(face)];
+            std::size_t c = 0;
+            while (c < 3 && fv[c] != v) ++c;
+            if (c == 3 || fv[(c + 1) % 3] != neighbour) continue;
+            double area = 0.0;
+            const glm::dvec3 g = face_gradient(topo, f, face, area);
+            sum += area * g;
+            total += area;
+        }
+    }
+    if (!(total > 0.0)) return 0.0;
+    const glm::dvec3 n = topo.normals()[std::size_t(v)];
+    const glm::dvec3 view = camera.to_viewer(topo.positions()[std::size_t(v)]);
+    const glm::dvec3 w = view - glm::dot(view, n) * n;
+    const double len = glm::length(w);
+    return len > 0.0 ? glm::dot(sum / total, w) / len : 0.0;
+}
+
+} // namespace
+
+std::vector<double> suggestive_margins(const MeshTopology& topo, const std::vector<double>& kr, const Fronts& fronts,
+                                       const Camera& camera, const ContourSpec& spec, double typical) {
+    const std::size_t n = fronts.snaxels.size();
+    std::vector<double> margin(n);
+    const double scale = typical > 0.0 ? 1.0 / (typical * typical) : 0.0, most_facing = std::cos(glm::radians(spec.min_angle));
+    const auto P = topo.positions();
+    const auto N = topo.normals();
+    // The view terms first: where they already leave a snaxel out (about
+    // half of them face away), its margin is theirs and kappa_r's derivative
+    // is not needed.
+    parallel_for(n, [&](std::size_t i) {
+        const Snaxel& s = fronts.snaxels[i];
+        const glm::dvec3 p = (1.0 - s.t) * P[std::size_t(s.inside)] + s.t * P[std::size_t(s.outside)];
+        const glm::dvec3 nrm = slerp_normal(N[std::size_t(s.inside)], N[std::size_t(s.outside)], s.t);
+        const double nv = glm::dot(nrm, camera.to_viewer(p));
+        margin[i] = std::min(most_facing - nv, nv);
+    }, 4096);
+    // The derivative at each end vertex of the other snaxels, once per vertex.
+    std::vector<std::int32_t> slot(topo.n_vertices(), -1), ends;
+    for (std::size_t i = 0; i < n; ++i) {
+        if (margin[i] < 0.0) continue;
+        for (const std::int32_t v : {fronts.snaxels[i].inside, fronts.snaxels[i].outside})
+            if (slot[std::size_t(v)] < 0) {
+                slot[std::size_t(v)] = std::int32_t(ends.size());
+                ends.push_back(v);
+            }
+    }
+    std::vector<double> derivative(ends.size());
+    parallel_for(ends.size(), [&](std::size_t k) {
+        derivative[k] = vertex_derivative_along_view(topo, kr, ends[k], camera);
+    }, 1024);
+    for (std::size_t i = 0; i < n; ++i) {
+        if (margin[i] < 0.0) continue;
+        const Snaxel& s = fronts.snaxels[i];
+        const double d = (1.0 - s.t) * derivative[std::size_t(slot[std::size_t(s.inside)])] +
+                         s.t * derivative[std::size_t(slot[std::size_t(s.outside)])];
+        margin[i] = std::min(margin[i], d * scale - spec.k);
+    }
+    return margin;
+}
+
+double derivative_along_view(const MeshTopology& topo, const std::vector<double>& f, std::int32_t face,
+                             const glm::dvec3& p, const Camera& camera) {
+    double area = 0.0;
+    const glm::dvec3 gradient = face_gradient(topo, f, face, area);
+    if (!(area > 0.0)) return 0.0;
+    const auto& fv = topo.face_vertices()[std::size_t(face)];
+    const auto P = topo.positions();
+    const glm::dvec3 n = glm::normalize(glm::cross(P[std::size_t(fv[1])] - P[std::size_t(fv[0])], P[std::size_t(fv[2])] - P[std::size_t(fv[0])]));
     const glm::dvec3 view = camera.to_viewer(p);
     const glm::dvec3 w = view - glm::dot(view, n) * n;
     const double len = glm::length(w);

@@ -10,11 +10,14 @@
 /// Curvature is positive where the surface bends away from its normal, as
 /// on a sphere with outward normals (1/radius there).
 
+#include <memory>
 #include <vector>
 
 #include <glm/vec3.hpp>
 
 #include "snaxels/scene/camera.h"
+#include "snaxels/snaxel/contour_function.h"
+#include "snaxels/snaxel/fronts.h"
 #include "snaxels/snaxel/topology.h"
 
 namespace snaxels {
@@ -24,6 +27,10 @@ struct CurvatureField {
     std::vector<double> k1, k2;            ///< #V, principal curvatures, |k1| >= |k2|
     std::vector<glm::dvec3> dir1, dir2;    ///< #V, unit principal directions in the tangent plane
     std::vector<double> area;              ///< #V, the vertex's mixed Voronoi area
+    /// The median of |k1| over the vertices with area: the mesh's typical
+    /// curvature, whose inverse (a typical radius) makes thresholds on
+    /// curvature scale-free and suited to the mesh (0 for a flat mesh).
+    double typical = 0.0;
 
     std::size_t size() const { return k1.size(); }
     /// The normal curvature of vertex @p v in tangent direction @p w (need
@@ -35,6 +42,11 @@ struct CurvatureField {
 /// computed in parallel. A vertex with no face of non-zero area gets zero
 /// curvatures and an arbitrary tangent frame.
 CurvatureField vertex_curvatures(const MeshTopology& topology);
+
+/// The curvature of @p topology's pose: computed once per pose (the first
+/// caller computes it; it is kept in the pose, MeshPose::curvature) and
+/// shared by every frame, thread and copy of the topology in that pose.
+std::shared_ptr<const CurvatureField> pose_curvature(const MeshTopology& topology);
 
 /// The radial curvature of every vertex of @p topology seen from @p camera
 /// (DeCarlo et al. 2003): the normal curvature in the direction w of the
@@ -50,5 +62,24 @@ std::vector<double> radial_curvature(const MeshTopology& topology, const Curvatu
 /// normal or the face has no area).
 double derivative_along_view(const MeshTopology& topology, const std::vector<double>& f, std::int32_t face,
                              const glm::dvec3& p, const Camera& camera);
+
+/// Where a suggestive contour is drawn (DeCarlo et al. 2003's pruning). Per
+/// snaxel of @p fronts, zeros of @p kr (the radial curvature at every
+/// vertex, seen from @p camera): the least of three margins, >= 0 where the
+/// snaxel is drawn, each free of the mesh's scale:
+///   - the derivative of kappa_r along the view (at the edge's two ends from
+///     the area-weighted mean gradient of their faces, interpolated), over
+///     the square of the mesh's typical curvature @p typical
+///     (CurvatureField::typical), less spec.k: only zeros where kappa_r
+///     grows toward the viewer are suggestive contours, and weak ones are
+///     noise;
+///   - cos(spec.min_angle) - N.V: where the surface faces the viewer, w
+///     (and so kappa_r) turns unstable;
+///   - N.V: suggestive contours lie on the side seen from the camera.
+/// The drawing cuts a loop where the margin changes sign, between two
+/// snaxels where it interpolates to zero. (Where the view terms are already
+/// negative the derivative is not computed and the margin is theirs.)
+std::vector<double> suggestive_margins(const MeshTopology& topology, const std::vector<double>& kr, const Fronts& fronts,
+                                       const Camera& camera, const ContourSpec& spec, double typical);
 
 } // namespace snaxels

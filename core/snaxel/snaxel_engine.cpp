@@ -1,5 +1,6 @@
 #include "snaxels/snaxel/snaxel_engine.h"
 
+#include "snaxels/snaxel/curvature.h"
 #include "snaxels/snaxel/feature_edges.h"
 #include "snaxels/snaxel/parabolic.h"
 
@@ -134,6 +135,8 @@ double polish_root(const MeshTopology& topo, const ContourFunction& f, std::int3
                    int scan_samples) {
     const glm::dvec3 pa = topo.positions()[inside], pb = topo.positions()[outside];
     const glm::dvec3 na = topo.normals()[inside], nb = topo.normals()[outside];
+    if (f.linear_on_edge()) // vertex values, linear along the edge
+        return f_inside > 0.0 ? std::clamp(f_inside / (f_inside - f_outside), 0.0, 1.0) : 0.0;
     if (f.linear_in_normal()) // N.v on a slerp: one sinusoid, solved exactly
         return slerp_dot_root(na, nb, f_inside, f_outside);
     if (f.closed_form()) // sinusoids: the first crossing, exactly (no scan needed)
@@ -175,6 +178,15 @@ double polish_root(const MeshTopology& topo, const ContourFunction& f, std::int3
     return 0.5 * (t0 + t1);
 }
 
+void set_snaxel_margins(const MeshTopology& topology, const Camera& camera, ContourResult& result) {
+    if (result.spec.kind != ContourKind::Suggestive) {
+        result.snaxel_margin.clear();
+        return;
+    }
+    result.snaxel_margin = suggestive_margins(topology, result.vertex_f, result.fronts, camera, result.spec,
+                                              pose_curvature(topology)->typical);
+}
+
 ContourResult SnaxelEngine::compute(const ContourSpec& spec, const Camera& camera,
                                     const Light& light, const EngineOptions& options) const {
     const auto start = std::chrono::steady_clock::now();
@@ -194,7 +206,7 @@ ContourResult SnaxelEngine::compute(const ContourSpec& spec, const Camera& camer
     const ContourFunction f(spec, camera, light);
     const std::size_t nv = topo_.n_vertices();
 
-    f.evaluate_vertices(topo_.positions(), topo_.normals(), result.vertex_f);
+    f.evaluate_vertices(topo_, result.vertex_f);
 
     std::vector<std::int32_t> label(nv, kNone);
     RegionUnion regions;
@@ -232,6 +244,7 @@ ContourResult SnaxelEngine::compute(const ContourSpec& spec, const Camera& camer
     for (Snaxel& s : result.fronts.snaxels)
         s.t = polish_root(topo_, f, s.inside, s.outside, result.vertex_f[s.inside],
                           result.vertex_f[s.outside], options.polish_tolerance, scan);
+    set_snaxel_margins(topo_, camera, result);
     if (options.check_invariants) {
         if (const std::string problem = check_fronts(topo_, result.fronts, inside); !problem.empty())
             throw InternalError("snaxel invariant broken after convergence: " + problem);

@@ -53,8 +53,16 @@ struct ContourResult {
     std::vector<double> vertex_f;       ///< f at every vertex
     std::vector<std::int32_t> vertex_region; ///< index into regions, for every vertex
     std::vector<Region> regions;
+    /// Per snaxel, for a kind whose drawing leaves parts of its loops out
+    /// (suggestive contours: suggestive_margins): >= 0 where drawn. Empty
+    /// for the other kinds: every snaxel is drawn.
+    std::vector<double> snaxel_margin;
     ContourStats stats;
 };
+
+/// Fills @p result.snaxel_margin for its fronts, as its kind needs (see
+/// ContourResult::snaxel_margin; @p result.vertex_f must be the frame's f).
+void set_snaxel_margins(const MeshTopology& topology, const Camera& camera, ContourResult& result);
 
 class SnaxelEngine {
   public:

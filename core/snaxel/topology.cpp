@@ -10,6 +10,17 @@
 
 namespace snaxels {
 
+std::shared_ptr<const CurvatureField> MeshPose::CurvatureCache::get() const {
+    const std::lock_guard lock(mutex_);
+    return field_;
+}
+
+std::shared_ptr<const CurvatureField> MeshPose::CurvatureCache::keep(std::shared_ptr<const CurvatureField> field) const {
+    const std::lock_guard lock(mutex_);
+    if (!field_) field_ = std::move(field);
+    return field_;
+}
+
 MeshTopology::MeshTopology()
     : MeshTopology(std::make_shared<const MeshConnectivity>(), std::make_shared<const MeshPose>()) {}
 

@@ -6,6 +6,7 @@
 #include <array>
 #include <cstdint>
 #include <memory>
+#include <mutex>
 #include <span>
 #include <vector>
 
@@ -17,6 +18,7 @@ namespace snaxels {
 
 struct MeshRefinement;  // core/snaxel/refine.h
 struct ParabolicResult; // core/snaxel/parabolic.h
+struct CurvatureField;  // core/snaxel/curvature.h
 
 /// A mesh's connectivity: fixed for the mesh's life, so one copy, never
 /// changed once built, is shared by every pose, frame and thread.
@@ -46,6 +48,24 @@ struct MeshConnectivity {
 struct MeshPose {
     std::vector<glm::dvec3> positions; ///< #V
     std::vector<glm::dvec3> normals;   ///< #V, unit
+
+    /// The pose's curvature, found on first use (pose_curvature() in
+    /// core/snaxel/curvature.h) and kept while the pose lives. A copy of a
+    /// pose starts without it (its positions may be changed before use).
+    class CurvatureCache {
+      public:
+        CurvatureCache() = default;
+        CurvatureCache(const CurvatureCache&) {}
+        CurvatureCache& operator=(const CurvatureCache&) { return *this; }
+        std::shared_ptr<const CurvatureField> get() const;
+        /// Keeps @p field unless one is kept already; returns the kept one.
+        std::shared_ptr<const CurvatureField> keep(std::shared_ptr<const CurvatureField> field) const;
+
+      private:
+        mutable std::mutex mutex_;
+        mutable std::shared_ptr<const CurvatureField> field_;
+    };
+    CurvatureCache curvature{};
 };
 
 /// One pose of one connectivity: what the engine, the tracker, the ray scene

@@ -110,11 +110,12 @@ void ContourTracker::track(const Camera& camera, const Light& light) {
     result.spec = spec_;
 
     // 1. f everywhere (new regions may appear anywhere) and what changed side.
-    f.evaluate_vertices(topo_.positions(), topo_.normals(), result.vertex_f);
+    f.evaluate_vertices(topo_, result.vertex_f);
     const std::vector<std::int32_t> changed = flip_changed_vertices();
     sweep_parents(old, changed);
     result.fronts = extract_fronts(topo_, inside_, crossing_edges(old, changed));
     polish_snaxels(engine, f);
+    set_snaxel_margins(topo_, camera, result);
     if (options_.check_invariants) {
         if (const std::string problem = check_fronts(topo_, result.fronts, inside_); !problem.empty())
             throw InternalError("tracked fronts broken at frame " + std::to_string(frame_number_) + ": " + problem);

@@ -212,10 +212,13 @@ struct Parser {
                 }
                 style.light = light;
             } else if (name == "contour") {
-                check_attributes(child, {"kind", "k", "angle", "min-length"});
+                check_attributes(child, {"kind", "k", "angle", "min-length", "min-derivative", "min-angle"});
                 const std::string kind = child.attribute("kind").value();
                 ContourSpec spec;
                 if (kind != "crease" && child.attribute("angle")) fail(child, "only a crease contour takes an angle");
+                for (const char* attr : {"min-derivative", "min-angle"})
+                    if (kind != "suggestive" && child.attribute(attr))
+                        fail(child, std::string("only a suggestive contour takes ") + attr);
                 if (kind != "crease" && kind != "border" && child.attribute("min-length"))
                     fail(child, "only crease and border contours take a min-length");
                 spec.min_length = number(child, "min-length", 0.0, 0.0, 1.0);
@@ -229,12 +232,18 @@ struct Parser {
                     if (child.attribute("k")) fail(child, "a crease contour takes angle=\"DEGREES\", not k");
                     spec.kind = ContourKind::Crease;
                     spec.k = number(child, "angle", kDefaultCreaseDegrees, 0.01, 179.99);
+                } else if (kind == "suggestive") {
+                    if (child.attribute("k"))
+                        fail(child, "a suggestive contour takes min-derivative=\"D\" and min-angle=\"DEGREES\", not k");
+                    spec.kind = ContourKind::Suggestive;
+                    spec.k = number(child, "min-derivative", kDefaultSuggestiveDerivative, 0.0, 1e6);
+                    spec.min_angle = number(child, "min-angle", kDefaultSuggestiveAngle, 0.0, 89.0);
                 } else if (kind == "isophote" || kind == "gleam") {
                     if (!child.attribute("k")) fail(child, "an " + kind + " contour needs k (a cosine in -1 .. 1)");
                     spec.kind = kind == "isophote" ? ContourKind::Isophote : ContourKind::Gleam;
                     spec.k = number(child, "k", 0.0, -1.0, 1.0);
                 } else {
-                    fail(child, "kind=\"" + kind + "\" must be visual, shadow, isophote, gleam, parabolic, crease or border");
+                    fail(child, "kind=\"" + kind + "\" must be visual, shadow, isophote, gleam, parabolic, crease, border or suggestive");
                 }
                 for (const ContourStyle& existing : style.contours)
                     if (existing.spec.label() == spec.label()) fail(child, "a second <contour> for " + spec.label());
@@ -286,6 +295,7 @@ const char* default_stroke(ContourKind kind) {
     case ContourKind::Parabolic: return "#1f8a4c";
     case ContourKind::Crease: return "#333333";
     case ContourKind::Border: return "#111111";
+    case ContourKind::Suggestive: return "#5a4632";
     }
     return "#111111";
 }
@@ -318,6 +328,8 @@ ContourStyle default_contour_style(const ContourSpec& spec) {
     cs.hidden.opacity = 0.55;
     cs.hidden.dash = {4.0, 3.0};
     cs.hidden.cap = "butt";
+    // Hidden suggestive contours suggest nothing: the surface in front hides the fold.
+    if (spec.kind == ContourKind::Suggestive) cs.hidden.draw = false;
     return cs;
 }
 

@@ -1,5 +1,6 @@
 #include "snaxels/visibility/visibility.h"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -92,35 +93,18 @@ int VisibilitySampler::qi(const VisibilityRay& ray) const {
     return std::max(c.front, c.back);
 }
 
-ContourVisibility VisibilitySampler::classify(const SnaxelEngine& engine,
-                                              const ContourResult& contour) const {
+namespace {
+
+/// Cuts every loop of @p contour into runs of equal class, given each
+/// snaxel's class (@p snaxel_qi, indexed like the snaxels) and
+/// change_point(a, b, from): where the class stops being `from` on the
+/// segment from snaxel a to snaxel b. Loops are cut in parallel.
+template <class ChangePoint>
+ContourVisibility cut_runs(const SnaxelEngine& engine, const ContourResult& contour, const std::vector<int>& snaxel_qi,
+                           ChangePoint&& change_point) {
     const Fronts& fronts = contour.fronts;
-    const MeshTopology& topo = scene_.topology();
-    std::vector<int> snaxel_qi(fronts.snaxels.size());
-    parallel_for(fronts.snaxels.size(), [&](std::size_t i) {
-        const Snaxel& s = fronts.snaxels[i];
-        snaxel_qi[i] = qi(snaxel_ray(s, engine.position(s), engine.normal(s)));
-    });
-
-    // The point where QI stops being `from` between snaxels a and b.
-    auto change_point = [&](const Snaxel& a, const Snaxel& b, int from) {
-        const glm::dvec3 pa = engine.position(a), pb = engine.position(b);
-        const glm::dvec3 na = engine.normal(a), nb = engine.normal(b);
-        const std::int32_t face = common_face(topo, a, b);
-        double lo = 0.0, hi = 1.0;
-        for (int step = 0; step < options_.bisection_steps && face != MeshTopology::kNone; ++step) {
-            const double mid = 0.5 * (lo + hi);
-            const glm::dvec3 n = glm::normalize((1.0 - mid) * na + mid * nb);
-            if (qi(face_ray(face, (1.0 - mid) * pa + mid * pb, n)) == from) lo = mid;
-            else hi = mid;
-        }
-        const double u = 0.5 * (lo + hi);
-        return (1.0 - u) * pa + u * pb;
-    };
-
     ContourVisibility out;
     out.loops.resize(fronts.loops.size());
-    // Loops are independent: their change points are bisected in parallel.
     parallel_for(fronts.loops.size(), [&](std::size_t loop_index) {
         const FrontLoop& loop = fronts.loops[loop_index];
         LoopVisibility& lv = out.loops[loop_index];
@@ -128,9 +112,9 @@ ContourVisibility VisibilitySampler::classify(const SnaxelEngine& engine,
         order.reserve(std::size_t(loop.size));
         fronts.for_each_in_loop(loop, [&](std::int32_t s) { order.push_back(s); });
         const std::size_t n = order.size();
-        for (const std::int32_t s : order) lv.snaxel_qi.push_back(snaxel_qi[s]);
+        for (const std::int32_t s : order) lv.snaxel_qi.push_back(snaxel_qi[std::size_t(s)]);
         lv.change_before.assign(n, glm::dvec3(0.0));
-        auto point = [&](std::size_t k) { return engine.position(fronts.snaxels[order[k % n]]); };
+        auto point = [&](std::size_t k) { return engine.position(fronts.snaxels[std::size_t(order[k % n])]); };
 
         std::size_t start = 0; // where the first run begins
         bool any_change = false;
@@ -152,8 +136,7 @@ ContourVisibility VisibilitySampler::classify(const SnaxelEngine& engine,
         VisibilityRun run{lv.snaxel_qi[first], false, {}};
         glm::dvec3 first_change{};
         if (loop.closed) {
-            first_change = change_point(fronts.snaxels[order[(first + n - 1) % n]],
-                                        fronts.snaxels[order[first]], lv.snaxel_qi[(first + n - 1) % n]);
+            first_change = change_point(order[(first + n - 1) % n], order[first], lv.snaxel_qi[(first + n - 1) % n]);
             lv.change_before[first] = first_change;
             run.points.push_back(first_change);
         }
@@ -165,8 +148,7 @@ ContourVisibility VisibilitySampler::classify(const SnaxelEngine& engine,
                 break;
             }
             if (lv.snaxel_qi[next] != lv.snaxel_qi[k]) {
-                const glm::dvec3 c = change_point(fronts.snaxels[order[k]], fronts.snaxels[order[next]],
-                                                  lv.snaxel_qi[k]);
+                const glm::dvec3 c = change_point(order[k], order[next], lv.snaxel_qi[k]);
                 lv.change_before[next] = c;
                 run.points.push_back(c);
                 lv.runs.push_back(std::move(run));
@@ -177,6 +159,59 @@ ContourVisibility VisibilitySampler::classify(const SnaxelEngine& engine,
         lv.runs.push_back(std::move(run));
     }, 1);
     return out;
+}
+
+/// Where the margin of a contour that leaves parts out crosses zero between
+/// snaxels a and b (linear in the margins).
+glm::dvec3 margin_zero(const SnaxelEngine& engine, const ContourResult& contour, std::int32_t a, std::int32_t b) {
+    const double ma = contour.snaxel_margin[std::size_t(a)], mb = contour.snaxel_margin[std::size_t(b)];
+    const double u = ma != mb ? std::clamp(ma / (ma - mb), 0.0, 1.0) : 0.5;
+    return (1.0 - u) * engine.position(contour.fronts.snaxels[std::size_t(a)]) +
+           u * engine.position(contour.fronts.snaxels[std::size_t(b)]);
+}
+
+} // namespace
+
+ContourVisibility VisibilitySampler::classify(const SnaxelEngine& engine,
+                                              const ContourResult& contour) const {
+    const Fronts& fronts = contour.fronts;
+    const MeshTopology& topo = scene_.topology();
+    const bool margins = !contour.snaxel_margin.empty();
+    std::vector<int> snaxel_qi(fronts.snaxels.size());
+    parallel_for(fronts.snaxels.size(), [&](std::size_t i) {
+        const Snaxel& s = fronts.snaxels[i];
+        snaxel_qi[i] = margins && contour.snaxel_margin[i] < 0.0 ? kNotDrawn
+                                                                 : qi(snaxel_ray(s, engine.position(s), engine.normal(s)));
+    });
+
+    // The point where QI stops being `from` between snaxels a and b.
+    auto change_point = [&](std::int32_t ia, std::int32_t ib, int from) {
+        if (margins && (snaxel_qi[std::size_t(ia)] == kNotDrawn || snaxel_qi[std::size_t(ib)] == kNotDrawn))
+            return margin_zero(engine, contour, ia, ib);
+        const Snaxel& a = fronts.snaxels[std::size_t(ia)];
+        const Snaxel& b = fronts.snaxels[std::size_t(ib)];
+        const glm::dvec3 pa = engine.position(a), pb = engine.position(b);
+        const glm::dvec3 na = engine.normal(a), nb = engine.normal(b);
+        const std::int32_t face = common_face(topo, a, b);
+        double lo = 0.0, hi = 1.0;
+        for (int step = 0; step < options_.bisection_steps && face != MeshTopology::kNone; ++step) {
+            const double mid = 0.5 * (lo + hi);
+            const glm::dvec3 n = glm::normalize((1.0 - mid) * na + mid * nb);
+            if (qi(face_ray(face, (1.0 - mid) * pa + mid * pb, n)) == from) lo = mid;
+            else hi = mid;
+        }
+        const double u = 0.5 * (lo + hi);
+        return (1.0 - u) * pa + u * pb;
+    };
+    return cut_runs(engine, contour, snaxel_qi, change_point);
+}
+
+ContourVisibility drawn_parts(const SnaxelEngine& engine, const ContourResult& contour) {
+    if (contour.snaxel_margin.empty()) return {};
+    std::vector<int> cls(contour.fronts.snaxels.size());
+    for (std::size_t i = 0; i < cls.size(); ++i) cls[i] = contour.snaxel_margin[i] < 0.0 ? kNotDrawn : 0;
+    return cut_runs(engine, contour, cls,
+                    [&](std::int32_t a, std::int32_t b, int) { return margin_zero(engine, contour, a, b); });
 }
 
 } // namespace snaxels

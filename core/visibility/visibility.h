@@ -26,7 +26,12 @@ struct VisibilityOptions {
     bool original_neighbourhood = true;
 };
 
-/// A stretch of a loop with one QI. Points are 3-D, in the mesh's coordinates.
+/// The class of a snaxel, and a run, that its contour leaves out of the
+/// drawing (ContourResult::snaxel_margin < 0: a weak suggestive contour),
+/// in place of a QI: it is neither visible nor hidden, and not drawn.
+constexpr int kNotDrawn = -1;
+
+/// A stretch of a loop with one QI (or kNotDrawn). Points are 3-D, in the mesh's coordinates.
 struct VisibilityRun {
     int qi = 0;
     bool closed = false; ///< the whole loop, closed, at one QI
@@ -65,7 +70,9 @@ class VisibilitySampler {
     /// count, so open sheets seen from behind count too).
     int qi(const VisibilityRay& ray) const;
 
-    /// QI of every snaxel of @p contour and its loops cut into runs.
+    /// QI of every snaxel of @p contour and its loops cut into runs; the
+    /// snaxels the contour leaves out (snaxel_margin) are kNotDrawn, cut
+    /// from the others where the margin interpolates to zero.
     ContourVisibility classify(const SnaxelEngine& engine, const ContourResult& contour) const;
 
   private:
@@ -75,6 +82,11 @@ class VisibilitySampler {
     Camera camera_;
     VisibilityOptions options_;
 };
+
+/// Without hidden lines: the loops of a contour that leaves parts out
+/// (snaxel_margin) cut into drawn runs (QI 0) and kNotDrawn ones, as
+/// classify() cuts them; empty (every loop drawn whole) for the others.
+ContourVisibility drawn_parts(const SnaxelEngine& engine, const ContourResult& contour);
 
 /// The face two snaxels on edges of one face share (kNone if none).
 std::int32_t common_face(const MeshTopology& topology, const Snaxel& a, const Snaxel& b);
