@@ -78,7 +78,7 @@ class ContourFunction {
     /// True when f is a function of the vertices interpolated linearly
     /// along an edge (suggestive contours' kappa_r): its zero on an edge is
     /// then f_a / (f_a - f_b), and the vertex values come from the pose's
-    /// curvature (vertex_radial_curvature), not from evaluate_vertices.
+    /// curvature (suggestive_function in core/snaxel/curvature.h).
     bool linear_on_edge() const { return spec_.kind == ContourKind::Suggestive; }
     /// That v (the unit vector toward the viewer) when linear_in_normal().
     const glm::dvec3& normal_coefficient() const { return v_; }
@@ -95,7 +95,8 @@ class ContourFunction {
     double first_zero(const glm::dvec3& na, const glm::dvec3& nb, double f_a, double f_b) const;
 
     /// f at every vertex of @p topology's pose into @p out: evaluate_vertices
-    /// below, or for suggestive contours kappa_r from the pose's curvature.
+    /// below, or for suggestive contours suggestive_function (kappa_r on the
+    /// side seen) from the pose's curvature.
     void evaluate_vertices(const MeshTopology& topology, std::vector<double>& out) const;
     /// f at every vertex into @p out (sized to the vertices).
     void evaluate_vertices(std::span<const glm::dvec3> positions, std::span<const glm::dvec3> normals,

@@ -223,11 +223,28 @@ std::vector<double> radial_curvature(const MeshTopology& topo, const CurvatureFi
     return out;
 }
 
+double suggestive_away_value(const CurvatureField& field) { return field.typical > 0.0 ? field.typical : 1.0; }
+
+std::vector<double> suggestive_function(const MeshTopology& topo, const CurvatureField& field, const Camera& camera) {
+    std::vector<double> out(topo.n_vertices());
+    const double away = suggestive_away_value(field);
+    const auto P = topo.positions();
+    const auto N = topo.normals();
+    parallel_for(out.size(), [&](std::size_t v) {
+        const glm::dvec3 view = camera.to_viewer(P[v]);
+        const double nv = glm::dot(view, N[v]);
+        out[v] = nv > 0.0 ? field.normal_curvature(v, view - nv * N[v]) : away;
+    }, 4096);
+    return out;
+}
+
 namespace {
 
-/// The gradient of the piecewise-linear field @p f in face @p face (0 for a
-/// face of no area), and the face's area through @p area.
-glm::dvec3 face_gradient(const MeshTopology& topo, const std::vector<double>& f, std::int32_t face, double& area) {
+/// The gradient of the piecewise-linear field of vertex values @p f (f(v)
+/// the value of vertex v) in face @p face (0 for a face of no area), and the
+/// face's area through @p area.
+template <class Values>
+glm::dvec3 face_gradient(const MeshTopology& topo, Values&& f, std::int32_t face, double& area) {
     const auto& fv = topo.face_vertices()[std::size_t(face)];
     const auto P = topo.positions();
     const glm::dvec3 a = P[std::size_t(fv[0])], b = P[std::size_t(fv[1])], c = P[std::size_t(fv[2])];
@@ -237,16 +254,15 @@ glm::dvec3 face_gradient(const MeshTopology& topo, const std::vector<double>& f,
     if (!(twice_area2 > 0.0)) return glm::dvec3(0.0);
     // Sum of f_i times the gradient of corner i's barycentric coordinate,
     // (n x opposite edge) / (2 area).
-    return (f[std::size_t(fv[0])] * glm::cross(normal, c - b) + f[std::size_t(fv[1])] * glm::cross(normal, a - c) +
-            f[std::size_t(fv[2])] * glm::cross(normal, b - a)) /
+    return (f(fv[0]) * glm::cross(normal, c - b) + f(fv[1]) * glm::cross(normal, a - c) + f(fv[2]) * glm::cross(normal, b - a)) /
            twice_area2;
 }
 
 /// The derivative of @p f along the unit view direction projected onto
 /// vertex @p v's tangent plane, from the area-weighted mean of the gradients
 /// of the faces around v (smoother than one face's).
-double vertex_derivative_along_view(const MeshTopology& topo, const std::vector<double>& f, std::int32_t v,
-                                    const Camera& camera) {
+template <class Values>
+double vertex_derivative_along_view(const MeshTopology& topo, Values&& f, std::int32_t v, const Camera& camera) {
     glm::dvec3 sum(0.0);
     double total = 0.0;
     for (std::int32_t i = topo.ring_start()[std::size_t(v)]; i < topo.ring_start()[std::size_t(v) + 1]; ++i) {
@@ -274,9 +290,10 @@ double vertex_derivative_along_view(const MeshTopology& topo, const std::vector<
 
 } // namespace
 
-std::vector<double> suggestive_margins(const MeshTopology& topo, const std::vector<double>& kr, const Fronts& fronts,
-                                       const Camera& camera, const ContourSpec& spec, double typical) {
+std::vector<double> suggestive_margins(const MeshTopology& topo, const CurvatureField& field, const std::vector<double>& kr,
+                                       const Fronts& fronts, const Camera& camera, const ContourSpec& spec) {
     const std::size_t n = fronts.snaxels.size();
+    const double typical = field.typical, away = suggestive_away_value(field);
     std::vector<double> margin(n);
     const double scale = typical > 0.0 ? 1.0 / (typical * typical) : 0.0, most_facing = std::cos(glm::radians(spec.min_angle));
     const auto P = topo.positions();
@@ -289,7 +306,11 @@ std::vector<double> suggestive_margins(const MeshTopology& topo, const std::vect
         const glm::dvec3 p = (1.0 - s.t) * P[std::size_t(s.inside)] + s.t * P[std::size_t(s.outside)];
         const glm::dvec3 nrm = slerp_normal(N[std::size_t(s.inside)], N[std::size_t(s.outside)], s.t);
         const double nv = glm::dot(nrm, camera.to_viewer(p));
-        margin[i] = std::min(most_facing - nv, nv);
+        // A snaxel on an edge to a vertex facing away lies on the rim of the
+        // side seen, a zero of suggestive_function only: never drawn.
+        const bool rim = !(glm::dot(N[std::size_t(s.outside)], camera.to_viewer(P[std::size_t(s.outside)])) > 0.0) ||
+                         !(glm::dot(N[std::size_t(s.inside)], camera.to_viewer(P[std::size_t(s.inside)])) > 0.0);
+        margin[i] = rim ? -1.0 : std::min(most_facing - nv, nv);
     }, 4096);
     // The derivative at each end vertex of the other snaxels, once per vertex.
     std::vector<std::int32_t> slot(topo.n_vertices(), -1), ends;
@@ -303,7 +324,16 @@ std::vector<double> suggestive_margins(const MeshTopology& topo, const std::vect
     }
     std::vector<double> derivative(ends.size());
     parallel_for(ends.size(), [&](std::size_t k) {
-        derivative[k] = vertex_derivative_along_view(topo, kr, ends[k], camera);
+        // kappa_r itself, also at the neighbours facing away (where @p kr
+        // holds suggestive_function's stand-in; a true kappa_r of the same
+        // value is recomputed, to itself).
+        auto radial = [&](std::int32_t j) {
+            if (kr[std::size_t(j)] != away) return kr[std::size_t(j)];
+            const glm::dvec3 view = camera.to_viewer(P[std::size_t(j)]);
+            const glm::dvec3 nj = N[std::size_t(j)];
+            return field.normal_curvature(std::size_t(j), view - glm::dot(view, nj) * nj);
+        };
+        derivative[k] = vertex_derivative_along_view(topo, radial, ends[k], camera);
     }, 1024);
     for (std::size_t i = 0; i < n; ++i) {
         if (margin[i] < 0.0) continue;
@@ -318,7 +348,7 @@ std::vector<double> suggestive_margins(const MeshTopology& topo, const std::vect
 double derivative_along_view(const MeshTopology& topo, const std::vector<double>& f, std::int32_t face,
                              const glm::dvec3& p, const Camera& camera) {
     double area = 0.0;
-    const glm::dvec3 gradient = face_gradient(topo, f, face, area);
+    const glm::dvec3 gradient = face_gradient(topo, [&](std::int32_t v) { return f[std::size_t(v)]; }, face, area);
     if (!(area > 0.0)) return 0.0;
     const auto& fv = topo.face_vertices()[std::size_t(face)];
     const auto P = topo.positions();

@@ -55,6 +55,17 @@ std::shared_ptr<const CurvatureField> pose_curvature(const MeshTopology& topolog
 /// view is along the normal (w vanishes).
 std::vector<double> radial_curvature(const MeshTopology& topology, const CurvatureField& field, const Camera& camera);
 
+/// The function whose zeros the suggestive kind tracks: kappa_r
+/// (radial_curvature) at the vertices facing the viewer, and a positive
+/// value (the typical curvature) at those facing away. Suggestive contours
+/// lie on the side seen; the zeros of kappa_r beyond it (half of a noisy
+/// mesh's) are then not tracked. Its zeros also run along the rim between
+/// the two sides where kappa_r < 0 on the near side: suggestive_margins
+/// leaves those out.
+std::vector<double> suggestive_function(const MeshTopology& topology, const CurvatureField& field, const Camera& camera);
+/// The value suggestive_function gives a vertex facing away.
+double suggestive_away_value(const CurvatureField& field);
+
 /// The derivative along w (unit) of the piecewise-linear field @p f of
 /// vertex values, in face @p face, seen from @p camera at point @p p of the
 /// face: the face's gradient of f dotted with the unit projection of the
@@ -64,22 +75,22 @@ double derivative_along_view(const MeshTopology& topology, const std::vector<dou
                              const glm::dvec3& p, const Camera& camera);
 
 /// Where a suggestive contour is drawn (DeCarlo et al. 2003's pruning). Per
-/// snaxel of @p fronts, zeros of @p kr (the radial curvature at every
-/// vertex, seen from @p camera): the least of three margins, >= 0 where the
-/// snaxel is drawn, each free of the mesh's scale:
+/// snaxel of @p fronts, zeros of @p kr (suggestive_function's values from
+/// @p field, the pose's curvature, seen from @p camera): the least of three
+/// margins, >= 0 where the snaxel is drawn, each free of the mesh's scale:
 ///   - the derivative of kappa_r along the view (at the edge's two ends from
 ///     the area-weighted mean gradient of their faces, interpolated), over
-///     the square of the mesh's typical curvature @p typical
-///     (CurvatureField::typical), less spec.k: only zeros where kappa_r
-///     grows toward the viewer are suggestive contours, and weak ones are
-///     noise;
+///     the square of the mesh's typical curvature (CurvatureField::typical),
+///     less spec.k: only zeros where kappa_r grows toward the viewer are
+///     suggestive contours, and weak ones are noise;
 ///   - cos(spec.min_angle) - N.V: where the surface faces the viewer, w
 ///     (and so kappa_r) turns unstable;
-///   - N.V: suggestive contours lie on the side seen from the camera.
+///   - N.V: suggestive contours lie on the side seen from the camera; a
+///     snaxel on an edge with an end vertex facing away gets -1.
 /// The drawing cuts a loop where the margin changes sign, between two
 /// snaxels where it interpolates to zero. (Where the view terms are already
 /// negative the derivative is not computed and the margin is theirs.)
-std::vector<double> suggestive_margins(const MeshTopology& topology, const std::vector<double>& kr, const Fronts& fronts,
-                                       const Camera& camera, const ContourSpec& spec, double typical);
+std::vector<double> suggestive_margins(const MeshTopology& topology, const CurvatureField& field, const std::vector<double>& kr,
+                                       const Fronts& fronts, const Camera& camera, const ContourSpec& spec);
 
 } // namespace snaxels

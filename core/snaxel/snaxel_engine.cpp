@@ -183,8 +183,8 @@ void set_snaxel_margins(const MeshTopology& topology, const Camera& camera, Cont
         result.snaxel_margin.clear();
         return;
     }
-    result.snaxel_margin = suggestive_margins(topology, result.vertex_f, result.fronts, camera, result.spec,
-                                              pose_curvature(topology)->typical);
+    result.snaxel_margin =
+        suggestive_margins(topology, *pose_curvature(topology), result.vertex_f, result.fronts, camera, result.spec);
 }
 
 ContourResult SnaxelEngine::compute(const ContourSpec& spec, const Camera& camera,
