@@ -1,11 +1,18 @@
 #include "ui/styleeditor.h"
 
+#include <QAbstractItemView>
+#include <QCompleter>
 #include <QFontDatabase>
+#include <QKeyEvent>
 #include <QLabel>
+#include <QScrollBar>
+#include <QStringListModel>
 #include <QRegularExpression>
 #include <QSyntaxHighlighter>
 #include <QTextBlock>
 #include <QVBoxLayout>
+
+#include <functional>
 
 namespace snaxels::ui {
 namespace {
@@ -45,7 +52,92 @@ class XmlHighlighter : public QSyntaxHighlighter {
     }
 };
 
+bool name_char(QChar c) { return c.isLetterOrNumber() || c == '-' || c == '_'; }
+
+/// The text edit of the style editor: while the completer's popup is open,
+/// the keys that choose or dismiss go to it (the completer hands every key
+/// to the edit first, calling its handler directly); after a key is typed,
+/// @p typed says which, so the editor can offer what fits.
+class CompletingEdit : public QPlainTextEdit {
+  public:
+    CompletingEdit(QWidget* parent, QCompleter* completer, std::function<void(bool forced)> offer)
+        : QPlainTextEdit(parent), completer_(completer), offer_(std::move(offer)) {}
+
+  protected:
+    void keyPressEvent(QKeyEvent* key) override {
+        if (completer_->popup()->isVisible()) {
+            switch (key->key()) {
+            case Qt::Key_Enter:
+            case Qt::Key_Return:
+            case Qt::Key_Tab:
+            case Qt::Key_Escape:
+            case Qt::Key_Backtab: key->ignore(); return; // the completer's popup takes these
+            default: break;
+            }
+        }
+        if (key->key() == Qt::Key_Space && (key->modifiers() & Qt::ControlModifier)) {
+            offer_(true);
+            return;
+        }
+        QPlainTextEdit::keyPressEvent(key);
+        const QString typed = key->text();
+        if (!typed.isEmpty() && typed[0].isPrint()) offer_(typed == "<" || typed == "\"" || typed == " ");
+        else if (key->key() == Qt::Key_Backspace && completer_->popup()->isVisible()) offer_(false);
+    }
+
+  private:
+    QCompleter* completer_;
+    std::function<void(bool)> offer_;
+};
+
 } // namespace
+
+StyleCompletion style_completion_at(const QString& text, int position) {
+    StyleCompletion out;
+    const QString before = text.left(std::clamp(position, 0, int(text.size())));
+    const int open = int(before.lastIndexOf('<'));
+    if (open < 0 || before.lastIndexOf('>') > open) return out; // not inside a tag
+    const QString tag = before.mid(open + 1);
+    if (tag.startsWith('/') || tag.startsWith('!') || tag.startsWith('?')) return out;
+    int name_end = 0;
+    while (name_end < tag.size() && name_char(tag[name_end])) ++name_end;
+    if (name_end == tag.size()) { // still typing the element's name
+        out.kind = StyleCompletion::Kind::Element;
+        out.prefix = tag;
+        for (const StyleElement& e : style_vocabulary()) out.candidates << QString::fromStdString(e.name);
+        return out;
+    }
+    const StyleElement* element = style_element(tag.left(name_end).toStdString());
+    if (!element || !tag[name_end].isSpace()) return out;
+    if (tag.count('"') % 2 == 1) { // inside an attribute's value
+        const int quote = int(tag.lastIndexOf('"'));
+        int end = quote - 1;
+        while (end >= 0 && tag[end].isSpace()) --end;
+        if (end < 0 || tag[end] != '=') return out;
+        --end;
+        while (end >= 0 && tag[end].isSpace()) --end;
+        int start = end;
+        while (start >= 0 && name_char(tag[start])) --start;
+        const std::string attribute = tag.mid(start + 1, end - start).toStdString();
+        for (const StyleAttribute& a : element->attributes)
+            if (a.name == attribute)
+                for (const std::string& word : a.values) out.candidates << QString::fromStdString(word);
+        out.kind = out.candidates.isEmpty() ? StyleCompletion::Kind::None : StyleCompletion::Kind::Value;
+        out.prefix = tag.mid(quote + 1);
+        return out;
+    }
+    int start = int(tag.size());
+    while (start > name_end && name_char(tag[start - 1])) --start;
+    if (!tag[start - 1].isSpace()) return out; // right after a value's closing quote
+    out.kind = StyleCompletion::Kind::Attribute;
+    out.prefix = tag.mid(start);
+    for (const StyleAttribute& a : element->attributes) {
+        const QString name = QString::fromStdString(a.name);
+        const QRegularExpression present("(^|\\s)" + QRegularExpression::escape(name) + "\\s*=");
+        if (!tag.left(start).contains(present)) out.candidates << name;
+    }
+    return out;
+}
 
 QString initial_style_text() {
     return QStringLiteral(R"(<?xml version="1.0" encoding="UTF-8"?>
@@ -64,7 +156,10 @@ QString initial_style_text() {
 )");
 }
 
-StyleEditor::StyleEditor(QWidget* parent) : QWidget(parent), edit_(new QPlainTextEdit(this)), status_(new QLabel(this)) {
+StyleEditor::StyleEditor(QWidget* parent)
+    : QWidget(parent), completer_(new QCompleter(this)), completions_(new QStringListModel(this)) {
+    edit_ = new CompletingEdit(this, completer_, [this](bool forced) { complete(forced); });
+    status_ = new QLabel(this);
     auto* layout = new QVBoxLayout(this);
     layout->setContentsMargins(0, 0, 0, 0);
     layout->addWidget(edit_);
@@ -77,7 +172,48 @@ StyleEditor::StyleEditor(QWidget* parent) : QWidget(parent), edit_(new QPlainTex
     debounce_.setInterval(300);
     connect(&debounce_, &QTimer::timeout, this, &StyleEditor::apply);
     connect(edit_, &QPlainTextEdit::textChanged, this, [this] { debounce_.start(); });
+    completer_->setModel(completions_);
+    completer_->setWidget(edit_);
+    completer_->setCompletionMode(QCompleter::PopupCompletion);
+    completer_->setCaseSensitivity(Qt::CaseInsensitive);
+    connect(completer_, qOverload<const QString&>(&QCompleter::activated), this, &StyleEditor::insertCompletion);
     setText(initial_style_text(), "style");
+}
+
+void StyleEditor::complete(bool forced) {
+    const QTextCursor cursor = edit_->textCursor();
+    const StyleCompletion c = style_completion_at(edit_->toPlainText(), cursor.position());
+    if (c.kind == StyleCompletion::Kind::None || (!forced && c.prefix.isEmpty() && c.kind != StyleCompletion::Kind::Value)) {
+        completer_->popup()->hide();
+        return;
+    }
+    completions_->setStringList(c.candidates);
+    completer_->setCompletionPrefix(c.prefix);
+    if (completer_->completionCount() == 0 ||
+        (completer_->completionCount() == 1 && completer_->currentCompletion() == c.prefix)) {
+        completer_->popup()->hide();
+        return;
+    }
+    completer_->popup()->setCurrentIndex(completer_->completionModel()->index(0, 0));
+    QRect rect = edit_->cursorRect();
+    rect.setWidth(completer_->popup()->sizeHintForColumn(0) + completer_->popup()->verticalScrollBar()->sizeHint().width());
+    completer_->complete(rect);
+}
+
+void StyleEditor::insertCompletion(const QString& word) {
+    QTextCursor cursor = edit_->textCursor();
+    const StyleCompletion c = style_completion_at(edit_->toPlainText(), cursor.position());
+    if (c.kind == StyleCompletion::Kind::None) return;
+    cursor.movePosition(QTextCursor::Left, QTextCursor::KeepAnchor, int(c.prefix.size()));
+    if (c.kind == StyleCompletion::Kind::Attribute) {
+        cursor.insertText(word + "=\"\"");
+        cursor.movePosition(QTextCursor::Left);
+        edit_->setTextCursor(cursor);
+        complete(false); // the attribute's words, if it has some
+        return;
+    }
+    cursor.insertText(word);
+    edit_->setTextCursor(cursor);
 }
 
 void StyleEditor::setText(const QString& text, const QString& source) {

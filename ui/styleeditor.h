@@ -9,9 +9,25 @@
 
 #include "snaxels/style/style.h"
 
+class QCompleter;
 class QLabel;
+class QStringListModel;
 
 namespace snaxels::ui {
+
+/// What the style editor can complete at a place in the text: an element's
+/// name after '<', an attribute's name inside a tag (those the element
+/// takes and the tag does not have yet), or an attribute's value inside its
+/// quotes (the words it takes). The vocabulary is the parser's
+/// (style_vocabulary()).
+struct StyleCompletion {
+    enum class Kind { None, Element, Attribute, Value } kind = Kind::None;
+    QString prefix;        ///< what is typed of the word so far
+    QStringList candidates; ///< every word that fits there, in the vocabulary's order
+};
+
+/// The completion at @p position (a cursor position) in @p text.
+StyleCompletion style_completion_at(const QString& text, int position);
 
 class StyleEditor : public QWidget {
     Q_OBJECT
@@ -25,6 +41,9 @@ class StyleEditor : public QWidget {
     /// The last parse problem, "LINE:COL: message", or empty.
     QString problem() const { return problem_; }
     QPlainTextEdit* editor() const { return edit_; }
+    /// The completer: it pops up as an element, attribute or value is typed
+    /// (and on Ctrl+Space), and Enter or Tab inserts the word chosen.
+    QCompleter* completer() const { return completer_; }
 
   signals:
     /// A new style parsed and is in force.
@@ -34,7 +53,12 @@ class StyleEditor : public QWidget {
 
   private:
     void apply();
+    /// Offers the completions at the cursor (@p forced: even before a word starts).
+    void complete(bool forced);
+    void insertCompletion(const QString& word);
 
+    QCompleter* completer_;
+    QStringListModel* completions_;
     QPlainTextEdit* edit_;
     QLabel* status_;
     QTimer debounce_;

@@ -16,6 +16,42 @@
 #include "snaxels/snaxel/feature_edges.h"
 
 namespace snaxels {
+const std::vector<StyleElement>& style_vocabulary() {
+    static const std::vector<StyleElement> vocabulary = [] {
+        const std::vector<StyleAttribute> stroke = {{"draw", {"true", "false"}},
+                                                    {"stroke", {}},
+                                                    {"width", {}},
+                                                    {"opacity", {}},
+                                                    {"dash", {}},
+                                                    {"dash-space", {"screen", "surface"}},
+                                                    {"cap", {"butt", "round", "square"}},
+                                                    {"join", {"miter", "round", "bevel"}},
+                                                    {"smoothing", {}}};
+        return std::vector<StyleElement>{
+            {"style", {{"version", {"1"}}}},
+            {"canvas", {{"width", {}}, {"height", {}}, {"margin", {}}, {"background", {"none"}}}},
+            {"light", {{"dir", {}}, {"pos", {}}}},
+            {"contour",
+             {{"kind", {"visual", "shadow", "isophote", "gleam", "parabolic", "crease", "border", "suggestive"}},
+              {"k", {}},
+              {"angle", {}},
+              {"min-length", {}},
+              {"min-derivative", {}},
+              {"min-angle", {}}}},
+            {"visible", stroke},
+            {"hidden", stroke},
+            {"region", {{"class", {"shadow", "lit", "band", "highlight"}}, {"k", {}}, {"fill", {}}, {"opacity", {}}, {"erosion", {}}}},
+        };
+    }();
+    return vocabulary;
+}
+
+const StyleElement* style_element(const std::string& name) {
+    for (const StyleElement& e : style_vocabulary())
+        if (e.name == name) return &e;
+    return nullptr;
+}
+
 namespace {
 
 // CSS colour keywords accepted besides #rgb and #rrggbb, with their values.
@@ -64,12 +100,23 @@ struct Parser {
     void warn(const pugi::xml_node& node, const std::string& message) const {
         if (warnings) warnings->push_back(where(node.offset_debug(), message));
     }
-    // Warns about every attribute of `node` not in `known`.
-    void check_attributes(const pugi::xml_node& node, std::initializer_list<const char*> known) const {
+    // Warns about every attribute of `node` that its element (in the
+    // vocabulary) does not take.
+    void check_attributes(const pugi::xml_node& node) const {
+        const StyleElement* element = style_element(node.name());
         for (const pugi::xml_attribute a : node.attributes()) {
-            const bool ok = std::any_of(known.begin(), known.end(), [&](const char* k) { return std::string(k) == a.name(); });
+            const bool ok = element && std::any_of(element->attributes.begin(), element->attributes.end(),
+                                                   [&](const StyleAttribute& k) { return k.name == a.name(); });
             if (!ok) warn(node, "unknown attribute '" + std::string(a.name()) + "' on <" + node.name() + ">");
         }
+    }
+    // The words attribute `name` of `node`'s element takes (the vocabulary's).
+    static const std::vector<std::string>& words(const pugi::xml_node& node, const char* name) {
+        static const std::vector<std::string> none;
+        if (const StyleElement* element = style_element(node.name()))
+            for (const StyleAttribute& a : element->attributes)
+                if (a.name == name) return a.values;
+        return none;
     }
 
     double number(const pugi::xml_node& node, const char* name, double fallback, double lo, double hi) const {
@@ -101,15 +148,15 @@ struct Parser {
         if (v == "false" || v == "no" || v == "0") return false;
         fail(node, std::string(name) + "=\"" + v + "\" must be true or false");
     }
-    std::string choice(const pugi::xml_node& node, const char* name, const std::string& fallback,
-                       std::initializer_list<const char*> allowed) const {
+    // The attribute's value, one of its words in the vocabulary.
+    std::string choice(const pugi::xml_node& node, const char* name, const std::string& fallback) const {
         const pugi::xml_attribute a = node.attribute(name);
         if (!a) return fallback;
         const std::string v = a.value();
         std::string list;
-        for (const char* c : allowed) {
+        for (const std::string& c : words(node, name)) {
             if (v == c) return v;
-            list += (list.empty() ? "" : ", ") + std::string(c);
+            list += (list.empty() ? "" : ", ") + c;
         }
         fail(node, std::string(name) + "=\"" + v + "\" must be one of " + list);
     }
@@ -140,7 +187,7 @@ struct Parser {
     }
 
     StrokeStyle stroke(const pugi::xml_node& node, StrokeStyle s) const {
-        check_attributes(node, {"draw", "stroke", "width", "opacity", "dash", "dash-space", "cap", "join", "smoothing"});
+        check_attributes(node);
         s.draw = boolean(node, "draw", s.draw);
         s.colour = colour(node, "stroke", s.colour, false);
         s.width = number(node, "width", s.width, 0.0, 1000.0);
@@ -170,9 +217,9 @@ struct Parser {
                 s.dash.insert(s.dash.end(), copy.begin(), copy.end());
             }
         }
-        s.dash_on_surface = choice(node, "dash-space", s.dash_on_surface ? "surface" : "screen", {"screen", "surface"}) == "surface";
-        s.cap = choice(node, "cap", s.cap, {"butt", "round", "square"});
-        s.join = choice(node, "join", s.join, {"miter", "round", "bevel"});
+        s.dash_on_surface = choice(node, "dash-space", s.dash_on_surface ? "surface" : "screen") == "surface";
+        s.cap = choice(node, "cap", s.cap);
+        s.join = choice(node, "join", s.join);
         s.smoothing = number(node, "smoothing", s.smoothing, 0.0, 100.0);
         return s;
     }
@@ -184,7 +231,7 @@ struct Parser {
         const pugi::xml_node root = doc.document_element();
         if (std::string(root.name()) != "style")
             fail(root, "the root element must be <style>, not <" + std::string(root.name()) + ">");
-        check_attributes(root, {"version"});
+        check_attributes(root);
         if (root.attribute("version") && std::string(root.attribute("version").value()) != "1")
             fail(root, "version=\"" + std::string(root.attribute("version").value()) + "\" is not supported (only 1)");
         Style style;
@@ -192,13 +239,13 @@ struct Parser {
             if (child.type() != pugi::node_element) continue;
             const std::string name = child.name();
             if (name == "canvas") {
-                check_attributes(child, {"width", "height", "margin", "background"});
+                check_attributes(child);
                 style.width = int(number(child, "width", style.width, 16, 20000));
                 style.height = int(number(child, "height", style.height, 16, 20000));
                 style.margin = number(child, "margin", style.margin, 0.0, 10000.0);
                 style.background = colour(child, "background", style.background, true);
             } else if (name == "light") {
-                check_attributes(child, {"dir", "pos"});
+                check_attributes(child);
                 const bool dir = bool(child.attribute("dir")), pos = bool(child.attribute("pos"));
                 if (dir == pos) fail(child, "<light> takes either dir=\"x,y,z\" or pos=\"x,y,z\"");
                 Light light;
@@ -212,7 +259,7 @@ struct Parser {
                 }
                 style.light = light;
             } else if (name == "contour") {
-                check_attributes(child, {"kind", "k", "angle", "min-length", "min-derivative", "min-angle"});
+                check_attributes(child);
                 const std::string kind = child.attribute("kind").value();
                 ContourSpec spec;
                 if (kind != "crease" && child.attribute("angle")) fail(child, "only a crease contour takes an angle");
@@ -243,7 +290,11 @@ struct Parser {
                     spec.kind = kind == "isophote" ? ContourKind::Isophote : ContourKind::Gleam;
                     spec.k = number(child, "k", 0.0, -1.0, 1.0);
                 } else {
-                    fail(child, "kind=\"" + kind + "\" must be visual, shadow, isophote, gleam, parabolic, crease, border or suggestive");
+                    std::string kinds;
+                    const auto& all = words(child, "kind");
+                    for (std::size_t i = 0; i < all.size(); ++i)
+                        kinds += (i ? i + 1 == all.size() ? " or " : ", " : "") + all[i];
+                    fail(child, "kind=\"" + kind + "\" must be " + kinds);
                 }
                 for (const ContourStyle& existing : style.contours)
                     if (existing.spec.label() == spec.label()) fail(child, "a second <contour> for " + spec.label());
@@ -257,9 +308,9 @@ struct Parser {
                 }
                 style.contours.push_back(cs);
             } else if (name == "region") {
-                check_attributes(child, {"class", "k", "fill", "opacity", "erosion"});
+                check_attributes(child);
                 RegionStyle rs;
-                const std::string cls = choice(child, "class", "", {"shadow", "lit", "band", "highlight"});
+                const std::string cls = choice(child, "class", "");
                 if (cls.empty()) fail(child, "<region> needs class=\"shadow|lit|band|highlight\"");
                 rs.cls = *parse_region_class(cls); // choice() admits only the names
                 const bool needs_k = region_class_has_level(rs.cls);

@@ -89,6 +89,28 @@ class StyleError : public Error {
     StyleDiagnostic diagnostic_;
 };
 
+/// One attribute of a style element: its name and the words it takes: all
+/// of them where it is one of a few words (cap, kind, class...), the special
+/// ones beside numbers or colours (background="none"), else none.
+struct StyleAttribute {
+    std::string name;
+    std::vector<std::string> values;
+};
+
+/// One element of the style language, with every attribute it takes.
+struct StyleElement {
+    std::string name;
+    std::vector<StyleAttribute> attributes;
+};
+
+/// The style language's vocabulary: every element, its attributes and their
+/// words. The parser checks documents against it (an attribute not listed
+/// warns; a word not listed is an error), and the application's style
+/// editor completes from it, so the two cannot drift apart.
+const std::vector<StyleElement>& style_vocabulary();
+/// The element called @p name in style_vocabulary(), or nullptr.
+const StyleElement* style_element(const std::string& name);
+
 /// Parses style XML. Errors throw StyleError; unknown elements and
 /// attributes are added to @p warnings (named, with their position) and
 /// otherwise ignored. @p source names the document in messages.

@@ -1,0 +1,124 @@
+// The style editor's completion, offscreen: what it offers at each place in
+// a style document (element names after '<', the attributes an element
+// takes and does not have yet, an attribute's words inside its quotes), that
+// every word it offers is one the parser takes, and that typing with the
+// popup inserts the word chosen. Expected words are spelled out here.
+#include <QAbstractItemView>
+#include <QCompleter>
+#include <QPlainTextEdit>
+#include <QTest>
+
+#include "snaxels/style/style.h"
+#include "ui/styleeditor.h"
+
+using snaxels::ui::StyleCompletion;
+using snaxels::ui::StyleEditor;
+using snaxels::ui::style_completion_at;
+
+namespace {
+
+StyleCompletion at_end(const QString& text) { return style_completion_at(text, int(text.size())); }
+
+} // namespace
+
+class TestStyleEditor : public QObject {
+    Q_OBJECT
+  private slots:
+    void offersWhatFitsWhereTheCursorIs() {
+        const StyleCompletion element = at_end("<style version=\"1\">\n  <vis");
+        QCOMPARE(element.kind, StyleCompletion::Kind::Element);
+        QCOMPARE(element.prefix, QString("vis"));
+        for (const char* name : {"canvas", "light", "contour", "visible", "hidden", "region"})
+            QVERIFY2(element.candidates.contains(name), name);
+
+        const StyleCompletion attribute = at_end("<contour ");
+        QCOMPARE(attribute.kind, StyleCompletion::Kind::Attribute);
+        QCOMPARE(attribute.prefix, QString());
+        QCOMPARE(attribute.candidates, (QStringList{"kind", "k", "angle", "min-length", "min-derivative", "min-angle"}));
+        // Those already written are not offered again.
+        const StyleCompletion rest = at_end("<contour kind=\"suggestive\" min-d");
+        QCOMPARE(rest.kind, StyleCompletion::Kind::Attribute);
+        QCOMPARE(rest.prefix, QString("min-d"));
+        QVERIFY(!rest.candidates.contains("kind"));
+        QVERIFY(rest.candidates.contains("min-derivative"));
+
+        const StyleCompletion value = at_end("<contour kind=\"sug");
+        QCOMPARE(value.kind, StyleCompletion::Kind::Value);
+        QCOMPARE(value.prefix, QString("sug"));
+        QCOMPARE(value.candidates, (QStringList{"visual", "shadow", "isophote", "gleam", "parabolic", "crease", "border",
+                                                "suggestive"}));
+        QCOMPARE(at_end("<hidden cap=\"").candidates, (QStringList{"butt", "round", "square"}));
+        QCOMPARE(at_end("<region class=\"").candidates, (QStringList{"shadow", "lit", "band", "highlight"}));
+
+        // Nothing outside a tag, in a closing tag or comment, in a number's
+        // quotes, or on an element the language does not have.
+        QCOMPARE(at_end("<contour kind=\"visual\">\n  ").kind, StyleCompletion::Kind::None);
+        QCOMPARE(at_end("</cont").kind, StyleCompletion::Kind::None);
+        QCOMPARE(at_end("<!-- a note <").kind, StyleCompletion::Kind::Element); // '<' opens a tag even here
+        QCOMPARE(at_end("<visible width=\"1").kind, StyleCompletion::Kind::None);
+        QCOMPARE(at_end("<banana ").kind, StyleCompletion::Kind::None);
+        QCOMPARE(at_end("<contour kind=\"visual\"").kind, StyleCompletion::Kind::None);
+    }
+
+    // Every attribute and word offered is one the parser takes: a document
+    // using each parses without an "unknown attribute" warning.
+    void offersOnlyWhatTheParserTakes() {
+        for (const snaxels::StyleElement& e : snaxels::style_vocabulary()) {
+            if (e.name == "style") continue;
+            const StyleCompletion c = at_end(QString("<%1 ").arg(QString::fromStdString(e.name)));
+            QCOMPARE(c.candidates.size(), qsizetype(e.attributes.size()));
+            for (const snaxels::StyleAttribute& a : e.attributes) {
+                for (const std::string& word : a.values) {
+                    QString attrs = QString("%1=\"%2\"").arg(QString::fromStdString(a.name), QString::fromStdString(word));
+                    if (e.name == "region" && a.name == "class" && (word == "band" || word == "highlight")) attrs += " k=\"0.5\"";
+                    if (e.name == "contour" && a.name == "kind" && (word == "isophote" || word == "gleam")) attrs += " k=\"0.5\"";
+                    const QString inner = QString("<%1 %2/>").arg(QString::fromStdString(e.name), attrs);
+                    const QString doc = e.name == "visible" || e.name == "hidden"
+                                            ? QString("<style version=\"1\"><contour kind=\"visual\">%1</contour></style>").arg(inner)
+                                            : QString("<style version=\"1\">%1</style>").arg(inner);
+                    std::vector<snaxels::StyleDiagnostic> warnings;
+                    try {
+                        snaxels::parse_style(doc.toStdString(), "test", &warnings);
+                    } catch (const std::exception& ex) {
+                        QFAIL(qPrintable(doc + ": " + ex.what()));
+                    }
+                    QVERIFY2(warnings.empty(), qPrintable(doc));
+                }
+            }
+        }
+    }
+
+    // Typing in the editor: the popup opens on the value's quote, narrows as
+    // letters come, and Enter puts the word in; an attribute chosen comes
+    // with its quotes and the cursor between them.
+    void typingWithThePopupInsertsTheWord() {
+        StyleEditor editor;
+        editor.resize(600, 400);
+        editor.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&editor));
+        QPlainTextEdit* edit = editor.editor();
+        edit->setFocus();
+        edit->moveCursor(QTextCursor::End);
+        QTest::keyClicks(edit, "<contour kind=\"sug");
+        QVERIFY(editor.completer()->popup()->isVisible());
+        QCOMPARE(editor.completer()->currentCompletion(), QString("suggestive"));
+        QTest::keyClick(editor.completer()->popup(), Qt::Key_Return);
+        QVERIFY2(edit->toPlainText().endsWith("<contour kind=\"suggestive"), qPrintable(edit->toPlainText()));
+        QTest::keyClicks(edit, "\" min-d");
+        QVERIFY(editor.completer()->popup()->isVisible());
+        QTest::keyClick(editor.completer()->popup(), Qt::Key_Return);
+        QVERIFY2(edit->toPlainText().endsWith("<contour kind=\"suggestive\" min-derivative=\"\""), qPrintable(edit->toPlainText()));
+        QTest::keyClicks(edit, "3");
+        QVERIFY(edit->toPlainText().endsWith("min-derivative=\"3\""));
+        // Past the closing quote, Ctrl+Space offers the element's other attributes at once.
+        edit->moveCursor(QTextCursor::End);
+        QTest::keyClicks(edit, " ");
+        QTest::keyClick(edit, Qt::Key_Space, Qt::ControlModifier);
+        QVERIFY(editor.completer()->popup()->isVisible());
+        QCOMPARE(editor.completer()->completionCount(), 4); // k, angle, min-length, min-angle
+        QTest::keyClick(editor.completer()->popup(), Qt::Key_Escape);
+    }
+};
+
+QTEST_MAIN(TestStyleEditor)
+#include "test_styleeditor.moc"
