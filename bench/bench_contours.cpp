@@ -98,3 +98,16 @@ void curvature_bench(benchmark::State& state, const std::string& spec) {
     state.counters["vertices"] = double(p.topology.n_vertices());
 }
 BENCHMARK_CAPTURE(curvature_bench, horse, "horse.ply")->Unit(benchmark::kMillisecond);
+
+// The pose's curvature as suggestive contours read it: the tensors smoothed
+// (pose_curvature), on a fresh copy of the pose each time (a copy keeps none).
+void pose_curvature_bench(benchmark::State& state, const std::string& spec) {
+    const Prepared& p = prepared(spec);
+    for (auto _ : state) {
+        const MeshTopology fresh = p.topology.posed(std::make_shared<const MeshPose>(*p.topology.pose()));
+        const auto field = pose_curvature(fresh);
+        benchmark::DoNotOptimize(field->k1.data());
+    }
+    state.counters["vertices"] = double(p.topology.n_vertices());
+}
+BENCHMARK_CAPTURE(pose_curvature_bench, horse, "horse.ply")->Unit(benchmark::kMillisecond);

@@ -128,7 +128,86 @@ std::pair<glm::dvec3, glm::dvec3> vertex_frame(const MeshTopology& topo, std::si
     return {u, glm::cross(n, u)};
 }
 
+/// Vertex @p v's principal curvatures and directions from its second
+/// fundamental form [ku kuv; kuv kv] in the tangent frame (u, w): the
+/// Jacobi rotation that diagonalizes it, |k1| >= |k2|.
+void set_principal(CurvatureField& out, std::size_t v, const glm::dvec3& n, const glm::dvec3& u, const glm::dvec3& w,
+                   double ku, double kuv, double kv) {
+    double c = 1.0, s = 0.0, tt = 0.0;
+    if (kuv != 0.0) {
+        const double h = 0.5 * (kv - ku) / kuv;
+        tt = h < 0.0 ? 1.0 / (h - std::sqrt(1.0 + h * h)) : 1.0 / (h + std::sqrt(1.0 + h * h));
+        c = 1.0 / std::sqrt(1.0 + tt * tt);
+        s = tt * c;
+    }
+    double k1 = ku - tt * kuv, k2 = kv + tt * kuv;
+    glm::dvec3 d1 = c * u - s * w;
+    if (std::abs(k1) < std::abs(k2)) {
+        std::swap(k1, k2);
+        d1 = s * u + c * w;
+    }
+    out.k1[v] = k1;
+    out.k2[v] = k2;
+    out.dir1[v] = d1;
+    out.dir2[v] = glm::cross(n, d1);
+}
+
+/// The gradients over face @p face of its corners' barycentric coordinates,
+/// (n x opposite edge) / |n|^2, and the face's area through @p area (all 0
+/// for a face of no area). A linear interpolant's gradient is the sum of
+/// each corner's value times its vector.
+std::array<glm::dvec3, 3> corner_gradients(const MeshTopology& topo, std::int32_t face, double& area) {
+    const auto& fv = topo.face_vertices()[std::size_t(face)];
+    const auto P = topo.positions();
+    const glm::dvec3 a = P[std::size_t(fv[0])], b = P[std::size_t(fv[1])], c = P[std::size_t(fv[2])];
+    const glm::dvec3 normal = glm::cross(b - a, c - a);
+    const double twice_area2 = glm::dot(normal, normal);
+    area = 0.5 * std::sqrt(twice_area2);
+    if (!(twice_area2 > 0.0)) return {glm::dvec3(0.0), glm::dvec3(0.0), glm::dvec3(0.0)};
+    return {glm::cross(normal, c - b) / twice_area2, glm::cross(normal, a - c) / twice_area2,
+            glm::cross(normal, b - a) / twice_area2};
+}
+
+/// The median |k1| over the vertices with area (CurvatureField::typical).
+double typical_curvature(const CurvatureField& field) {
+    std::vector<double> magnitudes;
+    magnitudes.reserve(field.size());
+    for (std::size_t v = 0; v < field.size(); ++v)
+        if (field.area[v] > 0.0) magnitudes.push_back(std::abs(field.k1[v]));
+    if (magnitudes.empty()) return 0.0;
+    const auto middle = magnitudes.begin() + std::ptrdiff_t(magnitudes.size() / 2);
+    std::nth_element(magnitudes.begin(), middle, magnitudes.end());
+    return *middle;
+}
+
 } // namespace
+
+CurvatureField smoothed_curvatures(const MeshTopology& topo, const CurvatureField& field) {
+    CurvatureField out = field;
+    parallel_for(topo.n_vertices(), [&](std::size_t v) {
+        if (!(field.area[v] > 0.0)) return;
+        const auto [u, w] = vertex_frame(topo, v);
+        double total = 0.0, ku = 0.0, kuv = 0.0, kv = 0.0;
+        auto add = [&](std::size_t j) {
+            FaceForm form; // vertex j's form in its principal frame
+            form.t = field.dir1[j];
+            form.b = field.dir2[j];
+            form.ku = field.k1[j];
+            form.kv = field.k2[j];
+            const std::array<double, 3> k = project_form(form, u, w);
+            total += field.area[j];
+            ku += field.area[j] * k[0];
+            kuv += field.area[j] * k[1];
+            kv += field.area[j] * k[2];
+        };
+        add(v);
+        for (std::int32_t i = topo.ring_start()[v]; i < topo.ring_start()[v + 1]; ++i)
+            if (field.area[std::size_t(topo.ring()[std::size_t(i)])] > 0.0) add(std::size_t(topo.ring()[std::size_t(i)]));
+        set_principal(out, v, topo.normals()[v], u, w, ku / total, kuv / total, kv / total);
+    }, 1024);
+    out.typical = typical_curvature(out);
+    return out;
+}
 
 CurvatureField vertex_curvatures(const MeshTopology& topo) {
     const std::size_t nv = topo.n_vertices(), nf = topo.n_faces();
@@ -171,36 +250,49 @@ CurvatureField vertex_curvatures(const MeshTopology& topo) {
             out.dir2[v] = w;
             return;
         }
-        ku /= area, kuv /= area, kv /= area;
-        // The Jacobi rotation that diagonalizes [ku kuv; kuv kv].
-        double c = 1.0, s = 0.0, tt = 0.0;
-        if (kuv != 0.0) {
-            const double h = 0.5 * (kv - ku) / kuv;
-            tt = h < 0.0 ? 1.0 / (h - std::sqrt(1.0 + h * h)) : 1.0 / (h + std::sqrt(1.0 + h * h));
-            c = 1.0 / std::sqrt(1.0 + tt * tt);
-            s = tt * c;
-        }
-        double k1 = ku - tt * kuv, k2 = kv + tt * kuv;
-        glm::dvec3 d1 = c * u - s * w;
-        if (std::abs(k1) < std::abs(k2)) {
-            std::swap(k1, k2);
-            d1 = s * u + c * w;
-        }
-        out.k1[v] = k1;
-        out.k2[v] = k2;
-        out.dir1[v] = d1;
-        out.dir2[v] = glm::cross(topo.normals()[v], d1);
+        set_principal(out, v, topo.normals()[v], u, w, ku / area, kuv / area, kv / area);
     }, 1024);
-    std::vector<double> magnitudes;
-    magnitudes.reserve(nv);
-    for (std::size_t v = 0; v < nv; ++v)
-        if (out.area[v] > 0.0) magnitudes.push_back(std::abs(out.k1[v]));
-    if (!magnitudes.empty()) {
-        const auto middle = magnitudes.begin() + std::ptrdiff_t(magnitudes.size() / 2);
-        std::nth_element(magnitudes.begin(), middle, magnitudes.end());
-        out.typical = *middle;
-    }
+    out.typical = typical_curvature(out);
     return out;
+}
+
+void add_gradient_operator(const MeshTopology& topo, CurvatureField& field) {
+    const std::size_t nv = topo.n_vertices();
+    field.gradient_start.assign(nv + 1, 0);
+    for (std::size_t v = 0; v < nv; ++v) // v itself, then its neighbours in ring order
+        field.gradient_start[v + 1] = field.gradient_start[v] + 1 + (topo.ring_start()[v + 1] - topo.ring_start()[v]);
+    field.gradient_vertex.assign(std::size_t(field.gradient_start[nv]), 0);
+    field.gradient_weight.assign(std::size_t(field.gradient_start[nv]), glm::dvec3(0.0));
+    parallel_for(nv, [&](std::size_t v) {
+        const std::int32_t base = field.gradient_start[v], first = topo.ring_start()[v], last = topo.ring_start()[v + 1];
+        field.gradient_vertex[std::size_t(base)] = std::int32_t(v);
+        for (std::int32_t i = first; i < last; ++i) field.gradient_vertex[std::size_t(base + 1 + i - first)] = topo.ring()[std::size_t(i)];
+        auto slot = [&](std::int32_t j) {
+            if (j == std::int32_t(v)) return base;
+            for (std::int32_t i = first; i < last; ++i)
+                if (topo.ring()[std::size_t(i)] == j) return base + 1 + i - first;
+            return std::int32_t(-1);
+        };
+        double total = 0.0;
+        for (std::int32_t i = first; i < last; ++i) {
+            // Each face once: the one in which the edge to a neighbour leaves v.
+            const std::int32_t neighbour = topo.ring()[std::size_t(i)];
+            for (const std::int32_t face : topo.edge_faces()[std::size_t(topo.ring_edge()[std::size_t(i)])]) {
+                if (face == MeshTopology::kNone) continue;
+                const auto& fv = topo.face_vertices()[std::size_t(face)];
+                std::size_t c = 0;
+                while (c < 3 && fv[c] != std::int32_t(v)) ++c;
+                if (c == 3 || fv[(c + 1) % 3] != neighbour) continue;
+                double area = 0.0;
+                const std::array<glm::dvec3, 3> g = corner_gradients(topo, face, area);
+                for (std::size_t k = 0; k < 3; ++k)
+                    if (const std::int32_t s = slot(fv[k]); s >= 0) field.gradient_weight[std::size_t(s)] += area * g[k];
+                total += area;
+            }
+        }
+        if (total > 0.0)
+            for (std::int32_t k = base; k < field.gradient_start[v + 1]; ++k) field.gradient_weight[std::size_t(k)] /= total;
+    }, 1024);
 }
 
 std::shared_ptr<const CurvatureField> pose_curvature(const MeshTopology& topo) {
@@ -208,7 +300,10 @@ std::shared_ptr<const CurvatureField> pose_curvature(const MeshTopology& topo) {
     if (auto kept = cache.get()) return kept;
     // Computed outside the lock: the computation runs parallel loops, whose
     // workers may be asked for the same pose's curvature meanwhile.
-    return cache.keep(std::make_shared<const CurvatureField>(vertex_curvatures(topo)));
+    CurvatureField field = vertex_curvatures(topo);
+    for (int pass = 0; pass < kPoseCurvatureSmoothing; ++pass) field = smoothed_curvatures(topo, field);
+    add_gradient_operator(topo, field);
+    return cache.keep(std::make_shared<const CurvatureField>(std::move(field)));
 }
 
 std::vector<double> radial_curvature(const MeshTopology& topo, const CurvatureField& field, const Camera& camera) {
@@ -257,52 +352,22 @@ std::vector<double> suggestive_function(const MeshTopology& topo, const Curvatur
 
 namespace {
 
-/// The gradient of the piecewise-linear field of vertex values @p f (f(v)
-/// the value of vertex v) in face @p face (0 for a face of no area), and the
-/// face's area through @p area.
+/// The derivative along the unit view direction projected onto vertex @p v's
+/// tangent plane of the vertex values @p f (f(j) the value of vertex j),
+/// from the pose's gradient operator (CurvatureField::gradient_*: the
+/// area-weighted mean of the gradients of the faces around v, smoother than
+/// one face's).
 template <class Values>
-glm::dvec3 face_gradient(const MeshTopology& topo, Values&& f, std::int32_t face, double& area) {
-    const auto& fv = topo.face_vertices()[std::size_t(face)];
-    const auto P = topo.positions();
-    const glm::dvec3 a = P[std::size_t(fv[0])], b = P[std::size_t(fv[1])], c = P[std::size_t(fv[2])];
-    const glm::dvec3 normal = glm::cross(b - a, c - a);
-    const double twice_area2 = glm::dot(normal, normal);
-    area = 0.5 * std::sqrt(twice_area2);
-    if (!(twice_area2 > 0.0)) return glm::dvec3(0.0);
-    // Sum of f_i times the gradient of corner i's barycentric coordinate,
-    // (n x opposite edge) / (2 area).
-    return (f(fv[0]) * glm::cross(normal, c - b) + f(fv[1]) * glm::cross(normal, a - c) + f(fv[2]) * glm::cross(normal, b - a)) /
-           twice_area2;
-}
-
-/// The derivative of @p f along the unit view direction projected onto
-/// vertex @p v's tangent plane, from the area-weighted mean of the gradients
-/// of the faces around v (smoother than one face's).
-template <class Values>
-double vertex_derivative_along_view(const MeshTopology& topo, Values&& f, std::int32_t v, const ToViewer& to_viewer) {
-    glm::dvec3 sum(0.0);
-    double total = 0.0;
-    for (std::int32_t i = topo.ring_start()[std::size_t(v)]; i < topo.ring_start()[std::size_t(v) + 1]; ++i) {
-        // Each face once: the one in which the edge to a neighbour leaves v.
-        const std::int32_t neighbour = topo.ring()[std::size_t(i)];
-        for (const std::int32_t face : topo.edge_faces()[std::size_t(topo.ring_edge()[std::size_t(i)])]) {
-            if (face == MeshTopology::kNone) continue;
-            const auto& fv = topo.face_vertices()[std::size_t(face)];
-            std::size_t c = 0;
-            while (c < 3 && fv[c] != v) ++c;
-            if (c == 3 || fv[(c + 1) % 3] != neighbour) continue;
-            double area = 0.0;
-            const glm::dvec3 g = face_gradient(topo, f, face, area);
-            sum += area * g;
-            total += area;
-        }
-    }
-    if (!(total > 0.0)) return 0.0;
+double vertex_derivative_along_view(const MeshTopology& topo, const CurvatureField& field, Values&& f, std::int32_t v,
+                                    const ToViewer& to_viewer) {
+    glm::dvec3 gradient(0.0);
+    for (std::int32_t k = field.gradient_start[std::size_t(v)]; k < field.gradient_start[std::size_t(v) + 1]; ++k)
+        gradient += f(field.gradient_vertex[std::size_t(k)]) * field.gradient_weight[std::size_t(k)];
     const glm::dvec3 n = topo.normals()[std::size_t(v)];
     const glm::dvec3 view = to_viewer(topo.positions()[std::size_t(v)]);
     const glm::dvec3 w = view - glm::dot(view, n) * n;
     const double len = glm::length(w);
-    return len > 0.0 ? glm::dot(sum / total, w) / len : 0.0;
+    return len > 0.0 ? glm::dot(gradient, w) / len : 0.0;
 }
 
 } // namespace
@@ -354,7 +419,7 @@ std::vector<double> suggestive_margins(const MeshTopology& topo, const Curvature
             const glm::dvec3 nj = N[std::size_t(j)];
             return field.normal_curvature(std::size_t(j), view - glm::dot(view, nj) * nj);
         };
-        derivative[k] = vertex_derivative_along_view(topo, radial, ends[k], to_viewer);
+        derivative[k] = vertex_derivative_along_view(topo, field, radial, ends[k], to_viewer);
     }, 1024);
     for (std::size_t i = 0; i < n; ++i) {
         if (margin[i] < 0.0) continue;
@@ -369,9 +434,10 @@ std::vector<double> suggestive_margins(const MeshTopology& topo, const Curvature
 double derivative_along_view(const MeshTopology& topo, const std::vector<double>& f, std::int32_t face,
                              const glm::dvec3& p, const Camera& camera) {
     double area = 0.0;
-    const glm::dvec3 gradient = face_gradient(topo, [&](std::int32_t v) { return f[std::size_t(v)]; }, face, area);
+    const std::array<glm::dvec3, 3> g = corner_gradients(topo, face, area);
     if (!(area > 0.0)) return 0.0;
     const auto& fv = topo.face_vertices()[std::size_t(face)];
+    const glm::dvec3 gradient = f[std::size_t(fv[0])] * g[0] + f[std::size_t(fv[1])] * g[1] + f[std::size_t(fv[2])] * g[2];
     const auto P = topo.positions();
     const glm::dvec3 n = glm::normalize(glm::cross(P[std::size_t(fv[1])] - P[std::size_t(fv[0])], P[std::size_t(fv[2])] - P[std::size_t(fv[0])]));
     const glm::dvec3 view = camera.to_viewer(p);

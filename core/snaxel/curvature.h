@@ -31,6 +31,14 @@ struct CurvatureField {
     /// curvature, whose inverse (a typical radius) makes thresholds on
     /// curvature scale-free and suited to the mesh (0 for a flat mesh).
     double typical = 0.0;
+    /// The mean gradient of a field of vertex values at each vertex, as
+    /// weights: the area-weighted mean over v's faces of each face's
+    /// gradient of the linear interpolant is the sum over k in
+    /// [gradient_start[v], gradient_start[v+1]) of gradient_weight[k] times
+    /// the value at vertex gradient_vertex[k] (v, then its neighbours).
+    /// Filled by add_gradient_operator (pose_curvature does); empty else.
+    std::vector<std::int32_t> gradient_start, gradient_vertex;
+    std::vector<glm::dvec3> gradient_weight;
 
     std::size_t size() const { return k1.size(); }
     /// The normal curvature of vertex @p v in tangent direction @p w (need
@@ -43,9 +51,27 @@ struct CurvatureField {
 /// curvatures and an arbitrary tangent frame.
 CurvatureField vertex_curvatures(const MeshTopology& topology);
 
-/// The curvature of @p topology's pose: computed once per pose (the first
-/// caller computes it; it is kept in the pose, MeshPose::curvature) and
-/// shared by every frame, thread and copy of the topology in that pose.
+/// @p field smoothed once: each vertex's second fundamental form becomes the
+/// area-weighted mean of its own and its neighbours' forms, each turned into
+/// the vertex's tangent plane (the remedy of rtsc and DeCarlo et al. 2004
+/// for the noise a scanned mesh gives curvature, and so kappa_r).
+CurvatureField smoothed_curvatures(const MeshTopology& topology, const CurvatureField& field);
+
+/// Fills @p field's gradient operator (CurvatureField::gradient_*) for
+/// @p topology's pose.
+void add_gradient_operator(const MeshTopology& topology, CurvatureField& field);
+
+/// Smoothing passes pose_curvature applies.
+constexpr int kPoseCurvatureSmoothing = 2;
+
+/// The curvature of @p topology's pose, for suggestive contours:
+/// vertex_curvatures smoothed kPoseCurvatureSmoothing times, with its
+/// gradient operator (suggestive_margins reads it) (on a scanned
+/// mesh this halves the noise loops of kappa_r's zeros, and so the work of
+/// tracking them, and leaves smooth surfaces as they were). Computed once
+/// per pose (the first caller computes it; it is kept in the pose,
+/// MeshPose::curvature) and shared by every frame, thread and copy of the
+/// topology in that pose.
 std::shared_ptr<const CurvatureField> pose_curvature(const MeshTopology& topology);
 
 /// The radial curvature of every vertex of @p topology seen from @p camera
@@ -76,7 +102,8 @@ double derivative_along_view(const MeshTopology& topology, const std::vector<dou
 
 /// Where a suggestive contour is drawn (DeCarlo et al. 2003's pruning). Per
 /// snaxel of @p fronts, zeros of @p kr (suggestive_function's values from
-/// @p field, the pose's curvature, seen from @p camera): the least of three
+/// @p field, the pose's curvature with its gradient operator: pose_curvature,
+/// seen from @p camera): the least of three
 /// margins, >= 0 where the snaxel is drawn, each free of the mesh's scale:
 ///   - the derivative of kappa_r along the view (at the edge's two ends from
 ///     the area-weighted mean gradient of their faces, interpolated), over

@@ -195,7 +195,7 @@ TEST_P(SuggestiveTurntable, TrackedEqualsFromScratchAtEveryFrame) {
     options.check_invariants = false;
     const ContourSpec spec = ContourSpec::parse("suggestive");
     ContourTracker tracker(topo, spec, options);
-    const CurvatureField field = vertex_curvatures(topo);
+    const CurvatureField& field = *pose_curvature(topo); // the (smoothed) field the kind reads: the oracle's input
     std::size_t kept_ids = 0, moves = 0;
     std::set<std::uint64_t> previous;
     for (int frame = 0; frame < 120; ++frame) {
@@ -293,6 +293,47 @@ TEST(Suggestive, DrawingLeavesOutWeakParts) {
     }
     EXPECT_GT(left_out, 0u);
     EXPECT_LT(left_out, k);
+}
+
+// Smoothing the pose's curvature: on a smooth torus the principal curvatures
+// stay the analytic ones; on a scanned mesh (the horse) kappa_r changes sign
+// on fewer edges (its noise loops go) and the smoothed field varies less
+// from a vertex to its neighbours.
+TEST(Suggestive, SmoothingKeepsShapeAndRemovesNoise) {
+    {
+        const MeshTopology topo = build_topology(load_mesh("proc:torus:40000").mesh);
+        const std::shared_ptr<const CurvatureField> field = pose_curvature(topo);
+        double worst = 0.0;
+        for (std::size_t v = 0; v < topo.n_vertices(); ++v) {
+            double theta, phi;
+            torus_angles(topo.positions()[v], theta, phi);
+            worst = std::max({worst, std::abs(field->k1[v] - 1.0 / kTube),
+                              std::abs(field->k2[v] - std::cos(theta) / (kR + kTube * std::cos(theta)))});
+        }
+        EXPECT_LT(worst, 0.05) << "smoothing moved the torus's curvature";
+        EXPECT_NEAR(field->typical, 1.0 / kTube, 0.05);
+    }
+    const MeshTopology horse = build_topology(load_mesh(test::asset("horse.ply")).mesh);
+    const CurvatureField raw = vertex_curvatures(horse);
+    const CurvatureField& smooth = *pose_curvature(horse);
+    Camera cam;
+    cam.view_dir = glm::normalize(glm::dvec3(-1.0, -0.2, -0.3));
+    auto sign_changes = [&](const CurvatureField& f) {
+        const std::vector<double> kr = oracle_kr(horse, f, cam);
+        std::size_t n = 0;
+        for (const auto& [a, b] : horse.edge_vertices()) n += (kr[std::size_t(a)] >= 0.0) != (kr[std::size_t(b)] >= 0.0);
+        return n;
+    };
+    auto roughness = [&](const CurvatureField& f) { // mean |k1 - k1 of a neighbour| over the edges, in typical units
+        double sum = 0.0;
+        for (const auto& [a, b] : horse.edge_vertices()) sum += std::abs(f.k1[std::size_t(a)] - f.k1[std::size_t(b)]);
+        return sum / double(horse.n_edges()) / f.typical;
+    };
+    const std::size_t before = sign_changes(raw), after = sign_changes(smooth);
+    std::printf("horse: kappa_r changes sign on %zu edges raw, %zu smoothed; roughness %.3f -> %.3f\n", before, after,
+                roughness(raw), roughness(smooth));
+    EXPECT_LT(double(after), 0.8 * double(before));
+    EXPECT_LT(roughness(smooth), 0.6 * roughness(raw));
 }
 
 // The kind's text: parsed, labelled and refused as the CLI says.
