@@ -186,7 +186,8 @@ CurvatureField smoothed_curvatures(const MeshTopology& topo, const CurvatureFiel
     CurvatureField out = field;
     parallel_for(topo.n_vertices(), [&](std::size_t v) {
         if (!(field.area[v] > 0.0)) return;
-        const auto [u, w] = vertex_frame(topo, v);
+        const std::pair<glm::dvec3, glm::dvec3> frame = vertex_frame(topo, v);
+        const glm::dvec3 u = frame.first, w = frame.second; // (not a binding: the lambda below uses them)
         double total = 0.0, ku = 0.0, kuv = 0.0, kv = 0.0;
         auto add = [&](std::size_t j) {
             FaceForm form; // vertex j's form in its principal frame
