@@ -40,6 +40,16 @@ bool ContourSpec::same_as(const ContourSpec& other) const {
            std::abs(min_angle - other.min_angle) < 1e-9;
 }
 
+namespace {
+
+/// @p value as a finite number, all of it read; false if it is not one.
+bool read_number(const std::string& value, double& out) {
+    const auto [end, ec] = std::from_chars(value.data(), value.data() + value.size(), out);
+    return ec == std::errc() && end == value.data() + value.size() && std::isfinite(out);
+}
+
+} // namespace
+
 ContourSpec ContourSpec::parse(const std::string& text) {
     const auto colon = text.find(':');
     const std::string name = text.substr(0, colon);
@@ -57,10 +67,7 @@ ContourSpec ContourSpec::parse(const std::string& text) {
         spec.kind = ContourKind::Crease;
         spec.k = kDefaultCreaseDegrees;
         if (colon == std::string::npos) return spec;
-        const std::string value = text.substr(colon + 1);
-        const auto [end, ec] = std::from_chars(value.data(), value.data() + value.size(), spec.k);
-        if (ec != std::errc() || end != value.data() + value.size() || !std::isfinite(spec.k) || spec.k <= 0.0 ||
-            spec.k >= 180.0)
+        if (!read_number(text.substr(colon + 1), spec.k) || spec.k <= 0.0 || spec.k >= 180.0)
             throw Error("contour kind '" + text + "': the crease angle must be a number of degrees above 0 and below 180");
         return spec;
     }
@@ -72,9 +79,7 @@ ContourSpec ContourSpec::parse(const std::string& text) {
         const std::string rest = text.substr(colon + 1);
         const auto second = rest.find(':');
         auto read = [&](const std::string& value, double& out, double lo, double hi, const char* what) {
-            const auto [end, ec] = std::from_chars(value.data(), value.data() + value.size(), out);
-            if (ec != std::errc() || end != value.data() + value.size() || !std::isfinite(out) || out < lo || out > hi)
-                throw Error("contour kind '" + text + "': " + what);
+            if (!read_number(value, out) || out < lo || out > hi) throw Error("contour kind '" + text + "': " + what);
         };
         read(rest.substr(0, second), spec.k, 0.0, 1e6, "the least derivative D must be a number of at least 0");
         if (second != std::string::npos)
@@ -90,10 +95,7 @@ ContourSpec ContourSpec::parse(const std::string& text) {
     if (colon == std::string::npos)
         throw Error("contour kind '" + text + "' needs a value, for example " + name +
                     (name == "gleam" ? ":0.9" : ":0.5"));
-    const std::string value = text.substr(colon + 1);
-    const auto [end, ec] = std::from_chars(value.data(), value.data() + value.size(), spec.k);
-    if (ec != std::errc() || end != value.data() + value.size() || !std::isfinite(spec.k) ||
-        spec.k < -1.0 || spec.k > 1.0)
+    if (!read_number(text.substr(colon + 1), spec.k) || spec.k < -1.0 || spec.k > 1.0)
         throw Error("contour kind '" + text + "': K must be a number from -1 to 1 (a cosine)");
     return spec;
 }

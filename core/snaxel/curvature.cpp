@@ -128,6 +128,42 @@ std::pair<glm::dvec3, glm::dvec3> vertex_frame(const MeshTopology& topo, std::si
     return {u, glm::cross(n, u)};
 }
 
+/// Calls fn(face, corner) once for each face at vertex @p v, corner being
+/// v's place in the face: the face in which the edge to each neighbour
+/// leaves v (the neighbour follows v in the face's corner order).
+template <class Fn>
+void for_each_face_at(const MeshTopology& topo, std::size_t v, Fn&& fn) {
+    for (std::int32_t i = topo.ring_start()[v]; i < topo.ring_start()[v + 1]; ++i) {
+        const std::int32_t neighbour = topo.ring()[std::size_t(i)];
+        for (const std::int32_t f : topo.edge_faces()[std::size_t(topo.ring_edge()[std::size_t(i)])]) {
+            if (f == MeshTopology::kNone) continue;
+            const auto& fv = topo.face_vertices()[std::size_t(f)];
+            std::size_t c = 0;
+            while (c < 3 && std::size_t(fv[c]) != v) ++c;
+            if (c < 3 && fv[(c + 1) % 3] == neighbour) fn(f, c);
+        }
+    }
+}
+
+/// The normal curvature of vertex @p v along @p view (toward the viewer)
+/// projected onto its tangent plane: kappa_r.
+double radial_at(const MeshTopology& topo, const CurvatureField& field, std::size_t v, const glm::dvec3& view) {
+    const glm::dvec3 n = topo.normals()[v];
+    return field.normal_curvature(v, view - glm::dot(view, n) * n);
+}
+
+/// Camera::to_viewer with the orthographic camera's one direction found once.
+struct ToViewer {
+    explicit ToViewer(const Camera& camera)
+        : camera_(camera), ortho_(camera.orthographic()), v_(ortho_ ? camera.to_viewer(glm::dvec3(0.0)) : glm::dvec3(0.0)) {}
+    glm::dvec3 operator()(const glm::dvec3& p) const { return ortho_ ? v_ : camera_.to_viewer(p); }
+
+  private:
+    const Camera& camera_;
+    bool ortho_;
+    glm::dvec3 v_;
+};
+
 /// Vertex @p v's principal curvatures and directions from its second
 /// fundamental form [ku kuv; kuv kv] in the tangent frame (u, w): the
 /// Jacobi rotation that diagonalizes it, |k1| >= |k2|.
@@ -221,30 +257,20 @@ CurvatureField vertex_curvatures(const MeshTopology& topo) {
     out.dir1.assign(nv, glm::dvec3(0.0));
     out.dir2.assign(nv, glm::dvec3(0.0));
     out.area.assign(nv, 0.0);
-    const auto face_vertices = topo.face_vertices();
     parallel_for(nv, [&](std::size_t v) {
-        const auto [u, w] = vertex_frame(topo, v);
-        // Each face at v once: the face in which the edge to a neighbour
-        // leaves v (the neighbour follows v in the face's corner order).
+        const std::pair<glm::dvec3, glm::dvec3> frame = vertex_frame(topo, v);
+        const glm::dvec3 u = frame.first, w = frame.second; // (not a binding: the lambda below uses them)
         double area = 0.0, ku = 0.0, kuv = 0.0, kv = 0.0;
-        for (std::int32_t i = topo.ring_start()[v]; i < topo.ring_start()[v + 1]; ++i) {
-            const std::int32_t neighbour = topo.ring()[std::size_t(i)];
-            for (const std::int32_t f : topo.edge_faces()[std::size_t(topo.ring_edge()[std::size_t(i)])]) {
-                if (f == MeshTopology::kNone) continue;
-                const auto& fv = face_vertices[std::size_t(f)];
-                std::size_t c = 0;
-                while (c < 3 && std::size_t(fv[c]) != v) ++c;
-                if (c == 3 || fv[(c + 1) % 3] != neighbour) continue;
-                const FaceForm& form = forms[std::size_t(f)];
-                const double weight = form.corner[c];
-                if (!(weight > 0.0)) continue;
-                const std::array<double, 3> k = project_form(form, u, w);
-                area += weight;
-                ku += weight * k[0];
-                kuv += weight * k[1];
-                kv += weight * k[2];
-            }
-        }
+        for_each_face_at(topo, v, [&](std::int32_t f, std::size_t c) {
+            const FaceForm& form = forms[std::size_t(f)];
+            const double weight = form.corner[c];
+            if (!(weight > 0.0)) return;
+            const std::array<double, 3> k = project_form(form, u, w);
+            area += weight;
+            ku += weight * k[0];
+            kuv += weight * k[1];
+            kv += weight * k[2];
+        });
         out.area[v] = area;
         if (!(area > 0.0)) {
             out.dir1[v] = u;
@@ -275,22 +301,14 @@ void add_gradient_operator(const MeshTopology& topo, CurvatureField& field) {
             return std::int32_t(-1);
         };
         double total = 0.0;
-        for (std::int32_t i = first; i < last; ++i) {
-            // Each face once: the one in which the edge to a neighbour leaves v.
-            const std::int32_t neighbour = topo.ring()[std::size_t(i)];
-            for (const std::int32_t face : topo.edge_faces()[std::size_t(topo.ring_edge()[std::size_t(i)])]) {
-                if (face == MeshTopology::kNone) continue;
-                const auto& fv = topo.face_vertices()[std::size_t(face)];
-                std::size_t c = 0;
-                while (c < 3 && fv[c] != std::int32_t(v)) ++c;
-                if (c == 3 || fv[(c + 1) % 3] != neighbour) continue;
-                double area = 0.0;
-                const std::array<glm::dvec3, 3> g = corner_gradients(topo, face, area);
-                for (std::size_t k = 0; k < 3; ++k)
-                    if (const std::int32_t s = slot(fv[k]); s >= 0) field.gradient_weight[std::size_t(s)] += area * g[k];
-                total += area;
-            }
-        }
+        for_each_face_at(topo, v, [&](std::int32_t face, std::size_t) {
+            const auto& fv = topo.face_vertices()[std::size_t(face)];
+            double area = 0.0;
+            const std::array<glm::dvec3, 3> g = corner_gradients(topo, face, area);
+            for (std::size_t k = 0; k < 3; ++k)
+                if (const std::int32_t s = slot(fv[k]); s >= 0) field.gradient_weight[std::size_t(s)] += area * g[k];
+            total += area;
+        });
         if (total > 0.0)
             for (std::int32_t k = base; k < field.gradient_start[v + 1]; ++k) field.gradient_weight[std::size_t(k)] /= total;
     }, 1024);
@@ -310,30 +328,9 @@ std::shared_ptr<const CurvatureField> pose_curvature(const MeshTopology& topo) {
 std::vector<double> radial_curvature(const MeshTopology& topo, const CurvatureField& field, const Camera& camera) {
     std::vector<double> out(topo.n_vertices(), 0.0);
     const auto P = topo.positions();
-    const auto N = topo.normals();
-    parallel_for(out.size(), [&](std::size_t v) {
-        const glm::dvec3 view = camera.to_viewer(P[v]);
-        const glm::dvec3 w = view - glm::dot(view, N[v]) * N[v];
-        out[v] = field.normal_curvature(v, w);
-    }, 4096);
+    parallel_for(out.size(), [&](std::size_t v) { out[v] = radial_at(topo, field, v, camera.to_viewer(P[v])); }, 4096);
     return out;
 }
-
-namespace {
-
-/// Camera::to_viewer with the orthographic camera's one direction found once.
-struct ToViewer {
-    explicit ToViewer(const Camera& camera)
-        : camera_(camera), ortho_(camera.orthographic()), v_(ortho_ ? camera.to_viewer(glm::dvec3(0.0)) : glm::dvec3(0.0)) {}
-    glm::dvec3 operator()(const glm::dvec3& p) const { return ortho_ ? v_ : camera_.to_viewer(p); }
-
-  private:
-    const Camera& camera_;
-    bool ortho_;
-    glm::dvec3 v_;
-};
-
-} // namespace
 
 double suggestive_away_value(const CurvatureField& field) { return field.typical > 0.0 ? field.typical : 1.0; }
 
@@ -345,8 +342,7 @@ std::vector<double> suggestive_function(const MeshTopology& topo, const Curvatur
     const ToViewer to_viewer(camera);
     parallel_for(out.size(), [&](std::size_t v) {
         const glm::dvec3 view = to_viewer(P[v]);
-        const double nv = glm::dot(view, N[v]);
-        out[v] = nv > 0.0 ? field.normal_curvature(v, view - nv * N[v]) : away;
+        out[v] = glm::dot(view, N[v]) > 0.0 ? radial_at(topo, field, v, view) : away;
     }, 4096);
     return out;
 }
@@ -415,10 +411,7 @@ std::vector<double> suggestive_margins(const MeshTopology& topo, const Curvature
         // holds suggestive_function's stand-in; a true kappa_r of the same
         // value is recomputed, to itself).
         auto radial = [&](std::int32_t j) {
-            if (kr[std::size_t(j)] != away) return kr[std::size_t(j)];
-            const glm::dvec3 view = to_viewer(P[std::size_t(j)]);
-            const glm::dvec3 nj = N[std::size_t(j)];
-            return field.normal_curvature(std::size_t(j), view - glm::dot(view, nj) * nj);
+            return kr[std::size_t(j)] != away ? kr[std::size_t(j)] : radial_at(topo, field, std::size_t(j), to_viewer(P[std::size_t(j)]));
         };
         derivative[k] = vertex_derivative_along_view(topo, field, radial, ends[k], to_viewer);
     }, 1024);
