@@ -213,7 +213,7 @@ void MainWindow::onLightDragged(glm::dvec3 axis_a, double angle_a, glm::dvec3 ax
         return glm::rotate(v, -frame_angle, y);
     };
     if (light.point) {
-        const glm::dvec3 centre = mesh_ ? 0.5 * (mesh_->report.bbox_min + mesh_->report.bbox_max) : glm::dvec3(0.0);
+        const glm::dvec3 centre = meshCentre();
         light.pos = centre + turn(light.pos - centre);
     } else {
         light.dir = glm::normalize(turn(light.dir));
@@ -229,9 +229,16 @@ void MainWindow::turnLight(double right, double down) {
     emit view_->lightEdited();
 }
 
+const LoadedMesh* MainWindow::mesh() const { return document_->mesh().get(); }
+
+glm::dvec3 MainWindow::meshCentre() const {
+    const LoadedMesh* mesh = document_->mesh().get();
+    return mesh ? 0.5 * (mesh->report.bbox_min + mesh->report.bbox_max) : glm::dvec3(0.0);
+}
+
 Light MainWindow::frameLight() const {
     // As FrameDriver poses it, about the orbit's vertical axis.
-    const glm::dvec3 centre = mesh_ ? 0.5 * (mesh_->report.bbox_min + mesh_->report.bbox_max) : glm::dvec3(0.0);
+    const glm::dvec3 centre = meshCentre();
     return light_at_frame(timeline_->spec(), baseLight(), timeline_->sourceFrame(), glm::dvec3(0.0, 1.0, 0.0), centre);
 }
 
@@ -250,7 +257,7 @@ bool MainWindow::exportFrame(const QString& path) {
 }
 
 void MainWindow::exportAnimation(const QString& path, AnimationFormat format) {
-    if (!mesh_ || exporting_) return;
+    if (!document_->mesh() || exporting_) return;
     exporting_ = true;
     AnimationJob job = make_animation_job(style_, timeline_->spec(), view_->baseCamera(), light_);
     job.format = format;
@@ -286,7 +293,7 @@ void MainWindow::exportAnimation(const QString& path, AnimationFormat format) {
         }, Qt::QueuedConnection);
     };
     job.cancelled = [cancelled] { return cancelled->load(); };
-    const std::shared_ptr<const LoadedMesh> mesh = mesh_;
+    const std::shared_ptr<const LoadedMesh> mesh = document_->mesh();
     const std::string mesh_path = document_->meshSpec().toStdString();
     auto* watcher = new QFutureWatcher<QString>(this);
     connect(watcher, &QFutureWatcher<QString>::finished, this, [this, watcher, guard, path] {
@@ -342,7 +349,7 @@ void MainWindow::startContours() {
     }
     contoursPending_ = false;
     const std::shared_ptr<ContourScene> scene = scene_;
-    const std::shared_ptr<const LoadedMesh> mesh = mesh_;
+    const std::shared_ptr<const LoadedMesh> mesh = document_->mesh();
     const Camera camera = view_->camera();
     const Style style = style_;
     const Light light = frameLight();
@@ -598,7 +605,6 @@ void MainWindow::onLoadFinished() {
         return;
     }
     if (contourWatcher_.isRunning()) contoursPending_ = true; // its contours are of the old mesh
-    mesh_ = result.mesh;
     scene_ = result.scene;
     parabolic_.reset(); // the old mesh's
     ++meshGeneration_;
@@ -610,7 +616,7 @@ void MainWindow::onLoadFinished() {
     --restoring_;
     document_->resetView(viewState());
     document_->resetAnimation(timeline_->spec());
-    const MeshReport& r = mesh_->report;
+    const MeshReport& r = result.mesh->report;
     meshLabel_->setText(tr("%1 vertices, %2 faces, %3 boundary edges%4%5")
                             .arg(r.vertices)
                             .arg(r.faces)
@@ -624,7 +630,7 @@ void MainWindow::onLoadFinished() {
     if (pendingProject_) {
         const Project project = std::move(*pendingProject_);
         pendingProject_.reset();
-        applyProject(project, pendingProjectPath_);
+        applyProject(project, pendingProjectPath_, result.mesh);
     } else if (pendingSequence_) {
         const SequenceFiles files = std::move(*pendingSequence_);
         pendingSequence_.reset();
@@ -640,11 +646,11 @@ void MainWindow::onLoadFinished() {
         timeline_->setFrame(0);
         --restoring_;
         document_->resetAnimation(timeline_->spec());
-        document_->setMesh(loadingSpec_, mesh_);
+        document_->setMesh(loadingSpec_, result.mesh);
         statusBar()->showMessage(tr("Loaded a sequence of %1 files: %2").arg(files.count).arg(QFileInfo(QString::fromStdString(files.pattern)).fileName()), 6000);
         scheduleContours();
     } else {
-        document_->setMesh(loadingSpec_, mesh_);
+        document_->setMesh(loadingSpec_, result.mesh);
         if (!loadingSpec_.startsWith("proc:")) addRecentFile(QFileInfo(loadingSpec_).absoluteFilePath());
     }
     updateTitle();
@@ -761,7 +767,7 @@ bool MainWindow::maybeSave() {
 }
 
 bool MainWindow::saveProjectInteractive(bool ask_path) {
-    if (!mesh_) {
+    if (!document_->mesh()) {
         QMessageBox::information(this, tr("Save Project"), tr("Open a mesh first: a project refers to one."));
         return false;
     }
@@ -776,7 +782,7 @@ bool MainWindow::saveProjectInteractive(bool ask_path) {
 }
 
 bool MainWindow::saveProject(const QString& path) {
-    if (!mesh_) return false;
+    if (!document_->mesh()) return false;
     // What the widgets hold that has not reached the document yet (typing
     // not yet taken up, say) goes in first, as the edits it is.
     document_->setStyleText(styleEditor_->text());
@@ -852,9 +858,9 @@ void MainWindow::openProject(const QString& path) {
     openMesh(QString::fromStdString(resolve_project_mesh(path.toStdString(), pendingProject_->mesh)));
 }
 
-void MainWindow::applyProject(const Project& p, const QString& path) {
+void MainWindow::applyProject(const Project& p, const QString& path, std::shared_ptr<const LoadedMesh> mesh) {
     ++restoring_; // the document sets the widgets: not edits
-    document_->load(p, path, loadingSpec_, mesh_);
+    document_->load(p, path, loadingSpec_, std::move(mesh));
     const AnimationSpec& animation = document_->animation();
     if (animation.kind == AnimationSpec::Kind::Sequence)
         if (const auto files = find_sequence(sequence_file(animation, 0))) timeline_->setSequenceFiles(files->count);

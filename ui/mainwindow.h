@@ -74,7 +74,7 @@ class MainWindow : public QMainWindow {
     /// Turns the light as a Shift+drag in the view does (radians about
     /// the screen's up and right axes).
     void turnLight(double right, double down);
-    const LoadedMesh* mesh() const { return mesh_.get(); }
+    const LoadedMesh* mesh() const;
     MeshView* meshView() const { return view_; }
     SvgPane* svgPane() const { return svgPane_; }
     StyleEditor* styleEditor() const { return styleEditor_; }
@@ -126,7 +126,7 @@ class MainWindow : public QMainWindow {
     /// Asks to save unsaved changes: false when the user cancels.
     bool maybeSave();
     bool saveProjectInteractive(bool ask_path);
-    void applyProject(const Project& project, const QString& path);
+    void applyProject(const Project& project, const QString& path, std::shared_ptr<const LoadedMesh> mesh);
     void updateTitle();
     /// Shows the document's changes in the widgets.
     void observeDocument();
@@ -140,6 +140,8 @@ class MainWindow : public QMainWindow {
     void scheduleContours();
     void applyFrame();
     Light frameLight() const;
+    /// The middle of the mesh's bounding box (the origin without a mesh).
+    glm::dvec3 meshCentre() const;
     void startContours();
     void onContoursFinished();
     /// Finds the mesh's parabolic curves off the GUI thread (with progress in
@@ -173,7 +175,6 @@ class MainWindow : public QMainWindow {
     QProgressBar* busy_;
     QFutureWatcher<LoadResult> watcher_;
     QString loadingSpec_;
-    std::shared_ptr<const LoadedMesh> mesh_;
     std::shared_ptr<ContourScene> scene_;
     QLabel* contourLabel_;
     QTimer* contourTimer_;
