@@ -11,12 +11,6 @@
 
 namespace snaxels {
 
-double CurvatureField::normal_curvature(std::size_t v, const glm::dvec3& w) const {
-    const double c = glm::dot(w, dir1[v]), s = glm::dot(w, dir2[v]);
-    const double len2 = c * c + s * s;
-    return len2 > 0.0 ? (k1[v] * c * c + k2[v] * s * s) / len2 : 0.0;
-}
-
 namespace {
 
 /// A face's second fundamental form in its own frame (t, b): the symmetric
@@ -147,9 +141,11 @@ void for_each_face_at(const MeshTopology& topo, std::size_t v, Fn&& fn) {
 
 /// The normal curvature of vertex @p v along @p view (toward the viewer)
 /// projected onto its tangent plane: kappa_r.
-double radial_at(const MeshTopology& topo, const CurvatureField& field, std::size_t v, const glm::dvec3& view) {
-    const glm::dvec3 n = topo.normals()[v];
-    return field.normal_curvature(v, view - glm::dot(view, n) * n);
+/// (The principal directions lie in the tangent plane, so the view's part
+/// along the normal adds nothing to its components along them: no
+/// projection is needed.)
+double radial_at(const CurvatureField& field, std::size_t v, const glm::dvec3& view) {
+    return field.normal_curvature(v, view);
 }
 
 /// Camera::to_viewer with the orthographic camera's one direction found once.
@@ -328,23 +324,23 @@ std::shared_ptr<const CurvatureField> pose_curvature(const MeshTopology& topo) {
 std::vector<double> radial_curvature(const MeshTopology& topo, const CurvatureField& field, const Camera& camera) {
     std::vector<double> out(topo.n_vertices(), 0.0);
     const auto P = topo.positions();
-    parallel_for(out.size(), [&](std::size_t v) { out[v] = radial_at(topo, field, v, camera.to_viewer(P[v])); }, 4096);
+    parallel_for(out.size(), [&](std::size_t v) { out[v] = radial_at(field, v, camera.to_viewer(P[v])); }, 4096);
     return out;
 }
 
 double suggestive_away_value(const CurvatureField& field) { return field.typical > 0.0 ? field.typical : 1.0; }
 
-std::vector<double> suggestive_function(const MeshTopology& topo, const CurvatureField& field, const Camera& camera) {
-    std::vector<double> out(topo.n_vertices());
+void suggestive_function(const MeshTopology& topo, const CurvatureField& field, const Camera& camera,
+                         std::vector<double>& out) {
+    out.resize(topo.n_vertices());
     const double away = suggestive_away_value(field);
     const auto P = topo.positions();
     const auto N = topo.normals();
     const ToViewer to_viewer(camera);
     parallel_for(out.size(), [&](std::size_t v) {
         const glm::dvec3 view = to_viewer(P[v]);
-        out[v] = glm::dot(view, N[v]) > 0.0 ? radial_at(topo, field, v, view) : away;
+        out[v] = glm::dot(view, N[v]) > 0.0 ? radial_at(field, v, view) : away;
     }, 4096);
-    return out;
 }
 
 namespace {
@@ -411,7 +407,7 @@ std::vector<double> suggestive_margins(const MeshTopology& topo, const Curvature
         // holds suggestive_function's stand-in; a true kappa_r of the same
         // value is recomputed, to itself).
         auto radial = [&](std::int32_t j) {
-            return kr[std::size_t(j)] != away ? kr[std::size_t(j)] : radial_at(topo, field, std::size_t(j), to_viewer(P[std::size_t(j)]));
+            return kr[std::size_t(j)] != away ? kr[std::size_t(j)] : radial_at(field, std::size_t(j), to_viewer(P[std::size_t(j)]));
         };
         derivative[k] = vertex_derivative_along_view(topo, field, radial, ends[k], to_viewer);
     }, 1024);

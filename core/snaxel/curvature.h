@@ -13,6 +13,7 @@
 #include <memory>
 #include <vector>
 
+#include <glm/geometric.hpp>
 #include <glm/vec3.hpp>
 
 #include "snaxels/scene/camera.h"
@@ -41,9 +42,16 @@ struct CurvatureField {
     std::vector<glm::dvec3> gradient_weight;
 
     std::size_t size() const { return k1.size(); }
-    /// The normal curvature of vertex @p v in tangent direction @p w (need
-    /// not be unit; 0 for a zero one): k1 cos^2 + k2 sin^2 of its angle to dir1.
-    double normal_curvature(std::size_t v, const glm::dvec3& w) const;
+    /// The normal curvature of vertex @p v in the direction of @p w's
+    /// projection onto the tangent plane (@p w need not be unit nor
+    /// tangent; 0 where the projection vanishes): k1 cos^2 + k2 sin^2 of
+    /// its angle to dir1. Inline: kappa_r calls it for every vertex seen,
+    /// every frame.
+    double normal_curvature(std::size_t v, const glm::dvec3& w) const {
+        const double c = glm::dot(w, dir1[v]), s = glm::dot(w, dir2[v]);
+        const double len2 = c * c + s * s;
+        return len2 > 0.0 ? (k1[v] * c * c + k2[v] * s * s) / len2 : 0.0;
+    }
 };
 
 /// The curvature of @p topology in its pose (positions and vertex normals),
@@ -87,8 +95,9 @@ std::vector<double> radial_curvature(const MeshTopology& topology, const Curvatu
 /// lie on the side seen; the zeros of kappa_r beyond it (half of a noisy
 /// mesh's) are then not tracked. Its zeros also run along the rim between
 /// the two sides where kappa_r < 0 on the near side: suggestive_margins
-/// leaves those out.
-std::vector<double> suggestive_function(const MeshTopology& topology, const CurvatureField& field, const Camera& camera);
+/// leaves those out. Written into @p out, resized to the vertex count.
+void suggestive_function(const MeshTopology& topology, const CurvatureField& field, const Camera& camera,
+                         std::vector<double>& out);
 /// The value suggestive_function gives a vertex facing away.
 double suggestive_away_value(const CurvatureField& field);
 

@@ -1,5 +1,7 @@
 #include "snaxels/snaxel/fronts.h"
 
+#include "snaxels/util/detail/parallel.h"
+
 namespace snaxels {
 
 namespace {
@@ -19,22 +21,25 @@ Fronts extract_fronts(const MeshTopology& topo, const std::vector<std::uint8_t>&
                       const std::vector<std::int32_t>& crossing_edges) {
     Fronts fronts;
     fronts.edge_snaxel.assign(topo.n_edges(), kNone);
-    fronts.snaxels.reserve(crossing_edges.size());
-    for (const std::int32_t e : crossing_edges) {
+    const std::size_t n = crossing_edges.size();
+    fronts.snaxels.resize(n);
+    parallel_for(n, [&](std::size_t i) {
+        const std::int32_t e = crossing_edges[i];
         const auto [a, b] = topo.edge_vertices()[e];
-        Snaxel s;
+        Snaxel& s = fronts.snaxels[i];
         s.edge = e;
         s.inside = inside[a] ? a : b;
         s.outside = inside[a] ? b : a;
-        fronts.edge_snaxel[e] = static_cast<std::int32_t>(fronts.snaxels.size());
-        fronts.snaxels.push_back(s);
-    }
+        fronts.edge_snaxel[e] = static_cast<std::int32_t>(i);
+    }, 2048);
     // In each face the boundary enters across the edge whose halfedge runs
     // outside -> inside and leaves across the one running inside -> outside;
     // linking leave -> enter keeps R on the left of every loop. Every face
-    // the front crosses is reached from one of its crossing edges.
-    for (std::size_t i = 0; i < fronts.snaxels.size(); ++i) {
-        for (const std::int32_t f : topo.edge_faces()[fronts.snaxels[i].edge]) {
+    // the front crosses is reached from its leaving snaxel, which links it:
+    // a snaxel's next is set from one face and its prev from another, by
+    // one iteration each, so the iterations run in parallel.
+    parallel_for(n, [&](std::size_t i) {
+        for (const std::int32_t f : topo.edge_faces()[crossing_edges[i]]) {
             if (f == kNone) continue;
             const auto& fv = topo.face_vertices()[f];
             std::int32_t leave = kNone, enter = kNone;
@@ -43,11 +48,11 @@ Fronts extract_fronts(const MeshTopology& topo, const std::vector<std::uint8_t>&
                 if (here && !there) leave = fronts.edge_snaxel[topo.face_edges()[f][k]];
                 if (!here && there) enter = fronts.edge_snaxel[topo.face_edges()[f][k]];
             }
-            if (leave == kNone || enter == kNone) continue; // an incomplete edge list; check_fronts says so
-            fronts.snaxels[leave].next = enter;
+            if (leave != static_cast<std::int32_t>(i) || enter == kNone) continue; // (an incomplete edge list: check_fronts says so)
+            fronts.snaxels[i].next = enter;
             fronts.snaxels[enter].prev = leave;
         }
-    }
+    }, 1024);
     // Loops: open chains from their start, then the remaining cycles.
     auto trace = [&](std::int32_t start, bool closed) {
         FrontLoop loop;

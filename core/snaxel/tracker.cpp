@@ -23,16 +23,18 @@ glm::dvec3 loop_centroid(const Fronts& fronts, const FrontLoop& loop,
 glm::dvec3 closest_between(const std::vector<glm::dvec3>& a, const std::vector<glm::dvec3>& b) {
     const std::size_t sa = std::max<std::size_t>(1, a.size() / 200), sb = std::max<std::size_t>(1, b.size() / 200);
     double best = std::numeric_limits<double>::max();
-    glm::dvec3 where(0.0);
+    std::size_t bi = 0, bj = 0;
     for (std::size_t i = 0; i < a.size(); i += sa)
         for (std::size_t j = 0; j < b.size(); j += sb) {
-            const double d = glm::length(a[i] - b[j]);
+            const glm::dvec3 gap = a[i] - b[j];
+            const double d = glm::dot(gap, gap); // (squared: the same order, no root)
             if (d < best) {
                 best = d;
-                where = 0.5 * (a[i] + b[j]);
+                bi = i;
+                bj = j;
             }
         }
-    return where;
+    return a.empty() || b.empty() ? glm::dvec3(0.0) : 0.5 * (a[bi] + b[bj]);
 }
 
 } // namespace
@@ -178,20 +180,26 @@ void ContourTracker::sweep_parents(const Fronts& old, const std::vector<std::int
 /// would give them.
 std::vector<std::int32_t> ContourTracker::crossing_edges(const Fronts& old, const std::vector<std::int32_t>& changed) {
     edge_mark_.resize(topo_.n_edges(), 0);
-    std::vector<std::int32_t> crossing;
-    auto consider = [&](std::int32_t e) {
+    std::vector<std::int32_t> kept, fresh;
+    kept.reserve(old.snaxels.size());
+    auto consider = [&](std::int32_t e, std::vector<std::int32_t>& into) {
         if (edge_mark_[e]) return;
         edge_mark_[e] = 1;
         const auto [a, b] = topo_.edge_vertices()[e];
-        if (inside_[a] != inside_[b]) crossing.push_back(e);
+        if (inside_[a] != inside_[b]) into.push_back(e);
     };
-    for (const Snaxel& s : old.snaxels) consider(s.edge);
+    for (const Snaxel& s : old.snaxels) consider(s.edge, kept);
     for (const std::int32_t v : changed)
-        for (std::int32_t k = topo_.ring_start()[v]; k < topo_.ring_start()[v + 1]; ++k) consider(topo_.ring_edge()[k]);
+        for (std::int32_t k = topo_.ring_start()[v]; k < topo_.ring_start()[v + 1]; ++k) consider(topo_.ring_edge()[k], fresh);
     for (const Snaxel& s : old.snaxels) edge_mark_[s.edge] = 0;
     for (const std::int32_t v : changed)
         for (std::int32_t k = topo_.ring_start()[v]; k < topo_.ring_start()[v + 1]; ++k) edge_mark_[topo_.ring_edge()[k]] = 0;
-    std::sort(crossing.begin(), crossing.end());
+    // The old snaxels come ascending by edge from the frame before (a
+    // from-scratch frame may not): only the few new edges need sorting.
+    if (!std::is_sorted(kept.begin(), kept.end())) std::sort(kept.begin(), kept.end());
+    std::sort(fresh.begin(), fresh.end());
+    std::vector<std::int32_t> crossing(kept.size() + fresh.size());
+    std::merge(kept.begin(), kept.end(), fresh.begin(), fresh.end(), crossing.begin());
     return crossing;
 }
 
@@ -256,17 +264,27 @@ void ContourTracker::match_loops(const TrackedFrame& prev, const std::vector<glm
     const Fronts& old = prev.contour.fronts;
     const Fronts& fronts = frame_.contour.fronts;
     const std::size_t old_loops = old.loops.size(), new_loops = fronts.loops.size();
-    // (old loop, new loop) of every snaxel with a source, sorted: runs of
-    // one pair count the snaxels linking them, in (old, new) order.
-    std::vector<std::pair<std::int32_t, std::int32_t>> links;
-    links.reserve(source.size());
+    // The snaxels linking each (old loop, new loop) pair, in (old, new)
+    // order: the new loops of each old loop's snaxels, bucketed by old loop
+    // (a counting sort: there are few loops and many snaxels), then sorted
+    // within the bucket, where runs of one loop count its snaxels.
+    std::vector<std::int32_t> bucket_start(old_loops + 1, 0);
+    for (const std::int32_t o : source)
+        if (o != kNone) ++bucket_start[std::size_t(old.snaxels[o].loop) + 1];
+    for (std::size_t l = 0; l < old_loops; ++l) bucket_start[l + 1] += bucket_start[l];
+    std::vector<std::int32_t> linked(static_cast<std::size_t>(bucket_start[old_loops]));
+    std::vector<std::int32_t> fill(bucket_start.begin(), bucket_start.end() - 1);
     for (std::size_t s = 0; s < source.size(); ++s)
-        if (source[s] != kNone) links.push_back({old.snaxels[source[s]].loop, fronts.snaxels[s].loop});
-    std::sort(links.begin(), links.end());
+        if (source[s] != kNone) linked[std::size_t(fill[std::size_t(old.snaxels[source[s]].loop)]++)] = fronts.snaxels[s].loop;
     std::vector<std::pair<std::pair<std::int32_t, std::int32_t>, std::size_t>> shared; // (old, new) -> snaxels
-    for (const auto& link : links) {
-        if (shared.empty() || shared.back().first != link) shared.push_back({link, 0});
-        ++shared.back().second;
+    for (std::size_t l = 0; l < old_loops; ++l) {
+        const auto first = linked.begin() + bucket_start[l], last = linked.begin() + bucket_start[l + 1];
+        if (!std::is_sorted(first, last)) std::sort(first, last); // (mostly one loop)
+        for (auto it = first; it != last; ++it) {
+            const std::pair<std::int32_t, std::int32_t> link{std::int32_t(l), *it};
+            if (it == first || shared.back().first != link) shared.push_back({link, 0});
+            ++shared.back().second;
+        }
     }
     // Per loop, the loops on the other side, ascending.
     std::vector<std::vector<std::int32_t>> pred(new_loops), succ(old_loops);
