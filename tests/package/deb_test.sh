@@ -43,6 +43,14 @@ dpkg-deb -c "$dev" | awk '{print $6}' | grep -q "/usr/include/snaxels/version.h"
 
 root="$work/root"
 dpkg-deb -x "$deb" "$root"
+# The programs are stripped; the library keeps the symbols linking needs.
+for program in usr/bin/snaxels-cli usr/libexec/snaxels/snaxels-import; do
+  file "$root/$program" | grep -q ", stripped" || { echo "$program is not stripped"; file "$root/$program"; exit 1; }
+done
+dpkg-deb -x "$dev" "$work/dev-root"
+archive=$(find "$work/dev-root" -name 'libsnaxels*.a' | head -1)
+nm "$archive" >"$work/symbols.txt" 2>/dev/null
+grep -q "extract_fronts" "$work/symbols.txt" || { echo "the library in snaxels-dev lost its symbols"; exit 1; }
 desktop-file-validate "$root/usr/share/applications/snaxels.desktop"
 python3 - "$root/usr/share/mime/packages/snaxels.xml" "$root/usr/share/icons/hicolor/scalable/apps/snaxels.svg" \
   "$root/usr/share/applications/snaxels.desktop" <<'PY'
