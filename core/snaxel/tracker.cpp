@@ -19,22 +19,44 @@ glm::dvec3 loop_centroid(const Fronts& fronts, const FrontLoop& loop,
     return loop.size ? sum / double(loop.size) : sum;
 }
 
-// Midpoint of the closest pair of points of two loops (subsampled for long loops).
+// Midpoint of the closest pair of points of two loops (subsampled for long
+// loops: every k-th point, at most about 200 of each): of the pairs at the
+// least distance, the first in a's order, then b's. The samples of b are
+// sorted by x, and each point of a looks only at those within the best
+// distance so far in x.
 glm::dvec3 closest_between(const std::vector<glm::dvec3>& a, const std::vector<glm::dvec3>& b) {
+    if (a.empty() || b.empty()) return glm::dvec3(0.0);
     const std::size_t sa = std::max<std::size_t>(1, a.size() / 200), sb = std::max<std::size_t>(1, b.size() / 200);
-    double best = std::numeric_limits<double>::max();
+    std::vector<std::size_t> bx;
+    for (std::size_t j = 0; j < b.size(); j += sb) bx.push_back(j);
+    std::sort(bx.begin(), bx.end(), [&](std::size_t p, std::size_t q) { return b[p].x < b[q].x || (b[p].x == b[q].x && p < q); });
+    double best = std::numeric_limits<double>::infinity();
     std::size_t bi = 0, bj = 0;
-    for (std::size_t i = 0; i < a.size(); i += sa)
-        for (std::size_t j = 0; j < b.size(); j += sb) {
-            const glm::dvec3 gap = a[i] - b[j];
-            const double d = glm::dot(gap, gap); // (squared: the same order, no root)
-            if (d < best) {
-                best = d;
-                bi = i;
-                bj = j;
-            }
+    auto consider = [&](std::size_t i, std::size_t j) {
+        const glm::dvec3 gap = a[i] - b[j];
+        const double d = glm::dot(gap, gap); // (squared: the same order, no root)
+        if (d < best || (d == best && (i < bi || (i == bi && j < bj)))) {
+            best = d;
+            bi = i;
+            bj = j;
         }
-    return a.empty() || b.empty() ? glm::dvec3(0.0) : 0.5 * (a[bi] + b[bj]);
+    };
+    for (std::size_t i = 0; i < a.size(); i += sa) {
+        const auto at = std::lower_bound(bx.begin(), bx.end(), a[i].x, [&](std::size_t j, double x) { return b[j].x < x; });
+        // Outward from a[i]'s x, while the gap in x alone is no more than the best distance.
+        for (auto it = at; it != bx.end(); ++it) {
+            const double dx = b[*it].x - a[i].x;
+            if (dx * dx > best) break;
+            consider(i, *it);
+        }
+        for (auto it = at; it != bx.begin();) {
+            --it;
+            const double dx = a[i].x - b[*it].x;
+            if (dx * dx > best) break;
+            consider(i, *it);
+        }
+    }
+    return 0.5 * (a[bi] + b[bj]);
 }
 
 } // namespace
