@@ -39,18 +39,22 @@ Fronts extract_fronts(const MeshTopology& topo, const std::vector<std::uint8_t>&
     // a snaxel's next is set from one face and its prev from another, by
     // one iteration each, so the iterations run in parallel.
     parallel_for(n, [&](std::size_t i) {
-        for (const std::int32_t f : topo.edge_faces()[crossing_edges[i]]) {
+        const std::int32_t e = crossing_edges[i];
+        for (const std::int32_t f : topo.edge_faces()[e]) {
             if (f == kNone) continue;
             const auto& fv = topo.face_vertices()[f];
-            std::int32_t leave = kNone, enter = kNone;
+            const auto& fe = topo.face_edges()[f];
+            std::int32_t leave_edge = kNone, enter_edge = kNone;
             for (int k = 0; k < 3; ++k) {
                 const bool here = inside[fv[k]], there = inside[fv[(k + 1) % 3]];
-                if (here && !there) leave = fronts.edge_snaxel[topo.face_edges()[f][k]];
-                if (!here && there) enter = fronts.edge_snaxel[topo.face_edges()[f][k]];
+                if (here && !there) leave_edge = fe[k];
+                if (!here && there) enter_edge = fe[k];
             }
-            if (leave != static_cast<std::int32_t>(i) || enter == kNone) continue; // (an incomplete edge list: check_fronts says so)
+            if (leave_edge != e || enter_edge == kNone) continue;
+            const std::int32_t enter = fronts.edge_snaxel[enter_edge];
+            if (enter == kNone) continue; // (an incomplete edge list: check_fronts says so)
             fronts.snaxels[i].next = enter;
-            fronts.snaxels[enter].prev = leave;
+            fronts.snaxels[enter].prev = static_cast<std::int32_t>(i);
         }
     }, 1024);
     // Loops: open chains from their start, then the remaining cycles.
