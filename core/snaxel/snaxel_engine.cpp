@@ -10,6 +10,7 @@
 #include <numeric>
 
 #include "snaxels/error.h"
+#include "snaxels/util/detail/parallel.h"
 
 namespace snaxels {
 namespace {
@@ -178,6 +179,19 @@ double polish_root(const MeshTopology& topo, const ContourFunction& f, std::int3
     return 0.5 * (t0 + t1);
 }
 
+void polish_snaxels(const MeshTopology& topology, const ContourFunction& f, const EngineOptions& options,
+                    ContourResult& result) {
+    // N.V along a slerp is one sinusoid over less than half a period: a
+    // single crossing, so only the other kinds need the bracketing scan.
+    const int scan = result.spec.kind == ContourKind::Visual ? 1 : options.polish_scan_samples;
+    std::vector<Snaxel>& snaxels = result.fronts.snaxels;
+    parallel_for(snaxels.size(), [&](std::size_t i) {
+        Snaxel& s = snaxels[i];
+        s.t = polish_root(topology, f, s.inside, s.outside, result.vertex_f[std::size_t(s.inside)],
+                          result.vertex_f[std::size_t(s.outside)], options.polish_tolerance, scan);
+    }, 1024);
+}
+
 void set_snaxel_margins(const MeshTopology& topology, const Camera& camera, ContourResult& result) {
     if (result.spec.kind != ContourKind::Suggestive) {
         result.snaxel_margin.clear();
@@ -238,12 +252,7 @@ ContourResult SnaxelEngine::compute(const ContourSpec& spec, const Camera& camer
     std::vector<std::int32_t> crossing = positive.stopped_edges();
     std::sort(crossing.begin(), crossing.end());
     result.fronts = extract_fronts(topo_, inside, crossing);
-    // N.V along a slerp is one sinusoid over less than half a period: a
-    // single crossing, so only the other kinds need the bracketing scan.
-    const int scan = spec.kind == ContourKind::Visual ? 1 : options.polish_scan_samples;
-    for (Snaxel& s : result.fronts.snaxels)
-        s.t = polish_root(topo_, f, s.inside, s.outside, result.vertex_f[s.inside],
-                          result.vertex_f[s.outside], options.polish_tolerance, scan);
+    polish_snaxels(topo_, f, options, result);
     set_snaxel_margins(topo_, camera, result);
     if (options.check_invariants) {
         if (const std::string problem = check_fronts(topo_, result.fronts, inside); !problem.empty())

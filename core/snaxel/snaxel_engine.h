@@ -60,6 +60,11 @@ struct ContourResult {
     ContourStats stats;
 };
 
+/// Puts every snaxel of @p result.fronts at the root of @p f on its edge
+/// (polish_root, from @p result.vertex_f, the frame's f; in parallel).
+void polish_snaxels(const MeshTopology& topology, const ContourFunction& f, const EngineOptions& options,
+                    ContourResult& result);
+
 /// Fills @p result.snaxel_margin for its fronts, as its kind needs (see
 /// ContourResult::snaxel_margin; @p result.vertex_f must be the frame's f).
 void set_snaxel_margins(const MeshTopology& topology, const Camera& camera, ContourResult& result);

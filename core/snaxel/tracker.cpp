@@ -6,6 +6,7 @@
 #include <stdexcept>
 
 #include "snaxels/error.h"
+#include "snaxels/util/detail/parallel.h"
 
 namespace snaxels {
 namespace {
@@ -138,7 +139,7 @@ void ContourTracker::track(const Camera& camera, const Light& light) {
     const std::vector<std::int32_t> changed = flip_changed_vertices();
     sweep_parents(old, changed);
     result.fronts = extract_fronts(topo_, inside_, crossing_edges(old, changed));
-    polish_snaxels(engine, f);
+    place_snaxels(engine, f);
     set_snaxel_margins(topo_, camera, result);
     if (options_.check_invariants) {
         if (const std::string problem = check_fronts(topo_, result.fronts, inside_); !problem.empty())
@@ -225,18 +226,12 @@ std::vector<std::int32_t> ContourTracker::crossing_edges(const Fronts& old, cons
     return crossing;
 }
 
-/// Every new snaxel at its function's root on its edge.
-void ContourTracker::polish_snaxels(const SnaxelEngine& engine, const ContourFunction& f) {
-    ContourResult& result = frame_.contour;
-    Fronts& fronts = result.fronts;
-    const int scan = spec_.kind == ContourKind::Visual ? 1 : options_.polish_scan_samples;
-    snaxel_position_.resize(fronts.snaxels.size());
-    for (std::size_t s = 0; s < fronts.snaxels.size(); ++s) {
-        Snaxel& sn = fronts.snaxels[s];
-        sn.t = polish_root(topo_, f, sn.inside, sn.outside, result.vertex_f[sn.inside], result.vertex_f[sn.outside],
-                           options_.polish_tolerance, scan);
-        snaxel_position_[s] = engine.position(sn);
-    }
+/// Every new snaxel at its function's root on its edge, and where that is.
+void ContourTracker::place_snaxels(const SnaxelEngine& engine, const ContourFunction& f) {
+    polish_snaxels(topo_, f, options_, frame_.contour);
+    const std::vector<Snaxel>& snaxels = frame_.contour.fronts.snaxels;
+    snaxel_position_.resize(snaxels.size());
+    parallel_for(snaxels.size(), [&](std::size_t s) { snaxel_position_[s] = engine.position(snaxels[s]); }, 4096);
 }
 
 /// 4. Identities. Returns per new snaxel the old snaxel it continues or was

@@ -64,7 +64,7 @@ class ContourTracker {
     std::vector<std::int32_t> flip_changed_vertices();
     void sweep_parents(const Fronts& old, const std::vector<std::int32_t>& changed);
     std::vector<std::int32_t> crossing_edges(const Fronts& old, const std::vector<std::int32_t>& changed);
-    void polish_snaxels(const SnaxelEngine& engine, const ContourFunction& f);
+    void place_snaxels(const SnaxelEngine& engine, const ContourFunction& f);
     std::vector<std::int32_t> assign_identities(const TrackedFrame& prev, const std::vector<glm::dvec3>& old_position);
     void match_loops(const TrackedFrame& prev, const std::vector<glm::dvec3>& old_position,
                      const std::vector<std::int32_t>& source);
