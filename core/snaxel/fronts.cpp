@@ -37,7 +37,9 @@ Fronts extract_fronts(const MeshTopology& topo, const std::vector<std::uint8_t>&
     // linking leave -> enter keeps R on the left of every loop. Every face
     // the front crosses is reached from its leaving snaxel, which links it:
     // a snaxel's next is set from one face and its prev from another, by
-    // one iteration each, so the iterations run in parallel.
+    // one iteration each, so the iterations run in parallel. (The two faces
+    // of an edge run it in opposite directions, as the halfedge mesh it was
+    // built from guarantees, so a snaxel leaves one and enters the other.)
     parallel_for(n, [&](std::size_t i) {
         const std::int32_t e = crossing_edges[i];
         for (const std::int32_t f : topo.edge_faces()[e]) {
