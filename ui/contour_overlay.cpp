@@ -93,7 +93,7 @@ bool pose_scene(const LoadedMesh& mesh, ContourScene& scene, const std::optional
             scene.tracking->jump();
         if (!scene.driver || !(scene.driver_spec == pose->clip)) {
             scene.driver.reset();
-            const glm::dvec3 centre = 0.5 * (mesh.report.bbox_min + mesh.report.bbox_max);
+            const glm::dvec3 centre = mesh.report.centre();
             scene.driver = std::make_unique<FrameDriver>(pose->clip, mesh, scene.rest, Camera{}, Light{}, centre,
                                                          scene.mesh_path);
             scene.driver_spec = pose->clip;

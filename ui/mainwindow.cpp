@@ -232,8 +232,8 @@ void MainWindow::turnLight(double right, double down) {
 const LoadedMesh* MainWindow::mesh() const { return document_->mesh().get(); }
 
 glm::dvec3 MainWindow::meshCentre() const {
-    const LoadedMesh* mesh = document_->mesh().get();
-    return mesh ? 0.5 * (mesh->report.bbox_min + mesh->report.bbox_max) : glm::dvec3(0.0);
+    const LoadedMesh* loaded = mesh();
+    return loaded ? loaded->report.centre() : glm::dvec3(0.0);
 }
 
 Light MainWindow::frameLight() const {

@@ -52,7 +52,7 @@ int run_render(const std::vector<std::string>& argv) {
                   << ": warning: " << w.message << '\n';
     const LoadedMesh loaded = load_mesh(mesh_path);
     OrbitView view = project.view;
-    view.centre = 0.5 * (loaded.report.bbox_min + loaded.report.bbox_max); // as the application frames it
+    view.centre = loaded.report.centre(); // as the application frames it
     AnimationSpec animation = project.animation;
     if (animation.kind == AnimationSpec::Kind::Sequence) // relative to the project, as its mesh is
         animation.pattern = resolve_project_mesh(project_path, animation.pattern);
@@ -69,7 +69,7 @@ int run_render(const std::vector<std::string>& argv) {
     const int frame = args.value("frame") ? parse_int("frame", *args.value("frame"), 0, 100000) : project.frame;
     MeshTopology topology = engine_topology(loaded.mesh, job.refine);
     find_parabolic_with_progress(topology, job.kinds); // on the pose as loaded, as the animation does
-    const glm::dvec3 centre = 0.5 * (loaded.report.bbox_min + loaded.report.bbox_max);
+    const glm::dvec3 centre = loaded.report.centre();
     FrameDriver driver(job.animation, loaded, topology, job.camera, job.light, centre, mesh_path);
     const FramePose pose = driver.pose(frame);
     StillJob still;

@@ -157,7 +157,7 @@ void complete_scene(SceneOptions& o, const MeshReport& report) {
                   << (levels == 1 ? " level" : " levels") << " (at most " << kMaxRefinedFaces << " faces)\n";
         o.refine = levels;
     }
-    const glm::dvec3 centre = 0.5 * (report.bbox_min + report.bbox_max);
+    const glm::dvec3 centre = report.centre();
     if (!o.camera.orthographic()) {
         o.camera.target = o.target.value_or(centre);
         if (glm::length(o.camera.target - o.camera.eye) < 1e-12)

@@ -87,7 +87,7 @@ struct ImageFrame {
 /// moves is framed on the union of its poses over the animation (its rest
 /// pose, as loaded, may stand elsewhere and at another scale).
 ImageFrame frame_image(FrameDriver& driver, const LoadedMesh& mesh, const AnimationJob& job, int frames) {
-    const glm::dvec3 mesh_centre = 0.5 * (mesh.report.bbox_min + mesh.report.bbox_max);
+    const glm::dvec3 mesh_centre = mesh.report.centre();
     glm::dvec3 lo = mesh.report.bbox_min, hi = mesh.report.bbox_max;
     ImageFrame out;
     out.camera = job.camera;
@@ -182,7 +182,7 @@ AnimationOutput run_animation(const LoadedMesh& mesh, const std::string& mesh_pa
     AnimationOutput out;
     MeshTopology rest = engine_topology(mesh.mesh, job.refine); // the mesh as loaded
     attach_parabolic(rest, job);
-    const glm::dvec3 mesh_centre = 0.5 * (mesh.report.bbox_min + mesh.report.bbox_max);
+    const glm::dvec3 mesh_centre = mesh.report.centre();
     FrameDriver driver(job.animation, mesh, rest, job.camera, job.light, mesh_centre, mesh_path);
     const int frames = frame_count(job, mesh_path);
     out.frames = frames;

@@ -103,7 +103,7 @@ StillOutput render_still(const LoadedMesh& mesh, const MeshTopology& topology, c
                          const StillJob& job, StillTracking* tracking) {
     StillOutput out;
     const MeshReport& report = mesh.report;
-    const glm::dvec3 centre = 0.5 * (report.bbox_min + report.bbox_max);
+    const glm::dvec3 centre = report.centre();
     const double radius = std::max(0.5 * glm::length(report.bbox_max - report.bbox_min), 1e-12);
     if (rays && rays->topology().pose() != topology.pose())
         throw std::invalid_argument("render_still: the ray scene is of another pose than the topology");

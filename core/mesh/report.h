@@ -23,6 +23,9 @@ struct MeshReport {
     std::size_t flipped_components = 0; ///< closed components turned outward (they faced inward)
     glm::dvec3 bbox_min{0.0};
     glm::dvec3 bbox_max{0.0};
+
+    /// The middle of the bounding box: what turntables and light orbits turn about.
+    glm::dvec3 centre() const { return 0.5 * (bbox_min + bbox_max); }
 };
 
 /// The report as one JSON object (keys as documented in docs/cli.md).

@@ -324,7 +324,8 @@ std::shared_ptr<const CurvatureField> pose_curvature(const MeshTopology& topo) {
 std::vector<double> radial_curvature(const MeshTopology& topo, const CurvatureField& field, const Camera& camera) {
     std::vector<double> out(topo.n_vertices(), 0.0);
     const auto P = topo.positions();
-    parallel_for(out.size(), [&](std::size_t v) { out[v] = radial_at(field, v, camera.to_viewer(P[v])); }, 4096);
+    const ToViewer to_viewer(camera);
+    parallel_for(out.size(), [&](std::size_t v) { out[v] = radial_at(field, v, to_viewer(P[v])); }, 4096);
     return out;
 }
 

@@ -22,7 +22,7 @@ TrackedMapTiming time_tracked_snaxel_map(const MeshTopology& topo, const MeshRep
                                          const glm::dvec3& view_dir, const glm::dvec3& up, int size, double k) {
     const SnaxelEngine engine(topo);
     const RayScene rays(topo);
-    const glm::dvec3 centre = 0.5 * (report.bbox_min + report.bbox_max);
+    const glm::dvec3 centre = report.centre();
     const double radius = 0.5 * glm::length(report.bbox_max - report.bbox_min);
     EngineOptions options;
     options.check_invariants = false;
