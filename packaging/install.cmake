@@ -15,7 +15,10 @@ endif()
 install(TARGETS snaxels-import RUNTIME DESTINATION ${CMAKE_INSTALL_LIBEXECDIR}/snaxels COMPONENT runtime)
 # The application finds its data in ../share/snaxels, as in the build tree.
 install(DIRECTORY resources styles DESTINATION ${CMAKE_INSTALL_DATADIR}/snaxels COMPONENT runtime)
-install(FILES README.md DEVELOPING.md DESTINATION ${CMAKE_INSTALL_DOCDIR} COMPONENT runtime)
+install(FILES README.md DEVELOPING.md LICENSE DESTINATION ${CMAKE_INSTALL_DOCDIR} COMPONENT runtime)
+# Debian's place for a package's licence: /usr/share/doc/PACKAGE/copyright.
+install(FILES LICENSE DESTINATION ${CMAKE_INSTALL_DOCDIR} RENAME copyright COMPONENT runtime)
+install(FILES LICENSE DESTINATION ${CMAKE_INSTALL_DATADIR}/doc/snaxels-dev RENAME copyright COMPONENT development)
 install(DIRECTORY docs/ DESTINATION ${CMAKE_INSTALL_DOCDIR} COMPONENT runtime)
 install(FILES packaging/snaxels.desktop DESTINATION ${CMAKE_INSTALL_DATADIR}/applications COMPONENT runtime)
 install(FILES packaging/snaxels.svg DESTINATION ${CMAKE_INSTALL_DATADIR}/icons/hicolor/scalable/apps
@@ -25,7 +28,9 @@ install(FILES packaging/snaxels-mime.xml DESTINATION ${CMAKE_INSTALL_DATADIR}/mi
 
 set(CPACK_PACKAGE_NAME snaxels)
 set(CPACK_PACKAGE_VENDOR "The snaxels developers")
-set(CPACK_PACKAGE_CONTACT "The snaxels developers <snaxels@invalid>")
+# The maintainers' address, the one the project's commits are made under.
+set(CPACK_PACKAGE_CONTACT "The snaxels maintainers <maintainers@users.noreply.h-seed-10b5db70.example>")
+set(CPACK_RESOURCE_FILE_LICENSE "${CMAKE_CURRENT_SOURCE_DIR}/LICENSE")
 set(CPACK_PACKAGE_DESCRIPTION_SUMMARY "${PROJECT_DESCRIPTION}")
 set(CPACK_PACKAGE_VERSION ${PROJECT_VERSION})
 set(CPACK_GENERATOR DEB)

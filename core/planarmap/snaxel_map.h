@@ -1,7 +1,7 @@
 #pragma once
 /// The snaxel-defined visible-surface planar map (the paper's "Planar Map
 /// Generation", second method), in the fronts-as-region-boundaries form of
-/// ENGINE-NOTES: every vertex carries the label its converged fronts give
+/// docs/engine.md: every vertex carries the label its converged fronts give
 /// it, and the map's regions are the connected sets of equal labels, bounded
 /// by the fronts on the edges between them.
 ///

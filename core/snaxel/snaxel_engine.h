@@ -3,7 +3,8 @@
 /// contour function, sweeps them over the vertices until they stop where f
 /// changes sign (fan-out past each vertex, merging where fronts meet), labels
 /// the regions they sweep, and polishes every snaxel to the root of f on its
-/// edge. See ENGINE-NOTES.md: a front is the boundary of its swept vertices.
+/// edge. A front is the boundary of the vertices it has swept
+/// (docs/engine.md, "Fronts as region boundaries").
 
 #include <cstdint>
 #include <vector>
