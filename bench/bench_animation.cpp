@@ -121,10 +121,10 @@ static void BM_ExportHorseTurntable360(benchmark::State& state) {
     job.animation.kind = AnimationSpec::Kind::Turntable;
     job.animation.degrees_per_frame = 1.0;
     job.animation.frames = 360;
-    job.camera = horse_camera(0);
-    job.light = default_light(job.camera);
-    job.engine.check_invariants = false;
-    job.visibility = state.range(0) != 0;
+    job.scene.camera = horse_camera(0);
+    job.scene.light = default_light(job.scene.camera);
+    job.scene.engine.check_invariants = false;
+    job.scene.visibility = state.range(0) != 0;
     std::size_t bytes = 0;
     double export_ms = 0.0;
     for (auto _ : state) {

@@ -72,7 +72,7 @@ void topology_bench(benchmark::State& state, const std::string& spec) {
     const Prepared& p = prepared(spec);
     for (auto _ : state) {
         MeshTopology t = build_topology(p.mesh.mesh);
-        benchmark::DoNotOptimize(t.ring().data());
+        benchmark::DoNotOptimize(t.edge_vertices().data());
     }
 }
 
@@ -100,12 +100,12 @@ void curvature_bench(benchmark::State& state, const std::string& spec) {
 BENCHMARK_CAPTURE(curvature_bench, horse, "horse.ply")->Unit(benchmark::kMillisecond);
 
 // The pose's curvature as suggestive contours read it: the tensors smoothed
-// (pose_curvature), on a fresh copy of the pose each time (a copy keeps none).
+// (require_curvature), on a fresh copy of the pose each time (a copy keeps none).
 void pose_curvature_bench(benchmark::State& state, const std::string& spec) {
     const Prepared& p = prepared(spec);
     for (auto _ : state) {
         const MeshTopology fresh = p.topology.posed(std::make_shared<const MeshPose>(*p.topology.pose()));
-        const auto field = pose_curvature(fresh);
+        const auto field = require_curvature(fresh);
         benchmark::DoNotOptimize(field->k1.data());
     }
     state.counters["vertices"] = double(p.topology.n_vertices());

@@ -5,7 +5,7 @@
 
 #include "snaxels/mesh/import.h"
 #include "snaxels/snaxel/parabolic.h"
-#include "snaxels/snaxel/refine.h"
+#include "snaxels/mesh/refine.h"
 
 using namespace snaxels;
 

@@ -9,7 +9,7 @@
 #include <algorithm>
 
 #include "snaxels/mesh/import.h"
-#include "snaxels/planarmap/detail/map_timing.h"
+#include "snaxels/planarmap/map_timing.h"
 
 using namespace snaxels;
 

@@ -12,7 +12,7 @@
 #include <vector>
 
 #include "snaxels/snaxel/contour_function.h"
-#include "snaxels/snaxel/topology.h"
+#include "snaxels/mesh/topology.h"
 
 namespace snaxels::bench {
 

@@ -23,9 +23,9 @@
 
 #include "snaxels/mesh/build.h"
 #include "snaxels/mesh/procedural.h"
-#include "snaxels/snaxel/refine.h"
+#include "snaxels/mesh/refine.h"
 #include "snaxels/snaxel/snaxel_engine.h"
-#include "snaxels/snaxel/topology.h"
+#include "snaxels/mesh/topology.h"
 #include "snaxels/snaxel/tracker.h"
 
 using namespace snaxels;

@@ -8,7 +8,7 @@
 
 #include "snaxels/animation/still.h"
 #include "snaxels/error.h"
-#include "snaxels/snaxel/refine.h"
+#include "snaxels/mesh/refine.h"
 #include "snaxels/visibility/visibility.h"
 
 namespace snaxels::ui {
@@ -121,10 +121,10 @@ OverlayResult compute_overlay(const LoadedMesh& mesh, ContourScene& scene, const
         out.error = QString::fromStdString(e.what());
         return out;
     }
-    scene.topology.parabolic = parabolic;
+    keep_parabolic(scene.topology, ParabolicOptions{}, parabolic);
     StillJob job = make_still_job(style, camera, light);
     auto is_parabolic = [](const ContourSpec& k) { return k.kind == ContourKind::Parabolic; };
-    if (!parabolic) job.kinds.erase(std::remove_if(job.kinds.begin(), job.kinds.end(), is_parabolic), job.kinds.end());
+    if (!parabolic) job.scene.kinds.erase(std::remove_if(job.scene.kinds.begin(), job.scene.kinds.end(), is_parabolic), job.scene.kinds.end());
     StillOutput still;
     try {
         still = render_still(mesh, scene.topology, scene.rays.get(), job, scene.tracking.get());
@@ -132,12 +132,12 @@ OverlayResult compute_overlay(const LoadedMesh& mesh, ContourScene& scene, const
         out.error = QString::fromStdString(e.what());
         return out;
     }
-    out.light = job.light;
-    if (show_parabolic && parabolic && std::none_of(job.kinds.begin(), job.kinds.end(), is_parabolic)) {
+    out.light = job.scene.light;
+    if (show_parabolic && parabolic && std::none_of(job.scene.kinds.begin(), job.scene.kinds.end(), is_parabolic)) {
         // View > Parabolic Curves: in the 3-D view only.
         const SnaxelEngine engine(scene.topology);
-        still.results.push_back(engine.compute(ContourSpec{ContourKind::Parabolic, 0.0}, job.camera, job.light));
-        still.visibility.push_back(VisibilitySampler(*scene.rays, job.camera).classify(engine, still.results.back()));
+        still.results.push_back(engine.compute(ContourSpec{ContourKind::Parabolic, 0.0}, job.scene.camera, job.scene.light));
+        still.visibility.push_back(VisibilitySampler(*scene.rays, job.scene.camera).classify(engine, still.results.back()));
     }
 
     out.svg = std::move(still.svg);

@@ -9,6 +9,15 @@ namespace snaxels::ui {
 Document::Document(QString style_text, QObject* parent)
     : QObject(parent), undo_(new QUndoStack(this)), defaultStyle_(style_text), style_(std::move(style_text)) {
     connect(undo_, &QUndoStack::cleanChanged, this, [this] { emit modifiedChanged(isModified()); });
+    try {
+        parsed_ = parse_style(style_.toStdString(), "style", nullptr);
+    } catch (const StyleError&) {
+        parsed_ = default_style();
+    }
+}
+
+AnimationJob Document::animationJob() const {
+    return make_animation_job(parsed_, animation_, orbit_base_camera(view_), light_);
 }
 
 bool Document::isModified() const { return meshChanged_ || !undo_->isClean(); }
@@ -16,9 +25,8 @@ bool Document::isModified() const { return meshChanged_ || !undo_->isClean(); }
 template <class T>
 void Document::edit(const T& now, const T& value, const char* text, int id, void (Document::*assign)(const T&)) {
     if (value == now) return;
-    // The change happens here; the step's first redo does nothing.
+    // Pushing the step runs its redo, which makes the change.
     undo_->push(new SetValueCommand<T>(tr(text), id, now, value, [this, assign](const T& v) { (this->*assign)(v); }));
-    (this->*assign)(value);
 }
 
 void Document::setStyleText(const QString& text) {
@@ -40,6 +48,12 @@ void Document::setAnimation(const AnimationSpec& animation) {
 void Document::assignStyle(const QString& text) {
     style_ = text;
     emit styleTextChanged(style_);
+    try {
+        parsed_ = parse_style(style_.toStdString(), "style", nullptr);
+    } catch (const StyleError&) {
+        return; // the last style that parsed stays in force, as the editor says
+    }
+    emit styleChanged(parsed_);
 }
 
 void Document::assignView(const OrbitView& view) {

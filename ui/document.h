@@ -13,9 +13,11 @@
 #include <QString>
 
 #include "snaxels/animation/frame_driver.h"
+#include "snaxels/animation/pipeline.h"
 #include "snaxels/mesh/build.h"
 #include "snaxels/project/project.h"
 #include "snaxels/scene/orbit.h"
+#include "snaxels/style/style.h"
 
 class QUndoStack;
 
@@ -30,6 +32,9 @@ class Document : public QObject {
     QUndoStack* undoStack() const { return undo_; }
 
     const QString& styleText() const { return style_; }
+    /// The style in force: the text's, or, while the text does not parse,
+    /// the last one that did.
+    const Style& style() const { return parsed_; }
     const OrbitView& view() const { return view_; }
     /// The light the user set (none: the style's light, else the default one).
     const std::optional<Light>& light() const { return light_; }
@@ -38,6 +43,10 @@ class Document : public QObject {
     /// The mesh loaded now: its path or proc: spec, and the mesh.
     const QString& meshSpec() const { return meshSpec_; }
     const std::shared_ptr<const LoadedMesh>& mesh() const { return mesh_; }
+    /// The animation the document describes, as the export writes it (its
+    /// style, camera at frame 0, light and animation; the callbacks and the
+    /// output are the caller's).
+    AnimationJob animationJob() const;
     /// Empty until saved or opened.
     const QString& projectPath() const { return projectPath_; }
     /// Unsaved changes: an edit since the last save or open, or a new mesh.
@@ -78,6 +87,8 @@ class Document : public QObject {
 
   signals:
     void styleTextChanged(const QString& text);
+    /// The style in force changed (its text parsed).
+    void styleChanged(const snaxels::Style& style);
     void viewChanged(const snaxels::OrbitView& view);
     void lightChanged(const std::optional<snaxels::Light>& light);
     void animationChanged(const snaxels::AnimationSpec& animation);
@@ -99,6 +110,7 @@ class Document : public QObject {
     QUndoStack* undo_;
     QString defaultStyle_;
     QString style_;
+    Style parsed_;
     OrbitView view_;
     std::optional<Light> light_;
     AnimationSpec animation_;

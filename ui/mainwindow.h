@@ -1,21 +1,24 @@
 #pragma once
-// The main window: the 3-D view, the SVG pane, the style editor and the
-// timeline around one document (mesh, camera, light, animation, style) with
-// an undo stack, saved as a project file; menus, recent files,
-// drag-and-drop and a status bar. Meshes load and exports run on worker
-// threads so the window never freezes.
+// The main window: a frame of the 3-D view, the SVG pane, the style editor
+// and the timeline around one Document (mesh, style, camera, light,
+// animation, with its undo stack, saved as a project file); menus, recent
+// files, drag-and-drop and a status bar. The work runs in controllers
+// beside it, each testable without a window, on worker threads so the
+// window never freezes: MeshLoader reads meshes, ContourScheduler computes
+// the contours the views show, ParabolicSearch finds parabolic curves and
+// AnimationExport writes animations.
 
-#include <atomic>
+#include <functional>
 #include <memory>
 #include <optional>
 
-#include <QFutureWatcher>
 #include <QMainWindow>
 
 #include "snaxels/animation/pipeline.h"
 #include "snaxels/mesh/build.h"
 #include "snaxels/project/project.h"
 #include "ui/contour_overlay.h"
+#include "ui/mesh_loader.h"
 
 class QAction;
 class QLabel;
@@ -27,19 +30,14 @@ class QUndoStack;
 
 namespace snaxels::ui {
 
+class AnimationExport;
+class ContourScheduler;
 class Document;
 class MeshView;
+class ParabolicSearch;
 class StyleEditor;
 class SvgPane;
 class Timeline;
-
-/// What a background load produces: a mesh or the one-line reason it failed.
-struct LoadResult {
-    std::shared_ptr<const LoadedMesh> mesh;
-    std::shared_ptr<ContourScene> scene;
-    std::shared_ptr<MeshGeometry> geometry;
-    QString error;
-};
 
 class MainWindow : public QMainWindow {
     Q_OBJECT
@@ -85,11 +83,11 @@ class MainWindow : public QMainWindow {
     QAction* parabolicAction() const { return parabolicAction_; }
     /// The parabolic curves of the mesh, once found (null before, or while
     /// they are being found off the GUI thread).
-    std::shared_ptr<const ParabolicResult> parabolicCurves() const { return parabolic_; }
+    std::shared_ptr<const ParabolicResult> parabolicCurves() const;
     /// The view or the style asks for parabolic curves not found yet.
+    bool parabolicPending() const;
     /// Contours are scheduled or being computed (a result is still to come).
     bool contoursBusy() const;
-    bool parabolicPending() const { return wantsParabolic() && !(parabolic_ && scene_ && parabolicFor_ == meshGeneration_); }
     /// Exports the timeline's animation as animated SVG (or Lottie) to
     /// @p path off the GUI thread, with a progress dialog that can cancel
     /// (nothing is written then); ends with exportFinished or exportFailed.
@@ -98,7 +96,7 @@ class MainWindow : public QMainWindow {
     bool exportFrame(const QString& path);
     /// The SVG the pane shows: what export writes for the current view.
     const QByteArray& currentSvg() const { return svg_; }
-    bool isLoading() const { return watcher_.isRunning(); }
+    bool isLoading() const;
 
     /// The contours currently drawn (for tests): loops and snaxels.
     std::size_t contourLoops() const { return contourLoops_; }
@@ -122,11 +120,17 @@ class MainWindow : public QMainWindow {
     void dropEvent(QDropEvent* event) override;
 
   private:
-    static QString exportCancelledMessage();
+    void createDocks();
+    void createStatusBar();
+    void connectControllers();
     /// Asks to save unsaved changes: false when the user cancels.
     bool maybeSave();
     bool saveProjectInteractive(bool ask_path);
+    /// What the widgets hold that has not reached the document yet (typing
+    /// not yet taken up, say) goes in, as the edits it is.
+    void commitWidgets();
     void applyProject(const Project& project, const QString& path, std::shared_ptr<const LoadedMesh> mesh);
+    void applySequence(const SequenceFiles& files, std::shared_ptr<const LoadedMesh> mesh);
     void updateTitle();
     /// Shows the document's changes in the widgets.
     void observeDocument();
@@ -135,19 +139,23 @@ class MainWindow : public QMainWindow {
     Light baseLight() const;
     void onLightDragged(glm::dvec3 axis_a, double angle_a, glm::dvec3 axis_b, double angle_b);
     void createMenus();
+    void createExportMenu();
+    void createViewMenu();
     void createStyleMenu();
-    void onLoadFinished();
+    void onLoadFinished(const LoadResult& result);
+    void onLoadFailed(const LoadResult& result);
+    void showMeshReport(const LoadedMesh& mesh);
     void scheduleContours();
     void applyFrame();
     Light frameLight() const;
     /// The middle of the mesh's bounding box (the origin without a mesh).
     glm::dvec3 meshCentre() const;
-    void startContours();
-    void onContoursFinished();
-    /// Finds the mesh's parabolic curves off the GUI thread (with progress in
-    /// the status bar) when the view or the style asks for them.
-    void ensureParabolic();
+    /// The work of the next contour computation, from the window's state now.
+    std::optional<std::function<OverlayResult()>> contourWork() const;
+    void onContoursReady(const OverlayResult& result);
     bool wantsParabolic() const;
+    /// A warning that names what failed, in a box that does not block.
+    void warn(const QString& title, const QString& message);
     void addRecentFile(const QString& path);
     void rebuildRecentMenu();
 
@@ -156,35 +164,23 @@ class MainWindow : public QMainWindow {
     QByteArray svg_;
     StyleEditor* styleEditor_;
     Timeline* timeline_;
-    bool exporting_ = false;
-    std::shared_ptr<std::atomic<bool>> exportCancel_ = std::make_shared<std::atomic<bool>>(false);
-    QFuture<QString> exportFuture_;
-    Style style_;
     QMenu* recentMenu_ = nullptr;
     QAction* regionsAction_ = nullptr;
     QAction* parabolicAction_ = nullptr;
     QProgressBar* parabolicProgress_ = nullptr;
-    std::shared_ptr<const ParabolicResult> parabolic_;
-    int meshGeneration_ = 0;  ///< counts meshes loaded
-    int parabolicFor_ = -1;   ///< the mesh parabolic_ belongs to
-    int searchFor_ = -1;      ///< the mesh the search under way is for (-1: none)
-    std::shared_ptr<std::atomic<bool>> parabolicCancel_;
-    QFutureWatcher<std::shared_ptr<const ParabolicResult>> parabolicWatcher_;
-    std::shared_ptr<QString> parabolicError_; ///< the running search's error, if any
     QLabel* meshLabel_;
     QProgressBar* busy_;
-    QFutureWatcher<LoadResult> watcher_;
-    QString loadingSpec_;
-    std::shared_ptr<ContourScene> scene_;
     QLabel* contourLabel_;
-    QTimer* contourTimer_;
-    QFutureWatcher<OverlayResult> contourWatcher_;
-    bool contoursPending_ = false;
     std::size_t contourLoops_ = 0;
+    std::shared_ptr<ContourScene> scene_; ///< the loaded mesh's, posed by the contour thread
 
     // The document: what a project file keeps, its undo stack and state. The
     // widgets show it; their edits go to its setters.
     Document* document_ = nullptr;
+    MeshLoader* loader_;
+    ContourScheduler* contours_;
+    ParabolicSearch* parabolic_;
+    AnimationExport* export_;
     /// The light as it is now: the document's, or one being dragged.
     std::optional<Light> light_;
     bool specAccepted_ = true; ///< the timeline took the document's last animation (its clip exists)

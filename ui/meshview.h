@@ -15,7 +15,7 @@
 #include <glm/glm.hpp>
 
 #include "snaxels/mesh/mesh.h"
-#include "snaxels/snaxel/topology.h"
+#include "snaxels/mesh/topology.h"
 #include "snaxels/scene/camera.h"
 #include "snaxels/scene/orbit.h"
 

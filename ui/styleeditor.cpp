@@ -236,7 +236,7 @@ void StyleEditor::apply() {
         marks.append(sel);
     };
     try {
-        Style style = parse_style(edit_->toPlainText().toStdString(), source_.toStdString(), &warnings);
+        (void)parse_style(edit_->toPlainText().toStdString(), source_.toStdString(), &warnings); // for its marks
         problem_.clear();
         QStringList lines;
         for (const StyleDiagnostic& w : warnings) {
@@ -245,9 +245,7 @@ void StyleEditor::apply() {
         }
         status_->setStyleSheet(warnings.empty() ? "color: #2e7d32" : "color: #9a6700");
         status_->setText(warnings.empty() ? tr("Style applied.") : lines.join('\n'));
-        style_ = std::move(style);
         edit_->setExtraSelections(marks);
-        emit styleChanged(style_);
     } catch (const StyleError& e) {
         const StyleDiagnostic& d = e.diagnostic();
         problem_ = QString("%1:%2: %3").arg(d.line).arg(d.column).arg(QString::fromStdString(d.message));

@@ -37,7 +37,6 @@ class StyleEditor : public QWidget {
     QString text() const { return edit_->toPlainText(); }
     /// Replaces the text (a preset or a file) and applies it at once.
     void setText(const QString& text, const QString& source);
-    const Style& style() const { return style_; }
     /// The last parse problem, "LINE:COL: message", or empty.
     QString problem() const { return problem_; }
     QPlainTextEdit* editor() const { return edit_; }
@@ -46,9 +45,9 @@ class StyleEditor : public QWidget {
     QCompleter* completer() const { return completer_; }
 
   signals:
-    /// A new style parsed and is in force.
-    void styleChanged(const snaxels::Style& style);
-    /// The text was taken up (typing paused, or set): parsed or not.
+    /// The text was taken up (typing paused, or set): parsed or not. The
+    /// document it goes to parses it again and keeps the style in force;
+    /// the editor parses only to mark problems.
     void textApplied(const QString& text);
 
   private:
@@ -63,7 +62,6 @@ class StyleEditor : public QWidget {
     QLabel* status_;
     QTimer debounce_;
     QString source_ = "style";
-    Style style_;
     QString problem_;
 };
 

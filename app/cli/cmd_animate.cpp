@@ -129,18 +129,9 @@ int run_animate(const std::vector<std::string>& argv) {
         return import_mesh(probe.sequence_path(0));
     }();
     if (mesh_path.empty()) mesh_path = loaded.report.source;
-    complete_scene(scene, loaded.report);
-
     AnimationJob job;
     job.animation = anim;
-    job.camera = scene.camera;
-    job.light = *scene.light;
-    job.kinds = scene.kinds;
-    job.style = scene.style;
-    job.visibility = scene.visibility;
-    job.map_kind = scene.planar_map.value_or(PlanarMapKind::Snaxel);
-    job.refine = scene.refine;
-    if (scene.check) job.engine.check_invariants = true;
+    job.scene = complete_scene(scene, loaded.report);
     job.svg = svg_options;
     job.format = format;
     job.frames_dir = frames_dir;

@@ -9,8 +9,8 @@
 #include "app/cli/scene_options.h"
 #include "snaxels/error.h"
 #include "snaxels/mesh/import.h"
-#include "snaxels/planarmap/detail/map_timing.h"
-#include "snaxels/snaxel/refine.h"
+#include "snaxels/planarmap/map_timing.h"
+#include "snaxels/mesh/refine.h"
 #include "snaxels/snaxel/snaxel_engine.h"
 
 namespace snaxels::cli {

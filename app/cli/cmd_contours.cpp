@@ -14,7 +14,7 @@
 #include "snaxels/export/contours_json.h"
 #include "snaxels/export/svg.h"
 #include "snaxels/mesh/import.h"
-#include "snaxels/snaxel/refine.h"
+#include "snaxels/mesh/refine.h"
 #include "snaxels/snaxel/snaxel_engine.h"
 #include "snaxels/util/atomic_file.h"
 #include "snaxels/visibility/visibility.h"
@@ -53,7 +53,7 @@ int run_contours(const std::vector<std::string>& argv) {
         return 0;
     }
     SceneOptions scene = parse_scene_options(args);
-    const bool planar = scene.planar_map.has_value();
+    const bool planar = scene.overrides.planar_map.has_value();
     const std::string json_out = args.value("json").value_or("");
     const std::string svg_out = args.value("svg").value_or("");
     if (!json_out.empty() && json_out == svg_out)
@@ -62,21 +62,12 @@ int run_contours(const std::vector<std::string>& argv) {
     // Everything about the command line is checked: now the expensive part.
     const LoadedMesh loaded = load_mesh(args.positional()[0]);
     const MeshReport& report = loaded.report;
-    complete_scene(scene, report);
-    const Camera& camera = scene.camera;
-    const Light& light = *scene.light;
+    const StillJob job{complete_scene(scene, report)};
+    const Camera& camera = job.scene.camera;
+    const Light& light = job.scene.light;
 
-    MeshTopology topology = engine_topology(loaded.mesh, scene.refine);
-    StillJob job;
-    job.camera = camera;
-    job.light = light;
-    job.kinds = scene.kinds;
-    job.style = scene.style;
-    job.visibility = scene.visibility;
-    job.planar_map = planar;
-    job.map_kind = scene.planar_map.value_or(PlanarMapKind::Snaxel);
-    if (scene.check) job.engine.check_invariants = true;
-    find_parabolic_with_progress(topology, job.kinds);
+    MeshTopology topology = engine_topology(loaded.mesh, job.scene.refine);
+    find_parabolic_with_progress(topology, job.scene.kinds);
     const StillOutput still = render_still(loaded, topology, nullptr, job);
     const std::vector<ContourResult>& results = still.results;
     const std::vector<ContourVisibility>& visibility = still.visibility;

@@ -5,7 +5,7 @@
 #include "app/cli/args.h"
 #include "app/cli/commands.h"
 #include "snaxels/mesh/import.h"
-#include "snaxels/snaxel/refine.h"
+#include "snaxels/mesh/refine.h"
 
 namespace snaxels::cli {
 

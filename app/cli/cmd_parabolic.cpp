@@ -13,7 +13,7 @@
 #include "app/cli/scene_options.h"
 #include "snaxels/mesh/import.h"
 #include "snaxels/snaxel/parabolic.h"
-#include "snaxels/snaxel/refine.h"
+#include "snaxels/mesh/refine.h"
 #include "snaxels/util/atomic_file.h"
 
 namespace snaxels::cli {

@@ -38,21 +38,22 @@ class Progress {
     const char* unit_;
 };
 
-/// Finds @p topology's parabolic curves (when @p kinds draw them and it has
-/// none yet) with a counter of view steps on standard error (when it is a
-/// terminal), and keeps them on the topology for the engine.
-inline void find_parabolic_with_progress(MeshTopology& topology, const std::vector<ContourSpec>& kinds) {
-    if (topology.parabolic ||
-        std::none_of(kinds.begin(), kinds.end(), [](const ContourSpec& k) { return k.kind == ContourKind::Parabolic; }))
+/// Finds @p topology's parabolic curves (when @p kinds draw them) with a
+/// counter of view steps on standard error (when it is a terminal), and
+/// keeps them in the topology's pose for the engine (require_parabolic).
+inline void find_parabolic_with_progress(const MeshTopology& topology, const std::vector<ContourSpec>& kinds) {
+    if (std::none_of(kinds.begin(), kinds.end(), [](const ContourSpec& k) { return k.kind == ContourKind::Parabolic; }))
         return;
     Progress progress(0, ::isatty(2), "view steps (parabolic curves)");
     ParabolicOptions options;
+    bool shown = false; // no bar when the curves are kept already
     options.progress = [&](int done, int total) {
+        shown = true;
         progress.set_total(total);
         progress.update(done);
     };
-    topology.parabolic = cached_parabolic(topology, options);
-    progress.finish();
+    require_parabolic(topology, options);
+    if (shown) progress.finish();
 }
 
 /// The format of the animation written to @p output: --format (svg or

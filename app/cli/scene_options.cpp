@@ -87,7 +87,7 @@ SceneOptions parse_scene_options(const Args& args) {
         throw UsageError("--light-dir and --light-pos exclude each other");
     for (const std::string& k : args.values("kind")) {
         try {
-            o.kinds.push_back(ContourSpec::parse(k));
+            o.overrides.kinds.push_back(ContourSpec::parse(k));
         } catch (const Error& e) {
             throw UsageError(e.what());
         }
@@ -98,9 +98,6 @@ SceneOptions parse_scene_options(const Args& args) {
         for (const StyleDiagnostic& w : warnings)
             std::cerr << "snaxels-cli: " << *path << ":" << w.line << ":" << w.column << ": warning: " << w.message << '\n';
     }
-    if (o.kinds.empty())
-        for (const ContourStyle& cs : o.style.contours) o.kinds.push_back(cs.spec);
-    if (o.kinds.empty()) o.kinds.push_back({});
     if (const auto size = args.value("size")) {
         const auto x = size->find('x');
         bool ok = x != std::string::npos;
@@ -126,44 +123,45 @@ SceneOptions parse_scene_options(const Args& args) {
     if (const auto d = args.value("light-dir")) {
         Light l;
         l.dir = glm::normalize(parse_vec3("light-dir", *d, true));
-        o.light = l;
+        o.overrides.light = l;
     }
     if (const auto p = args.value("light-pos")) {
         Light l;
         l.point = true;
         l.pos = parse_vec3("light-pos", *p, false);
-        o.light = l;
+        o.overrides.light = l;
     }
     if (const auto m = args.value("planar-map")) {
         if (*m != "snaxel" && *m != "post")
             throw UsageError("--planar-map takes snaxel or post, not '" + *m + "'");
-        o.planar_map = parse_planar_map_kind(*m);
+        o.overrides.planar_map = parse_planar_map_kind(*m);
     }
     if (const auto r = args.value("refine")) {
-        if (*r == "auto") o.refine = kAutoRefine;
-        else if (r->size() == 1 && (*r)[0] >= '0' && (*r)[0] <= char('0' + kMaxRefineLevels)) o.refine = (*r)[0] - '0';
+        if (*r == "auto") o.overrides.refine = kAutoRefine;
+        else if (r->size() == 1 && (*r)[0] >= '0' && (*r)[0] <= char('0' + kMaxRefineLevels)) o.overrides.refine = (*r)[0] - '0';
         else throw UsageError("--refine takes auto or a level from 0 to " + std::to_string(kMaxRefineLevels) + ", not '" + *r + "'");
     }
-    o.visibility = !args.flag("no-visibility");
-    o.check = args.flag("check");
+    o.overrides.visibility = !args.flag("no-visibility");
+    if (args.flag("check")) o.overrides.check_invariants = true;
     return o;
 }
 
-void complete_scene(SceneOptions& o, const MeshReport& report) {
-    if (o.refine > 0 && refine_levels(report.faces, o.refine) < o.refine) {
-        const int levels = refine_levels(report.faces, o.refine);
-        std::cerr << "snaxels-cli: warning: --refine " << o.refine << " would make "
-                  << report.faces * (std::size_t(1) << (2 * o.refine)) << " faces; refining by " << levels
+SceneSettings complete_scene(const SceneOptions& o, const MeshReport& report) {
+    SceneOverrides overrides = o.overrides;
+    if (overrides.refine > 0 && refine_levels(report.faces, overrides.refine) < overrides.refine) {
+        const int levels = refine_levels(report.faces, overrides.refine);
+        std::cerr << "snaxels-cli: warning: --refine " << overrides.refine << " would make "
+                  << report.faces * (std::size_t(1) << (2 * overrides.refine)) << " faces; refining by " << levels
                   << (levels == 1 ? " level" : " levels") << " (at most " << kMaxRefinedFaces << " faces)\n";
-        o.refine = levels;
+        overrides.refine = levels;
     }
-    const glm::dvec3 centre = report.centre();
-    if (!o.camera.orthographic()) {
-        o.camera.target = o.target.value_or(centre);
-        if (glm::length(o.camera.target - o.camera.eye) < 1e-12)
+    Camera camera = o.camera;
+    if (!camera.orthographic()) {
+        camera.target = o.target.value_or(report.centre());
+        if (glm::length(camera.target - camera.eye) < 1e-12)
             throw UsageError("--eye and --target are the same point");
     }
-    if (!o.light) o.light = o.style.light ? *o.style.light : default_light(o.camera);
+    return scene_settings(o.style, camera, overrides);
 }
 
 } // namespace snaxels::cli

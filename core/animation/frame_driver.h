@@ -11,7 +11,7 @@
 #include "snaxels/mesh/build.h"
 #include "snaxels/mesh/mesh_animation.h"
 #include "snaxels/scene/camera.h"
-#include "snaxels/snaxel/topology.h"
+#include "snaxels/mesh/topology.h"
 
 namespace snaxels {
 

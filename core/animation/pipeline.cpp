@@ -29,14 +29,9 @@ AnimationFormat animation_format_for(const std::string& path) {
 AnimationJob make_animation_job(const Style& style, const AnimationSpec& animation, const Camera& camera,
                                 const std::optional<Light>& light) {
     // The same scene as the view's still frame, animated.
-    StillJob still = make_still_job(style, camera, light);
     AnimationJob job;
     job.animation = animation;
-    job.camera = still.camera;
-    job.light = still.light;
-    job.kinds = std::move(still.kinds);
-    job.style = std::move(still.style);
-    job.engine = still.engine;
+    job.scene = make_still_job(style, camera, light).scene;
     return job;
 }
 
@@ -45,7 +40,7 @@ nlohmann::json events_json(const AnimationOutput& out, const AnimationJob& job) 
     for (const auto& [c, e] : out.events)
         events.push_back({{"frame", e.frame},
                           {"kind", event_name(e.kind)},
-                          {"contour", job.kinds[c].label()},
+                          {"contour", job.scene.kinds[c].label()},
                           {"where", {e.where.x, e.where.y, e.where.z}}});
     return events;
 }
@@ -53,15 +48,16 @@ nlohmann::json events_json(const AnimationOutput& out, const AnimationJob& job) 
 namespace {
 
 /// Parabolic curves are the mesh's: found once, on the pose as loaded, and
-/// carried by the edges as the mesh moves.
-void attach_parabolic(MeshTopology& topology, const AnimationJob& job) {
-    if (std::none_of(job.kinds.begin(), job.kinds.end(), [](const ContourSpec& k) { return k.kind == ContourKind::Parabolic; }))
+/// carried by the edges as the mesh moves (require_parabolic keeps them in
+/// the pose, and the frames' poses are made from it).
+void attach_parabolic(const MeshTopology& topology, const AnimationJob& job) {
+    if (std::none_of(job.scene.kinds.begin(), job.scene.kinds.end(), [](const ContourSpec& k) { return k.kind == ContourKind::Parabolic; }))
         return;
     ParabolicOptions options;
     options.progress = job.parabolic_progress;
     options.cancelled = job.cancelled;
     try {
-        topology.parabolic = cached_parabolic(topology, options);
+        require_parabolic(topology, options);
     } catch (const ParabolicCancelled&) {
         throw AnimationCancelled();
     }
@@ -90,7 +86,7 @@ ImageFrame frame_image(FrameDriver& driver, const LoadedMesh& mesh, const Animat
     const glm::dvec3 mesh_centre = mesh.report.centre();
     glm::dvec3 lo = mesh.report.bbox_min, hi = mesh.report.bbox_max;
     ImageFrame out;
-    out.camera = job.camera;
+    out.camera = job.scene.camera;
     if (driver.mesh_moves()) {
         lo = glm::dvec3(1e300), hi = glm::dvec3(-1e300);
         for (int k = 0; k < frames; ++k) {
@@ -114,7 +110,7 @@ ImageFrame frame_image(FrameDriver& driver, const LoadedMesh& mesh, const Animat
 /// Surface-fastened dashes: a phase carried by the surface for @p spec's
 /// strokes, if its style fastens them; else none.
 std::unique_ptr<SurfaceDashPhase> surface_dash_phase(const AnimationJob& job, const ContourSpec& spec) {
-    const ContourStyle cs = job.style.contour(spec);
+    const ContourStyle cs = job.scene.style.contour(spec);
     const StrokeStyle* surface = cs.visible.dash_on_surface && !cs.visible.dash.empty() ? &cs.visible
                                  : cs.hidden.dash_on_surface && !cs.hidden.dash.empty() ? &cs.hidden
                                                                                          : nullptr;
@@ -180,10 +176,10 @@ void finish_output(AnimationWriter& writer, AtomicFile* file, AnimationOutput& o
 
 AnimationOutput run_animation(const LoadedMesh& mesh, const std::string& mesh_path, const AnimationJob& job) {
     AnimationOutput out;
-    MeshTopology rest = engine_topology(mesh.mesh, job.refine); // the mesh as loaded
+    MeshTopology rest = engine_topology(mesh.mesh, job.scene.refine); // the mesh as loaded
     attach_parabolic(rest, job);
     const glm::dvec3 mesh_centre = mesh.report.centre();
-    FrameDriver driver(job.animation, mesh, rest, job.camera, job.light, mesh_centre, mesh_path);
+    FrameDriver driver(job.animation, mesh, rest, job.scene.camera, job.scene.light, mesh_centre, mesh_path);
     const int frames = frame_count(job, mesh_path);
     out.frames = frames;
     const ImageFrame image = frame_image(driver, mesh, job, frames);
@@ -195,22 +191,22 @@ AnimationOutput run_animation(const LoadedMesh& mesh, const std::string& mesh_pa
     }
     std::vector<ContourTracker> trackers;
     std::vector<std::unique_ptr<SurfaceDashPhase>> dash_phases; // per kind
-    for (const ContourSpec& spec : job.kinds) {
-        trackers.emplace_back(rest, spec, job.engine);
+    for (const ContourSpec& spec : job.scene.kinds) {
+        trackers.emplace_back(rest, spec, job.scene.engine);
         dash_phases.push_back(surface_dash_phase(job, spec));
     }
     // Fills: the planar map's contours the drawn ones lack are tracked too.
-    const bool fills = !job.style.regions.empty();
-    std::vector<ContourSpec> fill_specs = job.style.fill_contours();
+    const bool fills = !job.scene.style.regions.empty();
+    std::vector<ContourSpec> fill_specs = job.scene.style.fill_contours();
     std::vector<ContourTracker> fill_trackers;
     if (fills)
         for (const ContourSpec& spec : fill_specs)
-            if (std::none_of(job.kinds.begin(), job.kinds.end(), [&](const ContourSpec& k) { return k.same_as(spec); }))
-                fill_trackers.emplace_back(rest, spec, job.engine);
+            if (std::none_of(job.scene.kinds.begin(), job.scene.kinds.end(), [&](const ContourSpec& k) { return k.same_as(spec); }))
+                fill_trackers.emplace_back(rest, spec, job.scene.engine);
     RegionTracker region_tracker;
     std::unique_ptr<RayScene> rays;
     // Frames are encoded as they come; the document is written at the end.
-    AnimationWriter writer(job.format, std::size_t(frames), job.animation.fps, job.svg, job.style);
+    AnimationWriter writer(job.format, std::size_t(frames), job.animation.fps, job.svg, job.scene.style);
     std::unique_ptr<AtomicFile> file;
     if (!job.output.empty()) file = std::make_unique<AtomicFile>(job.output); // fails early on a bad path
     for (int k = 0; k < frames; ++k) {
@@ -221,7 +217,7 @@ AnimationOutput run_animation(const LoadedMesh& mesh, const std::string& mesh_pa
         Camera& camera = pose.camera;
         if (driver.mesh_moves()) camera = image.camera; // a moving mesh's camera stays (framed on its poses)
         require_mesh_in_front(camera, topology.positions(), image.radius);
-        if (job.visibility || fills) {
+        if (job.scene.visibility || fills) {
             if (!rays) rays = std::make_unique<RayScene>(topology);
             else if (driver.mesh_moves()) rays->refit(topology);
         }
@@ -242,11 +238,11 @@ AnimationOutput run_animation(const LoadedMesh& mesh, const std::string& mesh_pa
             results.push_back(tf.contour);
             frame.loops.push_back(animated_loops(tf));
             for (const VisualEvent& e : tf.events) out.events.push_back({c, e});
-            if (job.visibility) visibility.push_back(VisibilitySampler(*rays, camera).classify(engine, tf.contour));
+            if (job.scene.visibility) visibility.push_back(VisibilitySampler(*rays, camera).classify(engine, tf.contour));
         }
         out.tracking_ms.push_back(ms);
-        const ImageProjection projection(camera, image.centre, image.radius, job.style.width, job.style.height, job.style.margin);
-        frame.drawing = make_drawing(engine, results, projection, job.visibility ? &visibility : nullptr);
+        const ImageProjection projection(camera, image.centre, image.radius, job.scene.style.width, job.scene.style.height, job.scene.style.margin);
+        frame.drawing = make_drawing(engine, results, projection, job.scene.visibility ? &visibility : nullptr);
         if (fills) {
             std::vector<const ContourResult*> contours;
             for (const ContourSpec& spec : fill_specs) {
@@ -255,7 +251,7 @@ AnimationOutput run_animation(const LoadedMesh& mesh, const std::string& mesh_pa
                     if (tracked[c]->contour.spec.same_as(spec)) r = &tracked[c]->contour;
                 contours.push_back(r);
             }
-            PlanarMap map = build_planar_map(job.map_kind, engine, contours, rays.get(), projection, camera, light);
+            PlanarMap map = build_planar_map(job.scene.map_kind, engine, contours, rays.get(), projection, camera, light);
             frame.region_tracks = region_tracker.step(map);
             frame.regions = std::move(map.regions);
         }
@@ -267,7 +263,7 @@ AnimationOutput run_animation(const LoadedMesh& mesh, const std::string& mesh_pa
             char name[64];
             std::snprintf(name, sizeof name, "frame_%05d.svg", k);
             write_file_atomically((std::filesystem::path(job.frames_dir) / name).string(),
-                                  to_svg(frame.drawing, job.style, frame.regions.empty() ? nullptr : &frame.regions));
+                                  to_svg(frame.drawing, job.scene.style, frame.regions.empty() ? nullptr : &frame.regions));
         }
         writer.add(std::move(frame));
         if (job.progress) job.progress(k + 1, frames);

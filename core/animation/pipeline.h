@@ -17,7 +17,8 @@
 #include "snaxels/export/animation_writer.h"
 #include "snaxels/planarmap/planar_map.h"
 #include "snaxels/animation/frame_driver.h"
-#include "snaxels/snaxel/refine.h"
+#include "snaxels/animation/scene_settings.h"
+#include "snaxels/mesh/refine.h"
 #include "snaxels/snaxel/tracker.h"
 #include "snaxels/style/style.h"
 
@@ -28,14 +29,9 @@ AnimationFormat animation_format_for(const std::string& path);
 
 struct AnimationJob {
     AnimationSpec animation;
-    Camera camera;
-    Light light;
-    std::vector<ContourSpec> kinds{ContourSpec{}};
-    Style style = default_style(); ///< strokes, canvas (size, margin, background)
-    bool visibility = true;
-    PlanarMapKind map_kind = PlanarMapKind::Snaxel; ///< the map the style's fills come from
-    int refine = kAutoRefine; ///< levels the mesh is refined by for the engine (core/snaxel/refine.h)
-    EngineOptions engine;
+    /// What each frame draws and how, seen at frame 0 (the animation moves
+    /// the camera, the light or the mesh from there).
+    SceneSettings scene;
     AnimatedSvgOptions svg; ///< tolerances, for either format
     AnimationFormat format = AnimationFormat::Svg;
     std::string frames_dir; ///< when set, every frame is also written there as static SVG
@@ -76,7 +72,7 @@ AnimationJob make_animation_job(const Style& style, const AnimationSpec& animati
                                 const std::optional<Light>& light);
 
 /// @p out's events as JSON: [{frame, kind, contour, where}], contour the
-/// label of the kind in @p job.
+/// label of the kind in @p job.scene.
 nlohmann::json events_json(const AnimationOutput& out, const AnimationJob& job);
 
 /// Runs @p job on @p mesh (read from @p mesh_path, which clips need).

@@ -5,30 +5,17 @@
 #include <memory>
 #include <stdexcept>
 
+#include "snaxels/error.h"
 #include "snaxels/export/svg.h"
 #include "snaxels/util/detail/parallel.h"
 
 namespace snaxels {
 
-Light job_light(const Style& style, const Camera& camera, const std::optional<Light>& light) {
-    return light ? *light : style.light ? *style.light : default_light(camera);
-}
-
-std::vector<ContourSpec> style_kinds(const Style& style) {
-    std::vector<ContourSpec> kinds;
-    for (const ContourStyle& cs : style.contours) kinds.push_back(cs.spec);
-    if (kinds.empty()) kinds.push_back({});
-    return kinds;
-}
-
 StillJob make_still_job(const Style& style, const Camera& camera, const std::optional<Light>& light) {
-    StillJob job;
-    job.camera = camera;
-    job.light = job_light(style, camera, light);
-    job.kinds = style_kinds(style);
-    job.style = style;
-    job.engine.check_invariants = false;
-    return job;
+    SceneOverrides overrides;
+    overrides.light = light;
+    overrides.check_invariants = false;
+    return StillJob{scene_settings(style, camera, overrides)};
 }
 
 StillTracking::StillTracking(double max_step_deg) : max_step_deg_(max_step_deg) {}
@@ -101,24 +88,25 @@ std::vector<ContourResult> StillTracking::compute(const MeshTopology& topology, 
 
 StillOutput render_still(const LoadedMesh& mesh, const MeshTopology& topology, const RayScene* rays,
                          const StillJob& job, StillTracking* tracking) {
+    const SceneSettings& scene = job.scene;
     StillOutput out;
     const MeshReport& report = mesh.report;
     const glm::dvec3 centre = report.centre();
     const double radius = std::max(0.5 * glm::length(report.bbox_max - report.bbox_min), 1e-12);
     if (rays && rays->topology().pose() != topology.pose())
-        throw std::invalid_argument("render_still: the ray scene is of another pose than the topology");
-    require_mesh_in_front(job.camera, topology.positions(), radius);
+        throw InternalError("render_still: the ray scene is of another pose than the topology");
+    require_mesh_in_front(scene.camera, topology.positions(), radius);
     const SnaxelEngine engine(topology);
 
     // Every contour at once (in parallel): the drawn kinds, then those the
-    // style's fills need that are not drawn (job.map_kind: the snaxel-defined
+    // style's fills need that are not drawn (scene.map_kind: the snaxel-defined
     // map unless the job asks for the post-processed one); without fills
     // but asked for the map, its whole: patches, lit and shadow.
-    const bool map = !job.style.regions.empty() || job.planar_map;
-    std::vector<ContourSpec> specs = job.kinds;
+    const bool map = !scene.style.regions.empty() || scene.planar_map;
+    std::vector<ContourSpec> specs = scene.kinds;
     std::vector<ContourSpec> needed;
     if (map) {
-        needed = job.style.fill_contours();
+        needed = scene.style.fill_contours();
         if (needed.empty()) needed = {ContourSpec{}, ContourSpec{ContourKind::Shadow, 0.0}};
         for (const ContourSpec& spec : needed)
             if (std::none_of(specs.begin(), specs.end(), [&](const ContourSpec& s) { return s.same_as(spec); }))
@@ -126,23 +114,23 @@ StillOutput render_still(const LoadedMesh& mesh, const MeshTopology& topology, c
     }
     std::vector<ContourResult> all;
     if (tracking) {
-        all = tracking->compute(topology, specs, job.camera, job.light, job.engine, centre);
+        all = tracking->compute(topology, specs, scene.camera, scene.light, scene.engine, centre);
     } else {
         all.resize(specs.size());
-        parallel_for(specs.size(), [&](std::size_t i) { all[i] = engine.compute(specs[i], job.camera, job.light, job.engine); }, 1);
+        parallel_for(specs.size(), [&](std::size_t i) { all[i] = engine.compute(specs[i], scene.camera, scene.light, scene.engine); }, 1);
     }
-    out.results.assign(std::make_move_iterator(all.begin()), std::make_move_iterator(all.begin() + std::ptrdiff_t(job.kinds.size())));
-    const std::vector<ContourResult> fill_results(std::make_move_iterator(all.begin() + std::ptrdiff_t(job.kinds.size())),
+    out.results.assign(std::make_move_iterator(all.begin()), std::make_move_iterator(all.begin() + std::ptrdiff_t(scene.kinds.size())));
+    const std::vector<ContourResult> fill_results(std::make_move_iterator(all.begin() + std::ptrdiff_t(scene.kinds.size())),
                                                   std::make_move_iterator(all.end()));
 
     std::unique_ptr<RayScene> own_rays;
-    if (job.visibility) {
+    if (scene.visibility) {
         if (!rays) rays = (own_rays = std::make_unique<RayScene>(topology)).get();
-        const VisibilitySampler sampler(*rays, job.camera);
+        const VisibilitySampler sampler(*rays, scene.camera);
         for (const ContourResult& r : out.results) out.visibility.push_back(sampler.classify(engine, r));
     }
-    const ImageProjection projection(job.camera, centre, radius, job.style.width, job.style.height, job.style.margin);
-    out.drawing = make_drawing(engine, out.results, projection, job.visibility ? &out.visibility : nullptr);
+    const ImageProjection projection(scene.camera, centre, radius, scene.style.width, scene.style.height, scene.style.margin);
+    out.drawing = make_drawing(engine, out.results, projection, scene.visibility ? &out.visibility : nullptr);
 
     if (map) {
         auto result_of = [&](const ContourSpec& spec) -> const ContourResult* {
@@ -155,9 +143,9 @@ StillOutput render_still(const LoadedMesh& mesh, const MeshTopology& topology, c
         std::vector<const ContourResult*> contours;
         for (const ContourSpec& spec : needed) contours.push_back(result_of(spec));
         if (!rays) rays = (own_rays = std::make_unique<RayScene>(topology)).get();
-        out.regions = build_planar_map(job.map_kind, engine, contours, rays, projection, job.camera, job.light).regions;
+        out.regions = build_planar_map(scene.map_kind, engine, contours, rays, projection, scene.camera, scene.light).regions;
     }
-    out.svg = to_svg(out.drawing, job.style, out.regions.empty() ? nullptr : &out.regions);
+    out.svg = to_svg(out.drawing, scene.style, out.regions.empty() ? nullptr : &out.regions);
     return out;
 }
 

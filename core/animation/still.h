@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "snaxels/animation/scene_settings.h"
 #include "snaxels/export/drawing.h"
 #include "snaxels/mesh/build.h"
 #include "snaxels/planarmap/planar_map.h"
@@ -18,15 +19,9 @@
 
 namespace snaxels {
 
+/// One still frame to render.
 struct StillJob {
-    Camera camera;
-    Light light;
-    std::vector<ContourSpec> kinds{ContourSpec{}}; ///< the contours drawn
-    Style style = default_style();
-    bool visibility = true;
-    bool planar_map = false; ///< build the planar map even without fills
-    PlanarMapKind map_kind = PlanarMapKind::Snaxel; ///< which map the fills (and regions) come from
-    EngineOptions engine;
+    SceneSettings scene; ///< what is drawn and how (scene_settings())
 };
 
 struct StillOutput {
@@ -41,12 +36,6 @@ struct StillOutput {
 /// none) seen from @p camera, lit by @p light, else the style's light, else
 /// the default light for the camera.
 StillJob make_still_job(const Style& style, const Camera& camera, const std::optional<Light>& light);
-
-/// The light of a job: @p light, else the style's, else the default for @p camera.
-Light job_light(const Style& style, const Camera& camera, const std::optional<Light>& light);
-
-/// The contours @p style draws (its <contour> kinds), or the visual contour.
-std::vector<ContourSpec> style_kinds(const Style& style);
 
 /// Contours followed from one still frame to the next, as the application's
 /// view does while the user orbits, zooms, turns the light or scrubs: each

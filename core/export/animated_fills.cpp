@@ -1,4 +1,4 @@
-#include "snaxels/export/animated_fills.h"
+#include "snaxels/export/detail/animated_fills.h"
 
 #include <algorithm>
 #include <cmath>
@@ -6,8 +6,8 @@
 #include <tuple>
 #include <unordered_map>
 
-#include "snaxels/export/animated_paths.h"
-#include "snaxels/export/path_keys.h"
+#include "snaxels/export/detail/animated_paths.h"
+#include "snaxels/export/detail/path_keys.h"
 #include "snaxels/export/detail/polyline.h"
 
 namespace snaxels {

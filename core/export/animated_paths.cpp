@@ -1,4 +1,4 @@
-#include "snaxels/export/animated_paths.h"
+#include "snaxels/export/detail/animated_paths.h"
 
 #include <algorithm>
 

@@ -1,12 +1,12 @@
-#include "snaxels/export/animated_strokes.h"
+#include "snaxels/export/detail/animated_strokes.h"
 
 #include <algorithm>
 #include <cmath>
 #include <map>
 #include <unordered_map>
 
-#include "snaxels/export/animated_paths.h"
-#include "snaxels/export/path_keys.h"
+#include "snaxels/export/detail/animated_paths.h"
+#include "snaxels/export/detail/path_keys.h"
 #include "snaxels/export/detail/polyline.h"
 #include "snaxels/visibility/visibility.h"
 

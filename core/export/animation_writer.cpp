@@ -9,8 +9,8 @@
 #include <optional>
 
 #include "snaxels/error.h"
-#include "snaxels/export/animated_paths.h"
-#include "snaxels/export/smil.h"
+#include "snaxels/export/detail/animated_paths.h"
+#include "snaxels/export/detail/smil.h"
 #include "snaxels/export/detail/svg_writer.h"
 
 namespace snaxels {

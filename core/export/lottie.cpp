@@ -4,7 +4,7 @@
 #include <cmath>
 #include <cstdio>
 
-#include "snaxels/export/animated_paths.h"
+#include "snaxels/export/detail/animated_paths.h"
 #include "snaxels/export/animation_writer.h"
 
 namespace snaxels {

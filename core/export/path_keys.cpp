@@ -1,4 +1,4 @@
-#include "snaxels/export/path_keys.h"
+#include "snaxels/export/detail/path_keys.h"
 
 #include <algorithm>
 #include <cmath>

@@ -1,4 +1,4 @@
-#include "snaxels/export/smil.h"
+#include "snaxels/export/detail/smil.h"
 
 #include <algorithm>
 #include <cstdio>

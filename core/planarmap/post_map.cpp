@@ -523,8 +523,8 @@ class PostMapBuilder {
         for (int ring = 0; ring < 2; ++ring) {
             std::vector<std::int32_t> next;
             for (const std::int32_t v : frontier)
-                for (std::int32_t i = topo_.ring_start()[v]; i < topo_.ring_start()[v + 1]; ++i)
-                    if (!fold[topo_.ring()[i]]) fold[topo_.ring()[i]] = 1, next.push_back(topo_.ring()[i]);
+                for (const std::int32_t w : topo_.neighbours(v))
+                    if (!fold[w]) fold[w] = 1, next.push_back(w);
             frontier = std::move(next);
         }
         return fold;

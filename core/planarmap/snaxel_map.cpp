@@ -326,15 +326,13 @@ class SnaxelMapBuilder {
     /// (each face meets two of the vertex's ring edges).
     double vertex_area(std::int32_t v) const {
         double area = 0.0;
-        for (std::int32_t i = topo_.ring_start()[v]; i < topo_.ring_start()[v + 1]; ++i)
-            for (const std::int32_t f : topo_.edge_faces()[std::size_t(topo_.ring_edge()[i])]) {
-                if (f == MeshTopology::kNone) continue;
-                const auto& fv = topo_.face_vertices()[std::size_t(f)];
-                const glm::dvec2 p0 = projection_.project(position(fv[0]));
-                const glm::dvec2 p1 = projection_.project(position(fv[1]));
-                const glm::dvec2 p2 = projection_.project(position(fv[2]));
-                area += std::abs((p1.x - p0.x) * (p2.y - p0.y) - (p2.x - p0.x) * (p1.y - p0.y)) / 12.0;
-            }
+        topo_.for_each_face_beside_edges(v, [&](std::int32_t f) {
+            const auto& fv = topo_.face_vertices()[std::size_t(f)];
+            const glm::dvec2 p0 = projection_.project(position(fv[0]));
+            const glm::dvec2 p1 = projection_.project(position(fv[1]));
+            const glm::dvec2 p2 = projection_.project(position(fv[2]));
+            area += std::abs((p1.x - p0.x) * (p2.y - p0.y) - (p2.x - p0.x) * (p1.y - p0.y)) / 12.0;
+        });
         return area;
     }
 
@@ -358,9 +356,8 @@ class SnaxelMapBuilder {
         for (const std::int32_t v : small) {
             const std::int32_t r = comp_[std::size_t(v)];
             if (supported[std::size_t(r)]) continue;
-            bool interior = topo_.ring_start()[v + 1] > topo_.ring_start()[v];
-            for (std::int32_t i = topo_.ring_start()[v]; i < topo_.ring_start()[v + 1] && interior; ++i)
-                interior = label(topo_.ring()[i]) == label(v);
+            const auto ring = topo_.neighbours(v);
+            const bool interior = !ring.empty() && std::all_of(ring.begin(), ring.end(), [&](std::int32_t w) { return label(w) == label(v); });
             supported[std::size_t(r)] = interior;
         }
         std::vector<std::pair<std::int32_t, VertexLabel>> moves;
@@ -369,13 +366,12 @@ class SnaxelMapBuilder {
             if (supported[std::size_t(r)]) continue;
             VertexLabel best = label(v);
             int best_count = 0;
-            for (std::int32_t i = topo_.ring_start()[v]; i < topo_.ring_start()[v + 1]; ++i) {
-                const std::int32_t w = topo_.ring()[i];
+            const auto ring = topo_.neighbours(v);
+            for (const std::int32_t w : ring) {
                 if (comp_[std::size_t(w)] == r) continue;
                 const VertexLabel candidate = label(w);
                 int count = 0;
-                for (std::int32_t j = topo_.ring_start()[v]; j < topo_.ring_start()[v + 1]; ++j)
-                    count += comp_[std::size_t(topo_.ring()[j])] != r && label(topo_.ring()[j]) == candidate;
+                for (const std::int32_t u : ring) count += comp_[std::size_t(u)] != r && label(u) == candidate;
                 if (count > best_count || (count == best_count && candidate > best)) best = candidate, best_count = count;
             }
             if (best != label(v)) moves.emplace_back(v, best);
@@ -413,8 +409,7 @@ class SnaxelMapBuilder {
             while (!stack.empty()) {
                 const std::int32_t v = stack.back();
                 stack.pop_back();
-                for (std::int32_t i = topo_.ring_start()[v]; i < topo_.ring_start()[v + 1]; ++i) {
-                    const std::int32_t w = topo_.ring()[i];
+                for (const std::int32_t w : topo_.neighbours(v)) {
                     if (label(w) != l0) continue;
                     if (comp_[std::size_t(w)] == kToGrow) {
                         comp_[std::size_t(w)] = id;

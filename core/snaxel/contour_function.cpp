@@ -164,7 +164,7 @@ double ContourFunction::first_zero(const glm::dvec3& na, const glm::dvec3& nb, d
 }
 
 void ContourFunction::evaluate_vertices(const MeshTopology& topology, std::vector<double>& out) const {
-    if (spec_.kind == ContourKind::Suggestive) suggestive_function(topology, *pose_curvature(topology), camera_, out);
+    if (spec_.kind == ContourKind::Suggestive) suggestive_function(topology, *require_curvature(topology), camera_, out);
     else evaluate_vertices(topology.positions(), topology.normals(), out);
 }
 

@@ -9,7 +9,7 @@
 #include <glm/glm.hpp>
 
 #include "snaxels/scene/camera.h"
-#include "snaxels/snaxel/topology.h"
+#include "snaxels/mesh/topology.h"
 
 namespace snaxels {
 

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <string>
 #include <utility>
 
 #include <glm/glm.hpp>
@@ -111,8 +112,8 @@ std::array<double, 3> project_form(const FaceForm& form, const glm::dvec3& nu, c
 std::pair<glm::dvec3, glm::dvec3> vertex_frame(const MeshTopology& topo, std::size_t v) {
     const glm::dvec3 n = topo.normals()[v];
     glm::dvec3 u(0.0);
-    if (topo.ring_start()[v] < topo.ring_start()[v + 1]) {
-        const glm::dvec3 d = topo.positions()[std::size_t(topo.ring()[std::size_t(topo.ring_start()[v])])] - topo.positions()[v];
+    if (const auto ring = topo.neighbours(std::int32_t(v)); !ring.empty()) {
+        const glm::dvec3 d = topo.positions()[std::size_t(ring.front())] - topo.positions()[v];
         u = d - glm::dot(d, n) * n;
     }
     if (!(glm::length(u) > 0.0)) { // no neighbour, or one along the normal: any tangent
@@ -120,23 +121,6 @@ std::pair<glm::dvec3, glm::dvec3> vertex_frame(const MeshTopology& topo, std::si
     }
     u = glm::normalize(u);
     return {u, glm::cross(n, u)};
-}
-
-/// Calls fn(face, corner) once for each face at vertex @p v, corner being
-/// v's place in the face: the face in which the edge to each neighbour
-/// leaves v (the neighbour follows v in the face's corner order).
-template <class Fn>
-void for_each_face_at(const MeshTopology& topo, std::size_t v, Fn&& fn) {
-    for (std::int32_t i = topo.ring_start()[v]; i < topo.ring_start()[v + 1]; ++i) {
-        const std::int32_t neighbour = topo.ring()[std::size_t(i)];
-        for (const std::int32_t f : topo.edge_faces()[std::size_t(topo.ring_edge()[std::size_t(i)])]) {
-            if (f == MeshTopology::kNone) continue;
-            const auto& fv = topo.face_vertices()[std::size_t(f)];
-            std::size_t c = 0;
-            while (c < 3 && std::size_t(fv[c]) != v) ++c;
-            if (c < 3 && fv[(c + 1) % 3] == neighbour) fn(f, c);
-        }
-    }
 }
 
 /// The normal curvature of vertex @p v along @p view (toward the viewer)
@@ -234,8 +218,8 @@ CurvatureField smoothed_curvatures(const MeshTopology& topo, const CurvatureFiel
             kv += field.area[j] * k[2];
         };
         add(v);
-        for (std::int32_t i = topo.ring_start()[v]; i < topo.ring_start()[v + 1]; ++i)
-            if (field.area[std::size_t(topo.ring()[std::size_t(i)])] > 0.0) add(std::size_t(topo.ring()[std::size_t(i)]));
+        for (const std::int32_t n : topo.neighbours(std::int32_t(v)))
+            if (field.area[std::size_t(n)] > 0.0) add(std::size_t(n));
         set_principal(out, v, topo.normals()[v], u, w, ku / total, kuv / total, kv / total);
     }, 1024);
     out.typical = typical_curvature(out);
@@ -257,16 +241,16 @@ CurvatureField vertex_curvatures(const MeshTopology& topo) {
         const std::pair<glm::dvec3, glm::dvec3> frame = vertex_frame(topo, v);
         const glm::dvec3 u = frame.first, w = frame.second; // (not a binding: the lambda below uses them)
         double area = 0.0, ku = 0.0, kuv = 0.0, kv = 0.0;
-        for_each_face_at(topo, v, [&](std::int32_t f, std::size_t c) {
+        for (const auto [f, c] : topo.faces_around(std::int32_t(v))) {
             const FaceForm& form = forms[std::size_t(f)];
-            const double weight = form.corner[c];
-            if (!(weight > 0.0)) return;
+            const double weight = form.corner[std::size_t(c)];
+            if (!(weight > 0.0)) continue;
             const std::array<double, 3> k = project_form(form, u, w);
             area += weight;
             ku += weight * k[0];
             kuv += weight * k[1];
             kv += weight * k[2];
-        });
+        }
         out.area[v] = area;
         if (!(area > 0.0)) {
             out.dir1[v] = u;
@@ -283,42 +267,44 @@ void add_gradient_operator(const MeshTopology& topo, CurvatureField& field) {
     const std::size_t nv = topo.n_vertices();
     field.gradient_start.assign(nv + 1, 0);
     for (std::size_t v = 0; v < nv; ++v) // v itself, then its neighbours in ring order
-        field.gradient_start[v + 1] = field.gradient_start[v] + 1 + (topo.ring_start()[v + 1] - topo.ring_start()[v]);
+        field.gradient_start[v + 1] = field.gradient_start[v] + 1 + topo.degree(std::int32_t(v));
     field.gradient_vertex.assign(std::size_t(field.gradient_start[nv]), 0);
     field.gradient_weight.assign(std::size_t(field.gradient_start[nv]), glm::dvec3(0.0));
     parallel_for(nv, [&](std::size_t v) {
-        const std::int32_t base = field.gradient_start[v], first = topo.ring_start()[v], last = topo.ring_start()[v + 1];
+        const std::int32_t base = field.gradient_start[v];
+        const std::span<const std::int32_t> ring = topo.neighbours(std::int32_t(v));
         field.gradient_vertex[std::size_t(base)] = std::int32_t(v);
-        for (std::int32_t i = first; i < last; ++i) field.gradient_vertex[std::size_t(base + 1 + i - first)] = topo.ring()[std::size_t(i)];
+        std::copy(ring.begin(), ring.end(), field.gradient_vertex.begin() + base + 1);
         auto slot = [&](std::int32_t j) {
             if (j == std::int32_t(v)) return base;
-            for (std::int32_t i = first; i < last; ++i)
-                if (topo.ring()[std::size_t(i)] == j) return base + 1 + i - first;
-            return std::int32_t(-1);
+            const auto at = std::find(ring.begin(), ring.end(), j);
+            return at == ring.end() ? std::int32_t(-1) : base + 1 + std::int32_t(at - ring.begin());
         };
         double total = 0.0;
-        for_each_face_at(topo, v, [&](std::int32_t face, std::size_t) {
+        for (const auto [face, corner] : topo.faces_around(std::int32_t(v))) {
             const auto& fv = topo.face_vertices()[std::size_t(face)];
             double area = 0.0;
             const std::array<glm::dvec3, 3> g = corner_gradients(topo, face, area);
             for (std::size_t k = 0; k < 3; ++k)
                 if (const std::int32_t s = slot(fv[k]); s >= 0) field.gradient_weight[std::size_t(s)] += area * g[k];
             total += area;
-        });
+        }
         if (total > 0.0)
             for (std::int32_t k = base; k < field.gradient_start[v + 1]; ++k) field.gradient_weight[std::size_t(k)] /= total;
     }, 1024);
 }
 
-std::shared_ptr<const CurvatureField> pose_curvature(const MeshTopology& topo) {
-    const MeshPose::CurvatureCache& cache = topo.pose()->curvature;
-    if (auto kept = cache.get()) return kept;
-    // Computed outside the lock: the computation runs parallel loops, whose
-    // workers may be asked for the same pose's curvature meanwhile.
-    CurvatureField field = vertex_curvatures(topo);
-    for (int pass = 0; pass < kPoseCurvatureSmoothing; ++pass) field = smoothed_curvatures(topo, field);
-    add_gradient_operator(topo, field);
-    return cache.keep(std::make_shared<const CurvatureField>(std::move(field)));
+std::shared_ptr<const CurvatureField> require_curvature(const MeshTopology& topo, const CurvatureOptions& options) {
+    const std::string key = "curvature smoothing=" + std::to_string(options.smoothing) +
+                            " gradient=" + std::to_string(int(options.gradient));
+    // Computed outside the store's lock: the computation runs parallel
+    // loops, whose workers may be asked for the same pose's curvature.
+    return topo.pose()->quantities.require<CurvatureField>(key, [&] {
+        CurvatureField field = vertex_curvatures(topo);
+        for (int pass = 0; pass < options.smoothing; ++pass) field = smoothed_curvatures(topo, field);
+        if (options.gradient) add_gradient_operator(topo, field);
+        return field;
+    });
 }
 
 std::vector<double> radial_curvature(const MeshTopology& topo, const CurvatureField& field, const Camera& camera) {

@@ -19,7 +19,7 @@
 #include "snaxels/scene/camera.h"
 #include "snaxels/snaxel/contour_function.h"
 #include "snaxels/snaxel/fronts.h"
-#include "snaxels/snaxel/topology.h"
+#include "snaxels/mesh/topology.h"
 
 namespace snaxels {
 
@@ -37,7 +37,7 @@ struct CurvatureField {
     /// gradient of the linear interpolant is the sum over k in
     /// [gradient_start[v], gradient_start[v+1]) of gradient_weight[k] times
     /// the value at vertex gradient_vertex[k] (v, then its neighbours).
-    /// Filled by add_gradient_operator (pose_curvature does); empty else.
+    /// Filled by add_gradient_operator (require_curvature does); empty else.
     std::vector<std::int32_t> gradient_start, gradient_vertex;
     std::vector<glm::dvec3> gradient_weight;
 
@@ -69,18 +69,23 @@ CurvatureField smoothed_curvatures(const MeshTopology& topology, const Curvature
 /// @p topology's pose.
 void add_gradient_operator(const MeshTopology& topology, CurvatureField& field);
 
-/// Smoothing passes pose_curvature applies.
-constexpr int kPoseCurvatureSmoothing = 2;
+/// What require_curvature computes: the options that change its value.
+struct CurvatureOptions {
+    /// One-ring smoothing passes over vertex_curvatures' tensors (on a
+    /// scanned mesh two halve the noise loops of kappa_r's zeros, and so
+    /// the work of tracking them, and leave smooth surfaces as they were).
+    int smoothing = 2;
+    /// Whether the gradient operator is added (suggestive_margins reads it).
+    bool gradient = true;
+};
 
-/// The curvature of @p topology's pose, for suggestive contours:
-/// vertex_curvatures smoothed kPoseCurvatureSmoothing times, with its
-/// gradient operator (suggestive_margins reads it) (on a scanned
-/// mesh this halves the noise loops of kappa_r's zeros, and so the work of
-/// tracking them, and leaves smooth surfaces as they were). Computed once
-/// per pose (the first caller computes it; it is kept in the pose,
-/// MeshPose::curvature) and shared by every frame, thread and copy of the
-/// topology in that pose.
-std::shared_ptr<const CurvatureField> pose_curvature(const MeshTopology& topology);
+/// The curvature of @p topology's pose: vertex_curvatures smoothed
+/// @p options.smoothing times, with its gradient operator when asked.
+/// Computed once per pose and options (the first caller computes it; it is
+/// kept in the pose's quantities, MeshPose::quantities) and shared by every
+/// frame, thread and copy of the topology in that pose. The suggestive kind
+/// reads it with the default options.
+std::shared_ptr<const CurvatureField> require_curvature(const MeshTopology& topology, const CurvatureOptions& options = {});
 
 /// The radial curvature of every vertex of @p topology seen from @p camera
 /// (DeCarlo et al. 2003): the normal curvature in the direction w of the
@@ -111,7 +116,7 @@ double derivative_along_view(const MeshTopology& topology, const std::vector<dou
 
 /// Where a suggestive contour is drawn (DeCarlo et al. 2003's pruning). Per
 /// snaxel of @p fronts, zeros of @p kr (suggestive_function's values from
-/// @p field, the pose's curvature with its gradient operator: pose_curvature,
+/// @p field, the pose's curvature with its gradient operator: require_curvature,
 /// seen from @p camera): the least of three
 /// margins, >= 0 where the snaxel is drawn, each free of the mesh's scale:
 ///   - the derivative of kappa_r along the view (at the edge's two ends from

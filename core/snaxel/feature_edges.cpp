@@ -50,18 +50,14 @@ std::vector<EdgeChain> chain_edges(const MeshTopology& topo, const std::vector<s
             for (const std::int32_t v : topo.edge_vertices()[e]) ++degree[std::size_t(v)];
     // The next chosen, unused edge at v.
     auto next_edge = [&](std::int32_t v) {
-        for (std::int32_t i = topo.ring_start()[std::size_t(v)]; i < topo.ring_start()[std::size_t(v) + 1]; ++i) {
-            const std::int32_t e = topo.ring_edge()[std::size_t(i)];
+        for (const std::int32_t e : topo.vertex_edges(v))
             if (chosen[std::size_t(e)] && !used[std::size_t(e)]) return e;
-        }
         return MeshTopology::kNone;
     };
     // The other chosen edge at a vertex where two meet.
     auto other_edge = [&](std::int32_t v, std::int32_t e) {
-        for (std::int32_t i = topo.ring_start()[std::size_t(v)]; i < topo.ring_start()[std::size_t(v) + 1]; ++i) {
-            const std::int32_t c = topo.ring_edge()[std::size_t(i)];
+        for (const std::int32_t c : topo.vertex_edges(v))
             if (c != e && chosen[std::size_t(c)]) return c;
-        }
         return e;
     };
     std::vector<std::int32_t> order = edges;

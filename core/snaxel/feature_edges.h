@@ -10,7 +10,7 @@
 
 #include "snaxels/snaxel/contour_function.h"
 #include "snaxels/snaxel/fronts.h"
-#include "snaxels/snaxel/topology.h"
+#include "snaxels/mesh/topology.h"
 
 namespace snaxels {
 

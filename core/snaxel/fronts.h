@@ -10,7 +10,7 @@
 #include <string>
 #include <vector>
 
-#include "snaxels/snaxel/topology.h"
+#include "snaxels/mesh/topology.h"
 
 namespace snaxels {
 

@@ -4,11 +4,13 @@
 #include <atomic>
 #include <chrono>
 #include <cmath>
+#include <cstdio>
 #include <limits>
 #include <list>
 #include <mutex>
 #include <queue>
 #include <span>
+#include <string>
 #include <tuple>
 #include <unordered_map>
 
@@ -97,13 +99,6 @@ glm::dvec3 closest_on_triangle(const glm::dvec3& p, const glm::dvec3& a, const g
     return a + ab * (vb * denom) + ac * (vc * denom);
 }
 
-/// The faces around vertex @p v.
-template <class Fn> void for_each_face_around(const MeshTopology& topo, std::int32_t v, Fn&& fn) {
-    for (std::int32_t k = topo.ring_start()[std::size_t(v)]; k < topo.ring_start()[std::size_t(v) + 1]; ++k)
-        for (const std::int32_t f : topo.edge_faces()[std::size_t(topo.ring_edge()[std::size_t(k)])])
-            if (f != kNone) fn(f);
-}
-
 /// A point on the surface: where @p p projects onto the faces around the
 /// vertex nearest it.
 struct SurfacePoint {
@@ -116,7 +111,7 @@ SurfacePoint project_to_surface(const MeshTopology& topo, const PointGrid& verti
     const std::int32_t v = vertices.nearest(p);
     if (v < 0) return best;
     double best_d = std::numeric_limits<double>::max();
-    for_each_face_around(topo, v, [&](std::int32_t f) {
+    topo.for_each_face_beside_edges(v, [&](std::int32_t f) {
         const auto& fv = topo.face_vertices()[std::size_t(f)];
         const glm::dvec3 q = closest_on_triangle(p, topo.positions()[std::size_t(fv[0])], topo.positions()[std::size_t(fv[1])],
                                                  topo.positions()[std::size_t(fv[2])]);
@@ -167,12 +162,12 @@ void critical_crossings(const MeshTopology& topo, const std::vector<std::uint8_t
         const double s = a >= 0.0 ? 1.0 : -1.0;
         const double tw = std::atan2(s * a * so, s * (a * co - b));
         const glm::dvec3 dir = glm::normalize(std::sin(omega - tw) * d0 + std::sin(tw) * d1);
-        const std::int32_t begin = topo.ring_start()[v], end = topo.ring_start()[v + 1];
-        if (end - begin < 3) continue;
+        const std::span<const std::int32_t> ring = topo.neighbours(std::int32_t(v));
+        if (ring.size() < 3) continue;
         int changes = 0;
-        bool last = glm::dot(topo.normals()[std::size_t(topo.ring()[std::size_t(end - 1)])], dir) >= 0.0;
-        for (std::int32_t k = begin; k < end; ++k) {
-            const bool sign = glm::dot(topo.normals()[std::size_t(topo.ring()[std::size_t(k)])], dir) >= 0.0;
+        bool last = glm::dot(topo.normals()[std::size_t(ring.back())], dir) >= 0.0;
+        for (const std::int32_t w : ring) {
+            const bool sign = glm::dot(topo.normals()[std::size_t(w)], dir) >= 0.0;
             changes += sign != last;
             last = sign;
         }
@@ -310,7 +305,7 @@ MeshTopology smooth_normals(const MeshTopology& topo, int passes) {
     for (int pass = 0; pass < passes; ++pass) {
         parallel_for(topo.n_vertices(), [&](std::size_t v) {
             glm::dvec3 sum = normals[v];
-            for (std::int32_t k = topo.ring_start()[v]; k < topo.ring_start()[v + 1]; ++k) sum += normals[std::size_t(topo.ring()[std::size_t(k)])];
+            for (const std::int32_t w : topo.neighbours(std::int32_t(v))) sum += normals[std::size_t(w)];
             const double l = glm::length(sum);
             next[v] = l > 0.0 ? sum / l : normals[v];
         }, 4096);
@@ -559,8 +554,6 @@ std::vector<ParabolicCurve> chain_curves(const MeshTopology& topo, const std::ve
     return curves;
 }
 
-std::mutex cache_mutex;
-
 } // namespace
 
 double ParabolicCurve::length() const {
@@ -707,7 +700,7 @@ ParabolicResult find_parabolic(const MeshTopology& mesh_topo, const ParabolicOpt
     const PointGrid grid(where, 2.0 * edge);
     parallel_for(where.size(), [&](std::size_t i) {
         ParabolicPoint& p = result.points[i];
-        for_each_face_around(topo, p.vertex, [&](std::int32_t f) {
+        topo.for_each_face_beside_edges(p.vertex, [&](std::int32_t f) {
             if (p.face == kNone) p.face = f;
         });
         p.confidence = 0;
@@ -727,30 +720,67 @@ ParabolicResult find_parabolic(const MeshTopology& mesh_topo, const ParabolicOpt
     return result;
 }
 
-std::shared_ptr<const ParabolicResult> cached_parabolic(const MeshTopology& topo, const ParabolicOptions& options) {
-    // Keyed by a hash of the positions, the faces and the sample count.
-    std::uint64_t h = 1469598103934665603ull;
+namespace {
+
+/// The options that change a search's result, as a key.
+std::string parabolic_key(const ParabolicOptions& options) {
+    char key[96];
+    std::snprintf(key, sizeof key, "parabolic samples=%d orders=%d smoothing=%.17g", options.samples, options.orders,
+                  options.smoothing);
+    return key;
+}
+
+/// A hash of @p topology's positions and faces.
+std::uint64_t content_hash(const MeshTopology& topo) {
+    std::uint64_t h = 1469598103934665603ull; // FNV-1a
     auto mix = [&](const void* data, std::size_t bytes) {
         const auto* p = static_cast<const unsigned char*>(data);
         for (std::size_t i = 0; i < bytes; ++i) h = (h ^ p[i]) * 1099511628211ull;
     };
     mix(topo.positions().data(), topo.positions().size() * sizeof(glm::dvec3));
     mix(topo.face_vertices().data(), topo.face_vertices().size() * sizeof(topo.face_vertices()[0]));
-    mix(&options.samples, sizeof options.samples);
-    static std::list<std::pair<std::uint64_t, std::shared_ptr<const ParabolicResult>>> cache; // newest first
+    return h;
+}
+
+/// The few searches most recently done in the process, newest first.
+struct ProcessCache {
+    std::mutex mutex;
+    std::list<std::pair<std::pair<std::uint64_t, std::string>, std::shared_ptr<const ParabolicResult>>> entries;
+    static constexpr std::size_t kCapacity = 4;
+};
+ProcessCache& process_cache() {
+    static ProcessCache cache;
+    return cache;
+}
+
+} // namespace
+
+std::shared_ptr<const ParabolicResult> require_parabolic(const MeshTopology& topo, const ParabolicOptions& options) {
+    const std::string key = parabolic_key(options);
+    if (auto kept = topo.pose()->quantities.find<ParabolicResult>(key)) return kept;
+    const std::pair<std::uint64_t, std::string> content{content_hash(topo), key};
+    ProcessCache& cache = process_cache();
+    std::shared_ptr<const ParabolicResult> result;
     {
-        const std::lock_guard<std::mutex> lock(cache_mutex);
-        for (auto it = cache.begin(); it != cache.end(); ++it)
-            if (it->first == h) {
-                cache.splice(cache.begin(), cache, it);
-                return cache.front().second;
+        const std::lock_guard<std::mutex> lock(cache.mutex);
+        for (auto it = cache.entries.begin(); it != cache.entries.end(); ++it)
+            if (it->first == content) {
+                cache.entries.splice(cache.entries.begin(), cache.entries, it);
+                result = cache.entries.front().second;
+                break;
             }
     }
-    auto result = std::make_shared<const ParabolicResult>(find_parabolic(topo, options));
-    const std::lock_guard<std::mutex> lock(cache_mutex);
-    cache.push_front({h, result});
-    while (cache.size() > 4) cache.pop_back();
-    return result;
+    if (!result) {
+        result = std::make_shared<const ParabolicResult>(find_parabolic(topo, options));
+        const std::lock_guard<std::mutex> lock(cache.mutex);
+        cache.entries.push_front({content, result});
+        while (cache.entries.size() > ProcessCache::kCapacity) cache.entries.pop_back();
+    }
+    return topo.pose()->quantities.keep(key, std::move(result), PoseQuantities::Lifetime::CarriedToLaterPoses);
+}
+
+void keep_parabolic(const MeshTopology& topo, const ParabolicOptions& options, std::shared_ptr<const ParabolicResult> result) {
+    if (result) topo.pose()->quantities.keep(parabolic_key(options), std::move(result), PoseQuantities::Lifetime::CarriedToLaterPoses);
 }
 
 Fronts parabolic_fronts(const MeshTopology& topo, const ParabolicResult& result) {

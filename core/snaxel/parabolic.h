@@ -21,7 +21,7 @@
 
 #include "snaxels/error.h"
 #include "snaxels/snaxel/fronts.h"
-#include "snaxels/snaxel/topology.h"
+#include "snaxels/mesh/topology.h"
 #include "snaxels/snaxel/tracker.h"
 
 namespace snaxels {
@@ -98,11 +98,22 @@ std::vector<std::vector<glm::dvec3>> parabolic_walks(int samples, int orders);
 /// Finds the parabolic points and curves of @p topology.
 ParabolicResult find_parabolic(const MeshTopology& topology, const ParabolicOptions& options = {});
 
-/// The same, kept per mesh (its positions, connectivity and the sample
-/// count) for the process's life: a second call with the same mesh returns
-/// at once. The options' callbacks are used only when it computes.
-std::shared_ptr<const ParabolicResult> cached_parabolic(const MeshTopology& topology,
-                                                        const ParabolicOptions& options = {});
+/// The same, kept in the pose's quantities (MeshPose::quantities) under
+/// every option that changes the result (samples, orders, smoothing), and
+/// carried to the poses made from it (MeshTopology::posed): the curves are
+/// the mesh's, found once and carried by its edges as it moves. A pose
+/// without them looks in a small cache across meshes in the process, keyed
+/// by the mesh's content (positions and faces) and the same options, before
+/// it searches, so reopening a mesh finds its curves at once. The options'
+/// callbacks are used only when it searches.
+std::shared_ptr<const ParabolicResult> require_parabolic(const MeshTopology& topology,
+                                                         const ParabolicOptions& options = {});
+
+/// Keeps @p result as @p topology's curves for @p options (as
+/// require_parabolic would after finding them), for curves found elsewhere
+/// (the application searches in the background on the loaded pose).
+void keep_parabolic(const MeshTopology& topology, const ParabolicOptions& options,
+                    std::shared_ptr<const ParabolicResult> result);
 
 /// The curves as a snaxel front set: every curve point a snaxel on its edge
 /// (inside = the edge's first vertex), every curve a loop, open or closed,

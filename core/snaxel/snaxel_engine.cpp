@@ -62,8 +62,10 @@ class Sweep {
         for (std::int32_t v = 0; v < std::int32_t(topo_.n_vertices()); ++v) {
             if (!on_side(v) || label_[v] != kNone) continue;
             bool extremum = true;
-            for (std::int32_t k = topo_.ring_start()[v]; k < topo_.ring_start()[v + 1] && extremum; ++k)
-                extremum = sign_ > 0 ? f_[v] >= f_[topo_.ring()[k]] : f_[v] <= f_[topo_.ring()[k]];
+            for (const std::int32_t w : topo_.neighbours(v)) {
+                extremum = sign_ > 0 ? f_[v] >= f_[w] : f_[v] <= f_[w];
+                if (!extremum) break;
+            }
             if (!extremum) continue;
             label_[v] = regions_.add();
             info_.push_back({sign_, v, 0});
@@ -75,10 +77,9 @@ class Sweep {
     // The front of u's region fans out past every neighbour on this side.
     void advance(std::int32_t u, std::vector<std::int32_t>& next) {
         const std::int32_t mine = regions_.find(label_[u]);
-        for (std::int32_t k = topo_.ring_start()[u]; k < topo_.ring_start()[u + 1]; ++k) {
-            const std::int32_t w = topo_.ring()[k];
+        for (const auto [w, edge] : topo_.ring_of(u)) {
             if (!on_side(w)) { // the front stops on this edge: f changes sign
-                stopped_.push_back(topo_.ring_edge()[k]);
+                stopped_.push_back(edge);
                 continue;
             }
             if (label_[w] == kNone) {
@@ -96,15 +97,19 @@ class Sweep {
     // Around w, the runs of neighbours already swept by `region`: a front
     // that reaches w from two or more sides meets itself there.
     std::size_t self_contacts(std::int32_t w, std::int32_t region) {
-        const std::int32_t begin = topo_.ring_start()[w], end = topo_.ring_start()[w + 1];
-        if (end - begin < 2) return 0;
-        auto in = [&](std::int32_t k) {
-            const std::int32_t l = label_[topo_.ring()[k]];
+        const std::span<const std::int32_t> ring = topo_.neighbours(w);
+        if (ring.size() < 2) return 0;
+        auto in = [&](std::int32_t u) {
+            const std::int32_t l = label_[u];
             return l != kNone && regions_.find(l) == region;
         };
         std::size_t runs = 0;
-        for (std::int32_t k = begin; k < end; ++k)
-            if (in(k) && !in(k == begin ? end - 1 : k - 1)) ++runs;
+        bool last = in(ring.back());
+        for (const std::int32_t u : ring) {
+            const bool now = in(u);
+            runs += now && !last;
+            last = now;
+        }
         return runs > 1 ? runs - 1 : 0;
     }
 
@@ -198,7 +203,7 @@ void set_snaxel_margins(const MeshTopology& topology, const Camera& camera, Cont
         return;
     }
     result.snaxel_margin =
-        suggestive_margins(topology, *pose_curvature(topology), result.vertex_f, result.fronts, camera, result.spec);
+        suggestive_margins(topology, *require_curvature(topology), result.vertex_f, result.fronts, camera, result.spec);
 }
 
 ContourResult SnaxelEngine::compute(const ContourSpec& spec, const Camera& camera,
@@ -209,7 +214,7 @@ ContourResult SnaxelEngine::compute(const ContourSpec& spec, const Camera& camer
     if (spec.on_surface()) {
         // Lines of the mesh: the same from every view (no f, no regions).
         if (spec.kind == ContourKind::Parabolic) {
-            const std::shared_ptr<const ParabolicResult> curves = topo_.parabolic ? topo_.parabolic : cached_parabolic(topo_);
+            const std::shared_ptr<const ParabolicResult> curves = require_parabolic(topo_);
             result.fronts = parabolic_fronts(topo_, *curves);
         } else {
             result.fronts = feature_fronts(topo_, spec);

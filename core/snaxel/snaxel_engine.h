@@ -12,7 +12,7 @@
 #include "snaxels/scene/camera.h"
 #include "snaxels/snaxel/contour_function.h"
 #include "snaxels/snaxel/fronts.h"
-#include "snaxels/snaxel/topology.h"
+#include "snaxels/mesh/topology.h"
 
 namespace snaxels {
 

@@ -78,7 +78,7 @@ ContourTracker::ContourTracker(const MeshTopology& topology, const ContourSpec& 
 
 const TrackedFrame& ContourTracker::step(const MeshTopology& pose, const Camera& camera, const Light& light) {
     if (!pose.same_connectivity(topo_))
-        throw std::invalid_argument("ContourTracker::step: a pose of another mesh (its connectivity differs)");
+        throw InternalError("ContourTracker::step: a pose of another mesh (its connectivity differs)");
     topo_ = pose;
     return step(camera, light);
 }
@@ -187,8 +187,7 @@ void ContourTracker::sweep_parents(const Fronts& old, const std::vector<std::int
     for (std::size_t q = 0; q < queue.size(); ++q) {
         const std::int32_t v = queue[q];
         (inside_[v] ? frame_.fanouts : frame_.retreats) += 1;
-        for (std::int32_t k = topo_.ring_start()[v]; k < topo_.ring_start()[v + 1]; ++k) {
-            const std::int32_t w = topo_.ring()[k];
+        for (const std::int32_t w : topo_.neighbours(v)) {
             if (vertex_parent_[w] != kNone || inside_[w] != inside_[v]) continue;
             if (std::binary_search(changed.begin(), changed.end(), w)) { // changed the same way
                 vertex_parent_[w] = vertex_parent_[v];
@@ -213,10 +212,10 @@ std::vector<std::int32_t> ContourTracker::crossing_edges(const Fronts& old, cons
     };
     for (const Snaxel& s : old.snaxels) consider(s.edge, kept);
     for (const std::int32_t v : changed)
-        for (std::int32_t k = topo_.ring_start()[v]; k < topo_.ring_start()[v + 1]; ++k) consider(topo_.ring_edge()[k], fresh);
+        for (const std::int32_t e : topo_.vertex_edges(v)) consider(e, fresh);
     for (const Snaxel& s : old.snaxels) edge_mark_[s.edge] = 0;
     for (const std::int32_t v : changed)
-        for (std::int32_t k = topo_.ring_start()[v]; k < topo_.ring_start()[v + 1]; ++k) edge_mark_[topo_.ring_edge()[k]] = 0;
+        for (const std::int32_t e : topo_.vertex_edges(v)) edge_mark_[e] = 0;
     // The old snaxels come ascending by edge from the frame before (a
     // from-scratch frame may not): only the few new edges need sorting.
     if (!std::is_sorted(kept.begin(), kept.end())) std::sort(kept.begin(), kept.end());

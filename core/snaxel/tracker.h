@@ -50,7 +50,7 @@ class ContourTracker {
     /// scratch on the first call, tracked after.
     const TrackedFrame& step(const Camera& camera, const Light& light);
     /// Advances to the next frame with the mesh in @p pose (a moving mesh):
-    /// another pose of the same connectivity, else std::invalid_argument.
+    /// another pose of the same connectivity, else InternalError.
     const TrackedFrame& step(const MeshTopology& pose, const Camera& camera, const Light& light);
 
     const TrackedFrame& current() const { return frame_; }

@@ -7,7 +7,7 @@
 #include <embree3/rtcore.h>
 
 #include "snaxels/error.h"
-#include "snaxels/snaxel/refine.h"
+#include "snaxels/mesh/refine.h"
 
 namespace snaxels {
 
@@ -139,7 +139,7 @@ void RayScene::upload_positions() {
 
 void RayScene::refit(const MeshTopology& pose) {
     if (!pose.same_connectivity(topo_))
-        throw std::invalid_argument("RayScene::refit: a pose of another mesh (its connectivity differs)");
+        throw InternalError("RayScene::refit: a pose of another mesh (its connectivity differs)");
     topo_ = pose;
     auto geom = static_cast<RTCGeometry>(geometry_);
     rtcSetGeometryBuildQuality(geom, RTC_BUILD_QUALITY_REFIT);

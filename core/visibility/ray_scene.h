@@ -9,7 +9,7 @@
 
 #include <glm/glm.hpp>
 
-#include "snaxels/snaxel/topology.h"
+#include "snaxels/mesh/topology.h"
 
 namespace snaxels {
 
@@ -19,7 +19,7 @@ struct VisibilityRay {
     glm::dvec3 dir{0.0, 0.0, 1.0}; ///< unit, toward the viewer
     double tfar = 0.0;              ///< where the viewer is (infinity: orthographic)
     std::array<std::int32_t, 3> ignore{MeshTopology::kNone, MeshTopology::kNone, MeshTopology::kNone};
-    /// On a refined mesh (core/snaxel/refine.h): ignore the faces the mesh
+    /// On a refined mesh (core/mesh/refine.h): ignore the faces the mesh
     /// as loaded has around the original vertices the ignored ones lie
     /// between, not only the refined faces around them.
     bool original_neighbourhood = false;
@@ -52,7 +52,7 @@ class RayScene {
     RayScene& operator=(const RayScene&) = delete;
 
     /// Refits the BVH to @p pose, another pose of the same connectivity (else
-    /// std::invalid_argument), for meshes that move between frames.
+    /// InternalError), for meshes that move between frames.
     void refit(const MeshTopology& pose);
 
     /// Every crossing of the ray segment, each face once.

@@ -69,9 +69,9 @@ VisibilityRay VisibilitySampler::face_ray(std::int32_t face, const glm::dvec3& p
 VisibilityRay VisibilitySampler::vertex_ray(std::int32_t v, bool back_side) const {
     const MeshTopology& topo = scene_.topology();
     double len = 0.0;
-    const std::int32_t begin = topo.ring_start()[v], end = topo.ring_start()[v + 1];
-    for (std::int32_t i = begin; i < end; ++i) len += glm::length(topo.positions()[topo.ring()[i]] - topo.positions()[v]);
-    len = end > begin ? len / (end - begin) : topo.mean_edge_length();
+    const std::span<const std::int32_t> ring = topo.neighbours(v);
+    for (const std::int32_t w : ring) len += glm::length(topo.positions()[w] - topo.positions()[v]);
+    len = !ring.empty() ? len / double(ring.size()) : topo.mean_edge_length();
     VisibilityRay ray = make_ray(topo.positions()[v], back_side ? -topo.normals()[v] : topo.normals()[v], len);
     ray.ignore = {v, MeshTopology::kNone, MeshTopology::kNone};
     return ray;

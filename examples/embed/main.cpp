@@ -4,12 +4,7 @@
 //   embed MESH OUT.svg
 #include <cstdio>
 
-#include <snaxels/animation/still.h>
-#include <snaxels/error.h>
-#include <snaxels/mesh/import.h>
-#include <snaxels/snaxel/refine.h>
-#include <snaxels/util/atomic_file.h>
-#include <snaxels/version.h>
+#include <snaxels/snaxels.h>
 
 int main(int argc, char** argv) {
     if (argc != 3) {
@@ -20,7 +15,7 @@ int main(int argc, char** argv) {
         const snaxels::LoadedMesh mesh = snaxels::load_mesh(argv[1]); // a file, or proc:torus and the like
         const snaxels::MeshTopology topology = snaxels::engine_topology(mesh.mesh);
         snaxels::StillJob job; // the visual contour, seen along +Z, hidden lines dashed
-        job.light = snaxels::default_light(job.camera);
+        job.scene.light = snaxels::default_light(job.scene.camera);
         const snaxels::StillOutput still = snaxels::render_still(mesh, topology, nullptr, job);
         snaxels::write_file_atomically(argv[2], still.svg);
         std::printf("%s: %zu contour loops\n", argv[2], still.results.front().fronts.loops.size());

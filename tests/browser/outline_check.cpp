@@ -17,7 +17,7 @@
 
 #include "snaxels/mesh/import.h"
 #include "snaxels/scene/camera.h"
-#include "snaxels/snaxel/topology.h"
+#include "snaxels/mesh/topology.h"
 
 using namespace snaxels;
 

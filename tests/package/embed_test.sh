@@ -15,6 +15,12 @@ test -f "$work/prefix/include/snaxels/animation/still.h"
 if find "$work/prefix/include" -path '*detail*' | grep -q .; then
   echo "internal headers were installed:"; find "$work/prefix/include" -path '*detail*'; exit 1
 fi
+# Internal headers say so in their first lines; none may be installed.
+if grep -rlE '^// *Internal to core' "$work/prefix/include" | grep -q .; then
+  echo "headers marked internal were installed:"; grep -rlE '^// *Internal to core' "$work/prefix/include"; exit 1
+fi
+# The example embeds the library with one include.
+test "$(grep -c '^#include <snaxels/' "$src"/examples/embed/*.cpp)" = 1
 ls "$work"/prefix/lib*/libsnaxels.a "$work"/prefix/lib*/cmake/snaxels/snaxelsConfig.cmake >/dev/null
 # No installed text file (headers, the CMake package) may point back into
 # the source or build tree (the library's debug information may).

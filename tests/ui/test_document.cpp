@@ -2,12 +2,15 @@
 // steps, undo and redo restoring exact values and telling observers, the
 // modified state, and project files written and read back. Expected values
 // are spelled out here, not computed by the code under test.
+#include <cmath>
+
 #include <QFile>
 #include <QSignalSpy>
 #include <QTemporaryDir>
 #include <QTest>
 #include <QUndoStack>
 
+#include "snaxels/animation/pipeline.h"
 #include "snaxels/error.h"
 #include "snaxels/project/project.h"
 #include "ui/document.h"
@@ -224,6 +227,82 @@ class TestDocument : public QObject {
         Document doc("<default-style/>");
         doc.load(p, "/nowhere/p.snaxels", "proc:sphere", nullptr);
         QCOMPARE(doc.styleText(), QString("<default-style/>"));
+    }
+
+    // The document is the one source of what is exported: its style (parsed
+    // from its text), camera, light and animation, through every edit,
+    // undo and redo, with a broken style text leaving the last good style.
+    void theExportReadsTheDocument() {
+        const QString visual = "<style version=\"1\"><contour kind=\"visual\"><visible stroke=\"#000000\" width=\"1\"/></contour></style>";
+        const QString shaded = "<style version=\"1\"><canvas width=\"640\" height=\"480\"/><light dir=\"0,1,0\"/>"
+                               "<contour kind=\"shadow\"><visible stroke=\"#202020\" width=\"2\"/></contour>"
+                               "<contour kind=\"isophote\" k=\"0.5\"><visible stroke=\"#404040\" width=\"1\"/></contour></style>";
+        Document doc(visual);
+        QSignalSpy parsed(&doc, &Document::styleChanged);
+        snaxels::AnimationJob job = doc.animationJob();
+        QCOMPARE(job.scene.kinds.size(), std::size_t(1));
+        QCOMPARE(int(job.scene.kinds[0].kind), int(snaxels::ContourKind::Visual));
+
+        doc.setStyleText(shaded);
+        QCOMPARE(parsed.count(), 1);
+        job = doc.animationJob();
+        QCOMPARE(job.scene.kinds.size(), std::size_t(2));
+        QCOMPARE(int(job.scene.kinds[0].kind), int(snaxels::ContourKind::Shadow));
+        QCOMPARE(job.scene.kinds[1].k, 0.5);
+        QCOMPARE(job.scene.style.width, 640);
+        QCOMPARE(job.scene.style.height, 480);
+        // No light of the user's: the style's.
+        QCOMPARE(job.scene.light.dir.y, 1.0);
+        QCOMPARE(job.scene.light.dir.x, 0.0);
+
+        // A text that does not parse is the document's text, but the style
+        // in force stays the last that parsed.
+        pastMergeWindow();
+        doc.setStyleText("<style version=\"1\"><contour kind=");
+        QCOMPARE(parsed.count(), 1);
+        QCOMPARE(doc.animationJob().scene.kinds.size(), std::size_t(2));
+
+        pastMergeWindow();
+        doc.setLight(directional(1, 0, 0));
+        job = doc.animationJob();
+        QCOMPARE(job.scene.light.dir.x, 1.0); // the user's light wins over the style's
+        QCOMPARE(job.scene.light.dir.y, 0.0);
+
+        // The camera: frame 0 of the document's view, whatever it was turned by.
+        OrbitView side = view(0.0, 0.0, 5.0);
+        side.turntable = 1.0;
+        doc.setView(side);
+        job = doc.animationJob();
+        QVERIFY(!job.scene.camera.orthographic());
+        QVERIFY(std::abs(job.scene.camera.eye.x) < 1e-12);
+        QVERIFY(std::abs(job.scene.camera.eye.y) < 1e-12);
+        QVERIFY(std::abs(job.scene.camera.eye.z - 5.0) < 1e-12);
+
+        AnimationSpec orbit;
+        orbit.kind = AnimationSpec::Kind::LightOrbit;
+        orbit.frames = 48;
+        orbit.degrees_per_frame = 7.5;
+        doc.setAnimation(orbit);
+        job = doc.animationJob();
+        QCOMPARE(int(job.animation.kind), int(AnimationSpec::Kind::LightOrbit));
+        QCOMPARE(job.animation.frames, 48);
+        QCOMPARE(job.animation.degrees_per_frame, 7.5);
+
+        // Undo walks every part back, and the export follows.
+        while (doc.undoStack()->canUndo()) doc.undoStack()->undo();
+        job = doc.animationJob();
+        QCOMPARE(job.scene.kinds.size(), std::size_t(1));
+        QCOMPARE(int(job.scene.kinds[0].kind), int(snaxels::ContourKind::Visual));
+        QCOMPARE(int(job.animation.kind), int(AnimationSpec().kind));
+        QVERIFY(!doc.light().has_value());
+        QCOMPARE(job.scene.style.width, snaxels::default_style().width);
+        // And redo forward again (to the broken text, under the last style
+        // that parsed).
+        while (doc.undoStack()->canRedo()) doc.undoStack()->redo();
+        job = doc.animationJob();
+        QCOMPARE(job.scene.kinds.size(), std::size_t(2));
+        QCOMPARE(job.scene.light.dir.x, 1.0);
+        QCOMPARE(job.animation.frames, 48);
     }
 
     void aFailedSaveChangesNothing() {

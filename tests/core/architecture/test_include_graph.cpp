@@ -72,10 +72,27 @@ TEST(IncludeGraph, CoreIncludesItsOwnHeadersByTheirInstalledNames) {
     }
 }
 
+TEST(IncludeGraph, UmbrellaIsForEmbeddersOnly) {
+    // <snaxels/snaxels.h> includes the public headers for a program that
+    // embeds the library; no library file includes it, and every header it
+    // names is public.
+    bool found = false;
+    for (const auto& inc : core_includes()) {
+        EXPECT_NE(inc.target, "snaxels/snaxels.h") << inc.file << " includes the umbrella header";
+        if (inc.file != "snaxels.h") continue;
+        found = true;
+        EXPECT_EQ(inc.target.find("/detail/"), std::string::npos) << "the umbrella includes " << inc.target;
+    }
+    EXPECT_TRUE(found) << "core/snaxels.h includes nothing";
+}
+
 TEST(IncludeGraph, NoCircleBetweenCoreFolders) {
     std::map<std::string, std::map<std::string, std::string>> edges; // from -> to -> an example
     for (const auto& inc : core_includes()) {
         if (!inc.quoted || inc.target.rfind("snaxels/", 0) != 0) continue;
+        // The umbrella header for embedders sits above every folder; no
+        // library file includes it (IncludeGraph.UmbrellaIsForEmbeddersOnly).
+        if (inc.file == "snaxels.h") continue;
         const std::string from = folder_of(inc.file), to = folder_of(inc.target.substr(8));
         if (from != to) edges[from].emplace(to, inc.file + " includes " + inc.target);
     }
@@ -150,4 +167,46 @@ TEST(Architecture, OneErrorRoot) {
     EXPECT_EQ(roots.front(), "Error in error.h");
     // InternalError, Cancelled, StyleError, ParabolicCancelled, AnimationCancelled at least.
     EXPECT_GE(derived, 5u);
+}
+
+TEST(Architecture, EveryThrowIsAnError) {
+    // What the library throws is an Error (so the command line tells a
+    // fault of the input, exit 1, from one of the program, exit 3): every
+    // throw site in core/ names a class that derives from snaxels::Error,
+    // directly or through another, read from the class definitions.
+    const std::regex definition(R"((class|struct)\s+(\w+)\s*(final\s*)?:\s*(public\s+)?(std::)?(\w+)\b)");
+    const std::regex throw_site(R"(\bthrow\s+([A-Za-z_][\w:]*)\s*[\({])");
+    std::map<std::string, std::string> base_of;
+    std::vector<std::pair<std::string, std::string>> thrown; // (class, where)
+    for (const auto& entry : fs::recursive_directory_iterator(fs::path(SNAXELS_SOURCE_DIR) / "core")) {
+        const std::string ext = entry.path().extension().string();
+        if (ext != ".h" && ext != ".cpp") continue;
+        std::ifstream in(entry.path());
+        std::string line;
+        for (int number = 1; std::getline(in, line); ++number) {
+            const auto code_end = line.find("//"); // comments may name anything
+            const std::string code = line.substr(0, code_end);
+            for (auto it = std::sregex_iterator(code.begin(), code.end(), definition); it != std::sregex_iterator(); ++it)
+                base_of[(*it)[2].str()] = ((*it)[5].matched ? "std::" : "") + (*it)[6].str();
+            for (auto it = std::sregex_iterator(code.begin(), code.end(), throw_site); it != std::sregex_iterator(); ++it) {
+                std::string name = (*it)[1].str();
+                if (name.rfind("snaxels::", 0) == 0) name = name.substr(9);
+                thrown.emplace_back(name, entry.path().filename().string() + ":" + std::to_string(number));
+            }
+        }
+    }
+    auto is_error = [&](std::string name) {
+        for (int depth = 0; depth < 16; ++depth) {
+            if (name == "Error") return true;
+            const auto it = base_of.find(name);
+            if (it == base_of.end()) return false;
+            name = it->second;
+        }
+        return false;
+    };
+    ASSERT_GE(thrown.size(), 20u) << "the throw sites were not found";
+    std::string strays;
+    for (const auto& [name, where] : thrown)
+        if (!is_error(name)) strays += name + " at " + where + "; ";
+    EXPECT_TRUE(strays.empty()) << "throws outside snaxels::Error: " << strays;
 }

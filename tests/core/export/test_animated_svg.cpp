@@ -13,12 +13,12 @@
 #include <regex>
 #include <string>
 
-#include "snaxels/export/animated_fills.h"
-#include "snaxels/export/animated_strokes.h"
+#include "snaxels/export/detail/animated_fills.h"
+#include "snaxels/export/detail/animated_strokes.h"
 #include "snaxels/export/animated_svg.h"
 #include "snaxels/export/animation_writer.h"
-#include "snaxels/export/path_keys.h"
-#include "snaxels/export/smil.h"
+#include "snaxels/export/detail/path_keys.h"
+#include "snaxels/export/detail/smil.h"
 #include "tests/support/coverage.h"
 #include "tests/support/drawn_frames.h"
 

@@ -8,7 +8,7 @@
 #include "snaxels/mesh/import.h"
 #include "snaxels/mesh/procedural.h"
 #include "snaxels/planarmap/planar_map.h"
-#include "snaxels/snaxel/refine.h"
+#include "snaxels/mesh/refine.h"
 #include "tests/support/assets.h"
 #include "tests/support/map_raster.h"
 #include "tests/support/reference_raster.h"

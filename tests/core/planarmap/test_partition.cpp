@@ -5,7 +5,7 @@
 #include "snaxels/animation/pipeline.h"
 #include "snaxels/animation/still.h"
 #include "snaxels/mesh/import.h"
-#include "snaxels/snaxel/refine.h"
+#include "snaxels/mesh/refine.h"
 #include "snaxels/style/style.h"
 #include "tests/support/assets.h"
 #include "tests/support/coverage.h"
@@ -57,9 +57,9 @@ TEST(PlanarMaps, RegionsArePartitionsInEveryView) {
             persp.eye = centre - 2.5 * radius * ortho.view_dir;
             for (const Camera& cam : {ortho, persp}) {
                 StillJob job = make_still_job(style, cam, std::nullopt);
-                job.visibility = false;
+                job.scene.visibility = false;
                 for (const PlanarMapKind kind : {PlanarMapKind::Snaxel, PlanarMapKind::Post}) {
-                    job.map_kind = kind;
+                    job.scene.map_kind = kind;
                     const StillOutput out = render_still(mesh, topo, &rays, job);
                     std::vector<test::Loops> regions;
                     for (const MapRegion& r : out.regions) regions.push_back(r.polygons);
@@ -103,8 +103,8 @@ TEST(PlanarMaps, AnimatedFillsArePartitionsAtEveryFrame) {
             Camera cam;
             cam.view_dir = glm::normalize(glm::dvec3(0.6, -0.3, 1.0));
             AnimationJob job = make_animation_job(style, spec, cam, std::nullopt);
-            job.map_kind = kind;
-            job.visibility = false;
+            job.scene.map_kind = kind;
+            job.scene.visibility = false;
             const AnimationOutput out = run_animation(mesh, test::asset(file), job);
             for (int f = 0; f < spec.frames; ++f) {
                 const test::Coverage c = test::coverage(test::smil_regions_at(out.document, (f + 0.01) / spec.frames), 512, 512, 4, 2);

@@ -7,7 +7,7 @@
 
 #include "snaxels/mesh/import.h"
 #include "snaxels/planarmap/planar_map.h"
-#include "snaxels/snaxel/refine.h"
+#include "snaxels/mesh/refine.h"
 #include "tests/support/assets.h"
 #include "tests/support/views.h"
 

@@ -5,7 +5,7 @@
 
 #include "snaxels/mesh/import.h"
 #include "snaxels/planarmap/snaxel_map.h"
-#include "snaxels/snaxel/refine.h"
+#include "snaxels/mesh/refine.h"
 #include "tests/support/assets.h"
 #include "tests/support/map_raster.h"
 #include "tests/support/views.h"

@@ -14,7 +14,7 @@
 #include "snaxels/error.h"
 #include "snaxels/mesh/build.h"
 #include "snaxels/mesh/procedural.h"
-#include "snaxels/snaxel/refine.h"
+#include "snaxels/mesh/refine.h"
 #include "snaxels/style/style.h"
 #include "tests/support/assets.h"
 
@@ -46,11 +46,11 @@ Style toon() {
 StillOutput draw(const Scene& s, const Camera& camera, const Light& light, std::vector<ContourSpec> kinds,
                  const Style& style = default_style()) {
     StillJob job;
-    job.camera = camera;
-    job.light = light;
-    job.kinds = std::move(kinds);
-    job.style = style;
-    job.engine.check_invariants = true;
+    job.scene.camera = camera;
+    job.scene.light = light;
+    job.scene.kinds = std::move(kinds);
+    job.scene.style = style;
+    job.scene.engine.check_invariants = true;
     return render_still(s.mesh, s.topology, nullptr, job);
 }
 

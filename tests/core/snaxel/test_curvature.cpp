@@ -8,7 +8,7 @@
 
 #include "snaxels/mesh/import.h"
 #include "snaxels/snaxel/curvature.h"
-#include "snaxels/snaxel/refine.h"
+#include "snaxels/mesh/refine.h"
 
 using namespace snaxels;
 
@@ -243,4 +243,28 @@ TEST(Curvature, RadialCurvatureZerosMatchTheTorus) {
     EXPECT_GE(double(agree), 0.995 * double(positive));
     EXPECT_GT(crossings, 1000u);
     EXPECT_GT(positive, 100u);
+}
+
+// require_curvature keeps one field per pose and options: other options are
+// another field, the same options the kept one, and a copy of the pose
+// (whose positions may change) starts without.
+TEST(Curvature, RequiredOncePerPoseAndOptions) {
+    const LoadedMesh m = load_mesh("proc:bumpy:4000");
+    const MeshTopology topo = build_topology(m.mesh);
+    const auto smoothed = require_curvature(topo);
+    CurvatureOptions raw;
+    raw.smoothing = 0;
+    raw.gradient = false;
+    const auto unsmoothed = require_curvature(topo, raw);
+    ASSERT_NE(smoothed.get(), unsmoothed.get());
+    EXPECT_FALSE(smoothed->gradient_start.empty());
+    EXPECT_TRUE(unsmoothed->gradient_start.empty());
+    const CurvatureField direct = vertex_curvatures(topo);
+    ASSERT_EQ(unsmoothed->k1.size(), direct.k1.size());
+    EXPECT_EQ(unsmoothed->k1, direct.k1); // no smoothing: the tensors themselves
+    EXPECT_NE(smoothed->k1, direct.k1);
+    EXPECT_EQ(require_curvature(topo).get(), smoothed.get());
+    EXPECT_EQ(require_curvature(topo, raw).get(), unsmoothed.get());
+    const MeshTopology copy = topo.posed(std::make_shared<const MeshPose>(*topo.pose()));
+    EXPECT_NE(require_curvature(copy).get(), smoothed.get());
 }

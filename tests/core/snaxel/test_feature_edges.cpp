@@ -11,7 +11,7 @@
 #include "snaxels/animation/still.h"
 #include "snaxels/mesh/import.h"
 #include "snaxels/snaxel/feature_edges.h"
-#include "snaxels/snaxel/refine.h"
+#include "snaxels/mesh/refine.h"
 #include "snaxels/snaxel/snaxel_engine.h"
 #include "snaxels/snaxel/tracker.h"
 #include "snaxels/style/style.h"
@@ -150,13 +150,13 @@ TEST(FeatureEdges, ChainsLoopsPathsAndJunctions) {
     EXPECT_EQ(chains.size(), all.size()); // each edge its own chain, from junction to junction
     // One vertex's ring of neighbours: a closed loop of edges that meet in twos.
     std::vector<std::int32_t> ring;
-    for (std::int32_t i = topo.ring_start()[0]; i < topo.ring_start()[1]; ++i) {
-        const std::int32_t a = topo.ring()[std::size_t(i)];
-        const std::int32_t b = topo.ring()[std::size_t(i + 1 < topo.ring_start()[1] ? i + 1 : topo.ring_start()[0])];
-        for (std::int32_t j = topo.ring_start()[std::size_t(a)]; j < topo.ring_start()[std::size_t(a) + 1]; ++j)
-            if (topo.ring()[std::size_t(j)] == b) ring.push_back(topo.ring_edge()[std::size_t(j)]);
+    const auto around = topo.neighbours(0);
+    for (std::size_t i = 0; i < around.size(); ++i) {
+        const std::int32_t a = around[i], b = around[(i + 1) % around.size()];
+        for (const auto [w, e] : topo.ring_of(a))
+            if (w == b) ring.push_back(e);
     }
-    ASSERT_EQ(ring.size(), std::size_t(topo.ring_start()[1] - topo.ring_start()[0]));
+    ASSERT_EQ(ring.size(), around.size());
     const std::vector<EdgeChain> loop = chain_edges(topo, ring);
     ASSERT_EQ(loop.size(), 1u);
     EXPECT_TRUE(loop[0].closed);
@@ -247,8 +247,8 @@ TEST(FeatureEdges, HiddenCreasesAreDashedWhereTheStyleSaysSo) {
     const MeshTopology topo = engine_topology(mesh.mesh);
     StillJob job = make_still_job(load_style(std::string(SNAXELS_STYLES_DIR) + "/technical-drawing.xml", nullptr),
                                   Camera{}, std::nullopt);
-    job.camera.view_dir = glm::normalize(glm::dvec3(0.3, -0.5, 1.0));
-    job.light = default_light(job.camera);
+    job.scene.camera.view_dir = glm::normalize(glm::dvec3(0.3, -0.5, 1.0));
+    job.scene.light = default_light(job.scene.camera);
     const StillOutput out = render_still(mesh, topo, nullptr, job);
     std::size_t crease = 0, hidden = 0, visible = 0;
     for (std::size_t c = 0; c < out.results.size(); ++c) {

@@ -8,7 +8,7 @@
 #include "snaxels/animation/still.h"
 #include "snaxels/mesh/import.h"
 #include "snaxels/snaxel/parabolic.h"
-#include "snaxels/snaxel/refine.h"
+#include "snaxels/mesh/refine.h"
 #include "snaxels/visibility/visibility.h"
 #include "tests/support/assets.h"
 
@@ -220,10 +220,10 @@ TEST(Parabolic, DrawnWithHiddenLinesLikeAnyContour) {
     const LoadedMesh m = load("proc:torus:20000");
     MeshTopology topo = engine_topology(m.mesh);
     StillJob job;
-    job.camera.view_dir = glm::normalize(glm::dvec3(0.2, 1.0, -0.35));
-    job.camera.up = {0.0, 0.0, 1.0};
-    job.light = default_light(job.camera);
-    job.kinds = {ContourSpec{}, ContourSpec{ContourKind::Parabolic, 0.0}};
+    job.scene.camera.view_dir = glm::normalize(glm::dvec3(0.2, 1.0, -0.35));
+    job.scene.camera.up = {0.0, 0.0, 1.0};
+    job.scene.light = default_light(job.scene.camera);
+    job.scene.kinds = {ContourSpec{}, ContourSpec{ContourKind::Parabolic, 0.0}};
     const StillOutput out = render_still(m, topo, nullptr, job);
     ASSERT_EQ(out.drawing.contours.size(), 2u);
     const DrawnContour& parabolic = out.drawing.contours[1];
@@ -245,7 +245,9 @@ TEST(Parabolic, TrackedCurvesKeepTheirIdentityAndMoveWithTheMesh) {
     MeshTopology topo = build_topology(m.mesh);
     ParabolicOptions options;
     options.samples = 600;
-    topo.parabolic = std::make_shared<const ParabolicResult>(find_parabolic(topo, options));
+    // Drawn as the default search's curves (what the engine requires), from
+    // a cheaper search.
+    keep_parabolic(topo, ParabolicOptions{}, std::make_shared<const ParabolicResult>(find_parabolic(topo, options)));
     ContourTracker tracker(topo, ContourSpec{ContourKind::Parabolic, 0.0});
     Camera camera;
     const TrackedFrame first = tracker.step(camera, default_light(camera));
@@ -294,4 +296,48 @@ TEST(Parabolic, WalksStepBetweenNeighbouringDirections) {
     }
     EXPECT_GE(visits, std::size_t(3 * samples));
     EXPECT_LT(double(long_steps) / double(steps), 0.02);
+}
+
+// The pose's quantity store keys a search by every option that changes it:
+// another smoothing is another search, the same options the kept result,
+// from the pose, from a new pose of the same mesh content (the process's
+// cache) and from a pose made from it (carried by the edges).
+TEST(Parabolic, RequiredOncePerPoseAndOptions) {
+    const LoadedMesh m = load("proc:nose:6000");
+    const MeshTopology topo = build_topology(m.mesh);
+    ParabolicOptions rough, smooth;
+    rough.samples = smooth.samples = 240;
+    rough.smoothing = 0.0;
+    smooth.smoothing = 0.08;
+    int searched = 0;
+    rough.progress = smooth.progress = [&](int, int) { ++searched; };
+    const auto a = require_parabolic(topo, rough);
+    const int after_first = searched;
+    EXPECT_GT(after_first, 0);
+    const auto b = require_parabolic(topo, smooth);
+    EXPECT_GT(searched, after_first) << "another smoothing must search again";
+    ASSERT_NE(a.get(), b.get());
+    EXPECT_EQ(a->smoothing_passes, 0);
+    EXPECT_GT(b->smoothing_passes, 0);
+    auto marks = [](const ParabolicResult& r) {
+        std::vector<std::int32_t> v;
+        for (const ParabolicPoint& p : r.points) v.push_back(p.vertex);
+        std::sort(v.begin(), v.end());
+        return v;
+    };
+    EXPECT_NE(marks(*a), marks(*b)) << "the two smoothings found the same marks";
+
+    const int before_again = searched;
+    EXPECT_EQ(require_parabolic(topo, rough).get(), a.get());
+    EXPECT_EQ(require_parabolic(topo, smooth).get(), b.get());
+    // A new pose of the same content: the process's cache.
+    const MeshTopology reloaded = build_topology(m.mesh);
+    ASSERT_NE(reloaded.pose().get(), topo.pose().get());
+    EXPECT_EQ(require_parabolic(reloaded, smooth).get(), b.get());
+    // A pose made from it, moved: the curves carried (no search on the moved mesh).
+    auto moved = std::make_shared<MeshPose>(*topo.pose());
+    for (glm::dvec3& p : moved->positions) p += glm::dvec3(0.0, 0.25, 0.0);
+    const MeshTopology posed = topo.posed(moved);
+    EXPECT_EQ(require_parabolic(posed, rough).get(), a.get());
+    EXPECT_EQ(searched, before_again) << "a kept search ran again";
 }

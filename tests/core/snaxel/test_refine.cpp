@@ -8,7 +8,7 @@
 
 #include "snaxels/mesh/import.h"
 #include "snaxels/snaxel/contour_function.h"
-#include "snaxels/snaxel/refine.h"
+#include "snaxels/mesh/refine.h"
 #include "snaxels/snaxel/snaxel_engine.h"
 #include "snaxels/visibility/visibility.h"
 #include "tests/support/assets.h"

@@ -195,7 +195,7 @@ TEST_P(SuggestiveTurntable, TrackedEqualsFromScratchAtEveryFrame) {
     options.check_invariants = false;
     const ContourSpec spec = ContourSpec::parse("suggestive");
     ContourTracker tracker(topo, spec, options);
-    const CurvatureField& field = *pose_curvature(topo); // the (smoothed) field the kind reads: the oracle's input
+    const CurvatureField& field = *require_curvature(topo); // the (smoothed) field the kind reads: the oracle's input
     std::size_t kept_ids = 0, moves = 0;
     std::set<std::uint64_t> previous;
     for (int frame = 0; frame < 120; ++frame) {
@@ -302,7 +302,7 @@ TEST(Suggestive, DrawingLeavesOutWeakParts) {
 TEST(Suggestive, SmoothingKeepsShapeAndRemovesNoise) {
     {
         const MeshTopology topo = build_topology(load_mesh("proc:torus:40000").mesh);
-        const std::shared_ptr<const CurvatureField> field = pose_curvature(topo);
+        const std::shared_ptr<const CurvatureField> field = require_curvature(topo);
         double worst = 0.0;
         for (std::size_t v = 0; v < topo.n_vertices(); ++v) {
             double theta, phi;
@@ -315,7 +315,7 @@ TEST(Suggestive, SmoothingKeepsShapeAndRemovesNoise) {
     }
     const MeshTopology horse = build_topology(load_mesh(test::asset("horse.ply")).mesh);
     const CurvatureField raw = vertex_curvatures(horse);
-    const CurvatureField& smooth = *pose_curvature(horse);
+    const CurvatureField& smooth = *require_curvature(horse);
     Camera cam;
     cam.view_dir = glm::normalize(glm::dvec3(-1.0, -0.2, -0.3));
     auto sign_changes = [&](const CurvatureField& f) {

@@ -4,6 +4,7 @@
 #include <cstdio>
 #include <random>
 
+#include "snaxels/error.h"
 #include "snaxels/mesh/import.h"
 #include "snaxels/mesh/procedural.h"
 #include "snaxels/visibility/visibility.h"
@@ -283,7 +284,7 @@ TEST(Visibility, RefitMatchesRebuild) {
     // A fresh build of the moved mesh from its own connectivity.
     const MeshTopology fresh_topo(std::make_shared<MeshConnectivity>(*rest.connectivity()), moved);
     const RayScene fresh(fresh_topo);
-    EXPECT_THROW(rays.refit(fresh_topo), std::invalid_argument); // not a pose of the scene's mesh
+    EXPECT_THROW(rays.refit(fresh_topo), InternalError); // not a pose of the scene's mesh
     Camera cam;
     cam.view_dir = glm::normalize(glm::dvec3(1.0, 0.3, -0.5));
     const ContourResult r = engine.compute({}, cam, Light{});

@@ -13,7 +13,7 @@
 #include <vector>
 
 #include "snaxels/export/animated_svg.h"
-#include "snaxels/export/path_keys.h"
+#include "snaxels/export/detail/path_keys.h"
 
 namespace snaxels {
 

@@ -16,7 +16,7 @@
 
 #include <glm/vec3.hpp>
 
-#include "snaxels/snaxel/topology.h"
+#include "snaxels/mesh/topology.h"
 
 namespace snaxels {
 

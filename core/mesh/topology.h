@@ -6,17 +6,17 @@
 #include <array>
 #include <cstdint>
 #include <memory>
-#include <mutex>
 #include <span>
 #include <vector>
 
 #include <glm/vec3.hpp>
 
 #include "snaxels/mesh/mesh.h"
+#include "snaxels/mesh/quantities.h"
 
 namespace snaxels {
 
-struct MeshRefinement;  // core/snaxel/refine.h
+struct MeshRefinement;  // core/mesh/refine.h
 struct ParabolicResult; // core/snaxel/parabolic.h
 struct CurvatureField;  // core/snaxel/curvature.h
 
@@ -49,23 +49,71 @@ struct MeshPose {
     std::vector<glm::dvec3> positions; ///< #V
     std::vector<glm::dvec3> normals;   ///< #V, unit
 
-    /// The pose's curvature, found on first use (pose_curvature() in
-    /// core/snaxel/curvature.h) and kept while the pose lives. A copy of a
-    /// pose starts without it (its positions may be changed before use).
-    class CurvatureCache {
+    /// What is derived from this pose (curvature, parabolic curves, ...),
+    /// computed on first use and kept while the pose lives; a copy of a
+    /// pose starts without (its positions may be changed before use).
+    PoseQuantities quantities{};
+};
+
+/// A neighbour of a vertex and the edge to it.
+struct RingStep {
+    std::int32_t vertex;
+    std::int32_t edge;
+};
+
+/// The (neighbour, edge) pairs around a vertex (MeshTopology::ring_of).
+class RingRange {
+  public:
+    class iterator {
       public:
-        CurvatureCache() = default;
-        CurvatureCache(const CurvatureCache&) {}
-        CurvatureCache& operator=(const CurvatureCache&) { return *this; }
-        std::shared_ptr<const CurvatureField> get() const;
-        /// Keeps @p field unless one is kept already; returns the kept one.
-        std::shared_ptr<const CurvatureField> keep(std::shared_ptr<const CurvatureField> field) const;
+        iterator(const std::int32_t* v, const std::int32_t* e) : v_(v), e_(e) {}
+        RingStep operator*() const { return {*v_, *e_}; }
+        iterator& operator++() { return ++v_, ++e_, *this; }
+        bool operator!=(const iterator& o) const { return v_ != o.v_; }
 
       private:
-        mutable std::mutex mutex_;
-        mutable std::shared_ptr<const CurvatureField> field_;
+        const std::int32_t *v_, *e_;
     };
-    CurvatureCache curvature{};
+    RingRange(const std::int32_t* ring, const std::int32_t* edges, std::size_t begin, std::size_t end)
+        : begin_(ring + begin, edges + begin), end_(ring + end, edges + end) {}
+    iterator begin() const { return begin_; }
+    iterator end() const { return end_; }
+
+  private:
+    iterator begin_, end_;
+};
+
+/// A face at a vertex and the vertex's corner in it (0-2).
+struct FaceCorner {
+    std::int32_t face;
+    int corner;
+};
+
+class MeshTopology;
+
+/// The faces around a vertex, each once (MeshTopology::faces_around).
+class FacesAround {
+  public:
+    class iterator {
+      public:
+        iterator(const FacesAround& range, std::size_t k) : range_(&range), k_(k) { skip(); }
+        FaceCorner operator*() const;
+        iterator& operator++() { return ++k_, skip(), *this; }
+        bool operator!=(const iterator& o) const { return k_ != o.k_; }
+
+      private:
+        void skip();
+        const FacesAround* range_;
+        std::size_t k_;
+    };
+    FacesAround(const MeshTopology& topology, std::int32_t v);
+    iterator begin() const { return iterator(*this, 0); }
+    iterator end() const { return iterator(*this, edges_.size()); }
+
+  private:
+    const MeshTopology* topology_;
+    std::int32_t v_;
+    std::span<const std::int32_t> edges_; ///< the edges at v_
 };
 
 /// One pose of one connectivity: what the engine, the tracker, the ray scene
@@ -79,7 +127,9 @@ class MeshTopology {
     MeshTopology(); ///< no mesh
     MeshTopology(std::shared_ptr<const MeshConnectivity> connectivity, std::shared_ptr<const MeshPose> pose);
 
-    /// This connectivity in @p pose (as many vertices; else std::invalid_argument).
+    /// This connectivity in @p pose (as many vertices; else
+    /// InternalError). The quantities this pose carries to later
+    /// poses (PoseQuantities::Lifetime) are kept in @p pose too.
     MeshTopology posed(std::shared_ptr<const MeshPose> pose) const;
     const std::shared_ptr<const MeshConnectivity>& connectivity() const { return connectivity_; }
     const std::shared_ptr<const MeshPose>& pose() const { return pose_; }
@@ -95,9 +145,6 @@ class MeshTopology {
     std::span<const std::array<std::int32_t, 2>> edge_faces() const { return edge_faces_; }
     std::span<const std::array<std::int32_t, 3>> face_vertices() const { return face_vertices_; }
     std::span<const std::array<std::int32_t, 3>> face_edges() const { return face_edges_; }
-    std::span<const std::int32_t> ring_start() const { return ring_start_; }
-    std::span<const std::int32_t> ring() const { return ring_; }
-    std::span<const std::int32_t> ring_edge() const { return ring_edge_; }
     double mean_edge_length() const { return connectivity_->mean_edge_length; }
     const std::shared_ptr<const MeshRefinement>& refinement() const { return connectivity_->refinement; }
 
@@ -115,12 +162,48 @@ class MeshTopology {
         return ends[0] == v ? ends[1] : ends[0];
     }
 
-    /// When set, the parabolic curves the engine draws for this mesh (found
-    /// once, on the pose a job starts from, and carried by its edges as it
-    /// moves); else the engine finds them (cached_parabolic).
-    std::shared_ptr<const ParabolicResult> parabolic;
+    // Circulators: what lies around a vertex, in the ring's circular order.
+    // Every stage walks a vertex's neighbourhood through these.
+
+    /// The number of neighbours of @p v.
+    std::int32_t degree(std::int32_t v) const { return ring_start_[std::size_t(v) + 1] - ring_start_[std::size_t(v)]; }
+    /// The neighbours of @p v.
+    std::span<const std::int32_t> neighbours(std::int32_t v) const { return ring_.subspan(ring_begin(v), std::size_t(degree(v))); }
+    /// The edges at @p v, to each neighbour in turn.
+    std::span<const std::int32_t> vertex_edges(std::int32_t v) const {
+        return ring_edge_.subspan(ring_begin(v), std::size_t(degree(v)));
+    }
+    /// (neighbour, edge to it) of @p v.
+    RingRange ring_of(std::int32_t v) const { return RingRange(ring_.data(), ring_edge_.data(), ring_begin(v), ring_begin(v) + std::size_t(degree(v))); }
+    /// Each face at @p v once, with v's corner in it: the face in which the
+    /// edge to each neighbour leaves v (the neighbour follows v in the
+    /// face's corner order), in ring order. A boundary vertex's last
+    /// neighbour has no such face.
+    FacesAround faces_around(std::int32_t v) const { return FacesAround(*this, v); }
+    /// Calls @p fn(face) for the faces on both sides of each edge at @p v,
+    /// in ring order: each face twice (a face's share of v's area is then
+    /// half its share of each edge).
+    template <class Fn> void for_each_face_beside_edges(std::int32_t v, Fn&& fn) const {
+        for (const std::int32_t e : vertex_edges(v))
+            for (const std::int32_t f : edge_faces_[std::size_t(e)])
+                if (f != kNone) fn(f);
+    }
+    /// The face in which the edge @p e leaves @p v (the face on its left
+    /// walking from v), or kNone on a boundary.
+    std::int32_t face_leaving(std::int32_t e, std::int32_t v) const {
+        return edge_faces_[std::size_t(e)][edge_vertices_[std::size_t(e)][0] == v ? 0 : 1];
+    }
+    /// @p v's corner (0-2) in face @p f, or 3 when v is not one of its corners.
+    int corner_of(std::int32_t f, std::int32_t v) const {
+        const auto& fv = face_vertices_[std::size_t(f)];
+        return fv[0] == v ? 0 : fv[1] == v ? 1 : fv[2] == v ? 2 : 3;
+    }
 
   private:
+    // The rings are in CSR form (MeshConnectivity::ring_start), read through
+    // the circulators above.
+    std::size_t ring_begin(std::int32_t v) const { return std::size_t(ring_start_[std::size_t(v)]); }
+
     std::shared_ptr<const MeshConnectivity> connectivity_;
     std::shared_ptr<const MeshPose> pose_;
     // Views of the two parts, so the engine's loops read them as directly as vectors.
@@ -129,6 +212,20 @@ class MeshTopology {
     std::span<const std::array<std::int32_t, 3>> face_vertices_, face_edges_;
     std::span<const std::int32_t> ring_start_, ring_, ring_edge_;
 };
+
+inline FacesAround::FacesAround(const MeshTopology& topology, std::int32_t v)
+    : topology_(&topology), v_(v), edges_(topology.vertex_edges(v)) {}
+
+inline void FacesAround::iterator::skip() {
+    while (k_ < range_->edges_.size() &&
+           range_->topology_->face_leaving(range_->edges_[k_], range_->v_) == MeshTopology::kNone)
+        ++k_;
+}
+
+inline FaceCorner FacesAround::iterator::operator*() const {
+    const std::int32_t f = range_->topology_->face_leaving(range_->edges_[k_], range_->v_);
+    return {f, range_->topology_->corner_of(f, range_->v_)};
+}
 
 /// Builds the flat connectivity of @p mesh, in its pose (normals as stored
 /// on the mesh); @p refinement, when the mesh is a refined one, says how its
@@ -150,8 +247,7 @@ std::int32_t grow_vertex_sets(const MeshTopology& topo, std::vector<std::int32_t
         while (!stack.empty()) {
             const std::int32_t v = stack.back();
             stack.pop_back();
-            for (std::int32_t i = topo.ring_start()[std::size_t(v)]; i < topo.ring_start()[std::size_t(v) + 1]; ++i) {
-                const std::int32_t w = topo.ring()[std::size_t(i)];
+            for (const std::int32_t w : topo.neighbours(v)) {
                 if (set_of[std::size_t(w)] < 0 && joins(v, w)) {
                     set_of[std::size_t(w)] = count;
                     stack.push_back(w);

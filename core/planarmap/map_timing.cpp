@@ -1,4 +1,4 @@
-#include "snaxels/planarmap/detail/map_timing.h"
+#include "snaxels/planarmap/map_timing.h"
 
 #include "snaxels/planarmap/planar_map.h"
 

@@ -1,4 +1,4 @@
-#include "snaxels/snaxel/topology.h"
+#include "snaxels/mesh/topology.h"
 
 #include <limits>
 #include <stdexcept>
@@ -6,29 +6,19 @@
 
 #include <glm/glm.hpp>
 
-#include "snaxels/snaxel/refine.h"
+#include "snaxels/error.h"
+#include "snaxels/mesh/refine.h"
 
 namespace snaxels {
-
-std::shared_ptr<const CurvatureField> MeshPose::CurvatureCache::get() const {
-    const std::lock_guard lock(mutex_);
-    return field_;
-}
-
-std::shared_ptr<const CurvatureField> MeshPose::CurvatureCache::keep(std::shared_ptr<const CurvatureField> field) const {
-    const std::lock_guard lock(mutex_);
-    if (!field_) field_ = std::move(field);
-    return field_;
-}
 
 MeshTopology::MeshTopology()
     : MeshTopology(std::make_shared<const MeshConnectivity>(), std::make_shared<const MeshPose>()) {}
 
 MeshTopology::MeshTopology(std::shared_ptr<const MeshConnectivity> connectivity, std::shared_ptr<const MeshPose> pose)
     : connectivity_(std::move(connectivity)), pose_(std::move(pose)) {
-    if (!connectivity_ || !pose_) throw std::invalid_argument("MeshTopology: no connectivity or no pose");
+    if (!connectivity_ || !pose_) throw InternalError("MeshTopology: no connectivity or no pose");
     if (pose_->positions.size() != connectivity_->n_vertices() || pose_->normals.size() != pose_->positions.size())
-        throw std::invalid_argument("MeshTopology: a pose of " + std::to_string(pose_->positions.size()) +
+        throw InternalError("MeshTopology: a pose of " + std::to_string(pose_->positions.size()) +
                                     " vertices for a connectivity of " + std::to_string(connectivity_->n_vertices()));
     const MeshConnectivity& c = *connectivity_;
     positions_ = pose_->positions;
@@ -44,7 +34,7 @@ MeshTopology::MeshTopology(std::shared_ptr<const MeshConnectivity> connectivity,
 
 MeshTopology MeshTopology::posed(std::shared_ptr<const MeshPose> pose) const {
     MeshTopology out(connectivity_, std::move(pose));
-    out.parabolic = parabolic;
+    pose_->quantities.carry_to(out.pose_->quantities);
     return out;
 }
 
@@ -106,7 +96,7 @@ std::size_t MeshConnectivity::n_base_vertices() const { return refinement ? refi
 MeshPose make_pose(const MeshConnectivity& c, std::vector<glm::dvec3> positions) {
     MeshPose t;
     if (positions.size() < c.n_base_vertices())
-        throw std::invalid_argument("make_pose: " + std::to_string(positions.size()) + " positions for " +
+        throw InternalError("make_pose: " + std::to_string(positions.size()) + " positions for " +
                                     std::to_string(c.n_base_vertices()) + " vertices");
     t.positions = std::move(positions);
     t.positions.resize(c.n_vertices());

@@ -9,7 +9,7 @@
 #include <vector>
 
 #include "snaxels/mesh/build.h"
-#include "snaxels/snaxel/topology.h"
+#include "snaxels/mesh/topology.h"
 
 namespace snaxels {
 

@@ -1,4 +1,4 @@
-#include "snaxels/snaxel/refine.h"
+#include "snaxels/mesh/refine.h"
 
 #include <algorithm>
 #include <memory>

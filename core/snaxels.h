@@ -1,0 +1,49 @@
+#pragma once
+/// Everything a program that embeds snaxels needs, in one include:
+/// reading meshes, the engine's topology and its refinement, the contour
+/// engine and tracker, hidden lines, planar maps, stills and animations,
+/// the style language, SVG, Lottie and JSON export, projects, and the
+/// library's errors and version (docs/library.md). The library's own
+/// sources include the headers they need one by one, never this one.
+
+#include "snaxels/error.h"
+#include "snaxels/version.h"
+
+#include "snaxels/mesh/import.h"
+#include "snaxels/mesh/mesh_animation.h"
+#include "snaxels/mesh/procedural.h"
+#include "snaxels/mesh/refine.h"
+#include "snaxels/mesh/report.h"
+#include "snaxels/mesh/topology.h"
+
+#include "snaxels/scene/camera.h"
+#include "snaxels/scene/orbit.h"
+
+#include "snaxels/snaxel/contour_function.h"
+#include "snaxels/snaxel/curvature.h"
+#include "snaxels/snaxel/feature_edges.h"
+#include "snaxels/snaxel/fronts.h"
+#include "snaxels/snaxel/parabolic.h"
+#include "snaxels/snaxel/snaxel_engine.h"
+#include "snaxels/snaxel/tracker.h"
+
+#include "snaxels/visibility/ray_scene.h"
+#include "snaxels/visibility/visibility.h"
+
+#include "snaxels/planarmap/planar_map.h"
+#include "snaxels/planarmap/region.h"
+
+#include "snaxels/style/style.h"
+
+#include "snaxels/animation/frame_driver.h"
+#include "snaxels/animation/pipeline.h"
+#include "snaxels/animation/still.h"
+
+#include "snaxels/export/animated_svg.h"
+#include "snaxels/export/contours_json.h"
+#include "snaxels/export/lottie.h"
+#include "snaxels/export/svg.h"
+
+#include "snaxels/project/project.h"
+
+#include "snaxels/util/atomic_file.h"

@@ -1,0 +1,199 @@
+// MainWindow, continued: its menus.
+#include "ui/mainwindow.h"
+
+#include <QAction>
+#include <QDir>
+#include <QFile>
+#include <QFileDialog>
+#include <QFileInfo>
+#include <QMenuBar>
+#include <QMessageBox>
+#include <QSettings>
+#include <QStatusBar>
+#include <QUndoStack>
+
+#include "snaxels/util/atomic_file.h"
+#include "ui/document.h"
+#include "ui/meshview.h"
+#include "ui/parabolic_search.h"
+#include "ui/resources.h"
+#include "ui/styleeditor.h"
+#include "ui/svgpane.h"
+#include "ui/timeline.h"
+
+namespace snaxels::ui {
+namespace {
+
+constexpr int kMaxRecent = 8;
+
+} // namespace
+
+void MainWindow::createMenus() {
+    QMenu* file = menuBar()->addMenu(tr("&File"));
+    QAction* open = file->addAction(tr("&Open…"), this, [this] {
+        const QString path = QFileDialog::getOpenFileName(
+            this, tr("Open Mesh or Project"), QSettings().value("paths/lastDir").toString(),
+            tr("Meshes and projects (*.obj *.ply *.stl *.off *.gltf *.glb *.fbx *.dae *.3ds *.x *.blend *.snaxels);;"
+               "Projects (*.snaxels);;All files (*)"));
+        if (path.isEmpty()) return;
+        QSettings().setValue("paths/lastDir", QFileInfo(path).absolutePath());
+        openFile(path);
+    });
+    open->setShortcut(QKeySequence::Open);
+    file->addAction(tr("Open Mesh &Sequence…"), this, [this] {
+        const QString path = QFileDialog::getOpenFileName(
+            this, tr("Open Mesh Sequence (choose any of its numbered files)"), QSettings().value("paths/lastDir").toString(),
+            tr("Meshes (*.obj *.ply *.stl *.off);;All files (*)"));
+        if (path.isEmpty()) return;
+        QSettings().setValue("paths/lastDir", QFileInfo(path).absolutePath());
+        openSequence(path);
+    });
+    recentMenu_ = file->addMenu(tr("Open &Recent"));
+    rebuildRecentMenu();
+    file->addSeparator();
+    QAction* save = file->addAction(tr("&Save Project"), this, [this] { saveProjectInteractive(false); });
+    save->setShortcut(QKeySequence::Save);
+    QAction* saveAs = file->addAction(tr("Save Project &As…"), this, [this] { saveProjectInteractive(true); });
+    saveAs->setShortcut(QKeySequence::SaveAs);
+    file->addSeparator();
+    QAction* quit = file->addAction(tr("&Quit"), this, &QWidget::close);
+    quit->setShortcut(QKeySequence::Quit);
+
+    QMenu* edit = menuBar()->addMenu(tr("&Edit"));
+    QAction* undo = document_->undoStack()->createUndoAction(this, tr("&Undo"));
+    undo->setShortcut(QKeySequence::Undo);
+    QAction* redo = document_->undoStack()->createRedoAction(this, tr("&Redo"));
+    redo->setShortcut(QKeySequence::Redo);
+    edit->addAction(undo);
+    edit->addAction(redo);
+
+    createStyleMenu();
+
+    createExportMenu();
+
+    QMenu* playMenu = menuBar()->addMenu(tr("&Play"));
+    QAction* play = playMenu->addAction(tr("Play / Pause"), timeline_, &Timeline::togglePlay);
+    play->setShortcut(Qt::Key_Space);
+    QAction* next = playMenu->addAction(tr("Next Frame"), this, [this] { timeline_->step(1); });
+    next->setShortcut(Qt::Key_Right);
+    QAction* previous = playMenu->addAction(tr("Previous Frame"), this, [this] { timeline_->step(-1); });
+    previous->setShortcut(Qt::Key_Left);
+
+    createViewMenu();
+}
+
+void MainWindow::createExportMenu() {
+    QMenu* exportMenu = menuBar()->addMenu(tr("&Export"));
+    QAction* exportAnim = exportMenu->addAction(tr("&Animated SVG…"), this, [this] {
+        const QString path = QFileDialog::getSaveFileName(this, tr("Export Animated SVG"), QString(), tr("SVG (*.svg)"));
+        if (!path.isEmpty()) exportAnimation(path);
+    });
+    exportAnim->setShortcut(QKeySequence(tr("Ctrl+E")));
+    QAction* exportLottie = exportMenu->addAction(tr("&Lottie…"), this, [this] {
+        QString path = QFileDialog::getSaveFileName(this, tr("Export Lottie"), QString(), tr("Lottie JSON (*.json)"));
+        if (path.isEmpty()) return;
+        if (QFileInfo(path).suffix().isEmpty()) path += ".json";
+        exportAnimation(path, AnimationFormat::Lottie);
+    });
+    exportLottie->setObjectName("exportLottie");
+    exportLottie->setShortcut(QKeySequence(tr("Ctrl+Alt+E")));
+    QAction* exportStill = exportMenu->addAction(tr("Current &Frame as SVG…"), this, [this] {
+        const QString path = QFileDialog::getSaveFileName(this, tr("Export Frame"), QString(), tr("SVG (*.svg)"));
+        if (!path.isEmpty()) exportFrame(path);
+    });
+    exportStill->setShortcut(QKeySequence(tr("Ctrl+Shift+E")));
+}
+
+void MainWindow::createViewMenu() {
+    QMenu* viewMenu = menuBar()->addMenu(tr("&View"));
+    QAction* reset = viewMenu->addAction(tr("&Reset Camera"), view_, &MeshView::resetCamera);
+    reset->setShortcut(Qt::Key_Home);
+    viewMenu->addAction(tr("Reset &Light"), this, [this] {
+        // Back to the style's light (or the default); one undo step.
+        if (!light_) return;
+        light_.reset();
+        scheduleContours();
+        emit view_->lightEdited();
+    });
+    regionsAction_ = viewMenu->addAction(tr("&Colour Regions"));
+    regionsAction_->setCheckable(true);
+    regionsAction_->setShortcut(QKeySequence(tr("Ctrl+R")));
+    regionsAction_->setToolTip(tr("Colour the surface by planar-map region: shadow, lit, isophote bands, highlights"));
+    regionsAction_->setChecked(QSettings().value("view/regions", false).toBool());
+    connect(regionsAction_, &QAction::toggled, this, [this](bool on) {
+        QSettings().setValue("view/regions", on);
+        RegionShading shading = view_->regionShading();
+        shading.enabled = on;
+        view_->setRegionShading(std::move(shading));
+    });
+    parabolicAction_ = viewMenu->addAction(tr("&Parabolic Curves"));
+    parabolicAction_->setObjectName("parabolicCurves");
+    parabolicAction_->setCheckable(true);
+    parabolicAction_->setShortcut(QKeySequence(tr("Ctrl+Shift+P")));
+    parabolicAction_->setToolTip(tr("Draw the mesh's parabolic curves, where it turns from dome- to saddle-shaped "
+                                    "(found once per mesh from visual events over all views)"));
+    parabolicAction_->setChecked(QSettings().value("view/parabolic", false).toBool());
+    connect(parabolicAction_, &QAction::toggled, this, [this](bool on) {
+        QSettings().setValue("view/parabolic", on);
+        parabolic_->ensure();
+        scheduleContours();
+    });
+    viewMenu->addAction(tr("&Fit SVG Pane"), svgPane_, &SvgPane::fit);
+}
+
+void MainWindow::createStyleMenu() {
+    QMenu* menu = menuBar()->addMenu(tr("&Style"));
+    QMenu* presets = menu->addMenu(tr("&Presets"));
+    const QDir dir(dataDirectory() + "/styles");
+    for (const QFileInfo& file : dir.entryInfoList({"*.xml"}, QDir::Files, QDir::Name))
+        presets->addAction(file.completeBaseName(), this, [this, path = file.absoluteFilePath()] {
+            QFile in(path);
+            if (!in.open(QIODevice::ReadOnly)) {
+                statusBar()->showMessage(tr("Cannot read %1").arg(path), 6000);
+                return;
+            }
+            styleEditor_->setText(QString::fromUtf8(in.readAll()), path);
+        });
+    presets->setEnabled(!presets->isEmpty());
+    menu->addAction(tr("&Load Style…"), this, [this] {
+        const QString path = QFileDialog::getOpenFileName(this, tr("Load Style"), QString(), tr("Styles (*.xml)"));
+        if (path.isEmpty()) return;
+        QFile in(path);
+        if (!in.open(QIODevice::ReadOnly)) {
+            QMessageBox::warning(this, tr("Load Style"), tr("Cannot read %1: %2").arg(path, in.errorString()));
+            return;
+        }
+        styleEditor_->setText(QString::fromUtf8(in.readAll()), path);
+    });
+    menu->addAction(tr("&Save Style As…"), this, [this] {
+        const QString path = QFileDialog::getSaveFileName(this, tr("Save Style"), QString(), tr("Styles (*.xml)"));
+        if (path.isEmpty()) return;
+        try {
+            write_file_atomically(path.toStdString(), styleEditor_->text().toStdString());
+            statusBar()->showMessage(tr("Saved %1").arg(path), 4000);
+        } catch (const std::exception& e) {
+            QMessageBox::warning(this, tr("Save Style"), QString::fromStdString(e.what()));
+        }
+    });
+}
+
+void MainWindow::addRecentFile(const QString& path) {
+    QSettings settings;
+    QStringList recent = settings.value("recentFiles").toStringList();
+    recent.removeAll(path);
+    recent.prepend(path);
+    while (recent.size() > kMaxRecent) recent.removeLast();
+    settings.setValue("recentFiles", recent);
+    rebuildRecentMenu();
+}
+
+void MainWindow::rebuildRecentMenu() {
+    recentMenu_->clear();
+    const QStringList recent = QSettings().value("recentFiles").toStringList();
+    for (const QString& path : recent)
+        recentMenu_->addAction(QFileInfo(path).fileName(), this, [this, path] { openFile(path); })
+            ->setToolTip(path);
+    recentMenu_->setEnabled(!recent.isEmpty());
+}
+
+} // namespace snaxels::ui
