@@ -31,7 +31,8 @@ dpkg-deb -c "$deb" | awk '{print $6}' >"$work/files.txt"
 expect=(./usr/bin/snaxels-cli ./usr/libexec/snaxels/snaxels-import
   ./usr/share/snaxels/resources/spot.obj ./usr/share/snaxels/styles/toon.xml
   ./usr/share/applications/snaxels.desktop ./usr/share/icons/hicolor/scalable/apps/snaxels.svg
-  ./usr/share/mime/packages/snaxels.xml ./usr/share/doc/snaxels/README.md ./usr/share/doc/snaxels/cli.md)
+  ./usr/share/mime/packages/snaxels.xml ./usr/share/doc/snaxels/README.md ./usr/share/doc/snaxels/cli.md
+  ./usr/share/doc/snaxels/copyright ./usr/share/doc/snaxels/LICENSE)
 [ -n "$gui" ] && expect+=(./usr/bin/snaxels)
 for f in "${expect[@]}"; do
   grep -qx "$f" "$work/files.txt" || { echo "the package lacks $f"; exit 1; }
@@ -40,6 +41,11 @@ if grep -q "include\|\.a$\|cmake" "$work/files.txt"; then
   echo "development files in the runtime package:"; grep "include\|\.a$\|cmake" "$work/files.txt"; exit 1
 fi
 dpkg-deb -c "$dev" | awk '{print $6}' | grep -q "/usr/include/snaxels/version.h"
+dpkg-deb -c "$dev" | awk '{print $6}' | grep -qx "./usr/share/doc/snaxels-dev/copyright"
+dpkg-deb -c "$dev" | awk '{print $6}' | grep -qx "./usr/include/snaxels/snaxels.h"
+# A real maintainer, not a placeholder address.
+maintainer=$(dpkg-deb -f "$deb" Maintainer)
+case "$maintainer" in *@invalid*|"") echo "placeholder maintainer: $maintainer"; exit 1 ;; esac
 
 root="$work/root"
 dpkg-deb -x "$deb" "$root"
