@@ -90,6 +90,24 @@ void Document::setMesh(const QString& spec, std::shared_ptr<const LoadedMesh> me
     setMeshChanged(true);
 }
 
+void Document::startNew(const QString& spec, std::shared_ptr<const LoadedMesh> mesh, const OrbitView& view,
+                        const AnimationSpec& animation) {
+    meshSpec_ = spec;
+    mesh_ = std::move(mesh);
+    emit meshChanged();
+    resetView(view);
+    resetAnimation(animation);
+    setFrame(0);
+    if (light_) assignLight(std::nullopt); // the user's light was the last file's
+    undo_->clear();                       // the history belongs to its document
+    if (!projectPath_.isEmpty()) {
+        projectPath_.clear();
+        emit projectPathChanged(projectPath_);
+    }
+    setMeshChanged(false);
+    emit modifiedChanged(isModified());
+}
+
 void Document::resetView(const OrbitView& view) {
     if (view != view_) assignView(view);
 }

@@ -64,6 +64,12 @@ class Document : public QObject {
     void setFrame(int frame);
     /// A new mesh (the document differs from its file, if any, from now on).
     void setMesh(const QString& spec, std::shared_ptr<const LoadedMesh> mesh);
+    /// A new untitled document for a mesh just opened (@p spec, @p mesh),
+    /// framed by @p view and starting with @p animation: this document's
+    /// style stays, the user's light goes, the frame is 0, the undo history
+    /// is cleared, there is no project file, and it is not modified.
+    void startNew(const QString& spec, std::shared_ptr<const LoadedMesh> mesh, const OrbitView& view,
+                  const AnimationSpec& animation);
     /// The camera framed on a new mesh.
     void resetView(const OrbitView& view);
     /// The animation a new mesh or sequence starts with.

@@ -45,7 +45,9 @@ class MainWindow : public QMainWindow {
     explicit MainWindow(QWidget* parent = nullptr);
     ~MainWindow() override;
 
-    /// Starts loading @p spec (a file path or proc:NAME[:FACES]) in the background.
+    /// Opens @p spec (a file path or proc:NAME[:FACES]) as a new untitled
+    /// document, after asking to save unsaved changes; it loads in the
+    /// background, and the document stays as it was if it fails.
     void openMesh(const QString& spec);
     /// Opens a project (.snaxels) or a mesh, by the file's extension.
     void openFile(const QString& path);
@@ -120,6 +122,10 @@ class MainWindow : public QMainWindow {
     void dropEvent(QDropEvent* event) override;
 
   private:
+    /// Starts reading @p spec for the document (opening a mesh, a project's
+    /// mesh or a sequence's first file, which have asked about unsaved
+    /// changes already).
+    void startLoading(const QString& spec);
     void createDocks();
     void createStatusBar();
     void connectControllers();

@@ -3,6 +3,7 @@
 #include "ui/mainwindow.h"
 
 #include <QCloseEvent>
+#include <QDir>
 #include <QDragEnterEvent>
 #include <QDropEvent>
 #include <QFileDialog>
@@ -33,6 +34,15 @@ void MainWindow::commitWidgets() {
 }
 
 void MainWindow::openMesh(const QString& spec) {
+    if (loader_->loading()) {
+        statusBar()->showMessage(tr("Still loading %1; try again when it is done").arg(loader_->spec()), 4000);
+        return;
+    }
+    if (!maybeSave()) return; // the mesh starts a new document
+    startLoading(spec);
+}
+
+void MainWindow::startLoading(const QString& spec) {
     if (!loader_->load(spec)) {
         statusBar()->showMessage(tr("Still loading %1; try again when it is done").arg(loader_->spec()), 4000);
         return;
@@ -78,7 +88,13 @@ void MainWindow::onLoadFinished(const LoadResult& result) {
         pendingSequence_.reset();
         applySequence(files, result.mesh);
     } else {
-        document_->setMesh(spec, result.mesh);
+        // A new untitled document: this one's style, the mesh's own framing
+        // and the animation a new mesh starts with.
+        ++restoring_;
+        timeline_->setSpec(initial_animation());
+        timeline_->setFrame(0);
+        --restoring_;
+        document_->startNew(spec, result.mesh, viewState(), timeline_->spec());
         if (!spec.startsWith("proc:")) addRecentFile(QFileInfo(spec).absoluteFilePath());
     }
     updateTitle();
@@ -110,8 +126,7 @@ void MainWindow::applySequence(const SequenceFiles& files, std::shared_ptr<const
     timeline_->setSequenceFiles(files.count);
     timeline_->setFrame(0);
     --restoring_;
-    document_->resetAnimation(timeline_->spec());
-    document_->setMesh(loader_->spec(), std::move(mesh));
+    document_->startNew(loader_->spec(), std::move(mesh), viewState(), timeline_->spec());
     statusBar()->showMessage(tr("Loaded a sequence of %1 files: %2")
                                  .arg(files.count)
                                  .arg(QFileInfo(QString::fromStdString(files.pattern)).fileName()),
@@ -169,7 +184,9 @@ void MainWindow::openFile(const QString& path) {
 
 bool MainWindow::maybeSave() {
     if (!isModified()) return true;
-    const QString name = document_->projectPath().isEmpty() ? tr("this project") : QFileInfo(document_->projectPath()).fileName();
+    const QString name = !document_->projectPath().isEmpty() ? QFileInfo(document_->projectPath()).fileName()
+                         : document_->meshSpec().isEmpty() ? tr("this project")
+                                                           : tr("the untitled project of %1").arg(QFileInfo(document_->meshSpec()).fileName());
     QMessageBox box(QMessageBox::Warning, tr("Unsaved changes"),
                     tr("Save the changes to %1 first?").arg(name),
                     QMessageBox::Save | QMessageBox::Discard | QMessageBox::Cancel, this);
@@ -190,8 +207,13 @@ bool MainWindow::saveProjectInteractive(bool ask_path) {
     }
     QString path = document_->projectPath();
     if (ask_path || path.isEmpty()) {
-        path = QFileDialog::getSaveFileName(this, tr("Save Project"), QSettings().value("paths/lastDir").toString(),
-                                            tr("Snaxels projects (*.snaxels)"));
+        // An untitled document's project goes beside its mesh, named after it.
+        const QFileInfo mesh(document_->meshSpec());
+        const QString suggested = !path.isEmpty() ? path
+                                  : document_->meshSpec().startsWith("proc:")
+                                      ? QDir(QSettings().value("paths/lastDir").toString()).filePath("untitled.snaxels")
+                                      : mesh.absoluteDir().filePath(mesh.completeBaseName() + kProjectExtension);
+        path = QFileDialog::getSaveFileName(this, tr("Save Project"), suggested, tr("Snaxels projects (*.snaxels)"));
         if (path.isEmpty()) return false;
         if (!path.endsWith(kProjectExtension, Qt::CaseInsensitive)) path += kProjectExtension;
     }
@@ -241,7 +263,7 @@ bool MainWindow::openSequence(const QString& path) {
     probe.kind = AnimationSpec::Kind::Sequence;
     probe.pattern = files->pattern;
     probe.first_file = files->first_file;
-    openMesh(QString::fromStdString(sequence_file(probe, 0)));
+    startLoading(QString::fromStdString(sequence_file(probe, 0)));
     return true;
 }
 
@@ -263,7 +285,7 @@ void MainWindow::openProject(const QString& path) {
     if (!maybeSave()) return;
     pendingProject_ = std::move(project);
     pendingProjectPath_ = path;
-    openMesh(QString::fromStdString(resolve_project_mesh(path.toStdString(), pendingProject_->mesh)));
+    startLoading(QString::fromStdString(resolve_project_mesh(path.toStdString(), pendingProject_->mesh)));
 }
 
 void MainWindow::applyProject(const Project& p, const QString& path, std::shared_ptr<const LoadedMesh> mesh) {

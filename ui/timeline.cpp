@@ -23,6 +23,15 @@ constexpr int kFirstRole = Qt::UserRole + 4;   // its first file's number
 constexpr int kCountRole = Qt::UserRole + 5;   // its files (0: unknown)
 } // namespace
 
+AnimationSpec initial_animation() {
+    AnimationSpec spec;
+    spec.kind = AnimationSpec::Kind::Turntable;
+    spec.degrees_per_frame = 2.0;
+    spec.frames = 180;
+    spec.fps = 24.0;
+    return spec;
+}
+
 Timeline::Timeline(QWidget* parent)
     : QWidget(parent), source_(new QComboBox(this)), degrees_(new QDoubleSpinBox(this)), frames_(new QSpinBox(this)),
       start_(new QSpinBox(this)), fps_(new QDoubleSpinBox(this)), slider_(new QSlider(Qt::Horizontal, this)), label_(new QLabel(this)),
@@ -32,16 +41,16 @@ Timeline::Timeline(QWidget* parent)
     source_->setSizeAdjustPolicy(QComboBox::AdjustToContents); // clip and sequence names in full
     degrees_->setRange(-90.0, 90.0);
     degrees_->setDecimals(2);
-    degrees_->setValue(2.0);
+    degrees_->setValue(initial_animation().degrees_per_frame);
     degrees_->setSuffix(tr("°/frame"));
     frames_->setRange(1, 100000);
-    frames_->setValue(180);
+    frames_->setValue(initial_animation().frames);
     frames_->setSuffix(tr(" frames"));
     start_->setRange(0, 1000000);
     start_->setPrefix(tr("from "));
     start_->setToolTip(tr("In point: the source's frame the animation begins at"));
     fps_->setRange(1.0, 240.0);
-    fps_->setValue(24.0);
+    fps_->setValue(initial_animation().fps);
     fps_->setSuffix(tr(" fps"));
     slider_->setRange(0, frames_->value() - 1);
     loop_->setChecked(true);

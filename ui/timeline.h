@@ -19,6 +19,10 @@ class QSpinBox;
 
 namespace snaxels::ui {
 
+/// The animation a new mesh starts with: a turntable of 180 frames at 2
+/// degrees a frame (one turn) and 24 frames a second.
+AnimationSpec initial_animation();
+
 class Timeline : public QWidget {
     Q_OBJECT
   public:

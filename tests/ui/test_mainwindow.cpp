@@ -9,6 +9,10 @@
 #include <QDir>
 #include <QElapsedTimer>
 #include <QTextStream>
+#include <QFileDialog>
+#include <QSpinBox>
+#include <QAction>
+#include <QFileInfo>
 #include <QTimer>
 #include <QFile>
 #include <QJsonArray>
@@ -49,6 +53,22 @@
 using snaxels::ui::MainWindow;
 
 namespace {
+
+/// Answers every unsaved-changes question with @p button while it lives.
+struct AnswerEveryUnsavedPrompt {
+    explicit AnswerEveryUnsavedPrompt(QMessageBox::StandardButton button) {
+        poll.setInterval(20);
+        QObject::connect(&poll, &QTimer::timeout, [this, button] {
+            auto* box = qobject_cast<QMessageBox*>(QApplication::activeModalWidget());
+            if (!box || box->objectName() != "unsavedChangesBox") return;
+            ++answered;
+            box->button(button)->click();
+        });
+        poll.start();
+    }
+    QTimer poll;
+    int answered = 0;
+};
 
 /// Answers the next unsaved-changes question with @p button once it shows.
 void answerUnsavedPrompt(QMessageBox::StandardButton button, bool* asked) {
@@ -251,9 +271,13 @@ class TestMainWindow : public QObject {
         QTRY_VERIFY_WITH_TIMEOUT(window.currentSvg().contains("#1f8a4c"), 30000);
 
         // Another mesh while a search runs: the search for the old one is
-        // dropped and the new one's curves come.
+        // dropped and the new one's curves come. (The style edits are
+        // unsaved: opening asks first; the new document keeps the style.)
         QSignalSpy loaded(&window, &MainWindow::meshLoaded);
+        bool asked = false;
+        answerUnsavedPrompt(QMessageBox::Discard, &asked);
         window.openMesh("proc:torus:40000"); // its search starts at once
+        QVERIFY(asked);
         QVERIFY(loaded.wait(60000));
         QVERIFY(window.parabolicPending());
         window.openMesh("proc:nose:20000"); // and is dropped for this one's
@@ -385,7 +409,7 @@ class TestMainWindow : public QObject {
             QSignalSpy contours(&window, &MainWindow::contoursUpdated);
             window.openMesh(dir.filePath("meshes/spot.obj"));
             QVERIFY(contours.wait(60000));
-            QVERIFY(window.isModified()); // a mesh in an unsaved document
+            QVERIFY(!window.isModified()); // a freshly opened mesh: nothing to save yet
             const QByteArray firstSvg = window.currentSvg();
             const QImage firstPane = paneImage(window);
 
@@ -589,6 +613,83 @@ class TestMainWindow : public QObject {
         QVERIFY(!window.isModified());
     }
 
+    // Opening a mesh starts a new untitled document: it asks about unsaved
+    // changes first, keeps the style, drops the project's path, its undo
+    // history and its animation settings, and is not modified; saving it
+    // asks for a name (beside the mesh), so the project it came from is
+    // never overwritten with another model.
+    void openingAMeshStartsAnUntitledDocument() {
+        QTemporaryDir dir;
+        QVERIFY(QFile::copy(QString(SNAXELS_TEST_ASSETS) + "/fandisk.obj", dir.filePath("fandisk.obj")));
+        MainWindow window;
+        QVERIFY(showWithMesh(window, snaxels::ui::defaultScenePath()));
+        QVERIFY(!window.isModified()); // a fresh launch
+        QVERIFY(!window.isWindowModified());
+        const QString first = dir.filePath("first.snaxels");
+        snaxels::AnimationSpec orbit = window.timeline()->spec();
+        orbit.kind = snaxels::AnimationSpec::Kind::LightOrbit;
+        orbit.frames = 102;
+        window.timeline()->setSpec(orbit);
+        window.turnLight(0.4, 0.0);
+        QVERIFY(window.saveProject(first));
+        const QByteArray saved = readAll(first);
+        QVERIFY(!saved.isEmpty());
+        const QString style = window.styleEditor()->text();
+
+        // An edit to the project, then another mesh: asked, and discarded.
+        QTest::qWait(1600);
+        window.turnLight(0.0, 0.3);
+        QVERIFY(window.isModified());
+        bool asked = false;
+        answerUnsavedPrompt(QMessageBox::Discard, &asked);
+        QSignalSpy loaded(&window, &MainWindow::meshLoaded);
+        window.openMesh(dir.filePath("fandisk.obj"));
+        QVERIFY(loaded.wait(60000));
+        QVERIFY(asked);
+        QVERIFY(window.projectPath().isEmpty());
+        QVERIFY(!window.isModified());
+        QVERIFY2(!window.windowTitle().contains("first.snaxels"), qPrintable(window.windowTitle()));
+        QVERIFY(window.windowTitle().contains("fandisk.obj"));
+        QCOMPARE(window.styleEditor()->text(), style);     // the last document's style
+        QVERIFY(!window.userLight().has_value());          // not its light
+        QVERIFY(window.timeline()->spec() == snaxels::ui::initial_animation()); // nor its 102-frame orbit
+        QCOMPARE(window.timeline()->frame(), 0);
+        // Undo has nothing of the other file's.
+        QVERIFY(!window.undoStack()->canUndo());
+        const snaxels::OrbitView view = window.meshView()->orbit();
+        window.undoStack()->undo();
+        QVERIFY(window.meshView()->orbit() == view);
+        QVERIFY(window.timeline()->spec() == snaxels::ui::initial_animation());
+        QCOMPARE(window.mesh()->report.faces, std::size_t(12946));
+
+        // Save on the untitled document asks for a name, beside the mesh.
+        window.turnLight(0.2, 0.0);
+        QVERIFY(window.isModified());
+        QString suggested;
+        const QString second = dir.filePath("fandisk.snaxels"); // the suggestion, taken
+        QTimer poll; // until the dialog shows
+        poll.setInterval(20);
+        QObject::connect(&poll, &QTimer::timeout, [&] {
+            auto* dialog = qobject_cast<QFileDialog*>(QApplication::activeModalWidget());
+            if (!dialog) return;
+            poll.stop();
+            suggested = dialog->selectedFiles().value(0);
+            static_cast<QDialog*>(dialog)->done(QDialog::Accepted); // QFileDialog hides it
+        });
+        poll.start();
+        QAction* save = nullptr;
+        for (QAction* a : window.findChildren<QAction*>())
+            if (a->shortcut() == QKeySequence(QKeySequence::Save)) save = a;
+        QVERIFY(save);
+        save->trigger();
+        QCOMPARE(QFileInfo(suggested).fileName(), QString("fandisk.snaxels"));
+        QCOMPARE(QFileInfo(suggested).absolutePath(), QFileInfo(dir.filePath("fandisk.obj")).absolutePath());
+        QVERIFY(QFile::exists(second));
+        QCOMPARE(window.projectPath(), second);
+        QVERIFY(!window.isModified());
+        QCOMPARE(readAll(first), saved); // the first project, byte for byte
+    }
+
     // A glTF with its own clips: the timeline offers them, scrubbing poses
     // the mesh (its contours move) and the export follows the clip.
     void playsTheMeshsOwnClip() {
@@ -642,8 +743,11 @@ class TestMainWindow : public QObject {
         const int steps = window.undoStack()->count();
 
         QSignalSpy failed(&window, &MainWindow::loadFailed);
+        bool asked = false;
+        answerUnsavedPrompt(QMessageBox::Discard, &asked); // the light was turned; the file fails anyway
         window.openMesh(QString(SNAXELS_TEST_ASSETS) + "/bad/truncated.ply");
         QVERIFY(failed.wait(30000));
+        QVERIFY(asked);
         QVERIFY(!failed.first().first().toString().isEmpty());
         auto* box = window.findChild<QMessageBox*>();
         QVERIFY(box && box->isVisible());
@@ -669,7 +773,7 @@ class TestMainWindow : public QObject {
         QDir(dir.path()).mkpath("elsewhere");
         QVERIFY(QFile::rename(dir.filePath("sub.snaxels"), dir.filePath("elsewhere/moved.snaxels")));
         projectFailed.clear();
-        bool asked = false;
+        asked = false;
         answerUnsavedPrompt(QMessageBox::Discard, &asked);
         window.openProject(dir.filePath("elsewhere/moved.snaxels"));
         QVERIFY(projectFailed.wait(30000));
@@ -699,6 +803,8 @@ class TestMainWindow : public QObject {
         const QString style = window.styleEditor()->text();
         const int steps = window.undoStack()->count();
         const bool modified = window.isModified();
+        QVERIFY(modified); // the light was turned: every open asks first (Discard), and fails
+        AnswerEveryUnsavedPrompt discard(QMessageBox::Discard);
         const QDir dir(QString(SNAXELS_TEST_ASSETS) + "/bad/importer");
         const QStringList files = dir.entryList(QDir::Files, QDir::Name);
         QVERIFY(files.size() >= 11);
@@ -795,7 +901,7 @@ class TestMainWindow : public QObject {
         QCOMPARE(spec.kind, snaxels::AnimationSpec::Kind::Sequence);
         QCOMPARE(spec.frames, 5);
         QCOMPARE(spec.first_file, 1);
-        QVERIFY(window.isModified());
+        QVERIFY(!window.isModified()); // freshly opened
         QTest::qWait(200);
         const QByteArray first = window.currentSvg();
         contours.clear();
@@ -956,12 +1062,11 @@ class TestMainWindow : public QObject {
         drop(QString(SNAXELS_TEST_ASSETS) + "/fandisk.obj");
         QVERIFY(loaded.wait(60000));
         QCOMPARE(window.mesh()->report.faces, std::size_t(12946));
-        bool asked = false;
-        answerUnsavedPrompt(QMessageBox::Discard, &asked); // the new mesh is an unsaved change
+        QVERIFY(window.projectPath().isEmpty()); // a new untitled document
+        QVERIFY(!window.isModified());           // with nothing to save: opening the project asks nothing
         QSignalSpy opened(&window, &MainWindow::projectOpened);
         drop(dir.filePath("dropped.snaxels"));
         QVERIFY(opened.wait(60000));
-        QVERIFY(asked);
         QCOMPARE(window.mesh()->report.vertices, std::size_t(2930)); // spot again
         QCOMPARE(window.projectPath(), dir.filePath("dropped.snaxels"));
     }
