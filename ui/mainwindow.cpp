@@ -5,6 +5,8 @@
 #include <glm/gtx/rotate_vector.hpp>
 
 #include <QCloseEvent>
+#include <QDesktopServices>
+#include <QDir>
 #include <QDockWidget>
 #include <QDragEnterEvent>
 #include <QDropEvent>
@@ -17,7 +19,9 @@
 #include <QSettings>
 #include <QSplitter>
 #include <QStatusBar>
+#include <QToolButton>
 #include <QUndoStack>
+#include <QUrl>
 
 #include "snaxels/util/atomic_file.h"
 #include "ui/animation_export.h"
@@ -105,6 +109,15 @@ void MainWindow::createStatusBar() {
     parabolicProgress_->setMaximumWidth(220);
     parabolicProgress_->hide();
     statusBar()->addPermanentWidget(parabolicProgress_);
+    reveal_ = new QToolButton(this);
+    reveal_->setObjectName("revealExport");
+    reveal_->setText(tr("Reveal in Folder"));
+    reveal_->setAutoRaise(true);
+    reveal_->hide(); // until something is exported
+    connect(reveal_, &QToolButton::clicked, this, [this] {
+        QDesktopServices::openUrl(QUrl::fromLocalFile(reveal_->property("folder").toString()));
+    });
+    statusBar()->addPermanentWidget(reveal_);
 }
 
 void MainWindow::connectControllers() {
@@ -145,7 +158,7 @@ void MainWindow::connectControllers() {
         scheduleContours();
     });
     connect(export_, &AnimationExport::finished, this, [this](const QString& path) {
-        statusBar()->showMessage(tr("Exported %1").arg(QFileInfo(path).fileName()), 6000);
+        reportExported(path);
         emit exportFinished(path);
     });
     connect(export_, &AnimationExport::failed, this, [this](const QString& error) {
@@ -155,6 +168,15 @@ void MainWindow::connectControllers() {
             warn(tr("Export Animation"), tr("The animation was not exported: %1").arg(error));
         emit exportFailed(error);
     });
+}
+
+void MainWindow::reportExported(const QString& path) {
+    const QFileInfo file(path);
+    QSettings().setValue(kExportFolder, file.absolutePath()); // the next export's dialog starts there
+    statusBar()->showMessage(tr("Exported %1").arg(QDir::toNativeSeparators(file.absoluteFilePath())), 15000);
+    reveal_->setToolTip(tr("Show %1 in its folder").arg(QDir::toNativeSeparators(file.absolutePath())));
+    reveal_->setProperty("folder", file.absolutePath());
+    reveal_->show();
 }
 
 void MainWindow::warn(const QString& title, const QString& message) {

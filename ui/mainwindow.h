@@ -26,6 +26,7 @@ class QSvgWidget;
 class QTimer;
 class QMenu;
 class QProgressBar;
+class QToolButton;
 class QUndoStack;
 
 namespace snaxels::ui {
@@ -38,6 +39,10 @@ class ParabolicSearch;
 class StyleEditor;
 class SvgPane;
 class Timeline;
+
+/// Where the dialogs for each kind of file were last (QSettings keys).
+inline constexpr const char* kExportFolder = "paths/export";
+inline constexpr const char* kStyleFolder = "paths/style";
 
 class MainWindow : public QMainWindow {
     Q_OBJECT
@@ -162,6 +167,16 @@ class MainWindow : public QMainWindow {
     bool wantsParabolic() const;
     /// A warning that names what failed, in a box that does not block.
     void warn(const QString& title, const QString& message);
+    /// Where a save dialog for a kind of file starts: the folder last used
+    /// for it (the QSettings key @p folder_key), else the mesh's, and the
+    /// mesh's name with @p extension.
+    QString suggestedPath(const char* folder_key, const QString& extension) const;
+    /// Asks where to save a kind of file (starting at suggestedPath), and
+    /// remembers the folder chosen; empty when cancelled.
+    QString askSavePath(const QString& title, const char* folder_key, const QString& extension, const QString& filter);
+    /// Says in the status bar that @p path was written, in full, and offers
+    /// to show its folder.
+    void reportExported(const QString& path);
     void addRecentFile(const QString& path);
     void rebuildRecentMenu();
 
@@ -174,6 +189,7 @@ class MainWindow : public QMainWindow {
     QAction* regionsAction_ = nullptr;
     QAction* parabolicAction_ = nullptr;
     QProgressBar* parabolicProgress_ = nullptr;
+    QToolButton* reveal_ = nullptr; ///< shows the folder of the last export
     QLabel* meshLabel_;
     QProgressBar* busy_;
     QLabel* contourLabel_;

@@ -158,7 +158,7 @@ void MainWindow::dropEvent(QDropEvent* event) {
 bool MainWindow::exportFrame(const QString& path) {
     try {
         write_file_atomically(path.toStdString(), svg_.toStdString());
-        statusBar()->showMessage(tr("Exported %1").arg(QFileInfo(path).fileName()), 4000);
+        reportExported(path);
         emit exportFinished(path);
         return true;
     } catch (const std::exception& e) {

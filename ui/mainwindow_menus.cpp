@@ -85,22 +85,22 @@ void MainWindow::createMenus() {
 void MainWindow::createExportMenu() {
     QMenu* exportMenu = menuBar()->addMenu(tr("&Export"));
     QAction* exportAnim = exportMenu->addAction(tr("&Animated SVG…"), this, [this] {
-        const QString path = QFileDialog::getSaveFileName(this, tr("Export Animated SVG"), QString(), tr("SVG (*.svg)"));
+        const QString path = askSavePath(tr("Export Animated SVG"), kExportFolder, ".svg", tr("SVG (*.svg)"));
         if (!path.isEmpty()) exportAnimation(path);
     });
+    exportAnim->setObjectName("exportAnimatedSvg");
     exportAnim->setShortcut(QKeySequence(tr("Ctrl+E")));
     QAction* exportLottie = exportMenu->addAction(tr("&Lottie…"), this, [this] {
-        QString path = QFileDialog::getSaveFileName(this, tr("Export Lottie"), QString(), tr("Lottie JSON (*.json)"));
-        if (path.isEmpty()) return;
-        if (QFileInfo(path).suffix().isEmpty()) path += ".json";
-        exportAnimation(path, AnimationFormat::Lottie);
+        const QString path = askSavePath(tr("Export Lottie"), kExportFolder, ".json", tr("Lottie JSON (*.json)"));
+        if (!path.isEmpty()) exportAnimation(path, AnimationFormat::Lottie);
     });
     exportLottie->setObjectName("exportLottie");
     exportLottie->setShortcut(QKeySequence(tr("Ctrl+Alt+E")));
     QAction* exportStill = exportMenu->addAction(tr("Current &Frame as SVG…"), this, [this] {
-        const QString path = QFileDialog::getSaveFileName(this, tr("Export Frame"), QString(), tr("SVG (*.svg)"));
+        const QString path = askSavePath(tr("Export Frame"), kExportFolder, ".svg", tr("SVG (*.svg)"));
         if (!path.isEmpty()) exportFrame(path);
     });
+    exportStill->setObjectName("exportFrame");
     exportStill->setShortcut(QKeySequence(tr("Ctrl+Shift+E")));
 }
 
@@ -156,8 +156,10 @@ void MainWindow::createStyleMenu() {
         });
     presets->setEnabled(!presets->isEmpty());
     menu->addAction(tr("&Load Style…"), this, [this] {
-        const QString path = QFileDialog::getOpenFileName(this, tr("Load Style"), QString(), tr("Styles (*.xml)"));
+        const QString path = QFileDialog::getOpenFileName(this, tr("Load Style"), QSettings().value(kStyleFolder).toString(),
+                                                          tr("Styles (*.xml)"));
         if (path.isEmpty()) return;
+        QSettings().setValue(kStyleFolder, QFileInfo(path).absolutePath());
         QFile in(path);
         if (!in.open(QIODevice::ReadOnly)) {
             QMessageBox::warning(this, tr("Load Style"), tr("Cannot read %1: %2").arg(path, in.errorString()));
@@ -166,7 +168,7 @@ void MainWindow::createStyleMenu() {
         styleEditor_->setText(QString::fromUtf8(in.readAll()), path);
     });
     menu->addAction(tr("&Save Style As…"), this, [this] {
-        const QString path = QFileDialog::getSaveFileName(this, tr("Save Style"), QString(), tr("Styles (*.xml)"));
+        const QString path = askSavePath(tr("Save Style"), kStyleFolder, ".xml", tr("Styles (*.xml)"));
         if (path.isEmpty()) return;
         try {
             write_file_atomically(path.toStdString(), styleEditor_->text().toStdString());
@@ -175,6 +177,26 @@ void MainWindow::createStyleMenu() {
             QMessageBox::warning(this, tr("Save Style"), QString::fromStdString(e.what()));
         }
     });
+}
+
+QString MainWindow::suggestedPath(const char* folder_key, const QString& extension) const {
+    // The folder last used for this kind of file, else the mesh's, else home;
+    // the name, the mesh's.
+    const QString spec = document_->meshSpec();
+    const bool file = !spec.isEmpty() && !spec.startsWith("proc:");
+    QString folder = QSettings().value(folder_key).toString();
+    if (folder.isEmpty() || !QFileInfo(folder).isDir()) folder = file ? QFileInfo(spec).absolutePath() : QDir::homePath();
+    const QString name = file ? QFileInfo(spec).completeBaseName() : spec.isEmpty() ? tr("untitled") : spec.section(':', 1, 1);
+    return QDir(folder).filePath(name + extension);
+}
+
+QString MainWindow::askSavePath(const QString& title, const char* folder_key, const QString& extension,
+                                const QString& filter) {
+    QString path = QFileDialog::getSaveFileName(this, title, suggestedPath(folder_key, extension), filter);
+    if (path.isEmpty()) return path;
+    if (QFileInfo(path).suffix().isEmpty()) path += extension;
+    QSettings().setValue(folder_key, QFileInfo(path).absolutePath());
+    return path;
 }
 
 void MainWindow::addRecentFile(const QString& path) {

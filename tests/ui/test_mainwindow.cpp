@@ -13,6 +13,8 @@
 #include <QSpinBox>
 #include <QAction>
 #include <QFileInfo>
+#include <QStatusBar>
+#include <QToolButton>
 #include <QTimer>
 #include <QFile>
 #include <QJsonArray>
@@ -688,6 +690,47 @@ class TestMainWindow : public QObject {
         QCOMPARE(window.projectPath(), second);
         QVERIFY(!window.isModified());
         QCOMPARE(readAll(first), saved); // the first project, byte for byte
+    }
+
+    // Export dialogs start in the folder of the last export, with the mesh's
+    // name; an export names its whole path in the status bar and offers to
+    // show its folder.
+    void exportDialogsRemember() {
+        QTemporaryDir dir;
+        QVERIFY(QDir(dir.path()).mkpath("renders"));
+        QVERIFY(QFile::copy(QString(SNAXELS_TEST_ASSETS) + "/spot.obj", dir.filePath("spot.obj")));
+        MainWindow window;
+        QVERIFY(showWithMesh(window, dir.filePath("spot.obj")));
+        QTest::qWait(200);
+        const QString frame = dir.filePath("renders/first-frame.svg");
+        QVERIFY(window.exportFrame(frame));
+        const QString message = window.statusBar()->currentMessage();
+        QVERIFY2(message.contains(QDir::toNativeSeparators(frame)), qPrintable(message)); // the full path
+        auto* reveal = window.findChild<QToolButton*>("revealExport");
+        QVERIFY(reveal && reveal->isVisible());
+        QVERIFY(reveal->toolTip().contains(QDir::toNativeSeparators(dir.filePath("renders"))));
+
+        // Each export dialog opens there, suggesting the mesh's name.
+        const QList<QPair<QString, QString>> dialogs{
+            {"exportAnimatedSvg", "spot.svg"}, {"exportLottie", "spot.json"}, {"exportFrame", "spot.svg"}};
+        for (const auto& [action, expected] : dialogs) {
+            QString suggested;
+            QTimer poll;
+            poll.setInterval(20);
+            QObject::connect(&poll, &QTimer::timeout, [&] {
+                auto* dialog = qobject_cast<QFileDialog*>(QApplication::activeModalWidget());
+                if (!dialog) return;
+                poll.stop();
+                suggested = dialog->selectedFiles().value(0);
+                dialog->reject(); // nothing is exported
+            });
+            poll.start();
+            QAction* a = window.findChild<QAction*>(action);
+            QVERIFY2(a, qPrintable(action));
+            a->trigger();
+            QCOMPARE(QFileInfo(suggested).fileName(), expected);
+            QCOMPARE(QFileInfo(suggested).absolutePath(), QFileInfo(frame).absolutePath());
+        }
     }
 
     // A glTF with its own clips: the timeline offers them, scrubbing poses
