@@ -108,6 +108,10 @@ void Document::startNew(const QString& spec, std::shared_ptr<const LoadedMesh> m
     emit modifiedChanged(isModified());
 }
 
+void Document::resetStyleText(const QString& text) {
+    if (text != style_) assignStyle(text);
+}
+
 void Document::resetView(const OrbitView& view) {
     if (view != view_) assignView(view);
 }

@@ -70,6 +70,8 @@ class Document : public QObject {
     /// is cleared, there is no project file, and it is not modified.
     void startNew(const QString& spec, std::shared_ptr<const LoadedMesh> mesh, const OrbitView& view,
                   const AnimationSpec& animation);
+    /// The style a session starts with (a style given on the command line).
+    void resetStyleText(const QString& text);
     /// The camera framed on a new mesh.
     void resetView(const OrbitView& view);
     /// The animation a new mesh or sequence starts with.

@@ -179,6 +179,13 @@ void MainWindow::reportExported(const QString& path) {
     reveal_->show();
 }
 
+void MainWindow::setStartingStyle(const QString& text, const QString& source) {
+    ++restoring_;
+    styleEditor_->setText(text, source);
+    --restoring_;
+    document_->resetStyleText(styleEditor_->text());
+}
+
 void MainWindow::warn(const QString& title, const QString& message) {
     auto* box = new QMessageBox(QMessageBox::Warning, title, message, QMessageBox::Ok, this);
     box->setAttribute(Qt::WA_DeleteOnClose);

@@ -54,6 +54,9 @@ class MainWindow : public QMainWindow {
     /// document, after asking to save unsaved changes; it loads in the
     /// background, and the document stays as it was if it fails.
     void openMesh(const QString& spec);
+    /// The style the session starts with (the command line's --style-file,
+    /// read from @p source): in force, and not an edit to save or undo.
+    void setStartingStyle(const QString& text, const QString& source);
     /// Opens a project (.snaxels) or a mesh, by the file's extension.
     void openFile(const QString& path);
     /// Opens the numbered series of mesh files @p path belongs to (one

@@ -56,8 +56,19 @@ void SvgPane::paintEvent(QPaintEvent*) {
     QPainter painter(this);
     painter.fillRect(rect(), palette().window());
     if (!renderer_.isValid()) return;
+    // The page, as the exported file shows it: what lies past its canvas
+    // (strokes and fills near the edge) is clipped away, as a viewer of the
+    // file clips it; the page's edge is drawn round it.
+    const QRectF page = drawingRect();
+    painter.fillRect(page.translated(2.0, 2.0), QColor(0, 0, 0, 50)); // its shadow
+    painter.fillRect(page, Qt::white); // a transparent canvas shows as paper
+    painter.save();
+    painter.setClipRect(page);
     painter.setRenderHint(QPainter::Antialiasing);
-    renderer_.render(&painter, drawingRect());
+    renderer_.render(&painter, page);
+    painter.restore();
+    painter.setPen(QPen(QColor(0, 0, 0, 120), 1.0));
+    painter.drawRect(page);
 }
 
 void SvgPane::wheelEvent(QWheelEvent* event) {

@@ -1,7 +1,8 @@
 #pragma once
 // The SVG pane: the current frame drawn from the very SVG that export
-// writes, fitted to the pane; the wheel zooms about the pointer, a drag
-// pans, a double click fits it again.
+// writes, on a page the size of its canvas (nothing drawn past the page's
+// edge, as in the file), fitted to the pane; the wheel zooms about the
+// pointer, a drag pans, a double click fits it again.
 
 #include <QByteArray>
 #include <QPointF>

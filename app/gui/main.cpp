@@ -54,7 +54,7 @@ int main(int argc, char** argv) {
             std::fprintf(stderr, "snaxels: cannot read %s: %s\n", qPrintable(in.fileName()), qPrintable(in.errorString()));
             return 1;
         }
-        window.styleEditor()->setText(QString::fromUtf8(in.readAll()), in.fileName());
+        window.setStartingStyle(QString::fromUtf8(in.readAll()), in.fileName());
     }
     if (parser.isSet(parabolic_option)) window.parabolicAction()->setChecked(true);
     window.show();

@@ -692,6 +692,22 @@ class TestMainWindow : public QObject {
         QCOMPARE(readAll(first), saved); // the first project, byte for byte
     }
 
+    // A style given on the command line is where the session starts, not an
+    // edit: opening the mesh asks nothing, and there is nothing to undo.
+    void aStartingStyleIsNoEdit() {
+        QFile toon(snaxels::ui::dataDirectory() + "/styles/toon.xml");
+        QVERIFY(toon.open(QIODevice::ReadOnly));
+        const QString text = QString::fromUtf8(toon.readAll());
+        MainWindow window;
+        window.setStartingStyle(text, toon.fileName());
+        QVERIFY(!window.isModified());
+        QVERIFY(showWithMesh(window, QString(SNAXELS_TEST_ASSETS) + "/spot.obj")); // no question to answer
+        QVERIFY(!window.isModified());
+        QVERIFY(!window.undoStack()->canUndo());
+        QCOMPARE(window.styleEditor()->text(), text);
+        QVERIFY(window.currentSvg().contains("<g id=\"fills\""));
+    }
+
     // Export dialogs start in the folder of the last export, with the mesh's
     // name; an export names its whole path in the status bar and offers to
     // show its folder.
