@@ -156,6 +156,9 @@ class MainWindow : public QMainWindow {
     void createExportMenu();
     void createViewMenu();
     void createStyleMenu();
+    void createHelpMenu();
+    /// Shows the bundled document @p name (Markdown) in a window of its own.
+    void showDocument(const QString& name, const QString& title);
     void onLoadFinished(const LoadResult& result);
     void onLoadFailed(const LoadResult& result);
     void showMeshReport(const LoadedMesh& mesh);

@@ -3,6 +3,7 @@
 
 #include <QAction>
 #include <QDir>
+#include <QDockWidget>
 #include <QFile>
 #include <QFileDialog>
 #include <QFileInfo>
@@ -10,9 +11,12 @@
 #include <QMessageBox>
 #include <QSettings>
 #include <QStatusBar>
+#include <QTextBrowser>
 #include <QUndoStack>
+#include <QUrl>
 
 #include "snaxels/util/atomic_file.h"
+#include "snaxels/version.h"
 #include "ui/document.h"
 #include "ui/meshview.h"
 #include "ui/parabolic_search.h"
@@ -80,6 +84,7 @@ void MainWindow::createMenus() {
     previous->setShortcut(Qt::Key_Left);
 
     createViewMenu();
+    createHelpMenu();
 }
 
 void MainWindow::createExportMenu() {
@@ -139,11 +144,67 @@ void MainWindow::createViewMenu() {
         scheduleContours();
     });
     viewMenu->addAction(tr("&Fit SVG Pane"), svgPane_, &SvgPane::fit);
+    viewMenu->addSeparator();
+    // Every dock can be closed and brought back from here.
+    for (QDockWidget* dock : findChildren<QDockWidget*>()) viewMenu->addAction(dock->toggleViewAction());
+}
+
+void MainWindow::createHelpMenu() {
+    QMenu* help = menuBar()->addMenu(tr("&Help"));
+    QAction* reference = help->addAction(tr("&Style Reference"), this, [this] { showDocument("styles.md", tr("Style Reference")); });
+    reference->setObjectName("helpStyleReference");
+    reference->setShortcut(QKeySequence::HelpContents);
+    help->addAction(tr("The &Application"), this, [this] { showDocument("app.md", tr("The Application")); });
+    QAction* keys = help->addAction(tr("&Keyboard Shortcuts"), this, [this] {
+        // Read from the menus themselves, so the list is always the truth.
+        QString text = "<table>";
+        for (QAction* menu : menuBar()->actions())
+            for (QAction* a : menu->menu() ? menu->menu()->actions() : QList<QAction*>{})
+                if (!a->shortcut().isEmpty())
+                    text += QString("<tr><td>%1</td><td>&nbsp;&nbsp;<b>%2</b></td></tr>")
+                                .arg(QString(a->text()).remove('&'), a->shortcut().toString(QKeySequence::NativeText));
+        text += tr("</table><p>In the 3-D view: drag to orbit, Shift+drag to turn the light, right or middle "
+                   "drag to pan, the wheel to zoom. In the SVG pane: the wheel zooms, a drag pans, a double "
+                   "click fits.</p>");
+        QMessageBox box(QMessageBox::NoIcon, tr("Keyboard Shortcuts"), text, QMessageBox::Ok, this);
+        box.setObjectName("shortcutsBox");
+        box.exec();
+    });
+    keys->setObjectName("helpShortcuts");
+    help->addSeparator();
+    help->addAction(tr("&About snaxels"), this, [this] {
+        QMessageBox::about(this, tr("About snaxels"),
+                           tr("<p><b>snaxels %1</b></p><p>Vector line art from 3-D meshes, after \"Snaxels on a "
+                              "Plane\" (Karsch and Hart, NPAR 2011).</p><p>MIT licence (the LICENSE file, which "
+                              "also lists the licences of the libraries it uses: Qt under the LGPL 3, Assimp, "
+                              "OpenMesh, Embree, oneTBB, Clipper, pugixml, nlohmann/json, GLM).</p>"
+                              "<p>Documentation: %2</p>")
+                               .arg(QString::fromLatin1(snaxels::version), QDir::toNativeSeparators(docsDirectory())));
+    });
+}
+
+void MainWindow::showDocument(const QString& name, const QString& title) {
+    const QString path = QDir(docsDirectory()).filePath(name);
+    if (!QFileInfo::exists(path)) {
+        warn(title, tr("%1 is not installed (looked in %2)").arg(name, QDir::toNativeSeparators(docsDirectory())));
+        return;
+    }
+    auto* browser = new QTextBrowser;
+    browser->setAttribute(Qt::WA_DeleteOnClose);
+    browser->setWindowTitle(tr("%1 — snaxels").arg(title));
+    browser->setObjectName("helpBrowser");
+    browser->setOpenExternalLinks(true);
+    browser->setSource(QUrl::fromLocalFile(path), QTextDocument::MarkdownResource);
+    browser->resize(760, 820);
+    browser->show();
 }
 
 void MainWindow::createStyleMenu() {
     QMenu* menu = menuBar()->addMenu(tr("&Style"));
     QMenu* presets = menu->addMenu(tr("&Presets"));
+    presets->addAction(tr("Default"), this, [this] { styleEditor_->setText(initial_style_text(), "default"); })
+        ->setToolTip(tr("The style a new window starts with: an ink outline with dashed hidden lines, and the shadow line"));
+    presets->addSeparator();
     const QDir dir(dataDirectory() + "/styles");
     for (const QFileInfo& file : dir.entryInfoList({"*.xml"}, QDir::Files, QDir::Name))
         presets->addAction(file.completeBaseName(), this, [this, path = file.absoluteFilePath()] {

@@ -168,6 +168,8 @@ void main() {
 MeshView::MeshView(QWidget* parent) : QOpenGLWidget(parent), globe_(new LightGlobe(this)) {
     setFocusPolicy(Qt::StrongFocus);
     setMinimumSize(200, 150);
+    setToolTip(tr("The mesh with its contours (hidden parts dashed). Drag: orbit; Shift+drag: turn the light; "
+                  "right or middle drag: pan; wheel: zoom; Home: reset the camera"));
 }
 
 void MeshView::resizeEvent(QResizeEvent* event) {

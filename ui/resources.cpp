@@ -10,6 +10,11 @@ QString dataDirectory() {
     return QDir::cleanPath(bin.absoluteFilePath("../share/snaxels"));
 }
 
+QString docsDirectory() {
+    const QDir bin(QCoreApplication::applicationDirPath());
+    return QDir::cleanPath(bin.absoluteFilePath("../share/doc/snaxels"));
+}
+
 QString defaultScenePath() { return dataDirectory() + "/resources/spot.obj"; }
 
 } // namespace snaxels::ui

@@ -55,6 +55,12 @@ Timeline::Timeline(QWidget* parent)
     slider_->setRange(0, frames_->value() - 1);
     loop_->setChecked(true);
     play_->setCheckable(true);
+    degrees_->setToolTip(tr("How far the camera (turntable) or the light (orbiting light) turns each frame"));
+    frames_->setToolTip(tr("How many frames the animation has"));
+    fps_->setToolTip(tr("Frames a second, in the preview and in the exported animation"));
+    play_->setToolTip(tr("Play or pause the preview (Space)"));
+    loop_->setToolTip(tr("Start again at the first frame after the last"));
+    slider_->setToolTip(tr("The current frame: drag to scrub (Left and Right step a frame)"));
     auto* layout = new QHBoxLayout(this);
     for (QWidget* w : std::initializer_list<QWidget*>{source_, degrees_, start_, frames_, fps_, play_, loop_}) layout->addWidget(w);
     layout->addWidget(slider_, 1);

@@ -15,6 +15,9 @@
 #include <QFileInfo>
 #include <QStatusBar>
 #include <QToolButton>
+#include <QTextBrowser>
+#include <QDockWidget>
+#include <QMenuBar>
 #include <QTimer>
 #include <QFile>
 #include <QJsonArray>
@@ -706,6 +709,57 @@ class TestMainWindow : public QObject {
         QVERIFY(!window.undoStack()->canUndo());
         QCOMPARE(window.styleEditor()->text(), text);
         QVERIFY(window.currentSvg().contains("<g id=\"fills\""));
+    }
+
+    // What a new user looks for: the style reference under Help, every dock
+    // back from the View menu, a Default preset, tooltips on the controls.
+    void helpAndDiscovery() {
+        MainWindow window;
+        QVERIFY(showWindow(window, {1000, 700}));
+        QAction* reference = window.findChild<QAction*>("helpStyleReference");
+        QVERIFY(reference);
+        reference->trigger();
+        QTextBrowser* browser = nullptr;
+        for (QWidget* w : QApplication::topLevelWidgets())
+            if (w->objectName() == "helpBrowser") browser = qobject_cast<QTextBrowser*>(w);
+        QVERIFY(browser);
+        QVERIFY2(browser->toPlainText().contains("min-derivative"), "the style reference is not what is shown");
+        browser->close();
+
+        // A closed dock comes back from the View menu.
+        auto* dock = window.findChild<QDockWidget*>("styleDock");
+        QVERIFY(dock);
+        dock->close();
+        QVERIFY(!dock->isVisible());
+        QAction* toggle = nullptr;
+        for (QAction* menu : window.menuBar()->actions())
+            if (QString(menu->text()).remove('&') == "View")
+                for (QAction* a : menu->menu()->actions())
+                    if (a == dock->toggleViewAction()) toggle = a;
+        QVERIFY(toggle);
+        toggle->trigger();
+        QVERIFY(dock->isVisible());
+        QVERIFY(window.findChild<QDockWidget*>("timelineDock"));
+
+        // The Default preset: the style a new window starts with.
+        window.styleEditor()->setText("<style version=\"1\"/>", "empty");
+        QAction* preset = nullptr;
+        for (QAction* menu : window.menuBar()->actions())
+            if (QString(menu->text()).remove('&') == "Style")
+                for (QAction* sub : menu->menu()->actions())
+                    if (sub->menu())
+                        for (QAction* a : sub->menu()->actions())
+                            if (a->text() == "Default") preset = a;
+        QVERIFY(preset);
+        preset->trigger();
+        QCOMPARE(window.styleEditor()->text(), snaxels::ui::initial_style_text());
+
+        // Every control of the timeline and the views says what it does.
+        for (QWidget* w : window.timeline()->findChildren<QWidget*>(QString(), Qt::FindDirectChildrenOnly))
+            if (!qobject_cast<QLabel*>(w) && !w->inherits("QLayout"))
+                QVERIFY2(!w->toolTip().isEmpty(), w->metaObject()->className());
+        QVERIFY(!window.meshView()->toolTip().isEmpty());
+        QVERIFY(!window.svgPane()->toolTip().isEmpty());
     }
 
     // Export dialogs start in the folder of the last export, with the mesh's
