@@ -9,6 +9,7 @@
 #include <QFileInfo>
 #include <QHBoxLayout>
 #include <QLabel>
+#include <QProxyStyle>
 #include <QPushButton>
 #include <QSlider>
 #include <QSpinBox>
@@ -23,6 +24,20 @@ constexpr int kFirstRole = Qt::UserRole + 4;   // its first file's number
 constexpr int kCountRole = Qt::UserRole + 5;   // its files (0: unknown)
 } // namespace
 
+namespace {
+
+/// A click on the slider's track moves to the click, not a page toward it.
+class JumpSliderStyle : public QProxyStyle {
+  public:
+    int styleHint(StyleHint hint, const QStyleOption* option, const QWidget* widget,
+                  QStyleHintReturn* returned) const override {
+        if (hint == QStyle::SH_Slider_AbsoluteSetButtons) return int(Qt::LeftButton | Qt::MiddleButton);
+        return QProxyStyle::styleHint(hint, option, widget, returned);
+    }
+};
+
+} // namespace
+
 AnimationSpec initial_animation() {
     AnimationSpec spec;
     spec.kind = AnimationSpec::Kind::Turntable;
@@ -34,7 +49,8 @@ AnimationSpec initial_animation() {
 
 Timeline::Timeline(QWidget* parent)
     : QWidget(parent), source_(new QComboBox(this)), degrees_(new QDoubleSpinBox(this)), frames_(new QSpinBox(this)),
-      start_(new QSpinBox(this)), fps_(new QDoubleSpinBox(this)), slider_(new QSlider(Qt::Horizontal, this)), label_(new QLabel(this)),
+      start_(new QSpinBox(this)), fps_(new QDoubleSpinBox(this)), slider_(new QSlider(Qt::Horizontal, this)),
+      frameBox_(new QSpinBox(this)), label_(new QLabel(this)),
       play_(new QPushButton(tr("Play"), this)), loop_(new QCheckBox(tr("Loop"), this)) {
     setClips({});
     source_->setToolTip(tr("What moves from frame to frame"));
@@ -60,15 +76,30 @@ Timeline::Timeline(QWidget* parent)
     fps_->setToolTip(tr("Frames a second, in the preview and in the exported animation"));
     play_->setToolTip(tr("Play or pause the preview (Space)"));
     loop_->setToolTip(tr("Start again at the first frame after the last"));
-    slider_->setToolTip(tr("The current frame: drag to scrub (Left and Right step a frame)"));
+    slider_->setToolTip(tr("The current frame: click or drag to scrub (Left and Right step a frame)"));
+    auto* jump = new JumpSliderStyle;
+    jump->setParent(slider_);
+    slider_->setStyle(jump);
+    frameBox_->setRange(0, frames_->value() - 1);
+    frameBox_->setPrefix(tr("frame "));
+    frameBox_->setToolTip(tr("The current frame: type one and press Enter"));
+    frameBox_->setKeyboardTracking(false);
+    label_->setToolTip(tr("The last frame, and the current frame's time in seconds"));
+    // Typed values take effect on Enter or when the box is left, not at
+    // every keystroke (a frame count typed as 1, 10, 102 would clamp the
+    // current frame at 1).
+    for (QAbstractSpinBox* box : std::initializer_list<QAbstractSpinBox*>{degrees_, frames_, start_, fps_})
+        box->setKeyboardTracking(false);
     auto* layout = new QHBoxLayout(this);
     for (QWidget* w : std::initializer_list<QWidget*>{source_, degrees_, start_, frames_, fps_, play_, loop_}) layout->addWidget(w);
     layout->addWidget(slider_, 1);
+    layout->addWidget(frameBox_);
     layout->addWidget(label_);
     auto refresh = [this] {
-        label_->setText(tr("frame %1 / %2").arg(slider_->value()).arg(frames_->value() - 1));
+        showPosition();
         emit changed();
     };
+    connect(frameBox_, &QSpinBox::valueChanged, this, [this](int frame) { setFrame(frame); });
     connect(slider_, &QSlider::valueChanged, this, refresh);
     connect(source_, &QComboBox::currentIndexChanged, this, [this, refresh] {
         updateEnabled();
@@ -108,7 +139,7 @@ Timeline::Timeline(QWidget* parent)
     connect(play_, &QPushButton::clicked, this, &Timeline::togglePlay);
     connect(&timer_, &QTimer::timeout, this, &Timeline::advance);
     timer_.setInterval(int(1000.0 / fps_->value()));
-    label_->setText(tr("frame 0 / %1").arg(frames_->value() - 1));
+    showPosition();
 }
 
 void Timeline::setClips(const std::vector<AnimationClipInfo>& clips) {
@@ -219,7 +250,18 @@ void Timeline::setFrame(int frame) { slider_->setValue(std::clamp(frame, 0, fram
 void Timeline::setFrameCount(int frames) {
     if (frames_->value() != frames) frames_->setValue(frames);
     slider_->setRange(0, frames - 1);
-    label_->setText(tr("frame %1 / %2").arg(slider_->value()).arg(frames - 1));
+    showPosition();
+}
+
+void Timeline::showPosition() {
+    const QSignalBlocker quiet(frameBox_);
+    frameBox_->setRange(0, slider_->maximum());
+    frameBox_->setValue(slider_->value());
+    const double fps = fps_->value();
+    label_->setText(tr("/ %1 · %2 s of %3 s")
+                        .arg(slider_->maximum())
+                        .arg(slider_->value() / fps, 0, 'f', 2)
+                        .arg(frames_->value() / fps, 0, 'f', 2));
 }
 
 void Timeline::togglePlay() {

@@ -67,7 +67,10 @@ class Timeline : public QWidget {
     QSpinBox* start_;
     QDoubleSpinBox* fps_;
     QSlider* slider_;
-    QLabel* label_;
+    QSpinBox* frameBox_; ///< the current frame, typed
+    QLabel* label_;      ///< the last frame and the time
+    /// Shows the current frame in the box and the label (frame and seconds).
+    void showPosition();
     QPushButton* play_;
     QCheckBox* loop_;
     QTimer timer_;

@@ -18,6 +18,7 @@
 #include <QTextBrowser>
 #include <QDockWidget>
 #include <QMenuBar>
+#include <QSlider>
 #include <QTimer>
 #include <QFile>
 #include <QJsonArray>
@@ -760,6 +761,51 @@ class TestMainWindow : public QObject {
                 QVERIFY2(!w->toolTip().isEmpty(), w->metaObject()->className());
         QVERIFY(!window.meshView()->toolTip().isEmpty());
         QVERIFY(!window.svgPane()->toolTip().isEmpty());
+    }
+
+    // The timeline: a click on the track goes to the click, a typed frame
+    // goes there on Enter, and a frame count typed digit by digit takes
+    // effect on Enter (not clamping the current frame to its first digit).
+    void timelineTakesClicksAndTypedFrames() {
+        MainWindow window;
+        QVERIFY(showWithMesh(window, QString(SNAXELS_TEST_ASSETS) + "/spot.obj", {1200, 800}));
+        snaxels::ui::Timeline* timeline = window.timeline();
+        QCOMPARE(timeline->spec().frames, 180);
+        auto* slider = timeline->findChild<QSlider*>();
+        QVERIFY(slider);
+        QTest::mouseClick(slider, Qt::LeftButton, {}, QPoint(slider->width() * 3 / 4, slider->height() / 2));
+        QVERIFY2(std::abs(timeline->frame() - 134) <= 8, qPrintable(QString::number(timeline->frame())));
+
+        QSpinBox* frameBox = nullptr;
+        QSpinBox* frames = nullptr;
+        for (QSpinBox* box : timeline->findChildren<QSpinBox*>()) {
+            if (box->prefix().contains("frame")) frameBox = box;
+            if (box->suffix().contains("frames")) frames = box;
+        }
+        QVERIFY(frameBox && frames);
+        QCOMPARE(frameBox->value(), timeline->frame());
+        frameBox->setFocus();
+        frameBox->selectAll();
+        QTest::keyClicks(frameBox, "42");
+        QTest::keyClick(frameBox, Qt::Key_Return);
+        QCOMPARE(timeline->frame(), 42);
+        QCOMPARE(slider->value(), 42);
+
+        timeline->setFrame(100);
+        frames->setFocus();
+        frames->selectAll();
+        QTest::keyClick(frames, Qt::Key_1);
+        QCOMPARE(timeline->frame(), 100); // not clamped to 1 frame on the way
+        QCOMPARE(timeline->spec().frames, 180);
+        QTest::keyClicks(frames, "02");
+        QTest::keyClick(frames, Qt::Key_Return);
+        QCOMPARE(timeline->spec().frames, 102);
+        QCOMPARE(timeline->frame(), 100);
+        const QLabel* label = nullptr;
+        for (const QLabel* l : timeline->findChildren<QLabel*>())
+            if (l->text().contains(" s of ")) label = l;
+        QVERIFY(label);
+        QVERIFY2(label->text().contains("4.17 s of 4.25 s"), qPrintable(label->text())); // 100 of 102 at 24 fps
     }
 
     // Export dialogs start in the folder of the last export, with the mesh's
