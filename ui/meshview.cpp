@@ -113,14 +113,17 @@ out vec4 colour;
 void main() {
     vec3 n = normalize(viewNormal);
     if (!gl_FrontFacing) n = -n;
-    vec3 key = normalize(vec3(-0.5, 0.6, 0.65));
-    float diffuse = max(dot(n, key), 0.0);
-    float fill = 0.35 * max(n.z, 0.0);
+    float fill = 0.35 * max(n.z, 0.0); // a soft light from the viewer, so the side turned away keeps its form
     if (!regions) {
+        // Lit by the document's light (N.L as the contours see it), not a
+        // headlight: the shading turns as the light does.
+        float lit = max(gl_FrontFacing ? nDotL : -nDotL, 0.0);
         vec3 base = vec3(0.80, 0.78, 0.74);
-        colour = vec4(base * (0.18 + 0.7 * diffuse + fill), 1.0);
+        colour = vec4(base * (0.12 + 0.72 * lit + fill), 1.0);
         return;
     }
+    vec3 key = normalize(vec3(-0.5, 0.6, 0.65));
+    float diffuse = max(dot(n, key), 0.0);
     vec3 c = classColour[regionClass(nDotL, rDotV)];
     colour = vec4(c * (0.72 + 0.2 * diffuse + 0.12 * fill), 1.0);
 }
@@ -278,6 +281,7 @@ void MeshView::setRegionShading(RegionShading shading) {
         highlightCapacity_ = std::max(highlightCapacity_, int(shading_.highlights.size()));
         programStale_ = true;
     }
+    globe_->update(); // the light may have moved (a drag, an orbiting light's frame)
     update();
 }
 

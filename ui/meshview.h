@@ -1,5 +1,5 @@
 #pragma once
-// The 3-D view: the mesh shaded with two lights and the contours drawn on
+// The 3-D view: the mesh shaded by the document's light (with a soft fill from the viewer) and the contours drawn on
 // it (per-kind colours, hidden parts dashed), orbit (left drag), pan (right
 // or middle drag), zoom (wheel) and the light turned by Shift+left drag. It draws what it is given and reports
 // camera changes; it computes nothing itself.

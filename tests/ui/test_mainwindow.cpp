@@ -60,6 +60,8 @@ using snaxels::ui::MainWindow;
 
 namespace {
 
+constexpr double kPi = 3.14159265358979323846;
+
 /// Answers every unsaved-changes question with @p button while it lives.
 struct AnswerEveryUnsavedPrompt {
     explicit AnswerEveryUnsavedPrompt(QMessageBox::StandardButton button) {
@@ -1162,6 +1164,55 @@ class TestMainWindow : public QObject {
         QTest::qWait(300);
         QVERIFY(yellow(globe->grab().toImage(), &after) > 10);
         QVERIFY2(after.x() > before.x() + 5, qPrintable(QString("%1 -> %2").arg(before.x()).arg(after.x())));
+    }
+
+    // The view is shaded by the document's light, not a headlight: the lit
+    // side of a sphere follows the light turned by 180 degrees; during an
+    // orbiting-light animation the globe shows the light moving.
+    void shadingFollowsTheLight() {
+        MainWindow window;
+        QVERIFY(showWithMesh(window, "proc:sphere:20000"));
+        window.regionsAction()->setChecked(false);
+        QSignalSpy contours(&window, &MainWindow::contoursUpdated);
+        // Brightness of the sphere's left and right halves in the framebuffer.
+        auto halves = [&]() {
+            const QImage image = window.meshView()->grabFramebuffer().convertToFormat(QImage::Format_RGB32);
+            double left = 0.0, right = 0.0;
+            const int mid = image.width() / 2;
+            for (int y = 0; y < image.height(); ++y)
+                for (int x = 0; x < image.width(); ++x) {
+                    const QRgb c = image.pixel(x, y);
+                    (x < mid ? left : right) += qGray(c);
+                }
+            return std::pair<double, double>(left, right);
+        };
+        window.turnLight(-1.2, 0.0); // toward the viewer's left
+        QVERIFY(contours.wait(30000));
+        QTest::qWait(200);
+        const auto [l0, r0] = halves();
+        QVERIFY2(l0 > 1.1 * r0, qPrintable(QString("left %1, right %2").arg(l0).arg(r0)));
+        window.turnLight(kPi, 0.0); // half a turn about the screen's up axis
+        contours.clear();
+        QVERIFY(contours.wait(30000));
+        QTest::qWait(200);
+        const auto [l1, r1] = halves();
+        QVERIFY2(r1 > 1.1 * l1, qPrintable(QString("left %1, right %2").arg(l1).arg(r1)));
+
+        // An orbiting light: the globe's dot moves from frame to frame.
+        auto* globe = window.meshView()->findChild<QWidget*>("lightGlobe");
+        QVERIFY(globe);
+        auto* source = window.timeline()->findChild<QComboBox*>();
+        source->setCurrentIndex(source->findText("Orbiting light"));
+        QCOMPARE(window.timeline()->spec().kind, snaxels::AnimationSpec::Kind::LightOrbit);
+        contours.clear();
+        window.timeline()->setFrame(0);
+        QTest::qWait(300);
+        const QImage first = globe->grab().toImage();
+        contours.clear();
+        window.timeline()->setFrame(30); // 60 degrees on
+        QVERIFY(contours.wait(30000));
+        QTest::qWait(200);
+        QVERIFY(globe->grab().toImage() != first);
     }
 
     // Region colouring in the 3-D view classes the surface as the maps do
