@@ -20,6 +20,8 @@
 #include <QMenuBar>
 #include <QSlider>
 #include <QTimer>
+#include <functional>
+
 #include <QFile>
 #include <QJsonArray>
 #include <QJsonDocument>
@@ -77,6 +79,24 @@ struct AnswerEveryUnsavedPrompt {
     QTimer poll;
     int answered = 0;
 };
+
+/// Runs @p open, which shows a file dialog, and answers the dialog: taking
+/// its suggestion, or cancelling. Returns the path it suggested.
+QString answerFileDialog(const std::function<void()>& open, bool accept) {
+    QString suggested;
+    QTimer poll; // until the dialog shows
+    poll.setInterval(20);
+    QObject::connect(&poll, &QTimer::timeout, [&] {
+        auto* dialog = qobject_cast<QFileDialog*>(QApplication::activeModalWidget());
+        if (!dialog) return;
+        poll.stop();
+        suggested = dialog->selectedFiles().value(0);
+        static_cast<QDialog*>(dialog)->done(accept ? QDialog::Accepted : QDialog::Rejected); // QFileDialog hides done()
+    });
+    poll.start();
+    open();
+    return suggested;
+}
 
 /// Answers the next unsaved-changes question with @p button once it shows.
 void answerUnsavedPrompt(QMessageBox::StandardButton button, bool* asked) {
@@ -673,23 +693,12 @@ class TestMainWindow : public QObject {
         // Save on the untitled document asks for a name, beside the mesh.
         window.turnLight(0.2, 0.0);
         QVERIFY(window.isModified());
-        QString suggested;
         const QString second = dir.filePath("fandisk.snaxels"); // the suggestion, taken
-        QTimer poll; // until the dialog shows
-        poll.setInterval(20);
-        QObject::connect(&poll, &QTimer::timeout, [&] {
-            auto* dialog = qobject_cast<QFileDialog*>(QApplication::activeModalWidget());
-            if (!dialog) return;
-            poll.stop();
-            suggested = dialog->selectedFiles().value(0);
-            static_cast<QDialog*>(dialog)->done(QDialog::Accepted); // QFileDialog hides it
-        });
-        poll.start();
         QAction* save = nullptr;
         for (QAction* a : window.findChildren<QAction*>())
             if (a->shortcut() == QKeySequence(QKeySequence::Save)) save = a;
         QVERIFY(save);
-        save->trigger();
+        const QString suggested = answerFileDialog([&] { save->trigger(); }, true);
         QCOMPARE(QFileInfo(suggested).fileName(), QString("fandisk.snaxels"));
         QCOMPARE(QFileInfo(suggested).absolutePath(), QFileInfo(dir.filePath("fandisk.obj")).absolutePath());
         QVERIFY(QFile::exists(second));
@@ -832,20 +841,9 @@ class TestMainWindow : public QObject {
         const QList<QPair<QString, QString>> dialogs{
             {"exportAnimatedSvg", "spot.svg"}, {"exportLottie", "spot.json"}, {"exportFrame", "spot.svg"}};
         for (const auto& [action, expected] : dialogs) {
-            QString suggested;
-            QTimer poll;
-            poll.setInterval(20);
-            QObject::connect(&poll, &QTimer::timeout, [&] {
-                auto* dialog = qobject_cast<QFileDialog*>(QApplication::activeModalWidget());
-                if (!dialog) return;
-                poll.stop();
-                suggested = dialog->selectedFiles().value(0);
-                dialog->reject(); // nothing is exported
-            });
-            poll.start();
             QAction* a = window.findChild<QAction*>(action);
             QVERIFY2(a, qPrintable(action));
-            a->trigger();
+            const QString suggested = answerFileDialog([&] { a->trigger(); }, false); // nothing is exported
             QCOMPARE(QFileInfo(suggested).fileName(), expected);
             QCOMPARE(QFileInfo(suggested).absolutePath(), QFileInfo(frame).absolutePath());
         }
