@@ -1,5 +1,9 @@
 #include "ui/styleeditor.h"
 
+#include <optional>
+
+#include <QColorDialog>
+#include <QMouseEvent>
 #include <QAbstractItemView>
 #include <QCompleter>
 #include <QFontDatabase>
@@ -60,10 +64,18 @@ bool name_char(QChar c) { return c.isLetterOrNumber() || c == '-' || c == '_'; }
 /// @p typed says which, so the editor can offer what fits.
 class CompletingEdit : public QPlainTextEdit {
   public:
-    CompletingEdit(QWidget* parent, QCompleter* completer, std::function<void(bool forced)> offer)
-        : QPlainTextEdit(parent), completer_(completer), offer_(std::move(offer)) {}
+    CompletingEdit(QWidget* parent, QCompleter* completer, std::function<void(bool forced)> offer,
+                   std::function<bool(int position)> pick_colour)
+        : QPlainTextEdit(parent), completer_(completer), offer_(std::move(offer)), pick_colour_(std::move(pick_colour)) {}
 
   protected:
+    /// Ctrl+click on a colour value picks the colour in a dialog.
+    void mousePressEvent(QMouseEvent* event) override {
+        if (event->button() == Qt::LeftButton && (event->modifiers() & Qt::ControlModifier) &&
+            pick_colour_(cursorForPosition(event->position().toPoint()).position()))
+            return;
+        QPlainTextEdit::mousePressEvent(event);
+    }
     void keyPressEvent(QKeyEvent* key) override {
         if (completer_->popup()->isVisible()) {
             switch (key->key()) {
@@ -79,6 +91,19 @@ class CompletingEdit : public QPlainTextEdit {
             offer_(true);
             return;
         }
+        if ((key->key() == Qt::Key_Return || key->key() == Qt::Key_Enter) && !(key->modifiers() & Qt::ShiftModifier)) {
+            // A new line starts where the one before did, and one step in
+            // after an element left open (<contour ...>).
+            const QString line = textCursor().block().text().left(textCursor().positionInBlock());
+            QString indent = line.left(int(line.size() - QString(line).remove(QRegularExpression("^\\s+")).size()));
+            const QString trimmed = line.trimmed();
+            if (trimmed.startsWith('<') && trimmed.endsWith('>') && !trimmed.endsWith("/>") && !trimmed.startsWith("</") &&
+                !trimmed.startsWith("<?") && !trimmed.startsWith("<!") && !trimmed.contains("</"))
+                indent += "  ";
+            textCursor().insertText("\n" + indent);
+            ensureCursorVisible();
+            return;
+        }
         QPlainTextEdit::keyPressEvent(key);
         const QString typed = key->text();
         if (!typed.isEmpty() && typed[0].isPrint()) offer_(typed == "<" || typed == "\"" || typed == " ");
@@ -88,6 +113,7 @@ class CompletingEdit : public QPlainTextEdit {
   private:
     QCompleter* completer_;
     std::function<void(bool)> offer_;
+    std::function<bool(int)> pick_colour_;
 };
 
 } // namespace
@@ -158,14 +184,20 @@ QString initial_style_text() {
 
 StyleEditor::StyleEditor(QWidget* parent)
     : QWidget(parent), completer_(new QCompleter(this)), completions_(new QStringListModel(this)) {
-    edit_ = new CompletingEdit(this, completer_, [this](bool forced) { complete(forced); });
+    edit_ = new CompletingEdit(
+        this, completer_, [this](bool forced) { complete(forced); }, [this](int position) { return pickColour(position); });
     status_ = new QLabel(this);
     auto* layout = new QVBoxLayout(this);
     layout->setContentsMargins(0, 0, 0, 0);
     layout->addWidget(edit_);
     layout->addWidget(status_);
     edit_->setFont(QFontDatabase::systemFont(QFontDatabase::FixedFont));
-    edit_->setLineWrapMode(QPlainTextEdit::NoWrap);
+    // Long lines wrap at the dock's edge, so every attribute and comment
+    // shows whole at any width.
+    edit_->setLineWrapMode(QPlainTextEdit::WidgetWidth);
+    edit_->setWordWrapMode(QTextOption::WrapAtWordBoundaryOrAnywhere);
+    edit_->setToolTip(tr("The style (docs/styles.md): applied as you type. Ctrl+Space completes; Ctrl+click a colour "
+                         "to pick it"));
     new XmlHighlighter(edit_->document());
     status_->setWordWrap(true);
     debounce_.setSingleShot(true);
@@ -214,6 +246,32 @@ void StyleEditor::insertCompletion(const QString& word) {
     }
     cursor.insertText(word);
     edit_->setTextCursor(cursor);
+}
+
+std::optional<std::pair<int, int>> colour_value_at(const QString& text, int position) {
+    // A "#rrggbb" (or #rgb) value in quotes around the position.
+    static const QRegularExpression colour("\"(#[0-9a-fA-F]{6}|#[0-9a-fA-F]{3})\"");
+    for (auto it = colour.globalMatch(text); it.hasNext();) {
+        const QRegularExpressionMatch m = it.next();
+        if (position >= m.capturedStart(0) && position <= m.capturedEnd(0))
+            return std::pair<int, int>(int(m.capturedStart(1)), int(m.capturedLength(1)));
+    }
+    return std::nullopt;
+}
+
+bool StyleEditor::pickColour(int position) {
+    const auto value = colour_value_at(edit_->toPlainText(), position);
+    if (!value) return false;
+    const QColor current(edit_->toPlainText().mid(value->first, value->second));
+    const QColor chosen = QColorDialog::getColor(current, this, tr("Pick a colour"));
+    if (!chosen.isValid() || chosen == current) return true;
+    QTextCursor cursor(edit_->document());
+    cursor.setPosition(value->first);
+    cursor.setPosition(value->first + value->second, QTextCursor::KeepAnchor);
+    cursor.insertText(chosen.name(QColor::HexRgb));
+    debounce_.stop();
+    apply(); // at once: one edit of the document
+    return true;
 }
 
 void StyleEditor::setText(const QString& text, const QString& source) {

@@ -5,6 +5,9 @@
 
 #include <QPlainTextEdit>
 #include <QTimer>
+#include <optional>
+#include <utility>
+
 #include <QWidget>
 
 #include "snaxels/style/style.h"
@@ -44,6 +47,11 @@ class StyleEditor : public QWidget {
     /// (and on Ctrl+Space), and Enter or Tab inserts the word chosen.
     QCompleter* completer() const { return completer_; }
 
+    /// Ctrl+click: when @p position (in the text) is in a colour value,
+    /// asks for a colour in a dialog and writes it there (one edit, applied
+    /// at once); false when it is in no colour value.
+    bool pickColour(int position);
+
   signals:
     /// The text was taken up (typing paused, or set): parsed or not. The
     /// document it goes to parses it again and keeps the style in force;
@@ -64,6 +72,10 @@ class StyleEditor : public QWidget {
     QString source_ = "style";
     QString problem_;
 };
+
+/// The colour value ("#rrggbb" or "#rgb", in quotes) around @p position
+/// of @p text: where its "#" is and its length, or nothing.
+std::optional<std::pair<int, int>> colour_value_at(const QString& text, int position);
 
 /// The style text the application starts with: the visual contour in ink
 /// with dashed hidden lines, and the shadow line.

@@ -4,6 +4,13 @@
 // every word it offers is one the parser takes, and that typing with the
 // popup inserts the word chosen. Expected words are spelled out here.
 #include <QAbstractItemView>
+#include <QApplication>
+#include <QColorDialog>
+#include <QDir>
+#include <QFile>
+#include <QScrollBar>
+#include <QSignalSpy>
+#include <QTimer>
 #include <QCompleter>
 #include <QPlainTextEdit>
 #include <QTest>
@@ -117,6 +124,70 @@ class TestStyleEditor : public QObject {
         QVERIFY(editor.completer()->popup()->isVisible());
         QCOMPARE(editor.completer()->completionCount(), 4); // k, angle, min-length, min-angle
         QTest::keyClick(editor.completer()->popup(), Qt::Key_Escape);
+    }
+
+    // Every preset's lines show whole in a narrow dock: they wrap, and
+    // nothing scrolls sideways.
+    void presetsShowWholeInANarrowDock() {
+        StyleEditor editor;
+        editor.resize(320, 700);
+        editor.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&editor));
+        const QDir presets(QString(SNAXELS_SOURCE_DIR) + "/styles");
+        const QStringList files = presets.entryList({"*.xml"}, QDir::Files);
+        QVERIFY(files.size() >= 8);
+        for (const QString& name : files) {
+            QFile f(presets.filePath(name));
+            QVERIFY(f.open(QIODevice::ReadOnly));
+            editor.setText(QString::fromUtf8(f.readAll()), name);
+            QCoreApplication::processEvents();
+            QCOMPARE(editor.editor()->horizontalScrollBar()->maximum(), 0);
+        }
+    }
+
+    // Enter keeps the line's indentation, one step deeper after an element
+    // left open.
+    void autoIndents() {
+        StyleEditor editor;
+        QPlainTextEdit* edit = editor.editor();
+        edit->setPlainText("<style version=\"1\">\n  <contour kind=\"visual\">");
+        edit->setFocus();
+        edit->moveCursor(QTextCursor::End);
+        QTest::keyClick(edit, Qt::Key_Return);
+        QTest::keyClicks(edit, "<visible width=\"2\"/>");
+        QTest::keyClick(edit, Qt::Key_Return);
+        QTest::keyClicks(edit, "<hidden draw=\"false\"/>");
+        QCOMPARE(edit->toPlainText(), QString("<style version=\"1\">\n  <contour kind=\"visual\">\n"
+                                              "    <visible width=\"2\"/>\n    <hidden draw=\"false\"/>"));
+    }
+
+    // Ctrl+click on a colour: a colour dialog, and the colour chosen is
+    // written in place as one change of the text, applied at once.
+    void picksAColour() {
+        StyleEditor editor;
+        const QString text = "<style version=\"1\">\n  <contour kind=\"visual\">\n    <visible stroke=\"#111111\" width=\"2\"/>\n"
+                             "  </contour>\n</style>\n";
+        editor.setText(text, "test");
+        const int at = int(text.indexOf("#111111")) + 3;
+        const auto value = snaxels::ui::colour_value_at(text, at);
+        QVERIFY(value && value->first == text.indexOf("#111111") && value->second == 7);
+        QVERIFY(!snaxels::ui::colour_value_at(text, int(text.indexOf("width")) + 2));
+        QSignalSpy applied(&editor, &StyleEditor::textApplied);
+        QTimer poll;
+        poll.setInterval(20);
+        QObject::connect(&poll, &QTimer::timeout, [&] {
+            auto* dialog = qobject_cast<QColorDialog*>(QApplication::activeModalWidget());
+            if (!dialog) return;
+            poll.stop();
+            QCOMPARE(dialog->currentColor(), QColor("#111111"));
+            dialog->setCurrentColor(QColor("#ff8800"));
+            dialog->accept();
+        });
+        poll.start();
+        QVERIFY(editor.pickColour(at));
+        QCOMPARE(editor.text(), QString(text).replace("#111111", "#ff8800"));
+        QCOMPARE(applied.count(), 1);
+        QVERIFY(!editor.pickColour(int(text.indexOf("width")) + 2)); // no colour there: no dialog
     }
 };
 
