@@ -134,6 +134,9 @@ class MainWindow : public QMainWindow {
     /// mesh or a sequence's first file, which have asked about unsaved
     /// changes already).
     void startLoading(const QString& spec);
+    /// True, saying so in the status bar, while a mesh is being read: one
+    /// load at a time.
+    bool refuseWhileLoading();
     void createDocks();
     void createStatusBar();
     void connectControllers();

@@ -34,19 +34,19 @@ void MainWindow::commitWidgets() {
 }
 
 void MainWindow::openMesh(const QString& spec) {
-    if (loader_->loading()) {
-        statusBar()->showMessage(tr("Still loading %1; try again when it is done").arg(loader_->spec()), 4000);
-        return;
-    }
+    if (refuseWhileLoading()) return;
     if (!maybeSave()) return; // the mesh starts a new document
     startLoading(spec);
 }
 
+bool MainWindow::refuseWhileLoading() {
+    if (!loader_->loading()) return false;
+    statusBar()->showMessage(tr("Still loading %1; try again when it is done").arg(loader_->spec()), 4000);
+    return true;
+}
+
 void MainWindow::startLoading(const QString& spec) {
-    if (!loader_->load(spec)) {
-        statusBar()->showMessage(tr("Still loading %1; try again when it is done").arg(loader_->spec()), 4000);
-        return;
-    }
+    if (refuseWhileLoading() || !loader_->load(spec)) return;
     busy_->show();
     statusBar()->showMessage(tr("Loading %1…").arg(QFileInfo(spec).fileName()));
 }
@@ -252,10 +252,7 @@ bool MainWindow::openSequence(const QString& path) {
         emit loadFailed(message);
         return false;
     }
-    if (loader_->loading()) {
-        statusBar()->showMessage(tr("Still loading %1; try again when it is done").arg(loader_->spec()), 4000);
-        return false;
-    }
+    if (refuseWhileLoading()) return false;
     if (!maybeSave()) return false;
     pendingSequence_ = *files;
     // The mesh is the series' first file; every frame is posed from its file.
@@ -268,10 +265,7 @@ bool MainWindow::openSequence(const QString& path) {
 }
 
 void MainWindow::openProject(const QString& path) {
-    if (loader_->loading()) {
-        statusBar()->showMessage(tr("Still loading %1; try again when it is done").arg(loader_->spec()), 4000);
-        return;
-    }
+    if (refuseWhileLoading()) return;
     Project project;
     try {
         project = read_project(path.toStdString());

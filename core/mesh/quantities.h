@@ -42,8 +42,8 @@ class PoseQuantities {
     std::shared_ptr<const T> keep(const std::string& key, std::shared_ptr<const T> value,
                                   Lifetime lifetime = Lifetime::Pose) const {
         const std::lock_guard lock(mutex_);
-        const auto [it, added] = values_.try_emplace(key, Entry{std::move(value), lifetime});
-        return std::static_pointer_cast<const T>(it->second.value);
+        const auto kept = values_.try_emplace(key, Entry{std::move(value), lifetime}).first;
+        return std::static_pointer_cast<const T>(kept->second.value);
     }
 
     /// The value under @p key, computed by @p compute (returning a T, or a

@@ -1,7 +1,6 @@
 #include "snaxels/mesh/topology.h"
 
 #include <limits>
-#include <stdexcept>
 #include <string>
 
 #include <glm/glm.hpp>
