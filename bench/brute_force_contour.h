@@ -17,7 +17,7 @@
 namespace snaxels::bench {
 
 struct BruteForceContour {
-    std::vector<std::int32_t> crossing_of_edge; ///< #E, index into points or -1
+    EdgeData<std::int32_t> crossing_of_edge; ///< index into points or -1
     std::vector<glm::dvec3> points;
     std::size_t loops = 0;
     std::size_t open_loops = 0;
@@ -26,10 +26,10 @@ struct BruteForceContour {
 inline BruteForceContour marching_triangles(const MeshTopology& topo, const ContourFunction& f,
                                         int scan = 256) {
     BruteForceContour out;
-    std::vector<double> fv(topo.n_vertices());
-    for (std::size_t v = 0; v < fv.size(); ++v) fv[v] = f(topo.positions()[v], topo.normals()[v]);
+    VertexData<double> fv(topo.n_vertices());
+    for (const VertexId v : topo.vertices()) fv[v] = f(topo.positions()[v], topo.normals()[v]);
     out.crossing_of_edge.assign(topo.n_edges(), -1);
-    for (std::size_t e = 0; e < topo.n_edges(); ++e) {
+    for (const EdgeId e : topo.edges()) {
         auto [a, b] = topo.edge_vertices()[e];
         if ((fv[a] >= 0.0) == (fv[b] >= 0.0)) continue;
         if (fv[a] < 0.0) std::swap(a, b); // a positive, b negative
@@ -63,7 +63,7 @@ inline BruteForceContour marching_triangles(const MeshTopology& topo, const Cont
         return x;
     };
     std::vector<int> links(out.points.size(), 0);
-    for (std::size_t f_ = 0; f_ < topo.n_faces(); ++f_) {
+    for (const FaceId f_ : topo.faces()) {
         std::int32_t found[3], n = 0;
         for (const auto e : topo.face_edges()[f_])
             if (out.crossing_of_edge[e] >= 0) found[n++] = out.crossing_of_edge[e];

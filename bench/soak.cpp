@@ -64,7 +64,7 @@ void pose(const std::vector<glm::dvec3>& rest, double seconds, std::vector<glm::
     }
 }
 
-using Crossings = std::vector<std::tuple<std::int32_t, std::int32_t, double>>;
+using Crossings = std::vector<std::tuple<EdgeId, VertexId, double>>;
 
 Crossings crossings(const ContourResult& r) {
     Crossings out;

@@ -215,7 +215,7 @@ MeshGeometry mesh_geometry(const MeshTopology& mesh, std::size_t max_faces) {
     if (max_faces == 0 || mesh.n_faces() <= max_faces) {
         g.vertices.reserve(mesh.n_faces() * 18);
         for (const auto& f : mesh.face_vertices())
-            for (const std::int32_t v : f) corner(mesh.positions()[v], mesh.normals()[v]);
+            for (const VertexId v : f) corner(mesh.positions()[v], mesh.normals()[v]);
         return g;
     }
     // Vertex clustering on a uniform grid: each cell's vertices merge into
@@ -226,9 +226,9 @@ MeshGeometry mesh_geometry(const MeshTopology& mesh, std::size_t max_faces) {
     const double cell = std::max(size.x / std::max(cells, 1.0), 1e-12);
     const glm::dvec3 dims = glm::ceil(size / cell) + 1.0;
     std::unordered_map<std::uint64_t, std::uint32_t> cluster_of_cell;
-    std::vector<std::uint32_t> cluster(mesh.n_vertices());
+    VertexData<std::uint32_t> cluster(mesh.n_vertices());
     std::vector<glm::dvec3> sum_p, sum_n;
-    for (std::size_t v = 0; v < mesh.n_vertices(); ++v) {
+    for (const VertexId v : mesh.vertices()) {
         const glm::dvec3 q = glm::floor((mesh.positions()[v] - lo) / cell);
         const std::uint64_t key = std::uint64_t(q.x) + std::uint64_t(dims.x) * (std::uint64_t(q.y) + std::uint64_t(dims.y) * std::uint64_t(q.z));
         auto [it, inserted] = cluster_of_cell.try_emplace(key, std::uint32_t(sum_p.size()));

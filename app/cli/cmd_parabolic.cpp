@@ -22,6 +22,13 @@ namespace {
 
 nlohmann::json vec(const glm::dvec3& v) { return {v.x, v.y, v.z}; }
 
+/// Mesh element ids as the numbers the JSON report gives them.
+template <class Tag> nlohmann::json indices(const std::vector<ElementId<Tag>>& ids) {
+    nlohmann::json out = nlohmann::json::array();
+    for (const ElementId<Tag> id : ids) out.push_back(id.index());
+    return out;
+}
+
 std::string obj_text(const ParabolicResult& r) {
     std::ostringstream out;
     out.precision(9);
@@ -94,14 +101,14 @@ int run_parabolic(const std::vector<std::string>& argv) {
     if (const auto out = args.value("json")) {
         nlohmann::json points = nlohmann::json::array(), curves = nlohmann::json::array();
         for (const ParabolicPoint& p : r.points)
-            points.push_back({{"kind", event_name(p.kind)}, {"where", vec(p.where)}, {"vertex", p.vertex}, {"face", p.face},
+            points.push_back({{"kind", event_name(p.kind)}, {"where", vec(p.where)}, {"vertex", p.vertex.index()}, {"face", p.face.index()},
                               {"dir", vec(p.dir)}, {"from_dir", vec(p.from_dir)}, {"to_dir", vec(p.to_dir)},
                               {"confidence", p.confidence}});
         for (const ParabolicCurve& c : r.curves) {
             nlohmann::json pts = nlohmann::json::array();
             for (const glm::dvec3& p : c.points) pts.push_back(vec(p));
-            curves.push_back({{"closed", c.closed}, {"length", c.length()}, {"points", pts}, {"edges", c.edges},
-                               {"t", c.t}, {"faces", c.faces}});
+            curves.push_back({{"closed", c.closed}, {"length", c.length()}, {"points", pts}, {"edges", indices(c.edges)},
+                               {"t", c.t}, {"faces", indices(c.faces)}});
         }
         const nlohmann::json doc = {{"mesh", mesh},           {"samples", r.samples}, {"walks", r.walks},
                                     {"faces", topology.n_faces()}, {"ms", r.ms}, {"smoothing_passes", r.smoothing_passes},

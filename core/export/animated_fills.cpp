@@ -294,7 +294,7 @@ void fill_paths(const std::vector<AnimationFrame>& frames, const Style& style, c
         const auto it = by_class.find(key);
         if (it != by_class.end()) return it->second;
         std::vector<Loop>& loops = by_class[key];
-        for (const MapRegion& r : frames[std::size_t(frame)].regions)
+        for (const MapRegion& r : frames[frame].regions)
             if (r.cls == like.cls && std::abs(r.k - like.k) < 1e-9) loops.insert(loops.end(), r.polygons.begin(), r.polygons.end());
         return loops;
     };

@@ -240,8 +240,8 @@ void track_runs(std::vector<LifeFrame>& life, int cls, int& next_id) {
                 if (o > best_po[r]) best_po[r] = o, best_cur[r] = int(s);
             }
         for (std::size_t s = 0; s < runs.size(); ++s) {
-            if (best_prev[s] >= 0 && best_cur[std::size_t(best_prev[s])] == int(s)) {
-                runs[s].id = prev[std::size_t(best_prev[s])].id;
+            if (best_prev[s] >= 0 && best_cur[best_prev[s]] == int(s)) {
+                runs[s].id = prev[best_prev[s]].id;
                 runs[s].span.u0 += shift[s];
                 runs[s].span.u1 += shift[s];
             } else {
@@ -604,8 +604,8 @@ void stroke_paths(const std::vector<AnimationFrame>& frames, std::size_t c, cons
             bool empty = false;
             for (std::size_t m = start; m < end; ++m) {
                 const auto [f, l] = members[m];
-                const DrawnLoop& dl = frames[std::size_t(f)].drawing.contours[c].loops[l];
-                ParamLoop p = parameterize(dl, frames[std::size_t(f)].loops[c][l]);
+                const DrawnLoop& dl = frames[f].drawing.contours[c].loops[l];
+                ParamLoop p = parameterize(dl, frames[f].loops[c][l]);
                 if (p.pts.empty()) {
                     empty = true;
                     break;

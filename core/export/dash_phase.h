@@ -10,11 +10,13 @@
 
 #include <glm/glm.hpp>
 
+#include "snaxels/mesh/elements.h"
+
 namespace snaxels {
 
 /// A point of the surface: parameter t on the edge from vertex a to vertex b.
 struct SurfacePoint {
-    std::int32_t a = 0, b = 0;
+    VertexId a, b;
     double t = 0.0;
 };
 

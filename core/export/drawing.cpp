@@ -28,8 +28,8 @@ Drawing make_drawing(const SnaxelEngine& engine, const std::vector<ContourResult
             const FrontLoop& loop = r.fronts.loops[l];
             DrawnLoop drawn;
             drawn.closed = loop.closed;
-            drawn.p.reserve(std::size_t(loop.size));
-            drawn.q.reserve(std::size_t(loop.size));
+            drawn.p.reserve(loop.size);
+            drawn.q.reserve(loop.size);
             r.fronts.for_each_in_loop(loop, [&](std::int32_t s) {
                 const glm::dvec3 p = engine.position(r.fronts.snaxels[s]);
                 drawn.p.push_back(p);

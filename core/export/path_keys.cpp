@@ -25,7 +25,7 @@ double shape_distance(const Subpath& a, const Subpath& b) {
                 } else if (s0 < 0 || s1 >= n) {
                     continue;
                 }
-                best = std::min(best, point_segment(from[std::size_t(i)], to[std::size_t(s0)], to[std::size_t(s1)]));
+                best = std::min(best, point_segment(from[i], to[s0], to[s1]));
             }
             worst = std::max(worst, best);
         }

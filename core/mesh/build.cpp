@@ -69,7 +69,7 @@ std::size_t split_fans(std::vector<std::array<std::uint32_t, 3>>& faces, std::ve
     edges.reserve(faces.size() * 3);
     for (std::size_t f = 0; f < faces.size(); ++f)
         for (int k = 0; k < 3; ++k) {
-            const std::uint64_t a = faces[f][std::size_t(k)], b = faces[f][std::size_t((k + 1) % 3)];
+            const std::uint64_t a = faces[f][k], b = faces[f][(k + 1) % 3];
             edges.emplace_back(a < b ? (a << 32 | b) : (b << 32 | a), std::uint32_t(3 * f + std::size_t(k)));
         }
     std::sort(edges.begin(), edges.end());
@@ -281,7 +281,7 @@ std::size_t split_complex_vertices(Mesh& mesh, OpenMesh::VPropHandleT<std::uint3
         for (const auto fh : mesh.faces()) {
             std::array<std::uint32_t, 3> t{};
             int k = 0;
-            for (const auto vh : mesh.fv_range(fh)) t[std::size_t(k++)] = std::uint32_t(vh.idx());
+            for (const auto vh : mesh.fv_range(fh)) t[k++] = std::uint32_t(vh.idx());
             built.push_back(t);
         }
         std::vector<glm::dvec3> points;

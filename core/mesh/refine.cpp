@@ -29,25 +29,23 @@ MeshTopology refine_topology(const MeshTopology& t, int levels) {
     auto r = std::make_shared<MeshRefinement>();
     r->levels = levels;
     r->base_vertices = t.n_vertices();
-    r->base_faces.assign(t.face_vertices().begin(), t.face_vertices().end());
-    std::vector<glm::dvec3> positions(t.positions().begin(), t.positions().end()),
-        normals(t.normals().begin(), t.normals().end());
-    auto add = [&](const std::array<std::int32_t, 3>& from, const glm::dvec3& w) {
-        const auto id = std::int32_t(positions.size());
-        positions.push_back(w.x * t.positions()[std::size_t(from[0])] + w.y * t.positions()[std::size_t(from[1])] +
-                            w.z * t.positions()[std::size_t(from[2])]);
-        const glm::dvec3 normal = w.x * t.normals()[std::size_t(from[0])] + w.y * t.normals()[std::size_t(from[1])] +
-                                  w.z * t.normals()[std::size_t(from[2])];
+    r->base_faces = FaceData<std::array<VertexId, 3>>({t.face_vertices().begin(), t.face_vertices().end()});
+    VertexData<glm::dvec3> positions({t.positions().begin(), t.positions().end()}),
+        normals({t.normals().begin(), t.normals().end()});
+    auto add = [&](const std::array<VertexId, 3>& from, const glm::dvec3& w) {
+        const VertexId id(positions.size());
+        positions.push_back(w.x * t.positions()[from[0]] + w.y * t.positions()[from[1]] + w.z * t.positions()[from[2]]);
+        const glm::dvec3 normal = w.x * t.normals()[from[0]] + w.y * t.normals()[from[1]] + w.z * t.normals()[from[2]];
         const double len = glm::length(normal);
-        normals.push_back(len > 0.0 ? normal / len : t.normals()[std::size_t(from[0])]);
+        normals.push_back(len > 0.0 ? normal / len : t.normals()[from[0]]);
         r->from.push_back(from);
         r->weights.push_back(w);
         return id;
     };
     // Points along each edge, from its first vertex, shared by its faces.
-    std::vector<std::int32_t> edge_first(t.n_edges());
-    for (std::size_t e = 0; e < t.n_edges(); ++e) {
-        const std::int32_t a = t.edge_vertices()[e][0], b = t.edge_vertices()[e][1];
+    EdgeData<std::int32_t> edge_first(t.n_edges());
+    for (const EdgeId e : t.edges()) {
+        const VertexId a = t.edge_vertices()[e][0], b = t.edge_vertices()[e][1];
         edge_first[e] = std::int32_t(positions.size());
         for (std::int32_t i = 1; i < n; ++i) {
             const double s = double(i) / double(n);
@@ -55,22 +53,23 @@ MeshTopology refine_topology(const MeshTopology& t, int levels) {
         }
     }
     // The point at step i of n along edge e, counted from vertex v.
-    auto on_edge = [&](std::int32_t e, std::int32_t v, std::int32_t i) {
-        const std::int32_t along = t.edge_vertices()[std::size_t(e)][0] == v ? i : n - i;
-        return edge_first[std::size_t(e)] + along - 1;
+    auto on_edge = [&](EdgeId e, VertexId v, std::int32_t i) {
+        const std::int32_t along = t.edge_vertices()[e][0] == v ? i : n - i;
+        return VertexId(edge_first[e] + along - 1);
     };
-    std::vector<std::array<std::int32_t, 3>> faces;
-    faces.reserve(t.n_faces() * std::size_t(n) * std::size_t(n));
-    r->face_origin.reserve(faces.capacity());
-    std::vector<std::int32_t> grid(std::size_t(n + 1) * std::size_t(n + 1));
-    for (std::size_t f = 0; f < t.n_faces(); ++f) {
+    std::vector<std::array<VertexId, 3>> faces;
+    const auto side = std::size_t(n + 1);
+    faces.reserve(t.n_faces() * side * side);
+    std::vector<VertexId> grid(side * side);
+    for (const FaceId f : t.faces()) {
         const auto& c = t.face_vertices()[f];
         const auto& fe = t.face_edges()[f]; // edge k joins corners k and k + 1
         // Point (a, b) of the face's grid: a steps from corner 0 toward 1,
         // b from corner 0 toward 2.
+        auto at = [&](std::int32_t a, std::int32_t b) -> VertexId& { return grid[a * (n + 1) + b]; };
         for (std::int32_t a = 0; a <= n; ++a)
             for (std::int32_t b = 0; a + b <= n; ++b) {
-                std::int32_t id;
+                VertexId& id = at(a, b);
                 if (a == 0 && b == 0) id = c[0];
                 else if (a == n) id = c[1];
                 else if (b == n) id = c[2];
@@ -78,28 +77,25 @@ MeshTopology refine_topology(const MeshTopology& t, int levels) {
                 else if (a + b == n) id = on_edge(fe[1], c[1], b);
                 else if (a == 0) id = on_edge(fe[2], c[0], b);
                 else id = add(c, {double(n - a - b) / double(n), double(a) / double(n), double(b) / double(n)});
-                grid[std::size_t(a) * std::size_t(n + 1) + std::size_t(b)] = id;
             }
-        auto at = [&](std::int32_t a, std::int32_t b) { return grid[std::size_t(a) * std::size_t(n + 1) + std::size_t(b)]; };
         for (std::int32_t a = 0; a < n; ++a)
             for (std::int32_t b = 0; a + b < n; ++b) {
                 faces.push_back({at(a, b), at(a + 1, b), at(a, b + 1)});
-                r->face_origin.push_back(std::int32_t(f));
+                r->face_origin.push_back(f);
                 if (a + b + 1 < n) {
                     faces.push_back({at(a + 1, b), at(a + 1, b + 1), at(a, b + 1)});
-                    r->face_origin.push_back(std::int32_t(f));
+                    r->face_origin.push_back(f);
                 }
             }
     }
     Mesh mesh;
-    std::vector<Mesh::VertexHandle> handles;
-    handles.reserve(positions.size());
-    for (std::size_t v = 0; v < positions.size(); ++v) {
+    VertexData<Mesh::VertexHandle> handles;
+    for (const VertexId v : positions.ids()) {
         handles.push_back(mesh.add_vertex(to_om(positions[v])));
-        mesh.set_normal(handles.back(), to_om(normals[v]));
+        mesh.set_normal(handles[v], to_om(normals[v]));
     }
     for (const auto& f : faces) {
-        if (!mesh.add_face(handles[std::size_t(f[0])], handles[std::size_t(f[1])], handles[std::size_t(f[2])]).is_valid())
+        if (!mesh.add_face(handles[f[0]], handles[f[1]], handles[f[2]]).is_valid())
             return t; // cannot happen on a manifold topology; the mesh is then used as it is
     }
     MeshTopology out = build_topology(mesh, r); // faces keep the order they were added in

@@ -25,9 +25,9 @@ namespace snaxels {
 struct MeshRefinement {
     int levels = 0;
     std::size_t base_vertices = 0;
-    std::vector<std::array<std::int32_t, 3>> base_faces; ///< the original faces, for their normals
-    std::vector<std::int32_t> face_origin;               ///< per refined face: the original face it lies in
-    std::vector<std::array<std::int32_t, 3>> from;       ///< per added vertex: original vertices
+    FaceData<std::array<VertexId, 3>> base_faces; ///< the original faces, for their normals
+    FaceData<FaceId> face_origin;                    ///< per refined face: the original face it lies in
+    std::vector<std::array<VertexId, 3>> from;       ///< per added vertex (past base_vertices): original vertices
     std::vector<glm::dvec3> weights;                     ///< per added vertex: their weights (sum 1)
 };
 

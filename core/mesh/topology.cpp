@@ -46,17 +46,18 @@ MeshTopology build_topology(const Mesh& mesh, std::shared_ptr<const MeshRefineme
     pose->positions.resize(nv);
     pose->normals.resize(nv);
     for (const auto vh : mesh.vertices()) {
-        pose->positions[vh.idx()] = to_glm(mesh.point(vh));
-        pose->normals[vh.idx()] = to_glm(mesh.normal(vh));
+        pose->positions[VertexId(vh.idx())] = to_glm(mesh.point(vh));
+        pose->normals[VertexId(vh.idx())] = to_glm(mesh.normal(vh));
     }
     t.edge_vertices.resize(ne);
     t.edge_faces.resize(ne);
     double total = 0.0;
     for (const auto eh : mesh.edges()) {
         const auto h0 = mesh.halfedge_handle(eh, 0), h1 = mesh.halfedge_handle(eh, 1);
-        const int a = mesh.from_vertex_handle(h0).idx(), b = mesh.to_vertex_handle(h0).idx();
-        t.edge_vertices[eh.idx()] = {a, b};
-        t.edge_faces[eh.idx()] = {mesh.face_handle(h0).idx(), mesh.face_handle(h1).idx()};
+        const VertexId a(mesh.from_vertex_handle(h0).idx()), b(mesh.to_vertex_handle(h0).idx());
+        const EdgeId e(eh.idx());
+        t.edge_vertices[e] = {a, b};
+        t.edge_faces[e] = {FaceId(mesh.face_handle(h0).idx()), FaceId(mesh.face_handle(h1).idx())};
         total += glm::length(pose->positions[a] - pose->positions[b]);
     }
     t.mean_edge_length = ne ? total / double(ne) : 0.0;
@@ -65,8 +66,8 @@ MeshTopology build_topology(const Mesh& mesh, std::shared_ptr<const MeshRefineme
     for (const auto fh : mesh.faces()) {
         auto h = mesh.halfedge_handle(fh);
         for (int k = 0; k < 3; ++k) {
-            t.face_vertices[fh.idx()][k] = mesh.from_vertex_handle(h).idx();
-            t.face_edges[fh.idx()][k] = mesh.edge_handle(h).idx();
+            t.face_vertices[FaceId(fh.idx())][k] = VertexId(mesh.from_vertex_handle(h).idx());
+            t.face_edges[FaceId(fh.idx())][k] = EdgeId(mesh.edge_handle(h).idx());
             h = mesh.next_halfedge_handle(h);
         }
     }
@@ -76,8 +77,8 @@ MeshTopology build_topology(const Mesh& mesh, std::shared_ptr<const MeshRefineme
     for (const auto vh : mesh.vertices()) {
         t.ring_start[vh.idx()] = static_cast<std::int32_t>(t.ring.size());
         for (const auto heh : mesh.voh_range(vh)) {
-            t.ring.push_back(mesh.to_vertex_handle(heh).idx());
-            t.ring_edge.push_back(mesh.edge_handle(heh).idx());
+            t.ring.push_back(VertexId(mesh.to_vertex_handle(heh).idx()));
+            t.ring_edge.push_back(EdgeId(mesh.edge_handle(heh).idx()));
         }
     }
     t.ring_start[nv] = static_cast<std::int32_t>(t.ring.size());
@@ -92,46 +93,46 @@ double bounding_radius(const MeshTopology& topo) {
 
 std::size_t MeshConnectivity::n_base_vertices() const { return refinement ? refinement->base_vertices : n_vertices(); }
 
+namespace {
+
+/// Sums each face's area vector into its corners' normals and makes them unit.
+void face_normals_into(VertexData<glm::dvec3>& normals, const VertexData<glm::dvec3>& positions,
+                       const std::vector<std::array<VertexId, 3>>& faces, std::size_t count) {
+    for (const auto& f : faces) {
+        const glm::dvec3 a = positions[f[0]];
+        const glm::dvec3 n = glm::cross(positions[f[1]] - a, positions[f[2]] - a);
+        for (const VertexId v : f) normals[v] += n;
+    }
+    for (VertexId v(0); v.index() < std::int32_t(count); ++v) {
+        const double len = glm::length(normals[v]);
+        normals[v] = len > 0.0 ? normals[v] / len : glm::dvec3(0.0, 0.0, 1.0);
+    }
+}
+
+} // namespace
+
 MeshPose make_pose(const MeshConnectivity& c, std::vector<glm::dvec3> positions) {
     MeshPose t;
     if (positions.size() < c.n_base_vertices())
         throw InternalError("make_pose: " + std::to_string(positions.size()) + " positions for " +
                                     std::to_string(c.n_base_vertices()) + " vertices");
-    t.positions = std::move(positions);
-    t.positions.resize(c.n_vertices());
+    positions.resize(c.n_vertices());
+    t.positions = VertexData<glm::dvec3>(std::move(positions));
     t.normals.assign(c.n_vertices(), glm::dvec3(0.0));
-    if (c.refinement) {
-        const MeshRefinement& r = *c.refinement;
-        const std::size_t base = r.base_vertices;
-        for (const auto& f : r.base_faces) {
-            const glm::dvec3 a = t.positions[std::size_t(f[0])];
-            const glm::dvec3 n = glm::cross(t.positions[std::size_t(f[1])] - a, t.positions[std::size_t(f[2])] - a);
-            for (const auto v : f) t.normals[std::size_t(v)] += n;
-        }
-        for (std::size_t v = 0; v < base; ++v) {
-            const double len = glm::length(t.normals[v]);
-            t.normals[v] = len > 0.0 ? t.normals[v] / len : glm::dvec3(0.0, 0.0, 1.0);
-        }
-        for (std::size_t i = 0; i < r.from.size(); ++i) {
-            const auto& from = r.from[i];
-            const glm::dvec3& w = r.weights[i];
-            t.positions[base + i] = w.x * t.positions[std::size_t(from[0])] + w.y * t.positions[std::size_t(from[1])] +
-                                    w.z * t.positions[std::size_t(from[2])];
-            const glm::dvec3 n = w.x * t.normals[std::size_t(from[0])] + w.y * t.normals[std::size_t(from[1])] +
-                                 w.z * t.normals[std::size_t(from[2])];
-            const double len = glm::length(n);
-            t.normals[base + i] = len > 0.0 ? n / len : t.normals[std::size_t(from[0])];
-        }
+    if (!c.refinement) {
+        face_normals_into(t.normals, t.positions, c.face_vertices.values(), c.n_vertices());
         return t;
     }
-    for (const auto& f : c.face_vertices) {
-        const glm::dvec3 a = t.positions[std::size_t(f[0])];
-        const glm::dvec3 n = glm::cross(t.positions[std::size_t(f[1])] - a, t.positions[std::size_t(f[2])] - a);
-        for (const auto v : f) t.normals[std::size_t(v)] += n;
-    }
-    for (auto& n : t.normals) {
+    const MeshRefinement& r = *c.refinement;
+    face_normals_into(t.normals, t.positions, r.base_faces.values(), r.base_vertices);
+    VertexId added(r.base_vertices);
+    for (std::size_t i = 0; i < r.from.size(); ++i, ++added) {
+        const auto& from = r.from[i];
+        const glm::dvec3& w = r.weights[i];
+        t.positions[added] = w.x * t.positions[from[0]] + w.y * t.positions[from[1]] + w.z * t.positions[from[2]];
+        const glm::dvec3 n = w.x * t.normals[from[0]] + w.y * t.normals[from[1]] + w.z * t.normals[from[2]];
         const double len = glm::length(n);
-        n = len > 0.0 ? n / len : glm::dvec3(0.0, 0.0, 1.0);
+        t.normals[added] = len > 0.0 ? n / len : t.normals[from[0]];
     }
     return t;
 }

@@ -11,6 +11,7 @@
 
 #include <glm/vec3.hpp>
 
+#include "snaxels/mesh/elements.h"
 #include "snaxels/mesh/mesh.h"
 #include "snaxels/mesh/quantities.h"
 
@@ -23,13 +24,15 @@ struct CurvatureField;  // core/snaxel/curvature.h
 /// A mesh's connectivity: fixed for the mesh's life, so one copy, never
 /// changed once built, is shared by every pose, frame and thread.
 struct MeshConnectivity {
-    std::vector<std::array<std::int32_t, 2>> edge_vertices; ///< #E, (from, to) of halfedge 0
-    std::vector<std::array<std::int32_t, 2>> edge_faces;    ///< #E, MeshTopology::kNone on a boundary side
-    std::vector<std::array<std::int32_t, 3>> face_vertices; ///< #F, counter-clockwise
-    std::vector<std::array<std::int32_t, 3>> face_edges;    ///< #F, edge k joins corners k, k+1
+    EdgeData<std::array<VertexId, 2>> edge_vertices; ///< (from, to) of halfedge 0
+    EdgeData<std::array<FaceId, 2>> edge_faces;      ///< MeshTopology::kNone on a boundary side
+    FaceData<std::array<VertexId, 3>> face_vertices; ///< counter-clockwise
+    FaceData<std::array<EdgeId, 3>> face_edges;      ///< edge k joins corners k, k+1
     /// CSR: neighbours of v are ring[ring_start[v] .. ring_start[v+1]), with
     /// the edge to each in ring_edge, in the circulator's circular order.
-    std::vector<std::int32_t> ring_start, ring, ring_edge;
+    std::vector<std::int32_t> ring_start;
+    std::vector<VertexId> ring;
+    std::vector<EdgeId> ring_edge;
     /// The mean edge length in the pose the mesh was loaded in: the scale of
     /// the engine's tolerances, kept as the mesh moves so they stay the same
     /// from frame to frame.
@@ -46,8 +49,8 @@ struct MeshConnectivity {
 /// Where a mesh's vertices are in one frame: a value (build_topology makes
 /// the loaded one, make_pose and FrameDriver one per frame).
 struct MeshPose {
-    std::vector<glm::dvec3> positions; ///< #V
-    std::vector<glm::dvec3> normals;   ///< #V, unit
+    VertexData<glm::dvec3> positions;
+    VertexData<glm::dvec3> normals; ///< unit
 
     /// What is derived from this pose (curvature, parabolic curves, ...),
     /// computed on first use and kept while the pose lives; a copy of a
@@ -57,8 +60,8 @@ struct MeshPose {
 
 /// A neighbour of a vertex and the edge to it.
 struct RingStep {
-    std::int32_t vertex;
-    std::int32_t edge;
+    VertexId vertex;
+    EdgeId edge;
 };
 
 /// The (neighbour, edge) pairs around a vertex (MeshTopology::ring_of).
@@ -66,16 +69,17 @@ class RingRange {
   public:
     class iterator {
       public:
-        iterator(const std::int32_t* v, const std::int32_t* e) : v_(v), e_(e) {}
+        iterator(const VertexId* v, const EdgeId* e) : v_(v), e_(e) {}
         RingStep operator*() const { return {*v_, *e_}; }
         iterator& operator++() { return ++v_, ++e_, *this; }
         bool operator!=(const iterator& o) const { return v_ != o.v_; }
 
       private:
-        const std::int32_t *v_, *e_;
+        const VertexId* v_;
+        const EdgeId* e_;
     };
-    RingRange(const std::int32_t* ring, const std::int32_t* edges, std::size_t begin, std::size_t end)
-        : begin_(ring + begin, edges + begin), end_(ring + end, edges + end) {}
+    RingRange(std::span<const VertexId> ring, std::span<const EdgeId> edges)
+        : begin_(ring.data(), edges.data()), end_(ring.data() + ring.size(), edges.data() + edges.size()) {}
     iterator begin() const { return begin_; }
     iterator end() const { return end_; }
 
@@ -85,7 +89,7 @@ class RingRange {
 
 /// A face at a vertex and the vertex's corner in it (0-2).
 struct FaceCorner {
-    std::int32_t face;
+    FaceId face;
     int corner;
 };
 
@@ -106,14 +110,14 @@ class FacesAround {
         const FacesAround* range_;
         std::size_t k_;
     };
-    FacesAround(const MeshTopology& topology, std::int32_t v);
+    FacesAround(const MeshTopology& topology, VertexId v);
     iterator begin() const { return iterator(*this, 0); }
     iterator end() const { return iterator(*this, edges_.size()); }
 
   private:
     const MeshTopology* topology_;
-    std::int32_t v_;
-    std::span<const std::int32_t> edges_; ///< the edges at v_
+    VertexId v_;
+    std::span<const EdgeId> edges_; ///< the edges at v_
 };
 
 /// One pose of one connectivity: what the engine, the tracker, the ray scene
@@ -122,7 +126,8 @@ class FacesAround {
 /// moving mesh is the same connectivity in a new pose (posed()).
 class MeshTopology {
   public:
-    static constexpr std::int32_t kNone = -1;
+    /// "No element": compares equal to the invalid id of every kind.
+    static constexpr NoElement kNone{};
 
     MeshTopology(); ///< no mesh
     MeshTopology(std::shared_ptr<const MeshConnectivity> connectivity, std::shared_ptr<const MeshPose> pose);
@@ -136,15 +141,15 @@ class MeshTopology {
     /// Whether @p other is a pose of the same connectivity (the same object).
     bool same_connectivity(const MeshTopology& other) const { return connectivity_ == other.connectivity_; }
 
-    // Views into the shared parts: valid while this topology (or a copy of
-    // it) lives, so name a topology a function returns before looping over
-    // one of its views.
-    std::span<const glm::dvec3> positions() const { return positions_; } ///< #V
-    std::span<const glm::dvec3> normals() const { return normals_; }     ///< #V, unit
-    std::span<const std::array<std::int32_t, 2>> edge_vertices() const { return edge_vertices_; }
-    std::span<const std::array<std::int32_t, 2>> edge_faces() const { return edge_faces_; }
-    std::span<const std::array<std::int32_t, 3>> face_vertices() const { return face_vertices_; }
-    std::span<const std::array<std::int32_t, 3>> face_edges() const { return face_edges_; }
+    // Views into the shared parts, indexed by element id: valid while this
+    // topology (or a copy of it) lives, so name a topology a function
+    // returns before looping over one of its views.
+    ElementSpan<VertexTag, const glm::dvec3> positions() const { return positions_; }
+    ElementSpan<VertexTag, const glm::dvec3> normals() const { return normals_; } ///< unit
+    ElementSpan<EdgeTag, const std::array<VertexId, 2>> edge_vertices() const { return edge_vertices_; }
+    ElementSpan<EdgeTag, const std::array<FaceId, 2>> edge_faces() const { return edge_faces_; }
+    ElementSpan<FaceTag, const std::array<VertexId, 3>> face_vertices() const { return face_vertices_; }
+    ElementSpan<FaceTag, const std::array<EdgeId, 3>> face_edges() const { return face_edges_; }
     double mean_edge_length() const { return connectivity_->mean_edge_length; }
     const std::shared_ptr<const MeshRefinement>& refinement() const { return connectivity_->refinement; }
 
@@ -153,67 +158,74 @@ class MeshTopology {
     std::size_t n_base_vertices() const { return connectivity_->n_base_vertices(); }
     std::size_t n_edges() const { return edge_vertices_.size(); }
     std::size_t n_faces() const { return face_vertices_.size(); }
-    bool is_boundary_edge(std::int32_t e) const {
-        return edge_faces_[std::size_t(e)][0] == kNone || edge_faces_[std::size_t(e)][1] == kNone;
-    }
+    std::size_t n_corners() const { return 3 * face_vertices_.size(); }
+    ElementRange<VertexTag> vertices() const { return positions_.ids(); }
+    ElementRange<EdgeTag> edges() const { return edge_vertices_.ids(); }
+    ElementRange<FaceTag> faces() const { return face_vertices_.ids(); }
+    ElementRange<CornerTag> corners() const { return ElementRange<CornerTag>(n_corners()); }
+
+    bool is_boundary_edge(EdgeId e) const { return edge_faces_[e][0] == kNone || edge_faces_[e][1] == kNone; }
     /// The edge's other end.
-    std::int32_t opposite(std::int32_t e, std::int32_t v) const {
-        const auto& ends = edge_vertices_[std::size_t(e)];
+    VertexId opposite(EdgeId e, VertexId v) const {
+        const auto& ends = edge_vertices_[e];
         return ends[0] == v ? ends[1] : ends[0];
     }
+    /// The vertex at corner @p c.
+    VertexId corner_vertex(CornerId c) const { return face_vertices_[face_of(c)][std::size_t(corner_place(c))]; }
 
     // Circulators: what lies around a vertex, in the ring's circular order.
     // Every stage walks a vertex's neighbourhood through these.
 
     /// The number of neighbours of @p v.
-    std::int32_t degree(std::int32_t v) const { return ring_start_[std::size_t(v) + 1] - ring_start_[std::size_t(v)]; }
+    int degree(VertexId v) const { return ring_start_[v.index() + 1] - ring_start_[v.index()]; }
     /// The neighbours of @p v.
-    std::span<const std::int32_t> neighbours(std::int32_t v) const { return ring_.subspan(ring_begin(v), std::size_t(degree(v))); }
+    std::span<const VertexId> neighbours(VertexId v) const { return ring_.subspan(ring_begin(v), ring_size(v)); }
     /// The edges at @p v, to each neighbour in turn.
-    std::span<const std::int32_t> vertex_edges(std::int32_t v) const {
-        return ring_edge_.subspan(ring_begin(v), std::size_t(degree(v)));
-    }
+    std::span<const EdgeId> vertex_edges(VertexId v) const { return ring_edge_.subspan(ring_begin(v), ring_size(v)); }
     /// (neighbour, edge to it) of @p v.
-    RingRange ring_of(std::int32_t v) const { return RingRange(ring_.data(), ring_edge_.data(), ring_begin(v), ring_begin(v) + std::size_t(degree(v))); }
+    RingRange ring_of(VertexId v) const { return RingRange(neighbours(v), vertex_edges(v)); }
     /// Each face at @p v once, with v's corner in it: the face in which the
     /// edge to each neighbour leaves v (the neighbour follows v in the
     /// face's corner order), in ring order. A boundary vertex's last
     /// neighbour has no such face.
-    FacesAround faces_around(std::int32_t v) const { return FacesAround(*this, v); }
+    FacesAround faces_around(VertexId v) const { return FacesAround(*this, v); }
     /// Calls @p fn(face) for the faces on both sides of each edge at @p v,
     /// in ring order: each face twice (a face's share of v's area is then
     /// half its share of each edge).
-    template <class Fn> void for_each_face_beside_edges(std::int32_t v, Fn&& fn) const {
-        for (const std::int32_t e : vertex_edges(v))
-            for (const std::int32_t f : edge_faces_[std::size_t(e)])
+    template <class Fn> void for_each_face_beside_edges(VertexId v, Fn&& fn) const {
+        for (const EdgeId e : vertex_edges(v))
+            for (const FaceId f : edge_faces_[e])
                 if (f != kNone) fn(f);
     }
     /// The face in which the edge @p e leaves @p v (the face on its left
     /// walking from v), or kNone on a boundary.
-    std::int32_t face_leaving(std::int32_t e, std::int32_t v) const {
-        return edge_faces_[std::size_t(e)][edge_vertices_[std::size_t(e)][0] == v ? 0 : 1];
-    }
+    FaceId face_leaving(EdgeId e, VertexId v) const { return edge_faces_[e][edge_vertices_[e][0] == v ? 0 : 1]; }
     /// @p v's corner (0-2) in face @p f, or 3 when v is not one of its corners.
-    int corner_of(std::int32_t f, std::int32_t v) const {
-        const auto& fv = face_vertices_[std::size_t(f)];
+    int corner_of(FaceId f, VertexId v) const {
+        const auto& fv = face_vertices_[f];
         return fv[0] == v ? 0 : fv[1] == v ? 1 : fv[2] == v ? 2 : 3;
     }
 
   private:
     // The rings are in CSR form (MeshConnectivity::ring_start), read through
     // the circulators above.
-    std::size_t ring_begin(std::int32_t v) const { return std::size_t(ring_start_[std::size_t(v)]); }
+    std::size_t ring_begin(VertexId v) const { return std::size_t(ring_start_[v.index()]); }
+    std::size_t ring_size(VertexId v) const { return std::size_t(degree(v)); }
 
     std::shared_ptr<const MeshConnectivity> connectivity_;
     std::shared_ptr<const MeshPose> pose_;
     // Views of the two parts, so the engine's loops read them as directly as vectors.
-    std::span<const glm::dvec3> positions_, normals_;
-    std::span<const std::array<std::int32_t, 2>> edge_vertices_, edge_faces_;
-    std::span<const std::array<std::int32_t, 3>> face_vertices_, face_edges_;
-    std::span<const std::int32_t> ring_start_, ring_, ring_edge_;
+    ElementSpan<VertexTag, const glm::dvec3> positions_, normals_;
+    ElementSpan<EdgeTag, const std::array<VertexId, 2>> edge_vertices_;
+    ElementSpan<EdgeTag, const std::array<FaceId, 2>> edge_faces_;
+    ElementSpan<FaceTag, const std::array<VertexId, 3>> face_vertices_;
+    ElementSpan<FaceTag, const std::array<EdgeId, 3>> face_edges_;
+    std::span<const std::int32_t> ring_start_;
+    std::span<const VertexId> ring_;
+    std::span<const EdgeId> ring_edge_;
 };
 
-inline FacesAround::FacesAround(const MeshTopology& topology, std::int32_t v)
+inline FacesAround::FacesAround(const MeshTopology& topology, VertexId v)
     : topology_(&topology), v_(v), edges_(topology.vertex_edges(v)) {}
 
 inline void FacesAround::iterator::skip() {
@@ -223,7 +235,7 @@ inline void FacesAround::iterator::skip() {
 }
 
 inline FaceCorner FacesAround::iterator::operator*() const {
-    const std::int32_t f = range_->topology_->face_leaving(range_->edges_[k_], range_->v_);
+    const FaceId f = range_->topology_->face_leaving(range_->edges_[k_], range_->v_);
     return {f, range_->topology_->corner_of(f, range_->v_)};
 }
 
@@ -236,20 +248,20 @@ MeshTopology build_topology(const Mesh& mesh, std::shared_ptr<const MeshRefineme
 /// @p seeds accepts and no set holds yet, over the edges (v, w) that
 /// @p joins accepts. @p set_of[v] becomes v's set, or -1; returns the count.
 template <class Seeds, class Joins>
-std::int32_t grow_vertex_sets(const MeshTopology& topo, std::vector<std::int32_t>& set_of, Seeds&& seeds, Joins&& joins) {
+std::int32_t grow_vertex_sets(const MeshTopology& topo, VertexData<std::int32_t>& set_of, Seeds&& seeds, Joins&& joins) {
     set_of.assign(topo.n_vertices(), -1);
-    std::vector<std::int32_t> stack;
+    std::vector<VertexId> stack;
     std::int32_t count = 0;
-    for (std::int32_t seed = 0; seed < std::int32_t(topo.n_vertices()); ++seed) {
-        if (set_of[std::size_t(seed)] >= 0 || !seeds(seed)) continue;
-        set_of[std::size_t(seed)] = count;
+    for (const VertexId seed : topo.vertices()) {
+        if (set_of[seed] >= 0 || !seeds(seed)) continue;
+        set_of[seed] = count;
         stack.push_back(seed);
         while (!stack.empty()) {
-            const std::int32_t v = stack.back();
+            const VertexId v = stack.back();
             stack.pop_back();
-            for (const std::int32_t w : topo.neighbours(v)) {
-                if (set_of[std::size_t(w)] < 0 && joins(v, w)) {
-                    set_of[std::size_t(w)] = count;
+            for (const VertexId w : topo.neighbours(v)) {
+                if (set_of[w] < 0 && joins(v, w)) {
+                    set_of[w] = count;
                     stack.push_back(w);
                 }
             }

@@ -150,7 +150,7 @@ void subtract_nearer_regions(PlanarMap& map) {
         if (keep[i]) index[i] = std::int32_t(kept.size()), kept.push_back(std::move(map.regions[i]));
     map.regions = std::move(kept);
     for (std::int32_t& r : map.vertex_region)
-        if (r >= 0) r = index[std::size_t(r)];
+        if (r >= 0) r = index[r];
 }
 
 } // namespace snaxels

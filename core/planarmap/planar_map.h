@@ -19,7 +19,7 @@ const char* planar_map_kind_name(PlanarMapKind kind);
 
 struct PlanarMap {
     std::vector<MapRegion> regions;
-    std::vector<std::int32_t> vertex_region; ///< snaxel map: each vertex's region (-1: none); empty for post
+    VertexData<std::int32_t> vertex_region; ///< snaxel map: each vertex's region (-1: none); empty for post
 };
 
 /// The map of @p kind from @p contours, which must hold the visual contour

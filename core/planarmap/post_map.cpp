@@ -21,11 +21,11 @@ using clip::to_paths;
 // The region of the visual contour every vertex lies in: the engine's own
 // labels, or (for tracked contours, which carry none) the connected sets of
 // equal sign of f.
-std::vector<std::int32_t> patch_labels(const MeshTopology& topo, const ContourResult& visual) {
+VertexData<std::int32_t> patch_labels(const MeshTopology& topo, const ContourResult& visual) {
     if (visual.vertex_region.size() == topo.n_vertices()) return visual.vertex_region;
-    std::vector<std::int32_t> label;
-    grow_vertex_sets(topo, label, [](std::int32_t) { return true; }, [&](std::int32_t v, std::int32_t w) {
-        return (visual.vertex_f[std::size_t(v)] >= 0.0) == (visual.vertex_f[std::size_t(w)] >= 0.0);
+    VertexData<std::int32_t> label;
+    grow_vertex_sets(topo, label, [](VertexId) { return true; }, [&](VertexId v, VertexId w) {
+        return (visual.vertex_f[v] >= 0.0) == (visual.vertex_f[w] >= 0.0);
     });
     return label;
 }
@@ -33,11 +33,11 @@ std::vector<std::int32_t> patch_labels(const MeshTopology& topo, const ContourRe
 // The projected loops of each positive region of `result`, grouped by the
 // visual patch the region lies in (its vertices face the viewer).
 std::map<std::int32_t, Paths> regions_by_patch(const SnaxelEngine& engine, const ContourResult& result,
-                                                const std::vector<std::int32_t>& patch_of, const ImageProjection& projection) {
+                                                const VertexData<std::int32_t>& patch_of, const ImageProjection& projection) {
     std::map<std::int32_t, std::vector<std::vector<glm::dvec2>>> loops;
     for (const FrontLoop& loop : result.fronts.loops) {
         const Snaxel& first = result.fronts.snaxels[loop.first];
-        const std::int32_t patch = patch_of[std::size_t(first.inside)];
+        const std::int32_t patch = patch_of[first.inside];
         std::vector<glm::dvec2> poly;
         result.fronts.for_each_in_loop(loop, [&](std::int32_t s) { poly.push_back(projection.project(engine.position(result.fronts.snaxels[s]))); });
         loops[patch].push_back(std::move(poly));
@@ -121,19 +121,27 @@ class PostMapBuilder {
         const double a = area(paths);
         if (a > 0.0) regions_.push_back({classes_.region_class(cls), classes_.level(cls), depth, from_paths(paths), a});
     }
-    bool facing(const std::array<std::int32_t, 3>& f) const {
+    bool facing(const std::array<VertexId, 3>& f) const {
         const glm::dvec3 &a = topo_.positions()[f[0]], &b = topo_.positions()[f[1]], &c = topo_.positions()[f[2]];
         return glm::dot(glm::cross(b - a, c - a), camera_.to_viewer((a + b + c) / 3.0)) > 0.0;
     }
-    bool corners_face_viewer(const std::array<std::int32_t, 3>& f) const {
-        return visual_.vertex_f[std::size_t(f[0])] >= 0.0 && visual_.vertex_f[std::size_t(f[1])] >= 0.0 &&
-               visual_.vertex_f[std::size_t(f[2])] >= 0.0;
+    bool corners_face_viewer(const std::array<VertexId, 3>& f) const {
+        return visual_.vertex_f[f[0]] >= 0.0 && visual_.vertex_f[f[1]] >= 0.0 && visual_.vertex_f[f[2]] >= 0.0;
     }
     /// The mean N.L of a face's corners.
-    double face_nl(const std::array<std::int32_t, 3>& f) const {
+    double face_nl(const std::array<VertexId, 3>& f) const {
         double nl = 0.0;
         for (const auto v : f) nl += glm::dot(topo_.normals()[v], light_.to_light(topo_.positions()[v]));
         return nl / 3.0;
+    }
+
+    // Outlines are walked between point ids: a vertex's id is its index, a
+    // cut point on an edge follows the vertices (one per edge and function),
+    // and cut points inside faces follow those.
+    static std::int64_t point_of(VertexId v) { return v.index(); }
+    static VertexId vertex_at(std::int64_t point) { return VertexId(std::int32_t(point)); }
+    std::int64_t edge_point_of(EdgeId e, std::size_t function) const {
+        return std::int64_t(topo_.n_vertices()) + std::int64_t(e.index()) * std::int64_t(value_.size()) + std::int64_t(function);
     }
 
     // ---- which faces show -------------------------------------------------
@@ -147,9 +155,9 @@ class PostMapBuilder {
         const VisibilitySampler sampler(rays_, camera_);
         shows_.assign(topo_.n_faces(), kHidden);
         face_class_.assign(topo_.n_faces(), 1);
-        bool open = false;
-        for (std::size_t e = 0; e < topo_.n_edges() && !open; ++e) open = topo_.is_boundary_edge(std::int32_t(e));
-        parallel_for(topo_.n_faces(), [&](std::size_t i) {
+        const auto edges = topo_.edges();
+        const bool open = std::any_of(edges.begin(), edges.end(), [&](EdgeId e) { return topo_.is_boundary_edge(e); });
+        parallel_for(topo_.faces(), [&](FaceId i) {
             const auto& f = topo_.face_vertices()[i];
             const glm::dvec3 &a = topo_.positions()[f[0]], &b = topo_.positions()[f[1]], &c = topo_.positions()[f[2]];
             const glm::dvec3 n = glm::normalize(glm::cross(b - a, c - a));
@@ -158,7 +166,7 @@ class PostMapBuilder {
                 // their normals): the patch folds over itself there.
                 // Turned away, seen from behind through a hole of an open mesh:
                 // classed by N.L alone, as the snaxel map does.
-                if (!open || rays_.occluded(sampler.face_ray(std::int32_t(i), (a + b + c) / 3.0, -n))) {
+                if (!open || rays_.occluded(sampler.face_ray(i, (a + b + c) / 3.0, -n))) {
                     if (corners_face_viewer(f)) shows_[i] = kFold;
                     return;
                 }
@@ -166,7 +174,7 @@ class PostMapBuilder {
                 face_class_[i] = classes_.from_nl(face_nl(f));
                 return;
             }
-            if (rays_.occluded(sampler.face_ray(std::int32_t(i), (a + b + c) / 3.0, n))) {
+            if (rays_.occluded(sampler.face_ray(i, (a + b + c) / 3.0, n))) {
                 shows_[i] = corners_face_viewer(f) ? kUnder : kHidden;
                 return;
             }
@@ -178,13 +186,13 @@ class PostMapBuilder {
     /// they wind in the image), as its outline.
     template <class Take> Paths outline_of(Take&& take) const {
         Outline outline;
-        for (std::size_t i = 0; i < topo_.n_faces(); ++i) {
+        for (const FaceId i : topo_.faces()) {
             if (!take(i)) continue;
             auto f = topo_.face_vertices()[i];
             if (shows_[i] == kBackShown) std::swap(f[1], f[2]);
-            for (int k = 0; k < 3; ++k) outline.walk(f[std::size_t(k)], f[std::size_t((k + 1) % 3)]);
+            for (std::size_t k = 0; k < 3; ++k) outline.walk(point_of(f[k]), point_of(f[(k + 1) % 3]));
         }
-        return outline.paths([&](std::int64_t v) { return projection_.project(topo_.positions()[std::size_t(v)]); });
+        return outline.paths([&](std::int64_t point) { return projection_.project(topo_.positions()[vertex_at(point)]); });
     }
 
     // ---- the shown faces cut into classes -----------------------------------
@@ -200,17 +208,16 @@ class PostMapBuilder {
     /// clamp (faces past the contour of interpolated normals can show): N.L
     /// for the shadow, N.L - k for an isophote, V.R - k for a gleam.
     void shading_values() {
-        std::vector<double> nl(topo_.n_vertices()), rv(topo_.n_vertices());
-        for (std::size_t v = 0; v < topo_.n_vertices(); ++v) {
+        VertexData<double> nl(topo_.n_vertices()), rv(topo_.n_vertices());
+        for (const VertexId v : topo_.vertices()) {
             const glm::dvec3& n = topo_.normals()[v];
             const glm::dvec3 l = light_.to_light(topo_.positions()[v]);
             nl[v] = glm::dot(n, l);
             rv[v] = glm::dot(camera_.to_viewer(topo_.positions()[v]), 2.0 * nl[v] * n - l);
         }
-        auto minus = [](const std::vector<double>& x, double k) {
-            std::vector<double> out(x.size());
-            for (std::size_t i = 0; i < x.size(); ++i) out[i] = x[i] - k;
-            return out;
+        auto minus = [](VertexData<double> x, double k) {
+            for (double& value : x) value -= k;
+            return x;
         };
         if (in_.shadow) value_.push_back(nl);
         for (const ContourResult* r : in_.isophotes) value_.push_back(minus(nl, r->spec.k));
@@ -238,20 +245,20 @@ class PostMapBuilder {
         shading_values();
         std::unordered_map<std::int64_t, glm::dvec3> point;
         const auto K = std::int64_t(value_.size());
-        std::int64_t inner = std::int64_t(topo_.n_vertices()) + std::int64_t(topo_.n_edges()) * K; // ids of cut points inside faces
+        std::int64_t inner = edge_point_of(EdgeId(topo_.n_edges()), 0); // ids of cut points inside faces
         std::vector<Outline> steps(static_cast<std::size_t>(2 * count_));
         auto add_piece = [&](int cls, const std::vector<Corner>& piece) {
             for (std::size_t k = 0; k < piece.size(); ++k) {
                 point.emplace(piece[k].id, piece[k].p);
-                steps[std::size_t(cls)].walk(piece[k].id, piece[(k + 1) % piece.size()].id);
+                steps[cls].walk(piece[k].id, piece[(k + 1) % piece.size()].id);
             }
         };
-        for (std::size_t i = 0; i < topo_.n_faces(); ++i) {
+        for (const FaceId i : topo_.faces()) {
             if (shows_[i] == kBackShown) {
                 auto f = topo_.face_vertices()[i];
                 std::swap(f[1], f[2]); // seen from behind: walked the way it winds in the image
                 std::vector<Corner> piece;
-                for (const auto v : f) piece.push_back({v, -1, topo_.positions()[std::size_t(v)], {}});
+                for (const VertexId v : f) piece.push_back({point_of(v), -1, topo_.positions()[v], {}});
                 add_piece(count_ + face_class_[i], piece);
                 continue;
             }
@@ -259,7 +266,7 @@ class PostMapBuilder {
             for (const auto& part : cut_face(i, inner)) {
                 std::vector<double> mid(std::size_t(K), 0.0);
                 for (const Corner& c : part)
-                    for (std::int64_t m = 0; m < K; ++m) mid[std::size_t(m)] += c.f[std::size_t(m)] / double(part.size());
+                    for (std::int64_t m = 0; m < K; ++m) mid[m] += c.f[m] / double(part.size());
                 add_piece(class_at(mid), part);
             }
         }
@@ -267,26 +274,27 @@ class PostMapBuilder {
         for (std::size_t cls = 0; cls < steps.size(); ++cls)
             outlines[cls] = steps[cls].paths([&](std::int64_t id) { return projection_.project(point.at(id)); });
         for (int cls = 0; cls < count_; ++cls)
-            front_.insert(front_.end(), outlines[std::size_t(cls)].begin(), outlines[std::size_t(cls)].end());
+            front_.insert(front_.end(), outlines[cls].begin(), outlines[cls].end());
         front_ = clip::op(front_, {}, ClipperLib::ctUnion);
         shown_class_.resize(std::size_t(count_));
         for (int cls = 0; cls < count_; ++cls) {
-            const Paths& behind = outlines[std::size_t(count_ + cls)];
-            shown_class_[std::size_t(cls)] =
-                behind.empty() ? outlines[std::size_t(cls)]
-                               : clip::op(outlines[std::size_t(cls)], clip::op(behind, front_, ClipperLib::ctDifference),
+            const Paths& behind = outlines[count_ + cls];
+            shown_class_[cls] =
+                behind.empty() ? outlines[cls]
+                               : clip::op(outlines[cls], clip::op(behind, front_, ClipperLib::ctDifference),
                                           ClipperLib::ctUnion);
         }
     }
 
     /// Face @p i cut where each function crosses zero; @p inner numbers the
     /// cut points inside faces.
-    std::vector<std::vector<Corner>> cut_face(std::size_t i, std::int64_t& inner) const {
+    std::vector<std::vector<Corner>> cut_face(FaceId i, std::int64_t& inner) const {
         const auto& fv = topo_.face_vertices()[i];
         std::vector<Corner> poly;
         for (int k = 0; k < 3; ++k) {
-            Corner c{fv[std::size_t(k)], k, topo_.positions()[std::size_t(fv[std::size_t(k)])], {}};
-            for (const auto& fn : value_) c.f.push_back(fn[std::size_t(fv[std::size_t(k)])]);
+            const VertexId v = fv[k];
+            Corner c{point_of(v), k, topo_.positions()[v], {}};
+            for (const auto& fn : value_) c.f.push_back(fn[v]);
             poly.push_back(std::move(c));
         }
         std::vector<std::size_t> functions(value_.size());
@@ -296,7 +304,7 @@ class PostMapBuilder {
     }
 
     /// A part of face @p i split where function @p j crosses zero.
-    std::pair<std::vector<Corner>, std::vector<Corner>> split_part(const std::vector<Corner>& part, std::size_t i,
+    std::pair<std::vector<Corner>, std::vector<Corner>> split_part(const std::vector<Corner>& part, FaceId i,
                                                                    std::size_t j, std::int64_t& inner) const {
         const auto& fe = topo_.face_edges()[i];
         const std::size_t K = value_.size();
@@ -306,13 +314,13 @@ class PostMapBuilder {
             q.f.resize(K);
             if (a.along >= 0) {
                 // On a mesh edge: the edge's own root, the same for both faces.
-                const std::int32_t e = fe[std::size_t(a.along)];
-                const std::int32_t u = topo_.edge_vertices()[e][0], w = topo_.edge_vertices()[e][1];
-                const double fu = value_[j][std::size_t(u)], fw = value_[j][std::size_t(w)];
+                const EdgeId e = fe[a.along];
+                const auto [u, w] = topo_.edge_vertices()[e];
+                const double fu = value_[j][u], fw = value_[j][w];
                 const double t = fu == fw ? 0.5 : std::clamp(fu / (fu - fw), 0.0, 1.0);
-                q.id = std::int64_t(topo_.n_vertices()) + std::int64_t(e) * std::int64_t(K) + std::int64_t(j);
-                q.p = glm::mix(topo_.positions()[std::size_t(u)], topo_.positions()[std::size_t(w)], t);
-                for (std::size_t m = 0; m < K; ++m) q.f[m] = glm::mix(value_[m][std::size_t(u)], value_[m][std::size_t(w)], t);
+                q.id = edge_point_of(e, j);
+                q.p = glm::mix(topo_.positions()[u], topo_.positions()[w], t);
+                for (std::size_t m = 0; m < K; ++m) q.f[m] = glm::mix(value_[m][u], value_[m][w], t);
             } else {
                 const double fa = a.f[j], fb = b.f[j];
                 const double t = std::clamp(fa / (fa - fb), 0.0, 1.0);
@@ -337,8 +345,8 @@ class PostMapBuilder {
     /// where faces turn away inside it, is treated as hidden there too: its
     /// projected classes may come from either side of the fold.)
     void find_replaced() {
-        const Paths under = outline_of([&](std::size_t i) { return shows_[i] == kUnder || shows_[i] == kFold; });
-        const Paths back = outline_of([&](std::size_t i) { return shows_[i] == kBackShown; });
+        const Paths under = outline_of([&](FaceId i) { return shows_[i] == kUnder || shows_[i] == kFold; });
+        const Paths back = outline_of([&](FaceId i) { return shows_[i] == kBackShown; });
         if (under.empty() && back.empty()) return;
         // A hole is where faces seen from behind show and no face turned to
         // the viewer does (at the contour, hidden sides graze it).
@@ -359,7 +367,7 @@ class PostMapBuilder {
         auto mark_open = [&](const ContourResult& r, char how) {
             for (const FrontLoop& loop : r.fronts.loops)
                 if (!loop.closed) {
-                    char& o = open_patch_[patch_of_[std::size_t(r.fronts.snaxels[loop.first].inside)]];
+                    char& o = open_patch_[patch_of_[r.fronts.snaxels[loop.first].inside]];
                     o = std::max(o, how);
                 }
         };
@@ -371,7 +379,7 @@ class PostMapBuilder {
             double depth = 0.0;
             std::size_t n = 0;
             for (const FrontLoop& loop : visual_.fronts.loops) {
-                if (patch_of_[std::size_t(visual_.fronts.snaxels[loop.first].inside)] != patch) continue;
+                if (patch_of_[visual_.fronts.snaxels[loop.first].inside] != patch) continue;
                 visual_.fronts.for_each_in_loop(loop, [&](std::int32_t s) {
                     const glm::dvec3 p = engine_.position(visual_.fronts.snaxels[s]);
                     depth += camera_.orthographic() ? glm::dot(p, camera_.forward()) : glm::length(p - camera_.eye);
@@ -401,10 +409,9 @@ class PostMapBuilder {
             const std::int32_t patch = entry.second; // a variable, so the lambda below may capture it
             const auto found = open_patch_.find(patch);
             const char how = found == open_patch_.end() ? 0 : found->second;
-            const Paths shape = how == 2 ? outline_of([&](std::size_t i) {
+            const Paths shape = how == 2 ? outline_of([&](FaceId i) {
                 const auto& f = topo_.face_vertices()[i];
-                return facing(f) && patch_of_[std::size_t(f[0])] == patch && patch_of_[std::size_t(f[1])] == patch &&
-                       patch_of_[std::size_t(f[2])] == patch;
+                return facing(f) && patch_of_[f[0]] == patch && patch_of_[f[1]] == patch && patch_of_[f[2]] == patch;
             }) : patches_.at(patch);
             const Paths visible = clip::op(shape, covered_, ClipperLib::ctDifference);
             covered_ = clip::op(covered_, shape, ClipperLib::ctUnion);
@@ -429,7 +436,7 @@ class PostMapBuilder {
         const Paths glints = glint_levels.empty() ? Paths{} : glint_levels.front();
         std::vector<Paths> parts(static_cast<std::size_t>(count_)); // per class
         auto emit = [&](int cls, const Paths& paths) {
-            parts[std::size_t(cls)] = glints.empty() || cls >= highlight_ ? paths : clip::op(paths, glints, ClipperLib::ctDifference);
+            parts[cls] = glints.empty() || cls >= highlight_ ? paths : clip::op(paths, glints, ClipperLib::ctDifference);
         };
         emit(0, clip::op(visible, levels[0], ClipperLib::ctDifference));
         for (std::size_t i = 0; i < levels.size(); ++i) {
@@ -444,10 +451,10 @@ class PostMapBuilder {
         // shown faces decide the class.
         const Paths here = how ? visible : replaced_.empty() ? Paths{} : clip::op(replaced_, visible, ClipperLib::ctIntersection);
         for (int cls = 0; cls < count_; ++cls) {
-            Paths part = std::move(parts[std::size_t(cls)]);
+            Paths part = std::move(parts[cls]);
             if (!here.empty()) {
                 part = clip::op(part, here, ClipperLib::ctDifference);
-                const Paths seen = clip::op(shown_class_[std::size_t(cls)], here, ClipperLib::ctIntersection);
+                const Paths seen = clip::op(shown_class_[cls], here, ClipperLib::ctIntersection);
                 if (!seen.empty()) part = clip::op(part, seen, ClipperLib::ctUnion);
             }
             add_region(cls, part, depth_);
@@ -460,7 +467,7 @@ class PostMapBuilder {
     /// classes of their parts.
     void fill_uncovered_shown() {
         for (int cls = count_ - 1; cls >= 0; --cls) {
-            const Paths& faces = shown_class_[std::size_t(cls)];
+            const Paths& faces = shown_class_[cls];
             if (faces.empty()) continue;
             const Paths rest = clip::op(faces, covered_, ClipperLib::ctDifference);
             covered_ = clip::op(covered_, faces, ClipperLib::ctUnion);
@@ -481,10 +488,10 @@ class PostMapBuilder {
     /// within two rings of the contour or of a fold; what of it no patch
     /// covers joins the map, classed by the face's own N.L.
     void fill_silhouette_band() {
-        const std::vector<char> fold = near_folds();
+        const VertexData<char> fold = near_folds();
         const int shading = 2 + bands_n_; // the band's classes: shadow, lit, bands
-        std::vector<int> nl_class(topo_.n_faces(), -1);
-        for (std::size_t i = 0; i < topo_.n_faces(); ++i) {
+        FaceData<int> nl_class(topo_.n_faces(), -1);
+        for (const FaceId i : topo_.faces()) {
             const auto& f = topo_.face_vertices()[i];
             if (corners_face_viewer(f) && !fold[f[0]] && !fold[f[1]] && !fold[f[2]]) continue;
             if (!facing(f)) continue; // turned away: hidden on closed meshes
@@ -498,7 +505,7 @@ class PostMapBuilder {
             nl_class[i] = cls;
         }
         for (int cls = shading - 1; cls >= 0; --cls) { // brighter classes first
-            const Paths united = outline_of([&](std::size_t i) { return nl_class[i] == cls; });
+            const Paths united = outline_of([&](FaceId i) { return nl_class[i] == cls; });
             if (united.empty()) continue;
             const Paths rest = clip::op(united, covered_, ClipperLib::ctDifference);
             covered_ = clip::op(covered_, united, ClipperLib::ctUnion);
@@ -509,10 +516,10 @@ class PostMapBuilder {
     /// Per vertex: within two rings of the contour or of a fold. Seeds: both
     /// ends of the contour's edges (past them the surface may fold back
     /// under the patch) and the corners of faces turned away inside a patch.
-    std::vector<char> near_folds() const {
-        std::vector<char> fold(topo_.n_vertices(), 0);
-        std::vector<std::int32_t> frontier;
-        auto mark = [&](std::int32_t v) {
+    VertexData<char> near_folds() const {
+        VertexData<char> fold(topo_.n_vertices(), 0);
+        std::vector<VertexId> frontier;
+        auto mark = [&](VertexId v) {
             if (!fold[v]) fold[v] = 1, frontier.push_back(v);
         };
         for (const Snaxel& s : visual_.fronts.snaxels) mark(s.inside), mark(s.outside);
@@ -521,9 +528,9 @@ class PostMapBuilder {
             for (const auto v : f) mark(v);
         }
         for (int ring = 0; ring < 2; ++ring) {
-            std::vector<std::int32_t> next;
-            for (const std::int32_t v : frontier)
-                for (const std::int32_t w : topo_.neighbours(v))
+            std::vector<VertexId> next;
+            for (const VertexId v : frontier)
+                for (const VertexId w : topo_.neighbours(v))
                     if (!fold[w]) fold[w] = 1, next.push_back(w);
             frontier = std::move(next);
         }
@@ -541,13 +548,13 @@ class PostMapBuilder {
     const ShadingClasses classes_;
     const int bands_n_, highlight_, count_; ///< of classes_
 
-    std::vector<char> shows_;     ///< per face: kHidden ... kFold
-    std::vector<int> face_class_; ///< per face seen from behind: its N.L class
-    std::vector<std::vector<double>> value_; ///< [function][vertex]
+    FaceData<char> shows_;     ///< kHidden ... kFold
+    FaceData<int> face_class_; ///< of a face seen from behind: its N.L class
+    std::vector<VertexData<double>> value_; ///< [function][vertex]
     std::vector<Paths> shown_class_;         ///< per class: the shown faces' parts of it
     Paths front_;                            ///< every shown face turned to the viewer
     Paths replaced_;                         ///< where the shown faces' classes replace the patches'
-    std::vector<std::int32_t> patch_of_;     ///< per vertex
+    VertexData<std::int32_t> patch_of_;
     std::map<std::int32_t, Paths> patches_;
     std::map<std::int32_t, char> open_patch_; ///< 1: a shading loop open, 2: the visual contour open
     std::vector<std::pair<double, std::int32_t>> order_; ///< (mean depth, patch), nearest first

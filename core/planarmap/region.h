@@ -56,8 +56,8 @@ class ShadingClasses {
     }
     /// A band's level or a highlight's threshold; 0 for shadow and lit.
     double level(int cls) const {
-        return cls >= first_highlight() ? highlights_[std::size_t(cls - first_highlight())]
-               : cls >= 2               ? bands_[std::size_t(cls - 2)]
+        return cls >= first_highlight() ? highlights_[cls - first_highlight()]
+               : cls >= 2               ? bands_[cls - 2]
                                         : 0.0;
     }
 
@@ -76,7 +76,7 @@ class ShadingClasses {
     /// The class of a point from its N.L alone (no highlight): where only
     /// the light is known, as on the surface's far side.
     int from_nl(double nl) const {
-        return classify(nl < 0.0, [&](int b) { return nl >= bands_[std::size_t(b)]; }, [](int) { return false; });
+        return classify(nl < 0.0, [&](int b) { return nl >= bands_[b]; }, [](int) { return false; });
     }
 
   private:

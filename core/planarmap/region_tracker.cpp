@@ -23,7 +23,7 @@ std::vector<std::uint64_t> RegionTracker::step(const PlanarMap& map) {
     std::vector<std::tuple<double, std::size_t, std::size_t>> candidates;
     if (!map.vertex_region.empty() && map.vertex_region.size() == prev_vertex_region_.size()) {
         std::unordered_map<std::uint64_t, std::size_t> shared;
-        for (std::size_t v = 0; v < map.vertex_region.size(); ++v) {
+        for (const VertexId v : map.vertex_region.ids()) {
             const std::int32_t r = map.vertex_region[v], p = prev_vertex_region_[v];
             if (r >= 0 && p >= 0) ++shared[(std::uint64_t(r) << 32) | std::uint32_t(p)];
         }

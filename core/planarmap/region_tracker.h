@@ -26,7 +26,7 @@ class RegionTracker {
         glm::dvec2 centre;
         double area;
     };
-    std::vector<std::int32_t> prev_vertex_region_;
+    VertexData<std::int32_t> prev_vertex_region_;
     std::vector<Summary> prev_;
     std::vector<std::uint64_t> prev_tracks_;
     std::uint64_t next_ = 0;

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <chrono>
 #include <mutex>
+#include <numeric>
 #include <thread>
 #include <cmath>
 #include <tuple>
@@ -14,6 +15,9 @@
 
 namespace snaxels {
 namespace {
+
+/// A vertex in no region of the map (hidden, or turned away).
+constexpr std::int32_t kNoRegion = -1;
 
 /// What a vertex shows the viewer once every kind's front has converged:
 /// hidden behind a nearer surface, turned away and unseen, or seen with a
@@ -63,18 +67,18 @@ enum class PointKind {
 /// The id ranges of the point kinds for one mesh and number of N.L levels.
 class PointIds {
   public:
-    PointIds(std::int32_t vertices, std::int32_t edges, std::size_t faces, std::size_t levels)
-        : edge_base_(vertices), junction_base_(edge_base_ + edges),
-          level_base_(junction_base_ + std::int64_t(faces)), levels_(std::int64_t(levels)),
-          across_base_(level_base_ + std::int64_t(edges) * levels_) {}
+    PointIds(const MeshTopology& topology, std::size_t levels)
+        : edge_base_(std::int64_t(topology.n_vertices())), junction_base_(edge_base_ + std::int64_t(topology.n_edges())),
+          level_base_(junction_base_ + std::int64_t(topology.n_faces())), levels_(std::int64_t(levels)),
+          across_base_(level_base_ + std::int64_t(topology.n_edges()) * levels_) {}
 
-    PointId vertex(std::int32_t v) const { return {v}; }
-    PointId edge(std::int32_t e) const { return {edge_base_ + e}; }
-    PointId junction(std::int32_t f) const { return {junction_base_ + f}; }
-    PointId level(std::int32_t e, std::size_t level) const { return {level_base_ + e * levels_ + std::int64_t(level)}; }
+    PointId vertex(VertexId v) const { return {v.index()}; }
+    PointId edge(EdgeId e) const { return {edge_base_ + e.index()}; }
+    PointId junction(FaceId f) const { return {junction_base_ + f.index()}; }
+    PointId level(EdgeId e, std::size_t level) const { return {level_base_ + e.index() * levels_ + std::int64_t(level)}; }
     /// The k-th crossing of @p level along a part of face @p f (at most 8).
-    PointId across(std::int32_t f, std::size_t level, std::size_t k) const {
-        return {across_base_ + (std::int64_t(f) * levels_ + std::int64_t(level)) * 8 + std::int64_t(k)};
+    PointId across(FaceId f, std::size_t level, std::size_t k) const {
+        return {across_base_ + (f.index() * levels_ + std::int64_t(level)) * 8 + std::int64_t(k)};
     }
 
     PointKind kind(PointId p) const {
@@ -84,14 +88,10 @@ class PointIds {
                : p.value < across_base_   ? PointKind::Level
                                           : PointKind::Across;
     }
-    /// The vertex, edge or face a vertex, edge point or junction belongs to.
-    std::int32_t element(PointId p) const {
-        switch (kind(p)) {
-        case PointKind::Vertex: return std::int32_t(p.value);
-        case PointKind::EdgePoint: return std::int32_t(p.value - edge_base_);
-        default: return std::int32_t(p.value - junction_base_);
-        }
-    }
+    /// The vertex of a vertex point, the edge of an edge point, the face of a junction.
+    VertexId vertex_of(PointId p) const { return VertexId(std::int32_t(p.value)); }
+    EdgeId edge_of(PointId p) const { return EdgeId(std::int32_t(p.value - edge_base_)); }
+    FaceId face_of(PointId p) const { return FaceId(std::int32_t(p.value - junction_base_)); }
 
   private:
     std::int64_t edge_base_, junction_base_, level_base_, levels_, across_base_;
@@ -136,22 +136,22 @@ class ContourImage {
         : width_(projection.width()), height_(projection.height()) {
         const Fronts& fronts = visual.fronts;
         for (const FrontLoop& loop : fronts.loops) {
-            std::int32_t prev = MeshTopology::kNone, first = MeshTopology::kNone;
+            std::int32_t prev = kNoSnaxel, first = kNoSnaxel;
             auto add = [&](std::int32_t s0, std::int32_t s1) {
-                const glm::dvec3 a = engine.position(fronts.snaxels[std::size_t(s0)]);
-                const glm::dvec3 b = engine.position(fronts.snaxels[std::size_t(s1)]);
+                const glm::dvec3 a = engine.position(fronts.snaxels[s0]);
+                const glm::dvec3 b = engine.position(fronts.snaxels[s1]);
                 segments_.push_back({projection.project(a), projection.project(b), depth(a), depth(b)});
             };
             fronts.for_each_in_loop(loop, [&](std::int32_t s) {
-                if (prev != MeshTopology::kNone) add(prev, s);
+                if (prev != kNoSnaxel) add(prev, s);
                 else first = s;
                 prev = s;
             });
-            if (loop.closed && first != MeshTopology::kNone && prev != first) add(prev, first);
+            if (loop.closed && first != kNoSnaxel && prev != first) add(prev, first);
         }
         cols_ = std::max(1, int(std::ceil(width_ / kCell))) + 2;
         rows_ = std::max(1, int(std::ceil(height_ / kCell))) + 2;
-        cells_.assign(std::size_t(cols_) * std::size_t(rows_), {});
+        cells_.assign(std::size_t(cols_ * rows_), {});
         for (std::size_t i = 0; i < segments_.size(); ++i)
             for_cells(segments_[i].a, segments_[i].b, [&](std::vector<std::uint32_t>& cell) { cell.push_back(std::uint32_t(i)); });
     }
@@ -188,7 +188,7 @@ class ContourImage {
         const int y0 = std::clamp(int(std::floor(std::min(a.y, b.y) / kCell)) + 1, 0, rows_ - 1);
         const int y1 = std::clamp(int(std::floor(std::max(a.y, b.y) / kCell)) + 1, 0, rows_ - 1);
         for (int y = y0; y <= y1; ++y)
-            for (int x = x0; x <= x1; ++x) fn(cells[std::size_t(y) * std::size_t(cols_) + std::size_t(x)]);
+            for (int x = x0; x <= x1; ++x) fn(cells[y * cols_ + x]);
     }
     template <class Fn> void for_cells(glm::dvec2 a, glm::dvec2 b, Fn&& fn) { visit(cells_, a, b, fn); }
     template <class Fn> void for_cells(glm::dvec2 a, glm::dvec2 b, Fn&& fn) const { visit(cells_, a, b, fn); }
@@ -208,9 +208,8 @@ class SnaxelMapBuilder {
     SnaxelMapBuilder(const SnaxelEngine& engine, const SnaxelMapInput& in, const RayScene& rays,
                      const ImageProjection& projection, const Camera& camera, const Light& light)
         : engine_(engine), in_(in), rays_(rays), projection_(projection), camera_(camera), light_(light),
-          topo_(engine.topology()), visual_(*in.visual), V_(std::int32_t(topo_.n_vertices())),
-          E_(std::int32_t(topo_.n_edges())), classes_(shading_classes(in)), highlight_(classes_.first_highlight()),
-          levels_(shading_levels(in)), ids_(V_, E_, topo_.n_faces(), levels_.size()),
+          topo_(engine.topology()), visual_(*in.visual), classes_(shading_classes(in)),
+          highlight_(classes_.first_highlight()), levels_(shading_levels(in)), ids_(topo_, levels_.size()),
           sampler_(rays, camera, refined_scale()) {}
 
     SnaxelMap build() {
@@ -246,13 +245,13 @@ class SnaxelMapBuilder {
 
     /// The shading class of a point on the far side of the surface from N.L alone.
     int class_of(double nl) const { return classes_.from_nl(nl); }
-    const glm::dvec3& position(std::int32_t v) const { return topo_.positions()[std::size_t(v)]; }
-    VertexLabel label(std::int32_t v) const { return label_[std::size_t(v)]; }
+    const glm::dvec3& position(VertexId v) const { return topo_.positions()[v]; }
+    VertexLabel label(VertexId v) const { return label_[v]; }
     double depth_of(const glm::dvec3& p) const {
         return camera_.orthographic() ? glm::dot(p, camera_.forward()) : glm::dot(p - camera_.eye, camera_.forward());
     }
-    bool face_hidden(std::int32_t f) const {
-        const auto& fv = topo_.face_vertices()[std::size_t(f)];
+    bool face_hidden(FaceId f) const {
+        const auto& fv = topo_.face_vertices()[f];
         const glm::dvec3 &p0 = position(fv[0]), &p1 = position(fv[1]), &p2 = position(fv[2]);
         return rays_.occluded(sampler_.face_ray(f, (p0 + p1 + p2) / 3.0, glm::normalize(glm::cross(p1 - p0, p2 - p0))));
     }
@@ -262,35 +261,34 @@ class SnaxelMapBuilder {
     /// Where every kind's converged front leaves each vertex (rules 1 and
     /// 4), after the image-plane test against nearer surfaces (rule 2).
     void label_vertices() {
-        label_.assign(std::size_t(V_), VertexLabel::occluded());
-        nl_.assign(std::size_t(V_), 0.0);
+        label_.assign(topo_.n_vertices(), VertexLabel::occluded());
+        nl_.assign(topo_.n_vertices(), 0.0);
         // On a closed mesh a point turned away is always behind the surface
         // (rays from the fold's far side only graze it): no ray is needed.
-        bool open = false;
-        for (std::int32_t e = 0; e < E_ && !open; ++e) open = topo_.is_boundary_edge(e);
-        parallel_for(std::size_t(V_), [&](std::size_t i) { label_[i] = label_vertex(std::int32_t(i), open); }, 256);
+        const auto edges = topo_.edges();
+        const bool open = std::any_of(edges.begin(), edges.end(), [&](EdgeId e) { return topo_.is_boundary_edge(e); });
+        parallel_for(topo_.vertices(), [&](VertexId v) { label_[v] = label_vertex(v, open); }, 256);
         // N.L of the vertices turned away too, which the walk past the contour uses.
-        for (std::int32_t v = 0; v < V_; ++v)
-            if (label(v).is_away()) nl_[std::size_t(v)] = glm::dot(topo_.normals()[std::size_t(v)], light_.to_light(position(v)));
+        for (const VertexId v : topo_.vertices())
+            if (label(v).is_away()) nl_[v] = glm::dot(topo_.normals()[v], light_.to_light(position(v)));
     }
 
-    VertexLabel label_vertex(std::int32_t v, bool open) {
-        const auto i = std::size_t(v);
-        const bool turned_away = visual_.vertex_f[i] < 0.0;
+    VertexLabel label_vertex(VertexId v, bool open) {
+        const bool turned_away = visual_.vertex_f[v] < 0.0;
         if (!open && turned_away) return VertexLabel::away();
         if (rays_.occluded(sampler_.vertex_ray(v, turned_away))) {
             // Hidden; one turned away is hidden by its own fold as often as
             // not, and faces past the contour may still be seen whole.
             return turned_away ? VertexLabel::away() : VertexLabel::occluded();
         }
-        nl_[i] = glm::dot(topo_.normals()[i], light_.to_light(topo_.positions()[i]));
+        nl_[v] = glm::dot(topo_.normals()[v], light_.to_light(position(v)));
         // Seen although turned away: through a hole of an open mesh, or a
         // corner past the contour of interpolated normals. Its side of the
         // surface forms its own regions, classed by N.L alone.
-        if (turned_away) return VertexLabel::far_side(class_of(nl_[i]));
+        if (turned_away) return VertexLabel::far_side(class_of(nl_[v]));
         return VertexLabel::near_side(classes_.classify(
-            in_.shadow && in_.shadow->vertex_f[i] < 0.0, [&](int b) { return in_.isophotes[std::size_t(b)]->vertex_f[i] >= 0.0; },
-            [&](int h) { return in_.gleams[std::size_t(h)]->vertex_f[i] >= 0.0; }));
+            in_.shadow && in_.shadow->vertex_f[v] < 0.0, [&](int b) { return in_.isophotes[b]->vertex_f[v] >= 0.0; },
+            [&](int h) { return in_.gleams[h]->vertex_f[v] >= 0.0; }));
     }
 
     // ---- grow regions, dissolve flecks ----------------------------------
@@ -303,12 +301,11 @@ class SnaxelMapBuilder {
     /// label most of their neighbours outside it carry, and the regions they
     /// reach are grown again. (Long thin bands along a coarse mesh are kept.)
     void grow_regions() {
-        comp_.assign(std::size_t(V_), -1);
         comp_label_.resize(std::size_t(grow_vertex_sets(
-            topo_, comp_, [&](std::int32_t v) { return label(v).seen(); },
-            [&](std::int32_t v, std::int32_t w) { return label(v) == label(w); })));
-        for (std::int32_t v = 0; v < V_; ++v)
-            if (comp_[std::size_t(v)] >= 0) comp_label_[std::size_t(comp_[std::size_t(v)])] = label(v);
+            topo_, comp_, [&](VertexId v) { return label(v).seen(); },
+            [&](VertexId v, VertexId w) { return label(v) == label(w); })));
+        for (const VertexId v : topo_.vertices())
+            if (comp_[v] != kNoRegion) comp_label_[comp_[v]] = label(v);
         map_.stats.seeds = comp_label_.size();
         for (int pass = 0; pass < 3; ++pass) { // dissolving can leave a new fleck behind
             const auto moves = fleck_moves();
@@ -324,10 +321,10 @@ class SnaxelMapBuilder {
 
     /// A vertex's share of the image: a third of its faces' projected areas
     /// (each face meets two of the vertex's ring edges).
-    double vertex_area(std::int32_t v) const {
+    double vertex_area(VertexId v) const {
         double area = 0.0;
-        topo_.for_each_face_beside_edges(v, [&](std::int32_t f) {
-            const auto& fv = topo_.face_vertices()[std::size_t(f)];
+        topo_.for_each_face_beside_edges(v, [&](FaceId f) {
+            const auto& fv = topo_.face_vertices()[f];
             const glm::dvec2 p0 = projection_.project(position(fv[0]));
             const glm::dvec2 p1 = projection_.project(position(fv[1]));
             const glm::dvec2 p2 = projection_.project(position(fv[2]));
@@ -338,40 +335,40 @@ class SnaxelMapBuilder {
 
     /// The vertices of unsupported flecks, each with the label most of its
     /// neighbours outside the fleck carry.
-    std::vector<std::pair<std::int32_t, VertexLabel>> fleck_moves() const {
+    std::vector<std::pair<VertexId, VertexLabel>> fleck_moves() const {
         std::vector<char> supported(comp_label_.size(), 0);
         std::vector<int> size(comp_label_.size(), 0);
         for (const std::int32_t r : comp_)
-            if (r >= 0) ++size[std::size_t(r)];
+            if (r != kNoRegion) ++size[r];
         // Only the vertices of regions of few vertices can be flecks.
-        std::vector<std::int32_t> small;
-        for (std::int32_t v = 0; v < V_; ++v) {
-            const std::int32_t r = comp_[std::size_t(v)];
-            if (r >= 0 && size[std::size_t(r)] < in_.min_unsupported_vertices) small.push_back(v);
+        std::vector<VertexId> small;
+        for (const VertexId v : topo_.vertices()) {
+            const std::int32_t r = comp_[v];
+            if (r != kNoRegion && size[r] < in_.min_unsupported_vertices) small.push_back(v);
         }
         std::vector<double> image_area(comp_label_.size(), 0.0);
-        for (const std::int32_t v : small) image_area[std::size_t(comp_[std::size_t(v)])] += vertex_area(v);
+        for (const VertexId v : small) image_area[comp_[v]] += vertex_area(v);
         for (std::size_t r = 0; r < size.size(); ++r)
             supported[r] = size[r] >= in_.min_unsupported_vertices || image_area[r] >= in_.min_fleck_area_px;
-        for (const std::int32_t v : small) {
-            const std::int32_t r = comp_[std::size_t(v)];
-            if (supported[std::size_t(r)]) continue;
+        for (const VertexId v : small) {
+            const std::int32_t r = comp_[v];
+            if (supported[r]) continue;
             const auto ring = topo_.neighbours(v);
-            const bool interior = !ring.empty() && std::all_of(ring.begin(), ring.end(), [&](std::int32_t w) { return label(w) == label(v); });
-            supported[std::size_t(r)] = interior;
+            const bool interior = !ring.empty() && std::all_of(ring.begin(), ring.end(), [&](VertexId w) { return label(w) == label(v); });
+            supported[r] = interior;
         }
-        std::vector<std::pair<std::int32_t, VertexLabel>> moves;
-        for (const std::int32_t v : small) {
-            const std::int32_t r = comp_[std::size_t(v)];
-            if (supported[std::size_t(r)]) continue;
+        std::vector<std::pair<VertexId, VertexLabel>> moves;
+        for (const VertexId v : small) {
+            const std::int32_t r = comp_[v];
+            if (supported[r]) continue;
             VertexLabel best = label(v);
             int best_count = 0;
             const auto ring = topo_.neighbours(v);
-            for (const std::int32_t w : ring) {
-                if (comp_[std::size_t(w)] == r) continue;
+            for (const VertexId w : ring) {
+                if (comp_[w] == r) continue;
                 const VertexLabel candidate = label(w);
                 int count = 0;
-                for (const std::int32_t u : ring) count += comp_[std::size_t(u)] != r && label(u) == candidate;
+                for (const VertexId u : ring) count += comp_[u] != r && label(u) == candidate;
                 if (count > best_count || (count == best_count && candidate > best)) best = candidate, best_count = count;
             }
             if (best != label(v)) moves.emplace_back(v, best);
@@ -382,55 +379,54 @@ class SnaxelMapBuilder {
     /// The moved vertices join the regions they now touch: regions grown
     /// again locally, joined where a moved vertex bridges two, then numbered
     /// again.
-    void regrow_moved(const std::vector<std::pair<std::int32_t, VertexLabel>>& moves) {
+    void regrow_moved(const std::vector<std::pair<VertexId, VertexLabel>>& moves) {
         std::vector<std::int32_t> parent(comp_label_.size());
-        for (std::size_t r = 0; r < parent.size(); ++r) parent[r] = std::int32_t(r);
+        std::iota(parent.begin(), parent.end(), 0);
         auto find = [&](std::int32_t r) {
-            while (parent[std::size_t(r)] != r) r = parent[std::size_t(r)] = parent[std::size_t(parent[std::size_t(r)])];
+            while (parent[r] != r) r = parent[r] = parent[parent[r]];
             return r;
         };
         constexpr std::int32_t kToGrow = -2;
         for (const auto& [v, l] : moves) {
-            label_[std::size_t(v)] = l;
-            comp_[std::size_t(v)] = kToGrow;
+            label_[v] = l;
+            comp_[v] = kToGrow;
         }
-        std::vector<std::int32_t> stack;
+        std::vector<VertexId> stack;
         for (const auto& [v0, l0] : moves) {
-            if (comp_[std::size_t(v0)] != kToGrow) continue;
+            if (comp_[v0] != kToGrow) continue;
             if (!l0.seen()) {
-                comp_[std::size_t(v0)] = -1;
+                comp_[v0] = kNoRegion;
                 continue;
             }
             const auto id = std::int32_t(comp_label_.size());
             comp_label_.push_back(l0);
             parent.push_back(id);
-            comp_[std::size_t(v0)] = id;
+            comp_[v0] = id;
             stack.push_back(v0);
             while (!stack.empty()) {
-                const std::int32_t v = stack.back();
+                const VertexId v = stack.back();
                 stack.pop_back();
-                for (const std::int32_t w : topo_.neighbours(v)) {
+                for (const VertexId w : topo_.neighbours(v)) {
                     if (label(w) != l0) continue;
-                    if (comp_[std::size_t(w)] == kToGrow) {
-                        comp_[std::size_t(w)] = id;
+                    if (comp_[w] == kToGrow) {
+                        comp_[w] = id;
                         stack.push_back(w);
-                    } else if (comp_[std::size_t(w)] >= 0) {
-                        parent[std::size_t(find(comp_[std::size_t(w)]))] = find(id);
+                    } else if (comp_[w] != kNoRegion) {
+                        parent[find(comp_[w])] = find(id);
                     }
                 }
             }
         }
-        std::vector<std::int32_t> index(comp_label_.size(), -1);
+        std::vector<std::int32_t> index(comp_label_.size(), kNoRegion);
         std::vector<VertexLabel> labels;
-        for (std::int32_t v = 0; v < V_; ++v) {
-            std::int32_t& r = comp_[std::size_t(v)];
-            if (r < 0) continue;
+        for (std::int32_t& r : comp_) {
+            if (r == kNoRegion) continue;
             const std::int32_t root = find(r);
-            if (index[std::size_t(root)] < 0) {
-                index[std::size_t(root)] = std::int32_t(labels.size());
-                labels.push_back(comp_label_[std::size_t(root)]);
+            if (index[root] == kNoRegion) {
+                index[root] = std::int32_t(labels.size());
+                labels.push_back(comp_label_[root]);
             }
-            r = index[std::size_t(root)];
+            r = index[root];
         }
         comp_label_ = std::move(labels);
     }
@@ -439,35 +435,35 @@ class SnaxelMapBuilder {
 
     /// Where fronts stop on edges whose labels differ (rules 3 and 4).
     void place_edge_points() {
-        for (std::int32_t e = 0; e < E_; ++e)
+        for (const EdgeId e : topo_.edges())
             if (label(topo_.edge_vertices()[e][0]) != label(topo_.edge_vertices()[e][1]))
                 cut_edges_.push_back(e); // both hidden: a junction may still use its middle
-        edge_point_.assign(std::size_t(E_), glm::dvec3(0.0));
+        edge_point_.assign(topo_.n_edges(), glm::dvec3(0.0));
         // Which faces are turned to the viewer (by their own winding).
         front_face_.assign(topo_.n_faces(), 0);
-        parallel_for(topo_.n_faces(), [&](std::size_t f) {
+        parallel_for(topo_.faces(), [&](FaceId f) {
             const auto& fv = topo_.face_vertices()[f];
             const glm::dvec3 &p0 = position(fv[0]), &p1 = position(fv[1]), &p2 = position(fv[2]);
             front_face_[f] = glm::dot(glm::cross(p1 - p0, p2 - p0), camera_.to_viewer((p0 + p1 + p2) / 3.0)) > 0.0;
         }, 4096);
         const ContourImage occluder(engine_, visual_, projection_, [&](const glm::dvec3& p) { return depth_of(p); });
         parallel_for(cut_edges_.size(), [&](std::size_t i) {
-            const std::int32_t e = cut_edges_[i];
-            edge_point_[std::size_t(e)] = edge_point(e, occluder);
+            const EdgeId e = cut_edges_[i];
+            edge_point_[e] = edge_point(e, occluder);
         }, 64);
     }
 
     /// Where @p r's front crosses edge @p e from @p a to @p b: its snaxel
     /// there, else the root of its function's linear interpolant.
-    glm::dvec3 snaxel_point(const ContourResult& r, std::int32_t e, std::int32_t a, std::int32_t b) const {
-        const std::int32_t s = r.fronts.edge_snaxel.empty() ? MeshTopology::kNone : r.fronts.edge_snaxel[std::size_t(e)];
-        if (s != MeshTopology::kNone) return engine_.position(r.fronts.snaxels[std::size_t(s)]);
-        const double t = linear_root(r.vertex_f[std::size_t(a)], r.vertex_f[std::size_t(b)]);
+    glm::dvec3 snaxel_point(const ContourResult& r, EdgeId e, VertexId a, VertexId b) const {
+        const std::int32_t s = r.fronts.edge_snaxel.empty() ? kNoSnaxel : r.fronts.edge_snaxel[e];
+        if (s != kNoSnaxel) return engine_.position(r.fronts.snaxels[s]);
+        const double t = linear_root(r.vertex_f[a], r.vertex_f[b]);
         return glm::mix(position(a), position(b), t);
     }
 
-    glm::dvec3 edge_point(std::int32_t e, const ContourImage& occluder) const {
-        const std::int32_t a = topo_.edge_vertices()[e][0], b = topo_.edge_vertices()[e][1];
+    glm::dvec3 edge_point(EdgeId e, const ContourImage& occluder) const {
+        const auto [a, b] = topo_.edge_vertices()[e];
         const VertexLabel la = label(a), lb = label(b);
         if (!la.seen() && !lb.seen()) return 0.5 * (position(a) + position(b));
         if (la.is_away() || lb.is_away()) return snaxel_point(visual_, e, a, b); // the visual contour (closed meshes)
@@ -477,13 +473,13 @@ class SnaxelMapBuilder {
         if (la.on_far_side()) {
             // Two classes on the far side: the root of N.L at the level between them.
             const int top = std::max(la, lb).cls();
-            const double level = levels_[std::size_t(std::max(top - 1, 0))];
-            return glm::mix(position(a), position(b), linear_root(nl_[std::size_t(a)] - level, nl_[std::size_t(b)] - level));
+            const double level = levels_[std::max(top - 1, 0)];
+            return glm::mix(position(a), position(b), linear_root(nl_[a] - level, nl_[b] - level));
         }
         // Two shading classes: the front of the brighter one's kind.
         const int top = std::max(la, lb).cls();
-        const ContourResult* kind = top >= highlight_ ? in_.gleams[std::size_t(top - highlight_)]
-                                    : top >= 2        ? in_.isophotes[std::size_t(top - 2)]
+        const ContourResult* kind = top >= highlight_ ? in_.gleams[top - highlight_]
+                                    : top >= 2        ? in_.isophotes[top - 2]
                                                       : in_.shadow;
         return kind ? snaxel_point(*kind, e, a, b) : 0.5 * (position(a) + position(b));
     }
@@ -492,9 +488,9 @@ class SnaxelMapBuilder {
     /// the image of a nearer front (the occluder's visual contour), so both
     /// sides of the occlusion share one curve. If no such crossing shows,
     /// the ray to the viewer is bisected.
-    glm::dvec3 occlusion_point(std::int32_t e, const ContourImage& occluder) const {
-        const std::int32_t a = topo_.edge_vertices()[e][0], b = topo_.edge_vertices()[e][1];
-        const std::int32_t from = label(a).seen() ? a : b, to = label(a).seen() ? b : a;
+    glm::dvec3 occlusion_point(EdgeId e, const ContourImage& occluder) const {
+        const auto [a, b] = topo_.edge_vertices()[e];
+        const VertexId from = label(a).seen() ? a : b, to = label(a).seen() ? b : a;
         const glm::dvec3& p0 = position(from);
         const glm::dvec3& p1 = position(to);
         const double t = occluder.first_crossing(projection_.project(p0), projection_.project(p1),
@@ -515,29 +511,29 @@ class SnaxelMapBuilder {
 
     glm::dvec3 point_of(PointId id) const {
         switch (ids_.kind(id)) {
-        case PointKind::Vertex: return position(ids_.element(id));
-        case PointKind::EdgePoint: return edge_point_[std::size_t(ids_.element(id))];
+        case PointKind::Vertex: return position(ids_.vertex_of(id));
+        case PointKind::EdgePoint: return edge_point_[ids_.edge_of(id)];
         case PointKind::Junction: {
-            const auto& fe = topo_.face_edges()[std::size_t(ids_.element(id))];
-            return (edge_point_[std::size_t(fe[0])] + edge_point_[std::size_t(fe[1])] + edge_point_[std::size_t(fe[2])]) / 3.0;
+            const auto& fe = topo_.face_edges()[ids_.face_of(id)];
+            return (edge_point_[fe[0]] + edge_point_[fe[1]] + edge_point_[fe[2]]) / 3.0;
         }
         default: return extra_point_.at(id.value);
         }
     }
     /// N.L at a point of a piece: at a vertex its own, on an edge
     /// interpolated along it, at a junction the mean of its face's edge points'.
-    double nl_on_edge(std::int32_t e) const {
-        const std::int32_t u = topo_.edge_vertices()[e][0], w = topo_.edge_vertices()[e][1];
+    double nl_on_edge(EdgeId e) const {
+        const auto [u, w] = topo_.edge_vertices()[e];
         const double len = glm::length(position(w) - position(u));
-        const double t = len > 0.0 ? glm::length(edge_point_[std::size_t(e)] - position(u)) / len : 0.5;
-        return glm::mix(nl_[std::size_t(u)], nl_[std::size_t(w)], std::clamp(t, 0.0, 1.0));
+        const double t = len > 0.0 ? glm::length(edge_point_[e] - position(u)) / len : 0.5;
+        return glm::mix(nl_[u], nl_[w], std::clamp(t, 0.0, 1.0));
     }
     double nl_of(PointId id) const {
         switch (ids_.kind(id)) {
-        case PointKind::Vertex: return nl_[std::size_t(ids_.element(id))];
-        case PointKind::EdgePoint: return nl_on_edge(ids_.element(id));
+        case PointKind::Vertex: return nl_[ids_.vertex_of(id)];
+        case PointKind::EdgePoint: return nl_on_edge(ids_.edge_of(id));
         default: {
-            const auto& fe = topo_.face_edges()[std::size_t(ids_.element(id))];
+            const auto& fe = topo_.face_edges()[ids_.face_of(id)];
             return (nl_on_edge(fe[0]) + nl_on_edge(fe[1]) + nl_on_edge(fe[2])) / 3.0;
         }
         }
@@ -550,34 +546,34 @@ class SnaxelMapBuilder {
     /// walked backwards, so they add nothing to their regions' images.
     void select_faces() {
         folded_.assign(topo_.n_faces(), 0);
-        std::vector<char> walked(topo_.n_faces(), 0);
-        parallel_for(topo_.n_faces(), [&](std::size_t f) {
+        FaceData<char> walked(topo_.n_faces(), 0);
+        parallel_for(topo_.faces(), [&](FaceId f) {
             const auto& fv = topo_.face_vertices()[f];
             const auto& fe = topo_.face_edges()[f];
             bool near_side = false;
-            for (int k = 0; k < 3; ++k) {
-                const std::int32_t r = comp_[std::size_t(fv[std::size_t(k)])];
-                near_side = near_side || (r >= 0 && !comp_label_[std::size_t(r)].on_far_side());
+            for (const VertexId v : fv) {
+                const std::int32_t r = comp_[v];
+                near_side = near_side || (r != kNoRegion && !comp_label_[r].on_far_side());
             }
             folded_[f] = near_side && !front_face_[f];
             // Only faces with a cut edge or a seen mesh-boundary edge, and
             // folded faces, have such steps.
             bool walk = folded_[f];
-            for (int k = 0; k < 3 && !walk; ++k) {
-                const VertexLabel la = label(fv[std::size_t(k)]), lb = label(fv[std::size_t((k + 1) % 3)]);
-                walk = la != lb || (la.seen() && topo_.is_boundary_edge(fe[std::size_t(k)]));
+            for (std::size_t k = 0; k < 3 && !walk; ++k) {
+                const VertexLabel la = label(fv[k]), lb = label(fv[(k + 1) % 3]);
+                walk = la != lb || (la.seen() && topo_.is_boundary_edge(fe[k]));
             }
             walked[f] = walk;
         }, 4096);
         faces_.reserve(2 * cut_edges_.size());
-        for (std::size_t f = 0; f < topo_.n_faces(); ++f)
-            if (walked[f]) faces_.push_back(std::int32_t(f));
+        for (const FaceId f : topo_.faces())
+            if (walked[f]) faces_.push_back(f);
     }
 
     /// What a thread's share of the walk adds.
     struct WalkOut {
         std::vector<Step> steps;
-        std::vector<std::pair<std::int32_t, std::int32_t>> rim_faces; ///< (face, region) taken past the contour
+        std::vector<std::pair<FaceId, std::int32_t>> rim_faces; ///< (face, region) taken past the contour
     };
 
     /// Each region's part of every face it touches, walked counter-clockwise
@@ -610,22 +606,22 @@ class SnaxelMapBuilder {
         std::vector<std::pair<int, std::int32_t>> by_class(outline_regions_.begin(), outline_regions_.end());
         std::sort(by_class.begin(), by_class.end());
         std::vector<std::int32_t> renumbered(comp_label_.size());
-        for (std::size_t r = 0; r < renumbered.size(); ++r) renumbered[r] = std::int32_t(r);
+        std::iota(renumbered.begin(), renumbered.end(), 0);
         for (std::size_t i = 0; i < by_class.size(); ++i) {
             const std::int32_t id = first_strip + std::int32_t(i);
-            renumbered[std::size_t(by_class[i].second)] = id;
-            comp_label_[std::size_t(id)] = VertexLabel::near_side(by_class[i].first);
+            renumbered[by_class[i].second] = id;
+            comp_label_[id] = VertexLabel::near_side(by_class[i].first);
             outline_regions_[by_class[i].first] = id;
         }
-        for (Step& step : steps_) step = Step(renumbered[std::size_t(step.region())], step.from(), step.to);
-        for (auto& [r, f] : vertexless_faces_) r = renumbered[std::size_t(r)];
+        for (Step& step : steps_) step = Step(renumbered[step.region()], step.from(), step.to);
+        for (auto& [r, f] : vertexless_faces_) r = renumbered[r];
     }
 
     /// A face's corners, their labels and regions, and the pieces they cut it into.
     struct FaceWalk {
-        std::int32_t f;
-        const std::array<std::int32_t, 3>& fv;
-        const std::array<std::int32_t, 3>& fe;
+        FaceId f;
+        const std::array<VertexId, 3>& fv;
+        const std::array<EdgeId, 3>& fe;
         VertexLabel l[3];
         std::int32_t c[3];
         bool three; ///< three labels meet: the pieces share a junction
@@ -640,9 +636,9 @@ class SnaxelMapBuilder {
         int n = 0;
         for (int k = 0; k < 3; ++k) {
             const int k1 = (k + 1) % 3;
-            if (picks(k)) w.ids[n] = ids_.vertex(w.fv[std::size_t(k)]), w.along[n++] = k;
+            if (picks(k)) w.ids[n] = ids_.vertex(w.fv[k]), w.along[n++] = k;
             if (w.l[k] != w.l[k1] && (picks(k) || picks(k1))) {
-                w.ids[n] = ids_.edge(w.fe[std::size_t(k)]);
+                w.ids[n] = ids_.edge(w.fe[k]);
                 w.along[n++] = picks(k1) ? k : -1; // toward the next corner: along edge k; else across
                 if (w.three && picks(k)) w.ids[n] = ids_.junction(w.f), w.along[n++] = -1;
             }
@@ -650,19 +646,18 @@ class SnaxelMapBuilder {
         return n;
     }
 
-    void walk_face(std::int32_t f, WalkOut& out) {
-        const auto& fv = topo_.face_vertices()[std::size_t(f)];
-        const auto& fe = topo_.face_edges()[std::size_t(f)];
-        FaceWalk w{f, fv, fe, {label(fv[0]), label(fv[1]), label(fv[2])},
-                   {comp_[std::size_t(fv[0])], comp_[std::size_t(fv[1])], comp_[std::size_t(fv[2])]}, false, {}, {}};
+    void walk_face(FaceId f, WalkOut& out) {
+        const auto& fv = topo_.face_vertices()[f];
+        const auto& fe = topo_.face_edges()[f];
+        FaceWalk w{f, fv, fe, {label(fv[0]), label(fv[1]), label(fv[2])}, {comp_[fv[0]], comp_[fv[1]], comp_[fv[2]]}, false, {}, {}};
         if (!w.l[0].seen() && !w.l[1].seen() && !w.l[2].seen()) return;
         const bool uniform = w.l[0] == w.l[1] && w.l[1] == w.l[2];
         const bool rim = topo_.is_boundary_edge(fe[0]) || topo_.is_boundary_edge(fe[1]) || topo_.is_boundary_edge(fe[2]);
-        if (uniform && !rim && !folded_[std::size_t(f)]) return;
+        if (uniform && !rim && !folded_[f]) return;
         w.three = w.l[0] != w.l[1] && w.l[1] != w.l[2] && w.l[0] != w.l[2];
         for (int owner = 0; owner < 3; ++owner) {
             const std::int32_t r = w.c[owner];
-            if (r < 0) continue;
+            if (r == kNoRegion) continue;
             bool seen = false; // each region once per face
             for (int k = 0; k < owner; ++k) seen = seen || w.c[k] == r;
             if (seen) continue;
@@ -670,11 +665,11 @@ class SnaxelMapBuilder {
             // A folded piece: walked forwards and backwards its steps across
             // the face and along the mesh's boundary cancel; its steps
             // along interior edges remain, backwards.
-            const bool backwards = folded_[std::size_t(f)] && !comp_label_[std::size_t(r)].on_far_side();
+            const bool backwards = folded_[f] && !comp_label_[r].on_far_side();
             for (int i = 0; i < n; ++i) {
                 const PointId a = w.ids[i], b = w.ids[(i + 1) % n];
                 const bool across = w.along[i] < 0 || (ids_.kind(a) != PointKind::Vertex && ids_.kind(b) != PointKind::Vertex);
-                const bool outline = across || topo_.is_boundary_edge(fe[std::size_t(w.along[i])]);
+                const bool outline = across || topo_.is_boundary_edge(fe[w.along[i]]);
                 if (backwards) {
                     if (!outline) out.steps.emplace_back(r, b, a);
                 } else if (outline) {
@@ -693,17 +688,17 @@ class SnaxelMapBuilder {
     /// across the face (and those of the next such face).
     void walk_part_past_contour(FaceWalk& w, WalkOut& out) {
         int away = 0, front = 0, most = 0;
-        std::int32_t region = -1;
+        std::int32_t region = kNoRegion;
         for (int k = 0; k < 3; ++k) {
             if (w.l[k].is_away()) ++away;
-            if (w.c[k] < 0) continue;
+            if (w.c[k] == kNoRegion) continue;
             ++front;
             int count = 0;
             for (int j = 0; j < 3; ++j) count += w.c[j] == w.c[k];
             if (count > most) most = count, region = w.c[k];
         }
         if (away == 0 || front == 0 || away + front != 3) return; // no hidden corner
-        if (region < 0 || !front_face_[std::size_t(w.f)]) return;
+        if (region == kNoRegion || !front_face_[w.f]) return;
         // Only where the face itself is seen (past a fold it may lie behind the nearer sheet).
         if (face_hidden(w.f)) return;
         const int n = piece(w, [&](int k) { return w.l[k].is_away(); });
@@ -712,7 +707,7 @@ class SnaxelMapBuilder {
         bool one_class = true;
         for (int k = 0; k < n; ++k) {
             nls[k] = nl_of(w.ids[k]);
-            one_class = one_class && VertexLabel::near_side(class_of(nls[k])) == comp_label_[std::size_t(region)];
+            one_class = one_class && VertexLabel::near_side(class_of(nls[k])) == comp_label_[region];
         }
         if (one_class) { // the usual case: no level crosses the part
             for (int k = 0; k < n; ++k) out.steps.emplace_back(region, w.ids[k], w.ids[(k + 1) % n]);
@@ -727,9 +722,9 @@ class SnaxelMapBuilder {
     /// Where N.L crosses a level inside the part (a straight line: N.L is
     /// linear over the face), the other side goes to the outline strip of
     /// that class.
-    void split_part_by_class(std::vector<RimPoint> part, std::int32_t f, std::int32_t region, WalkOut& out) {
+    void split_part_by_class(std::vector<RimPoint> part, FaceId f, std::int32_t region, WalkOut& out) {
         const std::lock_guard<std::mutex> lock(shared_points_);
-        const auto& fe = topo_.face_edges()[std::size_t(f)];
+        const auto& fe = topo_.face_edges()[f];
         std::vector<std::size_t> levels;
         for (std::size_t level = in_.shadow ? 0 : 1; level < levels_.size(); ++level) levels.push_back(level);
         const auto parts = detail::cut_polygon(std::move(part), levels, [&](const std::vector<RimPoint>& poly, std::size_t level) {
@@ -741,7 +736,7 @@ class SnaxelMapBuilder {
             mid_nl /= double(poly.size());
             const int cls = class_of(mid_nl);
             const std::int32_t target =
-                VertexLabel::near_side(cls) == comp_label_[std::size_t(region)] ? region : outline_region(cls);
+                VertexLabel::near_side(cls) == comp_label_[region] ? region : outline_region(cls);
             if (target != region) vertexless_faces_.emplace_back(target, f);
             for (std::size_t k = 0; k < poly.size(); ++k) out.steps.emplace_back(target, poly[k].id, poly[(k + 1) % poly.size()].id);
         }
@@ -759,18 +754,17 @@ class SnaxelMapBuilder {
     }
 
     /// @p poly cut where N.L crosses levels_[level]: the parts below and above.
-    std::pair<std::vector<RimPoint>, std::vector<RimPoint>> split_rim(const std::vector<RimPoint>& poly, std::int32_t f,
-                                                                      std::size_t level,
-                                                                      const std::array<std::int32_t, 3>& fe) {
+    std::pair<std::vector<RimPoint>, std::vector<RimPoint>> split_rim(const std::vector<RimPoint>& poly, FaceId f,
+                                                                      std::size_t level, const std::array<EdgeId, 3>& fe) {
         const double value = levels_[level];
         auto crossing = [&](const RimPoint& a, const RimPoint& b, std::size_t k) {
             RimPoint q;
             q.along = a.along;
             if (a.along >= 0) {
                 // On face edge a.along: the edge's own root, the same for both faces.
-                const std::int32_t e = fe[std::size_t(a.along)];
-                const std::int32_t u = topo_.edge_vertices()[e][0], w = topo_.edge_vertices()[e][1];
-                const double t = linear_root(nl_[std::size_t(u)] - value, nl_[std::size_t(w)] - value);
+                const EdgeId e = fe[a.along];
+                const auto [u, w] = topo_.edge_vertices()[e];
+                const double t = linear_root(nl_[u] - value, nl_[w] - value);
                 q.id = ids_.level(e, level);
                 q.p = glm::mix(position(u), position(w), t);
             } else {
@@ -793,24 +787,22 @@ class SnaxelMapBuilder {
     /// away by their normals join the region of the face they adjoin (up to
     /// three rings).
     void take_rim_rings() {
-        std::unordered_map<std::int32_t, std::int32_t> taken;
+        std::unordered_map<FaceId, std::int32_t> taken;
         for (const auto& [f, r] : rim_faces_) taken[f] = r;
-        std::vector<std::pair<std::int32_t, std::int32_t>> ring = rim_faces_;
+        std::vector<std::pair<FaceId, std::int32_t>> ring = rim_faces_;
         for (int step = 0; step < 3 && !ring.empty(); ++step) {
-            std::vector<std::pair<std::int32_t, std::int32_t>> next;
+            std::vector<std::pair<FaceId, std::int32_t>> next;
             for (const auto& [f, r] : ring)
-                for (const std::int32_t e : topo_.face_edges()[std::size_t(f)])
-                    for (const std::int32_t g : topo_.edge_faces()[std::size_t(e)]) {
+                for (const EdgeId e : topo_.face_edges()[f])
+                    for (const FaceId g : topo_.edge_faces()[e]) {
                         if (g == MeshTopology::kNone || taken.count(g)) continue;
-                        const auto& gv = topo_.face_vertices()[std::size_t(g)];
-                        if (!label(gv[0]).is_away() || !label(gv[1]).is_away() || !label(gv[2]).is_away() ||
-                            !front_face_[std::size_t(g)])
+                        const auto& gv = topo_.face_vertices()[g];
+                        if (!label(gv[0]).is_away() || !label(gv[1]).is_away() || !label(gv[2]).is_away() || !front_face_[g])
                             continue;
                         if (face_hidden(g)) continue;
                         taken[g] = r;
                         next.emplace_back(g, r);
-                        for (int k = 0; k < 3; ++k)
-                            steps_.emplace_back(r, ids_.vertex(gv[std::size_t(k)]), ids_.vertex(gv[std::size_t((k + 1) % 3)]));
+                        for (std::size_t k = 0; k < 3; ++k) steps_.emplace_back(r, ids_.vertex(gv[k]), ids_.vertex(gv[(k + 1) % 3]));
                     }
             ring = std::move(next);
         }
@@ -833,8 +825,8 @@ class SnaxelMapBuilder {
             if (gone[i]) continue;
             const Step back(steps_[i].region(), steps_[i].to, steps_[i].from());
             auto it = std::lower_bound(steps_.begin(), steps_.end(), back);
-            while (it != steps_.end() && *it == back && gone[std::size_t(it - steps_.begin())]) ++it;
-            if (it != steps_.end() && *it == back) gone[i] = gone[std::size_t(it - steps_.begin())] = 1;
+            while (it != steps_.end() && *it == back && gone[it - steps_.begin()]) ++it;
+            if (it != steps_.end() && *it == back) gone[i] = gone[it - steps_.begin()] = 1;
         }
         std::size_t kept = 0;
         for (std::size_t i = 0; i < steps_.size(); ++i)
@@ -860,14 +852,14 @@ class SnaxelMapBuilder {
                 const PointId to = steps_[at].to;
                 if (to == first) break;
                 auto it = std::lower_bound(steps_.begin(), steps_.end(), Step(r, to, PointId{-1}));
-                while (it != steps_.end() && it->region() == r && it->from() == to && used[std::size_t(it - steps_.begin())]) ++it;
+                while (it != steps_.end() && it->region() == r && it->from() == to && used[it - steps_.begin()]) ++it;
                 if (it == steps_.end() || it->region() != r || it->from() != to) { // an outline that does not close
                     ++map_.stats.open_outlines;
                     break;
                 }
                 at = std::size_t(it - steps_.begin());
             }
-            if (loop.size() >= 3) regions_[std::size_t(r)].polygons.push_back(std::move(loop));
+            if (loop.size() >= 3) regions_[r].polygons.push_back(std::move(loop));
         }
     }
 
@@ -880,13 +872,13 @@ class SnaxelMapBuilder {
         std::vector<double> depth_sum(comp_label_.size(), 0.0);
         std::vector<std::size_t> depth_n(comp_label_.size(), 0);
         auto add_depth = [&](std::int32_t r, const glm::dvec3& p) {
-            depth_sum[std::size_t(r)] += camera_.orthographic() ? glm::dot(p, camera_.forward()) : glm::length(p - camera_.eye);
-            ++depth_n[std::size_t(r)];
+            depth_sum[r] += camera_.orthographic() ? glm::dot(p, camera_.forward()) : glm::length(p - camera_.eye);
+            ++depth_n[r];
         };
-        for (std::int32_t v = 0; v < V_; ++v)
-            if (comp_[std::size_t(v)] >= 0) add_depth(comp_[std::size_t(v)], position(v));
+        for (const VertexId v : topo_.vertices())
+            if (comp_[v] != kNoRegion) add_depth(comp_[v], position(v));
         for (const auto& [r, f] : vertexless_faces_) {
-            const auto& fv = topo_.face_vertices()[std::size_t(f)];
+            const auto& fv = topo_.face_vertices()[f];
             add_depth(r, (position(fv[0]) + position(fv[1]) + position(fv[2])) / 3.0);
         }
         std::vector<std::size_t> order(regions_.size());
@@ -919,27 +911,26 @@ class SnaxelMapBuilder {
     const Light& light_;
     const MeshTopology& topo_;
     const ContourResult& visual_;
-    const std::int32_t V_, E_;
     const ShadingClasses classes_;
     const int highlight_; ///< the first highlight class
     const std::vector<double> levels_;
     const PointIds ids_;
     const VisibilitySampler sampler_;
 
-    std::vector<VertexLabel> label_;                         ///< per vertex
-    std::vector<double> nl_;                                 ///< per vertex: N.L
-    std::vector<std::int32_t> comp_;                         ///< per vertex: its region, or -1
-    std::vector<VertexLabel> comp_label_;                    ///< per region
-    std::vector<std::int32_t> cut_edges_;                    ///< edges whose labels differ
-    std::vector<glm::dvec3> edge_point_;                     ///< per edge: where fronts stop on it (cut edges)
-    std::vector<char> front_face_, folded_;                  ///< per face
-    std::vector<std::int32_t> faces_;                        ///< the faces walked
-    std::vector<Step> steps_;                                ///< every region's outline steps
-    std::vector<std::pair<std::int32_t, std::int32_t>> rim_faces_; ///< (face, region) taken past the contour
+    VertexData<VertexLabel> label_;
+    VertexData<double> nl_;                           ///< N.L
+    VertexData<std::int32_t> comp_;                   ///< each vertex's region, or kNoRegion
+    std::vector<VertexLabel> comp_label_;             ///< per region
+    std::vector<EdgeId> cut_edges_;                   ///< edges whose labels differ
+    EdgeData<glm::dvec3> edge_point_;                 ///< where fronts stop on each edge (cut edges)
+    FaceData<char> front_face_, folded_;
+    std::vector<FaceId> faces_;                       ///< the faces walked
+    std::vector<Step> steps_;                         ///< every region's outline steps
+    std::vector<std::pair<FaceId, std::int32_t>> rim_faces_; ///< (face, region) taken past the contour
     std::mutex shared_points_; ///< the rare crossings past the contour, and strip regions
     std::unordered_map<std::int64_t, glm::dvec3> extra_point_;     ///< level and across points
     std::unordered_map<int, std::int32_t> outline_regions_;        ///< class -> region of the strips past the contour
-    std::vector<std::pair<std::int32_t, std::int32_t>> vertexless_faces_; ///< (strip region, face): where the strips lie
+    std::vector<std::pair<std::int32_t, FaceId>> vertexless_faces_; ///< (strip region, face): where the strips lie
     std::vector<MapRegion> regions_;
     SnaxelMap map_;
 };

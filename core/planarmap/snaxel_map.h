@@ -67,7 +67,7 @@ struct SnaxelMapStats {
 
 struct SnaxelMap {
     std::vector<MapRegion> regions;         ///< depth: order of mean depth, 0 nearest
-    std::vector<std::int32_t> vertex_region; ///< per vertex: index into regions, or -1 (occluded)
+    VertexData<std::int32_t> vertex_region; ///< per vertex: index into regions, or -1 (occluded)
     SnaxelMapStats stats;
 };
 

@@ -163,21 +163,21 @@ double ContourFunction::first_zero(const glm::dvec3& na, const glm::dvec3& nb, d
     return std::clamp(x / w, 0.0, 1.0);
 }
 
-void ContourFunction::evaluate_vertices(const MeshTopology& topology, std::vector<double>& out) const {
+void ContourFunction::evaluate_vertices(const MeshTopology& topology, VertexData<double>& out) const {
     if (spec_.kind == ContourKind::Suggestive) suggestive_function(topology, *require_curvature(topology), camera_, out);
     else evaluate_vertices(topology.positions(), topology.normals(), out);
 }
 
-void ContourFunction::evaluate_vertices(std::span<const glm::dvec3> positions, std::span<const glm::dvec3> normals,
-                                        std::vector<double>& out) const {
+void ContourFunction::evaluate_vertices(ElementSpan<VertexTag, const glm::dvec3> positions,
+                                        ElementSpan<VertexTag, const glm::dvec3> normals, VertexData<double>& out) const {
     out.resize(positions.size());
     if (linear_) {
-        for (std::size_t i = 0; i < normals.size(); ++i) out[i] = glm::dot(normals[i], v_);
+        for (const VertexId v : normals.ids()) out[v] = glm::dot(normals[v], v_);
         return;
     }
     if (closed_) { // V and L the same everywhere: evaluate() without normalizing them per vertex
-        for (std::size_t i = 0; i < normals.size(); ++i) {
-            const glm::dvec3& n = normals[i];
+        for (const VertexId v : normals.ids()) {
+            const glm::dvec3& n = normals[v];
             const double nv = glm::dot(n, v_);
             double g = nv;
             switch (spec_.kind) {
@@ -186,11 +186,11 @@ void ContourFunction::evaluate_vertices(std::span<const glm::dvec3> positions, s
             case ContourKind::Gleam: g = glm::dot(v_, 2.0 * glm::dot(n, l_) * n - l_) - spec_.k; break;
             default: break;
             }
-            out[i] = std::min(g, nv);
+            out[v] = std::min(g, nv);
         }
         return;
     }
-    for (std::size_t i = 0; i < positions.size(); ++i) out[i] = (*this)(positions[i], normals[i]);
+    for (const VertexId v : positions.ids()) out[v] = (*this)(positions[v], normals[v]);
 }
 
 double slerp_dot_root(const glm::dvec3& na, const glm::dvec3& nb, double a, double b) {

@@ -97,10 +97,10 @@ class ContourFunction {
     /// f at every vertex of @p topology's pose into @p out: evaluate_vertices
     /// below, or for suggestive contours suggestive_function (kappa_r on the
     /// side seen) from the pose's curvature.
-    void evaluate_vertices(const MeshTopology& topology, std::vector<double>& out) const;
+    void evaluate_vertices(const MeshTopology& topology, VertexData<double>& out) const;
     /// f at every vertex into @p out (sized to the vertices).
-    void evaluate_vertices(std::span<const glm::dvec3> positions, std::span<const glm::dvec3> normals,
-                           std::vector<double>& out) const;
+    void evaluate_vertices(ElementSpan<VertexTag, const glm::dvec3> positions,
+                           ElementSpan<VertexTag, const glm::dvec3> normals, VertexData<double>& out) const;
 
   private:
     double evaluate(const glm::dvec3& p, const glm::dvec3& n) const;

@@ -31,10 +31,10 @@ std::array<double, 3> corner_areas(const std::array<glm::dvec3, 3>& e, double ar
     const std::array<double, 3> bcw{l2[0] * (l2[1] + l2[2] - l2[0]), l2[1] * (l2[2] + l2[0] - l2[1]),
                                     l2[2] * (l2[0] + l2[1] - l2[2])};
     std::array<double, 3> c{};
-    for (int j = 0; j < 3; ++j) {
-        if (bcw[std::size_t(j)] > 0.0) continue;
-        // Obtuse at corner j: the circumcentre lies outside, past the edge opposite j.
-        const std::size_t a = std::size_t(j), n = std::size_t((j + 1) % 3), p = std::size_t((j + 2) % 3);
+    for (std::size_t a = 0; a < 3; ++a) {
+        if (bcw[a] > 0.0) continue;
+        // Obtuse at corner a: the circumcentre lies outside, past the edge opposite a.
+        const std::size_t n = (a + 1) % 3, p = (a + 2) % 3;
         c[n] = -0.25 * l2[p] * area / glm::dot(e[a], e[p]);
         c[p] = -0.25 * l2[n] * area / glm::dot(e[a], e[n]);
         c[a] = area - c[n] - c[p];
@@ -47,15 +47,13 @@ std::array<double, 3> corner_areas(const std::array<glm::dvec3, 3>& e, double ar
 
 /// Fits face @p f's second fundamental form to the change of the vertex
 /// normals along its edges (least squares over the three edges).
-FaceForm face_form(const MeshTopology& topo, std::size_t f) {
+FaceForm face_form(const MeshTopology& topo, FaceId f) {
     FaceForm form;
     const auto& fv = topo.face_vertices()[f];
     const auto P = topo.positions();
     const auto N = topo.normals();
     // Edge j is opposite corner j, running from corner j+1 to corner j+2.
-    const std::array<glm::dvec3, 3> e{P[std::size_t(fv[2])] - P[std::size_t(fv[1])],
-                                      P[std::size_t(fv[0])] - P[std::size_t(fv[2])],
-                                      P[std::size_t(fv[1])] - P[std::size_t(fv[0])]};
+    const std::array<glm::dvec3, 3> e{P[fv[2]] - P[fv[1]], P[fv[0]] - P[fv[2]], P[fv[1]] - P[fv[0]]};
     const glm::dvec3 cross = glm::cross(e[0], e[1]);
     const double twice_area = glm::length(cross);
     const double e0 = glm::length(e[0]);
@@ -70,7 +68,7 @@ FaceForm face_form(const MeshTopology& topo, std::size_t f) {
         w00 += u * u;
         w01 += u * v;
         w22 += v * v;
-        const glm::dvec3 dn = N[std::size_t(fv[(j + 2) % 3])] - N[std::size_t(fv[(j + 1) % 3])];
+        const glm::dvec3 dn = N[fv[(j + 2) % 3]] - N[fv[(j + 1) % 3]];
         const double dnu = glm::dot(dn, form.t), dnv = glm::dot(dn, form.b);
         m0 += dnu * u;
         m1 += dnu * v + dnv * u;
@@ -109,11 +107,11 @@ std::array<double, 3> project_form(const FaceForm& form, const glm::dvec3& nu, c
 }
 
 /// A unit tangent frame (u, v) at vertex @p v, u toward its first neighbour.
-std::pair<glm::dvec3, glm::dvec3> vertex_frame(const MeshTopology& topo, std::size_t v) {
+std::pair<glm::dvec3, glm::dvec3> vertex_frame(const MeshTopology& topo, VertexId v) {
     const glm::dvec3 n = topo.normals()[v];
     glm::dvec3 u(0.0);
-    if (const auto ring = topo.neighbours(std::int32_t(v)); !ring.empty()) {
-        const glm::dvec3 d = topo.positions()[std::size_t(ring.front())] - topo.positions()[v];
+    if (const auto ring = topo.neighbours(v); !ring.empty()) {
+        const glm::dvec3 d = topo.positions()[ring.front()] - topo.positions()[v];
         u = d - glm::dot(d, n) * n;
     }
     if (!(glm::length(u) > 0.0)) { // no neighbour, or one along the normal: any tangent
@@ -128,7 +126,7 @@ std::pair<glm::dvec3, glm::dvec3> vertex_frame(const MeshTopology& topo, std::si
 /// (The principal directions lie in the tangent plane, so the view's part
 /// along the normal adds nothing to its components along them: no
 /// projection is needed.)
-double radial_at(const CurvatureField& field, std::size_t v, const glm::dvec3& view) {
+double radial_at(const CurvatureField& field, VertexId v, const glm::dvec3& view) {
     return field.normal_curvature(v, view);
 }
 
@@ -147,7 +145,7 @@ struct ToViewer {
 /// Vertex @p v's principal curvatures and directions from its second
 /// fundamental form [ku kuv; kuv kv] in the tangent frame (u, w): the
 /// Jacobi rotation that diagonalizes it, |k1| >= |k2|.
-void set_principal(CurvatureField& out, std::size_t v, const glm::dvec3& n, const glm::dvec3& u, const glm::dvec3& w,
+void set_principal(CurvatureField& out, VertexId v, const glm::dvec3& n, const glm::dvec3& u, const glm::dvec3& w,
                    double ku, double kuv, double kv) {
     double c = 1.0, s = 0.0, tt = 0.0;
     if (kuv != 0.0) {
@@ -172,10 +170,10 @@ void set_principal(CurvatureField& out, std::size_t v, const glm::dvec3& n, cons
 /// (n x opposite edge) / |n|^2, and the face's area through @p area (all 0
 /// for a face of no area). A linear interpolant's gradient is the sum of
 /// each corner's value times its vector.
-std::array<glm::dvec3, 3> corner_gradients(const MeshTopology& topo, std::int32_t face, double& area) {
-    const auto& fv = topo.face_vertices()[std::size_t(face)];
+std::array<glm::dvec3, 3> corner_gradients(const MeshTopology& topo, FaceId face, double& area) {
+    const auto& fv = topo.face_vertices()[face];
     const auto P = topo.positions();
-    const glm::dvec3 a = P[std::size_t(fv[0])], b = P[std::size_t(fv[1])], c = P[std::size_t(fv[2])];
+    const glm::dvec3 a = P[fv[0]], b = P[fv[1]], c = P[fv[2]];
     const glm::dvec3 normal = glm::cross(b - a, c - a);
     const double twice_area2 = glm::dot(normal, normal);
     area = 0.5 * std::sqrt(twice_area2);
@@ -188,7 +186,7 @@ std::array<glm::dvec3, 3> corner_gradients(const MeshTopology& topo, std::int32_
 double typical_curvature(const CurvatureField& field) {
     std::vector<double> magnitudes;
     magnitudes.reserve(field.size());
-    for (std::size_t v = 0; v < field.size(); ++v)
+    for (const VertexId v : field.k1.ids())
         if (field.area[v] > 0.0) magnitudes.push_back(std::abs(field.k1[v]));
     if (magnitudes.empty()) return 0.0;
     const auto middle = magnitudes.begin() + std::ptrdiff_t(magnitudes.size() / 2);
@@ -200,12 +198,12 @@ double typical_curvature(const CurvatureField& field) {
 
 CurvatureField smoothed_curvatures(const MeshTopology& topo, const CurvatureField& field) {
     CurvatureField out = field;
-    parallel_for(topo.n_vertices(), [&](std::size_t v) {
+    parallel_for(topo.vertices(), [&](VertexId v) {
         if (!(field.area[v] > 0.0)) return;
         const std::pair<glm::dvec3, glm::dvec3> frame = vertex_frame(topo, v);
         const glm::dvec3 u = frame.first, w = frame.second; // (not a binding: the lambda below uses them)
         double total = 0.0, ku = 0.0, kuv = 0.0, kv = 0.0;
-        auto add = [&](std::size_t j) {
+        auto add = [&](VertexId j) {
             FaceForm form; // vertex j's form in its principal frame
             form.t = field.dir1[j];
             form.b = field.dir2[j];
@@ -218,8 +216,8 @@ CurvatureField smoothed_curvatures(const MeshTopology& topo, const CurvatureFiel
             kv += field.area[j] * k[2];
         };
         add(v);
-        for (const std::int32_t n : topo.neighbours(std::int32_t(v)))
-            if (field.area[std::size_t(n)] > 0.0) add(std::size_t(n));
+        for (const VertexId n : topo.neighbours(v))
+            if (field.area[n] > 0.0) add(n);
         set_principal(out, v, topo.normals()[v], u, w, ku / total, kuv / total, kv / total);
     }, 1024);
     out.typical = typical_curvature(out);
@@ -228,8 +226,8 @@ CurvatureField smoothed_curvatures(const MeshTopology& topo, const CurvatureFiel
 
 CurvatureField vertex_curvatures(const MeshTopology& topo) {
     const std::size_t nv = topo.n_vertices(), nf = topo.n_faces();
-    std::vector<FaceForm> forms(nf);
-    parallel_for(nf, [&](std::size_t f) { forms[f] = face_form(topo, f); }, 2048);
+    FaceData<FaceForm> forms(nf);
+    parallel_for(topo.faces(), [&](FaceId f) { forms[f] = face_form(topo, f); }, 2048);
 
     CurvatureField out;
     out.k1.assign(nv, 0.0);
@@ -237,13 +235,13 @@ CurvatureField vertex_curvatures(const MeshTopology& topo) {
     out.dir1.assign(nv, glm::dvec3(0.0));
     out.dir2.assign(nv, glm::dvec3(0.0));
     out.area.assign(nv, 0.0);
-    parallel_for(nv, [&](std::size_t v) {
+    parallel_for(topo.vertices(), [&](VertexId v) {
         const std::pair<glm::dvec3, glm::dvec3> frame = vertex_frame(topo, v);
         const glm::dvec3 u = frame.first, w = frame.second; // (not a binding: the lambda below uses them)
         double area = 0.0, ku = 0.0, kuv = 0.0, kv = 0.0;
-        for (const auto [f, c] : topo.faces_around(std::int32_t(v))) {
-            const FaceForm& form = forms[std::size_t(f)];
-            const double weight = form.corner[std::size_t(c)];
+        for (const auto [f, c] : topo.faces_around(v)) {
+            const FaceForm& form = forms[f];
+            const double weight = form.corner[c];
             if (!(weight > 0.0)) continue;
             const std::array<double, 3> k = project_form(form, u, w);
             area += weight;
@@ -264,33 +262,37 @@ CurvatureField vertex_curvatures(const MeshTopology& topo) {
 }
 
 void add_gradient_operator(const MeshTopology& topo, CurvatureField& field) {
-    const std::size_t nv = topo.n_vertices();
-    field.gradient_start.assign(nv + 1, 0);
-    for (std::size_t v = 0; v < nv; ++v) // v itself, then its neighbours in ring order
-        field.gradient_start[v + 1] = field.gradient_start[v] + 1 + topo.degree(std::int32_t(v));
-    field.gradient_vertex.assign(std::size_t(field.gradient_start[nv]), 0);
-    field.gradient_weight.assign(std::size_t(field.gradient_start[nv]), glm::dvec3(0.0));
-    parallel_for(nv, [&](std::size_t v) {
-        const std::int32_t base = field.gradient_start[v];
-        const std::span<const std::int32_t> ring = topo.neighbours(std::int32_t(v));
-        field.gradient_vertex[std::size_t(base)] = std::int32_t(v);
-        std::copy(ring.begin(), ring.end(), field.gradient_vertex.begin() + base + 1);
-        auto slot = [&](std::int32_t j) {
-            if (j == std::int32_t(v)) return base;
-            const auto at = std::find(ring.begin(), ring.end(), j);
-            return at == ring.end() ? std::int32_t(-1) : base + 1 + std::int32_t(at - ring.begin());
+    field.gradient_start.assign(topo.n_vertices() + 1, 0);
+    for (const VertexId v : topo.vertices()) { // v itself, then its neighbours in ring order
+        const auto i = v.index();
+        field.gradient_start[i + 1] = field.gradient_start[i] + 1 + topo.degree(v);
+    }
+    field.gradient_vertex.assign(field.gradient_start.back(), VertexId());
+    field.gradient_weight.assign(field.gradient_start.back(), glm::dvec3(0.0));
+    parallel_for(topo.vertices(), [&](VertexId v) {
+        const auto begin = field.gradient_weight.begin() + field.gradient_start[v.index()];
+        const auto end = field.gradient_weight.begin() + field.gradient_start[v.index() + 1];
+        const std::span<const VertexId> ring = topo.neighbours(v);
+        const auto at = field.gradient_vertex.begin() + field.gradient_start[v.index()];
+        *at = v;
+        std::copy(ring.begin(), ring.end(), at + 1);
+        // Where vertex j's weight goes: v's first, then its neighbours'.
+        auto weight_of = [&](VertexId j) {
+            if (j == v) return begin;
+            const auto place = std::find(ring.begin(), ring.end(), j);
+            return place == ring.end() ? end : begin + 1 + (place - ring.begin());
         };
         double total = 0.0;
-        for (const auto [face, corner] : topo.faces_around(std::int32_t(v))) {
-            const auto& fv = topo.face_vertices()[std::size_t(face)];
+        for (const auto [face, corner] : topo.faces_around(v)) {
+            const auto& fv = topo.face_vertices()[face];
             double area = 0.0;
             const std::array<glm::dvec3, 3> g = corner_gradients(topo, face, area);
             for (std::size_t k = 0; k < 3; ++k)
-                if (const std::int32_t s = slot(fv[k]); s >= 0) field.gradient_weight[std::size_t(s)] += area * g[k];
+                if (const auto w = weight_of(fv[k]); w != end) *w += area * g[k];
             total += area;
         }
         if (total > 0.0)
-            for (std::int32_t k = base; k < field.gradient_start[v + 1]; ++k) field.gradient_weight[std::size_t(k)] /= total;
+            for (auto w = begin; w != end; ++w) *w /= total;
     }, 1024);
 }
 
@@ -307,24 +309,24 @@ std::shared_ptr<const CurvatureField> require_curvature(const MeshTopology& topo
     });
 }
 
-std::vector<double> radial_curvature(const MeshTopology& topo, const CurvatureField& field, const Camera& camera) {
-    std::vector<double> out(topo.n_vertices(), 0.0);
+VertexData<double> radial_curvature(const MeshTopology& topo, const CurvatureField& field, const Camera& camera) {
+    VertexData<double> out(topo.n_vertices(), 0.0);
     const auto P = topo.positions();
     const ToViewer to_viewer(camera);
-    parallel_for(out.size(), [&](std::size_t v) { out[v] = radial_at(field, v, to_viewer(P[v])); }, 4096);
+    parallel_for(topo.vertices(), [&](VertexId v) { out[v] = radial_at(field, v, to_viewer(P[v])); }, 4096);
     return out;
 }
 
 double suggestive_away_value(const CurvatureField& field) { return field.typical > 0.0 ? field.typical : 1.0; }
 
 void suggestive_function(const MeshTopology& topo, const CurvatureField& field, const Camera& camera,
-                         std::vector<double>& out) {
+                         VertexData<double>& out) {
     out.resize(topo.n_vertices());
     const double away = suggestive_away_value(field);
     const auto P = topo.positions();
     const auto N = topo.normals();
     const ToViewer to_viewer(camera);
-    parallel_for(out.size(), [&](std::size_t v) {
+    parallel_for(topo.vertices(), [&](VertexId v) {
         const glm::dvec3 view = to_viewer(P[v]);
         out[v] = glm::dot(view, N[v]) > 0.0 ? radial_at(field, v, view) : away;
     }, 4096);
@@ -338,21 +340,24 @@ namespace {
 /// area-weighted mean of the gradients of the faces around v, smoother than
 /// one face's).
 template <class Values>
-double vertex_derivative_along_view(const MeshTopology& topo, const CurvatureField& field, Values&& f, std::int32_t v,
+double vertex_derivative_along_view(const MeshTopology& topo, const CurvatureField& field, Values&& f, VertexId v,
                                     const ToViewer& to_viewer) {
     glm::dvec3 gradient(0.0);
-    for (std::int32_t k = field.gradient_start[std::size_t(v)]; k < field.gradient_start[std::size_t(v) + 1]; ++k)
-        gradient += f(field.gradient_vertex[std::size_t(k)]) * field.gradient_weight[std::size_t(k)];
-    const glm::dvec3 n = topo.normals()[std::size_t(v)];
-    const glm::dvec3 view = to_viewer(topo.positions()[std::size_t(v)]);
+    for (std::int32_t k = field.gradient_start[v.index()]; k < field.gradient_start[v.index() + 1]; ++k)
+        gradient += f(field.gradient_vertex[k]) * field.gradient_weight[k];
+    const glm::dvec3 n = topo.normals()[v];
+    const glm::dvec3 view = to_viewer(topo.positions()[v]);
     const glm::dvec3 w = view - glm::dot(view, n) * n;
     const double len = glm::length(w);
     return len > 0.0 ? glm::dot(gradient, w) / len : 0.0;
 }
 
+/// "No slot yet" in suggestive_margins' vertex slots.
+constexpr std::size_t kNoSlot = ~std::size_t(0);
+
 } // namespace
 
-std::vector<double> suggestive_margins(const MeshTopology& topo, const CurvatureField& field, const std::vector<double>& kr,
+std::vector<double> suggestive_margins(const MeshTopology& topo, const CurvatureField& field, const VertexData<double>& kr,
                                        const Fronts& fronts, const Camera& camera, const ContourSpec& spec) {
     const std::size_t n = fronts.snaxels.size();
     const double typical = field.typical, away = suggestive_away_value(field);
@@ -366,25 +371,26 @@ std::vector<double> suggestive_margins(const MeshTopology& topo, const Curvature
     // is not needed.
     parallel_for(n, [&](std::size_t i) {
         const Snaxel& s = fronts.snaxels[i];
-        const glm::dvec3 p = (1.0 - s.t) * P[std::size_t(s.inside)] + s.t * P[std::size_t(s.outside)];
+        const glm::dvec3 p = (1.0 - s.t) * P[s.inside] + s.t * P[s.outside];
         // (The normalized mean of the end normals: the slerp's direction
         // within a hair, at a fraction of its cost.)
-        const glm::dvec3 mixed = (1.0 - s.t) * N[std::size_t(s.inside)] + s.t * N[std::size_t(s.outside)];
+        const glm::dvec3 mixed = (1.0 - s.t) * N[s.inside] + s.t * N[s.outside];
         const double len = glm::length(mixed);
         const double nv = len > 0.0 ? glm::dot(mixed, to_viewer(p)) / len : 0.0;
         // A snaxel on an edge from a vertex facing away (its inside end,
         // where suggestive_function holds its stand-in) lies on the rim of
         // the side seen, a zero of suggestive_function only: never drawn.
-        const bool rim = kr[std::size_t(s.inside)] == away;
+        const bool rim = kr[s.inside] == away;
         margin[i] = rim ? -1.0 : std::min(most_facing - nv, nv);
     }, 4096);
     // The derivative at each end vertex of the other snaxels, once per vertex.
-    std::vector<std::int32_t> slot(topo.n_vertices(), -1), ends;
+    VertexData<std::size_t> slot(topo.n_vertices(), kNoSlot);
+    std::vector<VertexId> ends;
     for (std::size_t i = 0; i < n; ++i) {
         if (margin[i] < 0.0) continue;
-        for (const std::int32_t v : {fronts.snaxels[i].inside, fronts.snaxels[i].outside})
-            if (slot[std::size_t(v)] < 0) {
-                slot[std::size_t(v)] = std::int32_t(ends.size());
+        for (const VertexId v : {fronts.snaxels[i].inside, fronts.snaxels[i].outside})
+            if (slot[v] == kNoSlot) {
+                slot[v] = ends.size();
                 ends.push_back(v);
             }
     }
@@ -393,30 +399,27 @@ std::vector<double> suggestive_margins(const MeshTopology& topo, const Curvature
         // kappa_r itself, also at the neighbours facing away (where @p kr
         // holds suggestive_function's stand-in; a true kappa_r of the same
         // value is recomputed, to itself).
-        auto radial = [&](std::int32_t j) {
-            return kr[std::size_t(j)] != away ? kr[std::size_t(j)] : radial_at(field, std::size_t(j), to_viewer(P[std::size_t(j)]));
-        };
+        auto radial = [&](VertexId j) { return kr[j] != away ? kr[j] : radial_at(field, j, to_viewer(P[j])); };
         derivative[k] = vertex_derivative_along_view(topo, field, radial, ends[k], to_viewer);
     }, 1024);
     for (std::size_t i = 0; i < n; ++i) {
         if (margin[i] < 0.0) continue;
         const Snaxel& s = fronts.snaxels[i];
-        const double d = (1.0 - s.t) * derivative[std::size_t(slot[std::size_t(s.inside)])] +
-                         s.t * derivative[std::size_t(slot[std::size_t(s.outside)])];
+        const double d = (1.0 - s.t) * derivative[slot[s.inside]] + s.t * derivative[slot[s.outside]];
         margin[i] = std::min(margin[i], d * scale - spec.k);
     }
     return margin;
 }
 
-double derivative_along_view(const MeshTopology& topo, const std::vector<double>& f, std::int32_t face,
+double derivative_along_view(const MeshTopology& topo, const VertexData<double>& f, FaceId face,
                              const glm::dvec3& p, const Camera& camera) {
     double area = 0.0;
     const std::array<glm::dvec3, 3> g = corner_gradients(topo, face, area);
     if (!(area > 0.0)) return 0.0;
-    const auto& fv = topo.face_vertices()[std::size_t(face)];
-    const glm::dvec3 gradient = f[std::size_t(fv[0])] * g[0] + f[std::size_t(fv[1])] * g[1] + f[std::size_t(fv[2])] * g[2];
+    const auto& fv = topo.face_vertices()[face];
+    const glm::dvec3 gradient = f[fv[0]] * g[0] + f[fv[1]] * g[1] + f[fv[2]] * g[2];
     const auto P = topo.positions();
-    const glm::dvec3 n = glm::normalize(glm::cross(P[std::size_t(fv[1])] - P[std::size_t(fv[0])], P[std::size_t(fv[2])] - P[std::size_t(fv[0])]));
+    const glm::dvec3 n = glm::normalize(glm::cross(P[fv[1]] - P[fv[0]], P[fv[2]] - P[fv[0]]));
     const glm::dvec3 view = camera.to_viewer(p);
     const glm::dvec3 w = view - glm::dot(view, n) * n;
     const double len = glm::length(w);

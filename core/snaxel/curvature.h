@@ -25,9 +25,9 @@ namespace snaxels {
 
 /// The principal curvatures and directions of every vertex of one pose.
 struct CurvatureField {
-    std::vector<double> k1, k2;            ///< #V, principal curvatures, |k1| >= |k2|
-    std::vector<glm::dvec3> dir1, dir2;    ///< #V, unit principal directions in the tangent plane
-    std::vector<double> area;              ///< #V, the vertex's mixed Voronoi area
+    VertexData<double> k1, k2;           ///< principal curvatures, |k1| >= |k2|
+    VertexData<glm::dvec3> dir1, dir2;   ///< unit principal directions in the tangent plane
+    VertexData<double> area;             ///< the vertex's mixed Voronoi area
     /// The median of |k1| over the vertices with area: the mesh's typical
     /// curvature, whose inverse (a typical radius) makes thresholds on
     /// curvature scale-free and suited to the mesh (0 for a flat mesh).
@@ -38,7 +38,8 @@ struct CurvatureField {
     /// [gradient_start[v], gradient_start[v+1]) of gradient_weight[k] times
     /// the value at vertex gradient_vertex[k] (v, then its neighbours).
     /// Filled by add_gradient_operator (require_curvature does); empty else.
-    std::vector<std::int32_t> gradient_start, gradient_vertex;
+    std::vector<std::int32_t> gradient_start;
+    std::vector<VertexId> gradient_vertex;
     std::vector<glm::dvec3> gradient_weight;
 
     std::size_t size() const { return k1.size(); }
@@ -47,7 +48,7 @@ struct CurvatureField {
     /// tangent; 0 where the projection vanishes): k1 cos^2 + k2 sin^2 of
     /// its angle to dir1. Inline: kappa_r calls it for every vertex seen,
     /// every frame.
-    double normal_curvature(std::size_t v, const glm::dvec3& w) const {
+    double normal_curvature(VertexId v, const glm::dvec3& w) const {
         const double c = glm::dot(w, dir1[v]), s = glm::dot(w, dir2[v]);
         const double len2 = c * c + s * s;
         return len2 > 0.0 ? (k1[v] * c * c + k2[v] * s * s) / len2 : 0.0;
@@ -92,7 +93,7 @@ std::shared_ptr<const CurvatureField> require_curvature(const MeshTopology& topo
 /// view vector (toward the viewer) projected onto the tangent plane. Its
 /// zeros where it grows along w are the suggestive contours. 0 where the
 /// view is along the normal (w vanishes).
-std::vector<double> radial_curvature(const MeshTopology& topology, const CurvatureField& field, const Camera& camera);
+VertexData<double> radial_curvature(const MeshTopology& topology, const CurvatureField& field, const Camera& camera);
 
 /// The function whose zeros the suggestive kind tracks: kappa_r
 /// (radial_curvature) at the vertices facing the viewer, and a positive
@@ -102,7 +103,7 @@ std::vector<double> radial_curvature(const MeshTopology& topology, const Curvatu
 /// the two sides where kappa_r < 0 on the near side: suggestive_margins
 /// leaves those out. Written into @p out, resized to the vertex count.
 void suggestive_function(const MeshTopology& topology, const CurvatureField& field, const Camera& camera,
-                         std::vector<double>& out);
+                         VertexData<double>& out);
 /// The value suggestive_function gives a vertex facing away.
 double suggestive_away_value(const CurvatureField& field);
 
@@ -111,7 +112,7 @@ double suggestive_away_value(const CurvatureField& field);
 /// face: the face's gradient of f dotted with the unit projection of the
 /// view vector at p onto the face's plane (0 when the view is along its
 /// normal or the face has no area).
-double derivative_along_view(const MeshTopology& topology, const std::vector<double>& f, std::int32_t face,
+double derivative_along_view(const MeshTopology& topology, const VertexData<double>& f, FaceId face,
                              const glm::dvec3& p, const Camera& camera);
 
 /// Where a suggestive contour is drawn (DeCarlo et al. 2003's pruning). Per
@@ -131,7 +132,7 @@ double derivative_along_view(const MeshTopology& topology, const std::vector<dou
 /// The drawing cuts a loop where the margin changes sign, between two
 /// snaxels where it interpolates to zero. (Where the view terms are already
 /// negative the derivative is not computed and the margin is theirs.)
-std::vector<double> suggestive_margins(const MeshTopology& topology, const CurvatureField& field, const std::vector<double>& kr,
+std::vector<double> suggestive_margins(const MeshTopology& topology, const CurvatureField& field, const VertexData<double>& kr,
                                        const Fronts& fronts, const Camera& camera, const ContourSpec& spec);
 
 } // namespace snaxels

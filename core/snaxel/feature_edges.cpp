@@ -10,23 +10,23 @@ namespace snaxels {
 namespace {
 
 /// The unit normal of face @p f's plane, or zero for a face of no area.
-glm::dvec3 face_normal(const MeshTopology& topo, std::int32_t f) {
-    const auto& fv = topo.face_vertices()[std::size_t(f)];
+glm::dvec3 face_normal(const MeshTopology& topo, FaceId f) {
+    const auto& fv = topo.face_vertices()[f];
     const auto P = topo.positions();
-    const glm::dvec3 a = P[std::size_t(fv[0])];
-    const glm::dvec3 n = glm::cross(P[std::size_t(fv[1])] - a, P[std::size_t(fv[2])] - a);
+    const glm::dvec3 a = P[fv[0]];
+    const glm::dvec3 n = glm::cross(P[fv[1]] - a, P[fv[2]] - a);
     const double len = glm::length(n);
     return len > 0.0 ? n / len : glm::dvec3(0.0);
 }
 
 } // namespace
 
-std::vector<std::int32_t> crease_edges(const MeshTopology& topo, double degrees) {
+std::vector<EdgeId> crease_edges(const MeshTopology& topo, double degrees) {
     const double limit = std::cos(glm::radians(std::clamp(degrees, 0.0, 180.0)));
-    std::vector<std::int32_t> out;
-    for (std::int32_t e = 0; e < std::int32_t(topo.n_edges()); ++e) {
+    std::vector<EdgeId> out;
+    for (const EdgeId e : topo.edges()) {
         if (topo.is_boundary_edge(e)) continue;
-        const auto& faces = topo.edge_faces()[std::size_t(e)];
+        const auto& faces = topo.edge_faces()[e];
         const glm::dvec3 a = face_normal(topo, faces[0]), b = face_normal(topo, faces[1]);
         if (glm::dot(a, a) == 0.0 || glm::dot(b, b) == 0.0) continue;
         if (glm::dot(a, b) < limit) out.push_back(e);
@@ -34,42 +34,43 @@ std::vector<std::int32_t> crease_edges(const MeshTopology& topo, double degrees)
     return out;
 }
 
-std::vector<std::int32_t> border_edges(const MeshTopology& topo) {
-    std::vector<std::int32_t> out;
-    for (std::int32_t e = 0; e < std::int32_t(topo.n_edges()); ++e)
+std::vector<EdgeId> border_edges(const MeshTopology& topo) {
+    std::vector<EdgeId> out;
+    for (const EdgeId e : topo.edges())
         if (topo.is_boundary_edge(e)) out.push_back(e);
     return out;
 }
 
-std::vector<EdgeChain> chain_edges(const MeshTopology& topo, const std::vector<std::int32_t>& edges) {
-    std::vector<std::uint8_t> chosen(topo.n_edges(), 0), used(topo.n_edges(), 0);
-    for (const std::int32_t e : edges) chosen[std::size_t(e)] = 1;
-    std::vector<std::int32_t> degree(topo.n_vertices(), 0);
-    for (std::size_t e = 0; e < chosen.size(); ++e)
+std::vector<EdgeChain> chain_edges(const MeshTopology& topo, const std::vector<EdgeId>& edges) {
+    EdgeData<std::uint8_t> chosen(topo.n_edges(), 0), used(topo.n_edges(), 0);
+    for (const EdgeId e : edges) chosen[e] = 1;
+    VertexData<std::int32_t> degree(topo.n_vertices(), 0);
+    for (const EdgeId e : topo.edges())
         if (chosen[e])
-            for (const std::int32_t v : topo.edge_vertices()[e]) ++degree[std::size_t(v)];
+            for (const VertexId v : topo.edge_vertices()[e]) ++degree[v];
     // The next chosen, unused edge at v.
-    auto next_edge = [&](std::int32_t v) {
-        for (const std::int32_t e : topo.vertex_edges(v))
-            if (chosen[std::size_t(e)] && !used[std::size_t(e)]) return e;
+    auto next_edge = [&](VertexId v) -> EdgeId {
+        for (const EdgeId e : topo.vertex_edges(v))
+            if (chosen[e] && !used[e]) return e;
         return MeshTopology::kNone;
     };
     // The other chosen edge at a vertex where two meet.
-    auto other_edge = [&](std::int32_t v, std::int32_t e) {
-        for (const std::int32_t c : topo.vertex_edges(v))
-            if (c != e && chosen[std::size_t(c)]) return c;
+    auto other_edge = [&](VertexId v, EdgeId e) {
+        for (const EdgeId c : topo.vertex_edges(v))
+            if (c != e && chosen[c]) return c;
         return e;
     };
-    std::vector<std::int32_t> order = edges;
+    std::vector<EdgeId> order = edges;
     std::sort(order.begin(), order.end());
     order.erase(std::unique(order.begin(), order.end()), order.end());
     std::vector<EdgeChain> chains;
-    for (const std::int32_t first : order) {
-        if (used[std::size_t(first)]) continue;
+    for (const EdgeId first : order) {
+        if (used[first]) continue;
         // Back from the edge to where its chain ends (or, round a loop, to the edge again).
-        std::int32_t v = topo.edge_vertices()[std::size_t(first)][0], e = first;
-        while (degree[std::size_t(v)] == 2) {
-            const std::int32_t other = other_edge(v, e);
+        VertexId v = topo.edge_vertices()[first][0];
+        EdgeId e = first;
+        while (degree[v] == 2) {
+            const EdgeId other = other_edge(v, e);
             if (other == first) break;
             e = other;
             v = topo.opposite(other, v);
@@ -78,11 +79,11 @@ std::vector<EdgeChain> chain_edges(const MeshTopology& topo, const std::vector<s
         EdgeChain chain;
         chain.vertices.push_back(v);
         while (e != MeshTopology::kNone) {
-            used[std::size_t(e)] = 1;
+            used[e] = 1;
             chain.edges.push_back(e);
             v = topo.opposite(e, v);
             chain.vertices.push_back(v);
-            e = degree[std::size_t(v)] == 2 ? next_edge(v) : MeshTopology::kNone;
+            e = degree[v] == 2 ? next_edge(v) : EdgeId();
         }
         chain.closed = chain.edges.size() > 2 && chain.vertices.front() == chain.vertices.back();
         if (!chain.closed && chain.vertices.back() < chain.vertices.front()) {
@@ -99,8 +100,7 @@ std::vector<EdgeChain> chains_at_least(const MeshTopology& topo, std::vector<Edg
     const auto P = topo.positions();
     std::erase_if(chains, [&](const EdgeChain& c) {
         double sum = 0.0;
-        for (std::size_t i = 0; i + 1 < c.vertices.size(); ++i)
-            sum += glm::length(P[std::size_t(c.vertices[i + 1])] - P[std::size_t(c.vertices[i])]);
+        for (std::size_t i = 0; i + 1 < c.vertices.size(); ++i) sum += glm::length(P[c.vertices[i + 1]] - P[c.vertices[i]]);
         return sum < length;
     });
     return chains;
@@ -108,35 +108,28 @@ std::vector<EdgeChain> chains_at_least(const MeshTopology& topo, std::vector<Edg
 
 Fronts chain_fronts(const MeshTopology& topo, const std::vector<EdgeChain>& chains) {
     Fronts fronts;
-    fronts.edge_snaxel.assign(topo.n_edges(), MeshTopology::kNone);
+    fronts.edge_snaxel.assign(topo.n_edges(), kNoSnaxel);
+    std::vector<EdgeId> edges;
+    std::vector<double> t;
     for (const EdgeChain& chain : chains) {
         if (chain.edges.empty()) continue;
-        const std::int32_t loop = std::int32_t(fronts.loops.size()), first = std::int32_t(fronts.snaxels.size());
-        // A closed chain's last vertex is its first: one snaxel for both.
-        const std::int32_t n = std::int32_t(chain.closed ? chain.edges.size() : chain.vertices.size());
-        for (std::int32_t k = 0; k < n; ++k) {
-            Snaxel s;
-            // The edge leaving the vertex along the chain; at an open chain's end, the edge arriving.
-            s.edge = chain.edges[std::size_t(std::min<std::int32_t>(k, std::int32_t(chain.edges.size()) - 1))];
-            const auto& ends = topo.edge_vertices()[std::size_t(s.edge)];
-            s.inside = ends[0];
-            s.outside = ends[1];
-            s.t = chain.vertices[std::size_t(k)] == ends[0] ? 0.0 : 1.0;
-            s.loop = loop;
-            s.prev = k > 0 ? first + k - 1 : chain.closed ? first + n - 1 : MeshTopology::kNone;
-            s.next = k + 1 < n ? first + k + 1 : chain.closed ? first : MeshTopology::kNone;
-            if (fronts.edge_snaxel[std::size_t(s.edge)] == MeshTopology::kNone)
-                fronts.edge_snaxel[std::size_t(s.edge)] = first + k;
-            fronts.snaxels.push_back(s);
+        // A snaxel at each vertex of the chain (a closed chain's last vertex
+        // is its first: one snaxel for both), on the edge leaving it along
+        // the chain; at an open chain's end, on the edge arriving.
+        const std::size_t n = chain.closed ? chain.edges.size() : chain.vertices.size();
+        edges.clear();
+        t.clear();
+        for (std::size_t k = 0; k < n; ++k) {
+            edges.push_back(chain.edges[std::min(k, chain.edges.size() - 1)]);
+            t.push_back(chain.vertices[k] == topo.edge_vertices()[edges.back()][0] ? 0.0 : 1.0);
         }
-        fronts.loops.push_back({first, n, chain.closed});
+        append_edge_loop(topo, edges, t, chain.closed, fronts);
     }
     return fronts;
 }
 
 Fronts feature_fronts(const MeshTopology& topo, const ContourSpec& spec) {
-    const std::vector<std::int32_t> edges =
-        spec.kind == ContourKind::Crease ? crease_edges(topo, spec.k) : border_edges(topo);
+    const std::vector<EdgeId> edges = spec.kind == ContourKind::Crease ? crease_edges(topo, spec.k) : border_edges(topo);
     const double min_length = spec.min_length > 0.0 ? spec.min_length * 2.0 * bounding_radius(topo) : 0.0;
     return chain_fronts(topo, chains_at_least(topo, chain_edges(topo, edges), min_length));
 }

@@ -20,17 +20,17 @@ constexpr double kDefaultCreaseDegrees = 30.0;
 /// The edges whose two faces' normals (of the faces' planes, in the
 /// topology's pose) differ by more than @p degrees, ascending. A border
 /// edge is no crease; a face of no area makes none.
-std::vector<std::int32_t> crease_edges(const MeshTopology& topology, double degrees);
+std::vector<EdgeId> crease_edges(const MeshTopology& topology, double degrees);
 
 /// The edges with a face on one side only, ascending.
-std::vector<std::int32_t> border_edges(const MeshTopology& topology);
+std::vector<EdgeId> border_edges(const MeshTopology& topology);
 
 /// A polyline along mesh edges: vertices[i] and vertices[i + 1] are the
 /// ends of edges[i]. A closed chain ends where it starts (its last vertex
 /// is its first).
 struct EdgeChain {
-    std::vector<std::int32_t> vertices;
-    std::vector<std::int32_t> edges;
+    std::vector<VertexId> vertices;
+    std::vector<EdgeId> edges;
     bool closed = false;
 };
 
@@ -39,7 +39,7 @@ struct EdgeChain {
 /// end, a corner of a part, a junction); edges that meet only in twos make
 /// closed chains. Each edge is in one chain once; chains come in the order
 /// of their first edge, open ones from their lower-numbered end.
-std::vector<EdgeChain> chain_edges(const MeshTopology& topology, const std::vector<std::int32_t>& edges);
+std::vector<EdgeChain> chain_edges(const MeshTopology& topology, const std::vector<EdgeId>& edges);
 
 /// @p chains without those shorter than @p length (in the topology's pose).
 std::vector<EdgeChain> chains_at_least(const MeshTopology& topology, std::vector<EdgeChain> chains, double length);

@@ -4,27 +4,23 @@
 
 namespace snaxels {
 
-namespace {
-constexpr std::int32_t kNone = MeshTopology::kNone;
-}
-
-Fronts extract_fronts(const MeshTopology& topo, const std::vector<std::uint8_t>& inside) {
-    std::vector<std::int32_t> crossing;
-    for (std::size_t e = 0; e < topo.n_edges(); ++e) {
+Fronts extract_fronts(const MeshTopology& topo, const VertexData<std::uint8_t>& inside) {
+    std::vector<EdgeId> crossing;
+    for (const EdgeId e : topo.edges()) {
         const auto [a, b] = topo.edge_vertices()[e];
-        if (inside[a] != inside[b]) crossing.push_back(static_cast<std::int32_t>(e));
+        if (inside[a] != inside[b]) crossing.push_back(e);
     }
     return extract_fronts(topo, inside, crossing);
 }
 
-Fronts extract_fronts(const MeshTopology& topo, const std::vector<std::uint8_t>& inside,
-                      const std::vector<std::int32_t>& crossing_edges) {
+Fronts extract_fronts(const MeshTopology& topo, const VertexData<std::uint8_t>& inside,
+                      const std::vector<EdgeId>& crossing_edges) {
     Fronts fronts;
-    fronts.edge_snaxel.assign(topo.n_edges(), kNone);
+    fronts.edge_snaxel.assign(topo.n_edges(), kNoSnaxel);
     const std::size_t n = crossing_edges.size();
     fronts.snaxels.resize(n);
     parallel_for(n, [&](std::size_t i) {
-        const std::int32_t e = crossing_edges[i];
+        const EdgeId e = crossing_edges[i];
         const auto [a, b] = topo.edge_vertices()[e];
         Snaxel& s = fronts.snaxels[i];
         s.edge = e;
@@ -41,20 +37,20 @@ Fronts extract_fronts(const MeshTopology& topo, const std::vector<std::uint8_t>&
     // of an edge run it in opposite directions, as the halfedge mesh it was
     // built from guarantees, so a snaxel leaves one and enters the other.)
     parallel_for(n, [&](std::size_t i) {
-        const std::int32_t e = crossing_edges[i];
-        for (const std::int32_t f : topo.edge_faces()[e]) {
-            if (f == kNone) continue;
+        const EdgeId e = crossing_edges[i];
+        for (const FaceId f : topo.edge_faces()[e]) {
+            if (f == MeshTopology::kNone) continue;
             const auto& fv = topo.face_vertices()[f];
             const auto& fe = topo.face_edges()[f];
-            std::int32_t leave_edge = kNone, enter_edge = kNone;
+            EdgeId leave_edge, enter_edge;
             for (int k = 0; k < 3; ++k) {
                 const bool here = inside[fv[k]], there = inside[fv[(k + 1) % 3]];
                 if (here && !there) leave_edge = fe[k];
                 if (!here && there) enter_edge = fe[k];
             }
-            if (leave_edge != e || enter_edge == kNone) continue;
+            if (leave_edge != e || enter_edge == MeshTopology::kNone) continue;
             const std::int32_t enter = fronts.edge_snaxel[enter_edge];
-            if (enter == kNone) continue; // (an incomplete edge list: check_fronts says so)
+            if (enter == kNoSnaxel) continue; // (an incomplete edge list: check_fronts says so)
             fronts.snaxels[i].next = enter;
             fronts.snaxels[enter].prev = static_cast<std::int32_t>(i);
         }
@@ -70,24 +66,44 @@ Fronts extract_fronts(const MeshTopology& topo, const std::vector<std::uint8_t>&
             fronts.snaxels[s].loop = id;
             ++loop.size;
             s = fronts.snaxels[s].next;
-        } while (s != kNone && s != start);
+        } while (s != kNoSnaxel && s != start);
         fronts.loops.push_back(loop);
     };
     for (std::size_t s = 0; s < fronts.snaxels.size(); ++s)
-        if (fronts.snaxels[s].prev == kNone) trace(static_cast<std::int32_t>(s), false);
+        if (fronts.snaxels[s].prev == kNoSnaxel) trace(static_cast<std::int32_t>(s), false);
     for (std::size_t s = 0; s < fronts.snaxels.size(); ++s)
-        if (fronts.snaxels[s].loop == kNone) trace(static_cast<std::int32_t>(s), true);
+        if (fronts.snaxels[s].loop == kNoSnaxel) trace(static_cast<std::int32_t>(s), true);
     return fronts;
 }
 
+void append_edge_loop(const MeshTopology& topo, std::span<const EdgeId> edges, std::span<const double> t, bool closed,
+                      Fronts& fronts) {
+    const auto loop = std::int32_t(fronts.loops.size()), first = std::int32_t(fronts.snaxels.size());
+    const auto n = std::int32_t(edges.size());
+    for (std::size_t k = 0; k < edges.size(); ++k) {
+        Snaxel s;
+        s.edge = edges[k];
+        s.inside = topo.edge_vertices()[s.edge][0];
+        s.outside = topo.edge_vertices()[s.edge][1];
+        s.t = t[k];
+        s.loop = loop;
+        const std::int32_t at = first + std::int32_t(k), last = first + n - 1;
+        s.prev = at > first ? at - 1 : closed ? last : kNoSnaxel;
+        s.next = at < last ? at + 1 : closed ? first : kNoSnaxel;
+        if (fronts.edge_snaxel[s.edge] == kNoSnaxel) fronts.edge_snaxel[s.edge] = at;
+        fronts.snaxels.push_back(s);
+    }
+    fronts.loops.push_back({first, n, closed});
+}
+
 std::string check_fronts(const MeshTopology& topo, const Fronts& fronts,
-                         const std::vector<std::uint8_t>& inside) {
+                         const VertexData<std::uint8_t>& inside) {
     const auto n = static_cast<std::int32_t>(fronts.snaxels.size());
-    std::vector<std::uint8_t> edge_used(topo.n_edges(), 0);
+    EdgeData<std::uint8_t> edge_used(topo.n_edges(), 0);
     for (std::int32_t i = 0; i < n; ++i) {
         const Snaxel& s = fronts.snaxels[i];
         const std::string at = "snaxel " + std::to_string(i) + ": ";
-        if (s.edge < 0 || std::size_t(s.edge) >= topo.n_edges()) return at + "not on a live edge";
+        if (!s.edge.valid() || s.edge >= EdgeId(topo.n_edges())) return at + "not on a live edge";
         const auto [a, b] = topo.edge_vertices()[s.edge];
         if (!((s.inside == a && s.outside == b) || (s.inside == b && s.outside == a)))
             return at + "its ends are not its edge's vertices";
@@ -96,7 +112,7 @@ std::string check_fronts(const MeshTopology& topo, const Fronts& fronts,
         if (edge_used[s.edge]++) return at + "shares its edge with another snaxel";
         if (fronts.edge_snaxel[s.edge] != i) return at + "the edge lookup does not point back";
         for (const std::int32_t other : {s.next, s.prev}) {
-            if (other == kNone) {
+            if (other == kNoSnaxel) {
                 if (!topo.is_boundary_edge(s.edge)) return at + "loop ends on an interior edge";
                 continue;
             }
@@ -105,29 +121,29 @@ std::string check_fronts(const MeshTopology& topo, const Fronts& fronts,
             const auto& f2 = topo.edge_faces()[fronts.snaxels[other].edge];
             bool common = false;
             for (const auto x : f1)
-                for (const auto y : f2) common |= x != kNone && x == y;
+                for (const auto y : f2) common |= x != MeshTopology::kNone && x == y;
             if (!common) return at + "its loop neighbour is not on a common face";
         }
-        if (s.next != kNone && fronts.snaxels[s.next].prev != i) return at + "next/prev not symmetric";
+        if (s.next != kNoSnaxel && fronts.snaxels[s.next].prev != i) return at + "next/prev not symmetric";
         if (s.loop < 0 || std::size_t(s.loop) >= fronts.loops.size()) return at + "belongs to no loop";
     }
-    for (std::size_t e = 0; e < topo.n_edges(); ++e) {
+    for (const EdgeId e : topo.edges()) {
         const auto [a, b] = topo.edge_vertices()[e];
         if (inside[a] != inside[b] && !edge_used[e])
-            return "edge " + std::to_string(e) + " crosses the front but holds no snaxel";
+            return "edge " + std::to_string(e.index()) + " crosses the front but holds no snaxel";
     }
     std::size_t counted = 0;
     for (std::size_t l = 0; l < fronts.loops.size(); ++l) {
         const FrontLoop& loop = fronts.loops[l];
         std::int32_t s = loop.first;
-        if (!loop.closed && fronts.snaxels[s].prev != kNone) return "open loop " + std::to_string(l) + " does not start at its end";
+        if (!loop.closed && fronts.snaxels[s].prev != kNoSnaxel) return "open loop " + std::to_string(l) + " does not start at its end";
         for (std::int32_t k = 0; k < loop.size; ++k) {
-            if (s == kNone) return "loop " + std::to_string(l) + " is shorter than its size";
+            if (s == kNoSnaxel) return "loop " + std::to_string(l) + " is shorter than its size";
             if (fronts.snaxels[s].loop != std::int32_t(l)) return "loop " + std::to_string(l) + " runs into another loop";
             s = fronts.snaxels[s].next;
         }
         if (loop.closed && s != loop.first) return "loop " + std::to_string(l) + " is not closed";
-        if (!loop.closed && s != kNone) return "open loop " + std::to_string(l) + " does not end";
+        if (!loop.closed && s != kNoSnaxel) return "open loop " + std::to_string(l) + " does not end";
         counted += std::size_t(loop.size);
     }
     if (counted != fronts.snaxels.size()) return "loops do not cover every snaxel";

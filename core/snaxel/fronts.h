@@ -7,6 +7,7 @@
 /// end on boundary edges (the front stops there: it never walks off).
 
 #include <cstdint>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -14,17 +15,21 @@
 
 namespace snaxels {
 
+/// Snaxels are numbered by their place in Fronts::snaxels, loops by theirs
+/// in Fronts::loops; this is "no snaxel" (the end of an open loop) and "no loop".
+inline constexpr std::int32_t kNoSnaxel = -1;
+
 struct Snaxel {
-    std::int32_t edge = MeshTopology::kNone;
-    std::int32_t inside = MeshTopology::kNone;  ///< end vertex in R
-    std::int32_t outside = MeshTopology::kNone; ///< end vertex not in R
-    double t = 0.5;                              ///< 0 at inside, 1 at outside
-    std::int32_t prev = MeshTopology::kNone, next = MeshTopology::kNone;
-    std::int32_t loop = MeshTopology::kNone;
+    EdgeId edge;
+    VertexId inside;  ///< end vertex in R
+    VertexId outside; ///< end vertex not in R
+    double t = 0.5;   ///< 0 at inside, 1 at outside
+    std::int32_t prev = kNoSnaxel, next = kNoSnaxel;
+    std::int32_t loop = kNoSnaxel;
 };
 
 struct FrontLoop {
-    std::int32_t first = MeshTopology::kNone; ///< an open loop starts at its first snaxel
+    std::int32_t first = kNoSnaxel; ///< an open loop starts at its first snaxel
     std::int32_t size = 0;
     bool closed = true;
 };
@@ -32,7 +37,7 @@ struct FrontLoop {
 struct Fronts {
     std::vector<Snaxel> snaxels;
     std::vector<FrontLoop> loops;
-    std::vector<std::int32_t> edge_snaxel; ///< #E: the snaxel on each edge, or kNone
+    EdgeData<std::int32_t> edge_snaxel; ///< the snaxel on each edge, or kNoSnaxel
 
     /// Calls fn(snaxel index) along a loop from its first snaxel.
     template <class Fn> void for_each_in_loop(const FrontLoop& loop, Fn&& fn) const {
@@ -44,12 +49,21 @@ struct Fronts {
 /// The fronts bounding the vertex set @p inside (1 = in R): one snaxel per
 /// edge with exactly one end in R (t = 0.5 until polished), linked face by
 /// face so R lies on the left when seen from the surface's front side.
-Fronts extract_fronts(const MeshTopology& topology, const std::vector<std::uint8_t>& inside);
+Fronts extract_fronts(const MeshTopology& topology, const VertexData<std::uint8_t>& inside);
 
 /// The same, when the caller already knows the edges R crosses (each once):
 /// costs time in proportion to the front, not to the mesh.
-Fronts extract_fronts(const MeshTopology& topology, const std::vector<std::uint8_t>& inside,
-                      const std::vector<std::int32_t>& crossing_edges);
+Fronts extract_fronts(const MeshTopology& topology, const VertexData<std::uint8_t>& inside,
+                      const std::vector<EdgeId>& crossing_edges);
+
+/// Appends to @p fronts a loop with one snaxel per entry of @p edges, at
+/// @p t[k] from the edge's first vertex (edge_vertices()[e][0], its inside
+/// end), linked in order and, when @p closed, round; each edge's first
+/// snaxel goes into edge_snaxel (sized to the edges). How lines of the mesh
+/// that bound no vertex set (parabolic curves, creases, borders) become
+/// fronts the later stages take like any contour.
+void append_edge_loop(const MeshTopology& topology, std::span<const EdgeId> edges, std::span<const double> t,
+                      bool closed, Fronts& fronts);
 
 /// The invariants of a front set: each snaxel on a live edge with t in
 /// [0,1] and its inside/outside ends as @p inside says, at most one snaxel
@@ -57,6 +71,6 @@ Fronts extract_fronts(const MeshTopology& topology, const std::vector<std::uint8
 /// face, links symmetric, closed loops closed and open ones ending on mesh
 /// boundary edges. Returns an empty string, or what is broken.
 std::string check_fronts(const MeshTopology& topology, const Fronts& fronts,
-                         const std::vector<std::uint8_t>& inside);
+                         const VertexData<std::uint8_t>& inside);
 
 } // namespace snaxels

@@ -22,13 +22,15 @@ namespace snaxels {
 namespace {
 
 constexpr double kPi = 3.141592653589793;
-constexpr std::int32_t kNone = MeshTopology::kNone;
+constexpr NoElement kNone = MeshTopology::kNone;
+/// "No point" among the points a PointGrid or a tree of points is built on.
+constexpr std::size_t kNoPoint = ~std::size_t(0);
 
 /// Points hashed into cubes of side @p cell, for neighbours within a cell.
 class PointGrid {
   public:
     PointGrid(std::span<const glm::dvec3> points, double cell) : points_(points), cell_(cell) {
-        for (std::size_t i = 0; i < points.size(); ++i) cells_[key(points[i])].push_back(std::int32_t(i));
+        for (std::size_t i = 0; i < points.size(); ++i) cells_[key(points[i])].push_back(i);
     }
     /// Calls fn(j) for every point within @p radius (<= cell) of @p p.
     template <class Fn> void near(const glm::dvec3& p, double radius, Fn&& fn) const {
@@ -38,16 +40,16 @@ class PointGrid {
                 for (int dz = -1; dz <= 1; ++dz) {
                     const auto it = cells_.find(pack(c + glm::ivec3(dx, dy, dz)));
                     if (it == cells_.end()) continue;
-                    for (const std::int32_t j : it->second)
-                        if (glm::length(points_[std::size_t(j)] - p) <= radius) fn(j);
+                    for (const std::size_t j : it->second)
+                        if (glm::length(points_[j] - p) <= radius) fn(j);
                 }
     }
-    /// The point nearest @p p (-1 when there are none), searching shells of
+    /// The point nearest @p p (kNoPoint when there are none), searching shells of
     /// cells outward until one holds a point and the next cannot hold a nearer one.
-    std::int32_t nearest(const glm::dvec3& p) const {
-        if (points_.empty()) return -1;
+    std::size_t nearest(const glm::dvec3& p) const {
+        if (points_.empty()) return kNoPoint;
         const glm::ivec3 c = cell_of(p);
-        std::int32_t best = -1;
+        std::size_t best = kNoPoint;
         double best_d = std::numeric_limits<double>::max();
         for (int r = 0; r < 1 << 20; ++r) {
             for (int dx = -r; dx <= r; ++dx)
@@ -56,12 +58,12 @@ class PointGrid {
                         if (std::max({std::abs(dx), std::abs(dy), std::abs(dz)}) != r) continue;
                         const auto it = cells_.find(pack(c + glm::ivec3(dx, dy, dz)));
                         if (it == cells_.end()) continue;
-                        for (const std::int32_t j : it->second) {
-                            const double d = glm::length(points_[std::size_t(j)] - p);
+                        for (const std::size_t j : it->second) {
+                            const double d = glm::length(points_[j] - p);
                             if (d < best_d) best_d = d, best = j;
                         }
                     }
-            if (best >= 0 && best_d <= r * cell_) break;
+            if (best != kNoPoint && best_d <= r * cell_) break;
         }
         return best;
     }
@@ -74,7 +76,7 @@ class PointGrid {
     std::int64_t key(const glm::dvec3& p) const { return pack(cell_of(p)); }
     std::span<const glm::dvec3> points_;
     double cell_;
-    std::unordered_map<std::int64_t, std::vector<std::int32_t>> cells_;
+    std::unordered_map<std::int64_t, std::vector<std::size_t>> cells_;
 };
 
 /// The point of triangle (a, b, c) closest to @p p (Ericson, Real-Time
@@ -103,18 +105,18 @@ glm::dvec3 closest_on_triangle(const glm::dvec3& p, const glm::dvec3& a, const g
 /// vertex nearest it.
 struct SurfacePoint {
     glm::dvec3 p{0.0};
-    std::int32_t face = kNone;
+    FaceId face;
 };
 
 SurfacePoint project_to_surface(const MeshTopology& topo, const PointGrid& vertices, const glm::dvec3& p) {
     SurfacePoint best;
-    const std::int32_t v = vertices.nearest(p);
-    if (v < 0) return best;
+    const std::size_t nearest = vertices.nearest(p);
+    if (nearest == kNoPoint) return best;
     double best_d = std::numeric_limits<double>::max();
-    topo.for_each_face_beside_edges(v, [&](std::int32_t f) {
-        const auto& fv = topo.face_vertices()[std::size_t(f)];
-        const glm::dvec3 q = closest_on_triangle(p, topo.positions()[std::size_t(fv[0])], topo.positions()[std::size_t(fv[1])],
-                                                 topo.positions()[std::size_t(fv[2])]);
+    topo.for_each_face_beside_edges(VertexId(nearest), [&](FaceId f) {
+        const auto& fv = topo.face_vertices()[f];
+        const auto P = topo.positions();
+        const glm::dvec3 q = closest_on_triangle(p, P[fv[0]], P[fv[1]], P[fv[2]]);
         const double d = glm::length(q - p);
         if (d < best_d) best_d = d, best = {q, f};
     });
@@ -138,7 +140,7 @@ std::uint64_t hilbert_index(std::uint32_t n, std::uint32_t x, std::uint32_t y) {
 /// A vertex whose crossing of the visual contour, somewhere in a step,
 /// changes the contour's topology.
 struct CriticalCrossing {
-    std::int32_t vertex = kNone;
+    VertexId vertex;
     bool saddle = false;     ///< a split or merge (else a loop born or gone)
     glm::dvec3 dir{0.0};     ///< the view direction at which N.V passes zero there
 };
@@ -149,36 +151,38 @@ struct CriticalCrossing {
 /// than twice (none: a loop is born or gone; four or more: loops split or
 /// merge). These are exactly the places where the front set R = {N.V >= 0}
 /// changes topology as the view turns. Vertices on a mesh boundary are left out.
-void critical_crossings(const MeshTopology& topo, const std::vector<std::uint8_t>& boundary, const glm::dvec3& d0,
+void critical_crossings(const MeshTopology& topo, const VertexData<std::uint8_t>& boundary, const glm::dvec3& d0,
                         const glm::dvec3& d1, std::vector<CriticalCrossing>& out) {
     out.clear();
     const double omega = std::acos(std::clamp(glm::dot(d0, d1), -1.0, 1.0));
     if (omega <= 0.0) return;
     const double so = std::sin(omega), co = std::cos(omega);
-    for (std::size_t v = 0; v < topo.n_vertices(); ++v) {
-        const double a = glm::dot(topo.normals()[v], d0), b = glm::dot(topo.normals()[v], d1);
+    const auto N = topo.normals();
+    for (const VertexId v : topo.vertices()) {
+        const double a = glm::dot(N[v], d0), b = glm::dot(N[v], d1);
         if ((a >= 0.0) == (b >= 0.0) || boundary[v]) continue;
         // a sin((1-t)w) + b sin(tw) = 0 on the slerp d0 -> d1.
         const double s = a >= 0.0 ? 1.0 : -1.0;
         const double tw = std::atan2(s * a * so, s * (a * co - b));
         const glm::dvec3 dir = glm::normalize(std::sin(omega - tw) * d0 + std::sin(tw) * d1);
-        const std::span<const std::int32_t> ring = topo.neighbours(std::int32_t(v));
+        const std::span<const VertexId> ring = topo.neighbours(v);
         if (ring.size() < 3) continue;
         int changes = 0;
-        bool last = glm::dot(topo.normals()[std::size_t(ring.back())], dir) >= 0.0;
-        for (const std::int32_t w : ring) {
-            const bool sign = glm::dot(topo.normals()[std::size_t(w)], dir) >= 0.0;
+        bool last = glm::dot(N[ring.back()], dir) >= 0.0;
+        for (const VertexId w : ring) {
+            const bool sign = glm::dot(N[w], dir) >= 0.0;
             changes += sign != last;
             last = sign;
         }
-        if (changes != 2) out.push_back({std::int32_t(v), changes > 2, dir});
+        if (changes != 2) out.push_back({v, changes > 2, dir});
     }
 }
 
-std::vector<std::uint8_t> boundary_vertices(const MeshTopology& topo) {
-    std::vector<std::uint8_t> boundary(topo.n_vertices(), 0);
-    for (std::size_t e = 0; e < topo.n_edges(); ++e)
-        if (topo.is_boundary_edge(std::int32_t(e))) boundary[std::size_t(topo.edge_vertices()[e][0])] = boundary[std::size_t(topo.edge_vertices()[e][1])] = 1;
+VertexData<std::uint8_t> boundary_vertices(const MeshTopology& topo) {
+    VertexData<std::uint8_t> boundary(topo.n_vertices(), 0);
+    for (const EdgeId e : topo.edges())
+        if (topo.is_boundary_edge(e))
+            for (const VertexId v : topo.edge_vertices()[e]) boundary[v] = 1;
     return boundary;
 }
 
@@ -186,43 +190,45 @@ std::vector<std::uint8_t> boundary_vertices(const MeshTopology& topo) {
 /// in the component of @p start.
 struct TreeScratch {
     std::vector<double> dist;
-    std::vector<std::int32_t> parent, touched;
+    std::vector<std::size_t> parent, touched;
 };
 
-std::vector<std::int32_t> tree_diameter(const std::vector<std::vector<std::pair<std::int32_t, double>>>& tree,
-                                        std::int32_t start, TreeScratch& scratch) {
+/// A tree (or forest) of points: each point's neighbours and the lengths to them.
+using PointTree = std::vector<std::vector<std::pair<std::size_t, double>>>;
+
+std::vector<std::size_t> tree_diameter(const PointTree& tree, std::size_t start, TreeScratch& scratch) {
     // Scratch space for the whole forest, reset only where a walk went:
     // the cost is the component's size, not the forest's.
     std::vector<double>& dist = scratch.dist;
-    std::vector<std::int32_t>& parent = scratch.parent;
-    std::vector<std::int32_t>& touched = scratch.touched;
-    if (dist.size() != tree.size()) dist.assign(tree.size(), -1.0), parent.assign(tree.size(), -1), touched.clear();
-    auto farthest = [&](std::int32_t from) {
-        for (const std::int32_t t : touched) dist[std::size_t(t)] = -1.0, parent[std::size_t(t)] = -1;
+    std::vector<std::size_t>& parent = scratch.parent;
+    std::vector<std::size_t>& touched = scratch.touched;
+    if (dist.size() != tree.size()) dist.assign(tree.size(), -1.0), parent.assign(tree.size(), kNoPoint), touched.clear();
+    auto farthest = [&](std::size_t from) {
+        for (const std::size_t t : touched) dist[t] = -1.0, parent[t] = kNoPoint;
         touched.clear();
-        std::vector<std::int32_t> stack{from};
-        dist[std::size_t(from)] = 0.0;
+        std::vector<std::size_t> stack{from};
+        dist[from] = 0.0;
         touched.push_back(from);
-        std::int32_t far = from;
+        std::size_t far = from;
         while (!stack.empty()) {
-            const std::int32_t v = stack.back();
+            const std::size_t v = stack.back();
             stack.pop_back();
-            if (dist[std::size_t(v)] > dist[std::size_t(far)]) far = v;
-            for (const auto& [w, len] : tree[std::size_t(v)])
-                if (dist[std::size_t(w)] < 0.0) {
-                    dist[std::size_t(w)] = dist[std::size_t(v)] + len;
-                    parent[std::size_t(w)] = v;
+            if (dist[v] > dist[far]) far = v;
+            for (const auto& [w, len] : tree[v])
+                if (dist[w] < 0.0) {
+                    dist[w] = dist[v] + len;
+                    parent[w] = v;
                     touched.push_back(w);
                     stack.push_back(w);
                 }
         }
         return far;
     };
-    const std::int32_t a = farthest(start);
-    const std::int32_t b = farthest(a);
-    std::vector<std::int32_t> path;
-    for (std::int32_t v = b; v >= 0; v = parent[std::size_t(v)]) path.push_back(v);
-    for (const std::int32_t t : touched) dist[std::size_t(t)] = -1.0, parent[std::size_t(t)] = -1;
+    const std::size_t a = farthest(start);
+    const std::size_t b = farthest(a);
+    std::vector<std::size_t> path;
+    for (std::size_t v = b; v != kNoPoint; v = parent[v]) path.push_back(v);
+    for (const std::size_t t : touched) dist[t] = -1.0, parent[t] = kNoPoint;
     touched.clear();
     return path;
 }
@@ -237,39 +243,40 @@ bool trace_between(const MeshTopology& topo, const SurfacePoint& a, const Surfac
     const glm::dvec3 along = b.p - a.p;
     const double len2 = glm::dot(along, along);
     if (len2 <= 0.0) return true;
-    auto face_normal = [&](std::int32_t f) {
-        const auto& fv = topo.face_vertices()[std::size_t(f)];
-        const glm::dvec3 n = glm::cross(topo.positions()[std::size_t(fv[1])] - topo.positions()[std::size_t(fv[0])],
-                                        topo.positions()[std::size_t(fv[2])] - topo.positions()[std::size_t(fv[0])]);
+    const auto P = topo.positions();
+    auto face_normal = [&](FaceId f) {
+        const auto& fv = topo.face_vertices()[f];
+        const glm::dvec3 n = glm::cross(P[fv[1]] - P[fv[0]], P[fv[2]] - P[fv[0]]);
         const double l = glm::length(n);
         return l > 0.0 ? n / l : glm::dvec3(0.0);
     };
     glm::dvec3 m = glm::cross(along, face_normal(a.face) + face_normal(b.face));
     if (glm::length(m) <= 0.0) return false;
     m = glm::normalize(m);
-    auto side = [&](std::int32_t v) { return glm::dot(m, topo.positions()[std::size_t(v)] - a.p); };
-    std::int32_t face = a.face, came_over = kNone;
+    auto side = [&](VertexId v) { return glm::dot(m, P[v] - a.p); };
+    FaceId face = a.face;
+    EdgeId came_over;
     const int limit = 64 + int(8.0 * std::sqrt(len2) / std::max(topo.mean_edge_length(), 1e-300));
     for (int step = 0; step < limit; ++step) {
         if (face == b.face) return true;
         // The edge of this face the plane crosses going on towards b.
-        std::int32_t best_edge = kNone;
+        EdgeId best_edge;
         double best_t = 0.0, best_ahead = -std::numeric_limits<double>::max();
-        for (const std::int32_t e : topo.face_edges()[std::size_t(face)]) {
+        for (const EdgeId e : topo.face_edges()[face]) {
             if (e == came_over) continue;
-            const std::int32_t u = topo.edge_vertices()[std::size_t(e)][0], w = topo.edge_vertices()[std::size_t(e)][1];
+            const auto [u, w] = topo.edge_vertices()[e];
             const double su = side(u), sw = side(w);
             if ((su >= 0.0) == (sw >= 0.0)) continue;
             const double t = su / (su - sw);
-            const glm::dvec3 x = glm::mix(topo.positions()[std::size_t(u)], topo.positions()[std::size_t(w)], t);
+            const glm::dvec3 x = glm::mix(P[u], P[w], t);
             const double ahead = glm::dot(x - a.p, along);
             if (ahead > best_ahead) best_ahead = ahead, best_edge = e, best_t = t;
         }
         if (best_edge == kNone) return false;
         if (best_ahead > len2 * 1.5) return false; // went past b without meeting its face
-        const std::int32_t u = topo.edge_vertices()[std::size_t(best_edge)][0], w = topo.edge_vertices()[std::size_t(best_edge)][1];
-        const auto& ef = topo.edge_faces()[std::size_t(best_edge)];
-        const std::int32_t next = ef[0] == face ? ef[1] : ef[0];
+        const auto [u, w] = topo.edge_vertices()[best_edge];
+        const auto& ef = topo.edge_faces()[best_edge];
+        const FaceId next = ef[0] == face ? ef[1] : ef[0];
         if (next == kNone) return false;
         // Going back over the edge just crossed undoes that crossing.
         if (!curve.edges.empty() && curve.edges.back() == best_edge) {
@@ -277,7 +284,7 @@ bool trace_between(const MeshTopology& topo, const SurfacePoint& a, const Surfac
             if (!curve.faces.empty()) curve.faces.pop_back();
         } else {
             if (!curve.edges.empty()) curve.faces.push_back(face);
-            curve.points.push_back(glm::mix(topo.positions()[std::size_t(u)], topo.positions()[std::size_t(w)], best_t));
+            curve.points.push_back(glm::mix(P[u], P[w], best_t));
             curve.edges.push_back(best_edge);
             curve.t.push_back(best_t);
         }
@@ -300,16 +307,16 @@ int smoothing_passes(double scale, double edge) {
 MeshTopology smooth_normals(const MeshTopology& topo, int passes) {
     if (passes <= 0) return topo;
     auto pose = std::make_shared<MeshPose>(*topo.pose());
-    std::vector<glm::dvec3>& normals = pose->normals;
-    std::vector<glm::dvec3> next(topo.n_vertices());
+    VertexData<glm::dvec3>& normals = pose->normals;
+    VertexData<glm::dvec3> next(topo.n_vertices());
     for (int pass = 0; pass < passes; ++pass) {
-        parallel_for(topo.n_vertices(), [&](std::size_t v) {
+        parallel_for(topo.vertices(), [&](VertexId v) {
             glm::dvec3 sum = normals[v];
-            for (const std::int32_t w : topo.neighbours(std::int32_t(v))) sum += normals[std::size_t(w)];
+            for (const VertexId w : topo.neighbours(v)) sum += normals[w];
             const double l = glm::length(sum);
             next[v] = l > 0.0 ? sum / l : normals[v];
         }, 4096);
-        normals.swap(next);
+        std::swap(normals, next);
     }
     return topo.posed(std::move(pose));
 }
@@ -325,7 +332,7 @@ std::vector<std::vector<glm::dvec3>> mark_chains(const std::vector<ParabolicPoin
     std::vector<glm::dvec3> where;
     std::vector<double> weight;
     {
-        std::unordered_map<std::int32_t, std::size_t> place_of;
+        std::unordered_map<VertexId, std::size_t> place_of;
         for (const ParabolicPoint& p : points) {
             const auto [it, added] = place_of.emplace(p.vertex, where.size());
             if (added) where.push_back(p.where), weight.push_back(0.0);
@@ -335,10 +342,10 @@ std::vector<std::vector<glm::dvec3>> mark_chains(const std::vector<ParabolicPoin
     // Each place's neighbours within the link, the nearest 24 of them (a
     // minimum spanning tree needs no more where places crowd).
     const PointGrid grid(where, link);
-    std::vector<std::vector<std::pair<std::int32_t, double>>> near(where.size());
+    PointTree near(where.size());
     parallel_for(where.size(), [&](std::size_t i) {
-        grid.near(where[i], link, [&](std::int32_t j) {
-            if (std::size_t(j) != i) near[i].push_back({j, glm::length(where[std::size_t(j)] - where[i])});
+        grid.near(where[i], link, [&](std::size_t j) {
+            if (j != i) near[i].push_back({j, glm::length(where[j] - where[i])});
         });
         constexpr std::size_t kMaxNear = 24;
         if (near[i].size() > kMaxNear) {
@@ -348,56 +355,55 @@ std::vector<std::vector<glm::dvec3>> mark_chains(const std::vector<ParabolicPoin
         }
     }, 256);
     std::vector<std::uint8_t> used(where.size(), 0);
-    std::vector<std::int32_t> member(where.size(), -1);
-    std::vector<std::vector<std::pair<std::int32_t, double>>> tree(where.size());
+    std::vector<std::size_t> member(where.size(), kNoPoint); // the cluster's first point
+    PointTree tree(where.size());
     TreeScratch scratch;
     for (int round = 0; round < 8; ++round) {
         bool any = false;
-        std::fill(member.begin(), member.end(), -1);
+        std::fill(member.begin(), member.end(), kNoPoint);
         for (auto& t : tree) t.clear();
         for (std::size_t s = 0; s < where.size(); ++s) {
-            if (used[s] || member[s] >= 0) continue;
+            if (used[s] || member[s] != kNoPoint) continue;
             // Prim's algorithm over the unused marks linked to s.
-            using Item = std::tuple<double, std::int32_t, std::int32_t>; // length, point, from
+            using Item = std::tuple<double, std::size_t, std::size_t>; // length, point, from
             std::priority_queue<Item, std::vector<Item>, std::greater<Item>> queue;
-            queue.push({0.0, std::int32_t(s), -1});
-            std::vector<std::int32_t> cluster;
+            queue.push({0.0, s, kNoPoint});
+            std::vector<std::size_t> cluster;
             double marks = 0.0;
             while (!queue.empty()) {
                 const auto [len, v, from] = queue.top();
                 queue.pop();
-                if (member[std::size_t(v)] >= 0) continue;
-                member[std::size_t(v)] = std::int32_t(s);
+                if (member[v] != kNoPoint) continue;
+                member[v] = s;
                 cluster.push_back(v);
-                marks += weight[std::size_t(v)];
-                if (from >= 0) {
-                    tree[std::size_t(v)].push_back({from, len});
-                    tree[std::size_t(from)].push_back({v, len});
+                marks += weight[v];
+                if (from != kNoPoint) {
+                    tree[v].push_back({from, len});
+                    tree[from].push_back({v, len});
                 }
-                for (const auto& [w, d] : near[std::size_t(v)])
-                    if (!used[std::size_t(w)] && member[std::size_t(w)] < 0) queue.push({d, w, v});
+                for (const auto& [w, d] : near[v])
+                    if (!used[w] && member[w] == kNoPoint) queue.push({d, w, v});
             }
             if (marks < double(min_members)) {
-                for (const std::int32_t v : cluster) used[std::size_t(v)] = 1;
+                for (const std::size_t v : cluster) used[v] = 1;
                 continue;
             }
             any = true;
-            const std::vector<std::int32_t> path = tree_diameter(tree, std::int32_t(s), scratch);
+            const std::vector<std::size_t> path = tree_diameter(tree, s, scratch);
             std::vector<glm::dvec3> chain;
-            for (const std::int32_t v : path) {
-                glm::dvec3 sum = weight[std::size_t(v)] * where[std::size_t(v)];
-                double count = weight[std::size_t(v)];
-                for (const auto& [w, d] : near[std::size_t(v)])
-                    if (!used[std::size_t(w)] && d <= 0.5 * link)
-                        sum += weight[std::size_t(w)] * where[std::size_t(w)], count += weight[std::size_t(w)];
+            for (const std::size_t v : path) {
+                glm::dvec3 sum = weight[v] * where[v];
+                double count = weight[v];
+                for (const auto& [w, d] : near[v])
+                    if (!used[w] && d <= 0.5 * link) sum += weight[w] * where[w], count += weight[w];
                 const glm::dvec3 p = sum / count;
                 if (!chain.empty() && glm::length(p - chain.back()) < spacing) continue;
                 chain.push_back(p);
             }
-            for (const std::int32_t v : path) {
-                used[std::size_t(v)] = 1;
-                for (const auto& [w, d] : near[std::size_t(v)])
-                    if (d <= 0.5 * link) used[std::size_t(w)] = 1;
+            for (const std::size_t v : path) {
+                used[v] = 1;
+                for (const auto& [w, d] : near[v])
+                    if (d <= 0.5 * link) used[w] = 1;
             }
             chains.push_back(std::move(chain)); // a single place too: joining may take it up
         }
@@ -490,7 +496,7 @@ std::vector<ParabolicCurve> chain_curves(const MeshTopology& topo, const std::ve
     const double edge = std::max(topo.mean_edge_length(), 1e-300);
     std::vector<std::vector<glm::dvec3>> chains = mark_chains(points, link, 2.0 * edge, min_members);
     const std::vector<bool> closed = join_chains(chains, reach, 2.0 * link);
-    const PointGrid vertices(topo.positions(), 2.0 * edge);
+    const PointGrid vertices(topo.positions().values(), 2.0 * edge);
     for (std::size_t c = 0; c < chains.size(); ++c) {
         std::vector<glm::dvec3>& chain = chains[c];
         // A stub no longer than two links is a lone pair of marks, not a curve.
@@ -520,10 +526,10 @@ std::vector<ParabolicCurve> chain_curves(const MeshTopology& topo, const std::ve
                 curve.closed = is_closed && curve.points.size() > 2;
                 if (curve.closed) {
                     // The last segment runs in the face the first and last points share.
-                    std::int32_t shared = kNone;
-                    const auto& f0 = topo.edge_faces()[std::size_t(curve.edges.front())];
-                    const auto& f1 = topo.edge_faces()[std::size_t(curve.edges.back())];
-                    for (const std::int32_t f : f0)
+                    FaceId shared;
+                    const auto& f0 = topo.edge_faces()[curve.edges.front()];
+                    const auto& f1 = topo.edge_faces()[curve.edges.back()];
+                    for (const FaceId f : f0)
                         if (f != kNone && (f == f1[0] || f == f1[1])) shared = f;
                     if (shared == kNone) curve.closed = false;
                     else curve.faces.push_back(shared);
@@ -622,7 +628,7 @@ ParabolicResult find_parabolic(const MeshTopology& mesh_topo, const ParabolicOpt
     result.walks = int(walks.size());
     result.samples = int(parabolic_directions(options.samples, 0).size());
     result.smoothing_passes = passes;
-    const std::vector<std::uint8_t> boundary = boundary_vertices(topo);
+    const VertexData<std::uint8_t> boundary = boundary_vertices(topo);
     // An event farther than this from every topology-changing crossing of its
     // step is left unplaced: the contour moved that far in one step only on
     // a mesh too coarse for the sampling.
@@ -653,7 +659,7 @@ ParabolicResult find_parabolic(const MeshTopology& mesh_topo, const ParabolicOpt
                 if (k == 0 || frame.events.empty()) continue;
                 events[i] += frame.events.size();
                 critical_crossings(topo, boundary, walk[k - 1], walk[k], crossings);
-                std::vector<std::int32_t> marked; // vertices marked in this step
+                std::vector<VertexId> marked; // vertices marked in this step
                 for (const VisualEvent& e : frame.events) {
                     const bool saddle = e.kind == EventKind::Split || e.kind == EventKind::Merge;
                     const CriticalCrossing* best = nullptr;
@@ -661,7 +667,7 @@ ParabolicResult find_parabolic(const MeshTopology& mesh_topo, const ParabolicOpt
                     for (int pass = 0; pass < 2 && !best; ++pass) // a crossing of the event's type first
                         for (const CriticalCrossing& c : crossings) {
                             if (pass == 0 && c.saddle != saddle) continue;
-                            const double d = glm::length(topo.positions()[std::size_t(c.vertex)] - e.where);
+                            const double d = glm::length(topo.positions()[c.vertex] - e.where);
                             if (d < best_d && d <= place_limit) best_d = d, best = &c;
                         }
                     if (!best) {
@@ -673,7 +679,7 @@ ParabolicResult find_parabolic(const MeshTopology& mesh_topo, const ParabolicOpt
                     ParabolicPoint p;
                     p.kind = e.kind;
                     p.vertex = best->vertex;
-                    p.where = topo.positions()[std::size_t(best->vertex)];
+                    p.where = topo.positions()[best->vertex];
                     p.dir = best->dir;
                     p.from_dir = walk[k - 1];
                     p.to_dir = walk[k];
@@ -700,11 +706,11 @@ ParabolicResult find_parabolic(const MeshTopology& mesh_topo, const ParabolicOpt
     const PointGrid grid(where, 2.0 * edge);
     parallel_for(where.size(), [&](std::size_t i) {
         ParabolicPoint& p = result.points[i];
-        topo.for_each_face_beside_edges(p.vertex, [&](std::int32_t f) {
+        topo.for_each_face_beside_edges(p.vertex, [&](FaceId f) {
             if (p.face == kNone) p.face = f;
         });
         p.confidence = 0;
-        grid.near(p.where, 2.0 * edge, [&](std::int32_t) { ++p.confidence; });
+        grid.near(p.where, 2.0 * edge, [&](std::size_t) { ++p.confidence; });
     }, 256);
 
     // Marks along a parabolic curve lie where walks crossed the curve's
@@ -738,7 +744,7 @@ std::uint64_t content_hash(const MeshTopology& topo) {
         for (std::size_t i = 0; i < bytes; ++i) h = (h ^ p[i]) * 1099511628211ull;
     };
     mix(topo.positions().data(), topo.positions().size() * sizeof(glm::dvec3));
-    mix(topo.face_vertices().data(), topo.face_vertices().size() * sizeof(topo.face_vertices()[0]));
+    mix(topo.face_vertices().data(), topo.face_vertices().size() * sizeof(std::array<VertexId, 3>));
     return h;
 }
 
@@ -785,25 +791,9 @@ void keep_parabolic(const MeshTopology& topo, const ParabolicOptions& options, s
 
 Fronts parabolic_fronts(const MeshTopology& topo, const ParabolicResult& result) {
     Fronts fronts;
-    fronts.edge_snaxel.assign(topo.n_edges(), kNone);
-    for (const ParabolicCurve& curve : result.curves) {
-        if (curve.points.size() < 2) continue;
-        const std::int32_t loop = std::int32_t(fronts.loops.size()), first = std::int32_t(fronts.snaxels.size());
-        const std::int32_t n = std::int32_t(curve.points.size());
-        for (std::int32_t k = 0; k < n; ++k) {
-            Snaxel s;
-            s.edge = curve.edges[std::size_t(k)];
-            s.inside = topo.edge_vertices()[std::size_t(s.edge)][0];
-            s.outside = topo.edge_vertices()[std::size_t(s.edge)][1];
-            s.t = curve.t[std::size_t(k)];
-            s.loop = loop;
-            s.prev = k > 0 ? first + k - 1 : curve.closed ? first + n - 1 : kNone;
-            s.next = k + 1 < n ? first + k + 1 : curve.closed ? first : kNone;
-            if (fronts.edge_snaxel[std::size_t(s.edge)] == kNone) fronts.edge_snaxel[std::size_t(s.edge)] = first + k;
-            fronts.snaxels.push_back(s);
-        }
-        fronts.loops.push_back({first, n, curve.closed});
-    }
+    fronts.edge_snaxel.assign(topo.n_edges(), kNoSnaxel);
+    for (const ParabolicCurve& curve : result.curves)
+        if (curve.points.size() >= 2) append_edge_loop(topo, curve.edges, curve.t, curve.closed, fronts);
     return fronts;
 }
 

@@ -55,8 +55,8 @@ struct ParabolicCancelled : Cancelled {
 struct ParabolicPoint {
     EventKind kind = EventKind::Creation;
     glm::dvec3 where{0.0};
-    std::int32_t vertex = -1;
-    std::int32_t face = -1;
+    VertexId vertex;
+    FaceId face;
     glm::dvec3 dir{0.0}, from_dir{0.0}, to_dir{0.0};
     int confidence = 1;
 };
@@ -67,9 +67,9 @@ struct ParabolicPoint {
 /// closed, the last point and the first).
 struct ParabolicCurve {
     std::vector<glm::dvec3> points;
-    std::vector<std::int32_t> edges;
+    std::vector<EdgeId> edges;
     std::vector<double> t;
-    std::vector<std::int32_t> faces;
+    std::vector<FaceId> faces;
     bool closed = false;
     double length() const;
 };

@@ -15,7 +15,8 @@
 namespace snaxels {
 namespace {
 
-constexpr std::int32_t kNone = MeshTopology::kNone;
+/// A vertex no front has reached yet.
+constexpr std::int32_t kNoRegion = -1;
 
 struct RegionUnion {
     std::vector<std::int32_t> parent;
@@ -33,36 +34,36 @@ struct RegionUnion {
 // f >= 0 side, minima for f < 0) until every vertex of that side is labelled.
 class Sweep {
   public:
-    Sweep(const MeshTopology& topo, const std::vector<double>& f, int sign,
-          std::vector<std::int32_t>& label, RegionUnion& regions, std::vector<Region>& info,
+    Sweep(const MeshTopology& topo, const VertexData<double>& f, int sign,
+          VertexData<std::int32_t>& label, RegionUnion& regions, std::vector<Region>& info,
           ContourStats& stats, const EngineOptions& options)
         : topo_(topo), f_(f), sign_(sign), label_(label), regions_(regions), info_(info),
           stats_(stats), options_(options) {}
 
     /// Edges where the fronts stopped (f changes sign), each once.
-    const std::vector<std::int32_t>& stopped_edges() const { return stopped_; }
+    const std::vector<EdgeId>& stopped_edges() const { return stopped_; }
 
     void run() {
-        std::vector<std::int32_t> frontier, next;
+        std::vector<VertexId> frontier, next;
         seed(frontier);
         while (!frontier.empty()) {
             ++stats_.iterations;
             next.clear();
-            for (const std::int32_t u : frontier) advance(u, next);
+            for (const VertexId u : frontier) advance(u, next);
             frontier.swap(next);
             if (options_.check_invariants) check();
         }
     }
 
   private:
-    bool on_side(std::int32_t v) const { return (f_[v] >= 0.0) == (sign_ > 0); }
+    bool on_side(VertexId v) const { return (f_[v] >= 0.0) == (sign_ > 0); }
 
     // A front starts around every unvisited local extremum of this side.
-    void seed(std::vector<std::int32_t>& frontier) {
-        for (std::int32_t v = 0; v < std::int32_t(topo_.n_vertices()); ++v) {
-            if (!on_side(v) || label_[v] != kNone) continue;
+    void seed(std::vector<VertexId>& frontier) {
+        for (const VertexId v : topo_.vertices()) {
+            if (!on_side(v) || label_[v] != kNoRegion) continue;
             bool extremum = true;
-            for (const std::int32_t w : topo_.neighbours(v)) {
+            for (const VertexId w : topo_.neighbours(v)) {
                 extremum = sign_ > 0 ? f_[v] >= f_[w] : f_[v] <= f_[w];
                 if (!extremum) break;
             }
@@ -75,14 +76,14 @@ class Sweep {
     }
 
     // The front of u's region fans out past every neighbour on this side.
-    void advance(std::int32_t u, std::vector<std::int32_t>& next) {
+    void advance(VertexId u, std::vector<VertexId>& next) {
         const std::int32_t mine = regions_.find(label_[u]);
         for (const auto [w, edge] : topo_.ring_of(u)) {
             if (!on_side(w)) { // the front stops on this edge: f changes sign
                 stopped_.push_back(edge);
                 continue;
             }
-            if (label_[w] == kNone) {
+            if (label_[w] == kNoRegion) {
                 stats_.splits += self_contacts(w, mine);
                 label_[w] = mine;
                 ++stats_.fanouts;
@@ -96,16 +97,16 @@ class Sweep {
 
     // Around w, the runs of neighbours already swept by `region`: a front
     // that reaches w from two or more sides meets itself there.
-    std::size_t self_contacts(std::int32_t w, std::int32_t region) {
-        const std::span<const std::int32_t> ring = topo_.neighbours(w);
+    std::size_t self_contacts(VertexId w, std::int32_t region) {
+        const std::span<const VertexId> ring = topo_.neighbours(w);
         if (ring.size() < 2) return 0;
-        auto in = [&](std::int32_t u) {
+        auto in = [&](VertexId u) {
             const std::int32_t l = label_[u];
-            return l != kNone && regions_.find(l) == region;
+            return l != kNoRegion && regions_.find(l) == region;
         };
         std::size_t runs = 0;
         bool last = in(ring.back());
-        for (const std::int32_t u : ring) {
+        for (const VertexId u : ring) {
             const bool now = in(u);
             runs += now && !last;
             last = now;
@@ -114,9 +115,8 @@ class Sweep {
     }
 
     void check() const {
-        std::vector<std::uint8_t> swept(topo_.n_vertices());
-        for (std::size_t v = 0; v < swept.size(); ++v)
-            swept[v] = label_[v] != kNone && on_side(static_cast<std::int32_t>(v));
+        VertexData<std::uint8_t> swept(topo_.n_vertices());
+        for (const VertexId v : topo_.vertices()) swept[v] = label_[v] != kNoRegion && on_side(v);
         const Fronts fronts = extract_fronts(topo_, swept);
         if (const std::string problem = check_fronts(topo_, fronts, swept); !problem.empty())
             throw InternalError("snaxel invariant broken after iteration " +
@@ -124,20 +124,20 @@ class Sweep {
     }
 
     const MeshTopology& topo_;
-    const std::vector<double>& f_;
+    const VertexData<double>& f_;
     int sign_;
-    std::vector<std::int32_t>& label_;
+    VertexData<std::int32_t>& label_;
     RegionUnion& regions_;
     std::vector<Region>& info_;
     ContourStats& stats_;
     const EngineOptions& options_;
-    std::vector<std::int32_t> stopped_;
+    std::vector<EdgeId> stopped_;
 };
 
 } // namespace
 
-double polish_root(const MeshTopology& topo, const ContourFunction& f, std::int32_t inside,
-                   std::int32_t outside, double f_inside, double f_outside, double tolerance,
+double polish_root(const MeshTopology& topo, const ContourFunction& f, VertexId inside,
+                   VertexId outside, double f_inside, double f_outside, double tolerance,
                    int scan_samples) {
     const glm::dvec3 pa = topo.positions()[inside], pb = topo.positions()[outside];
     const glm::dvec3 na = topo.normals()[inside], nb = topo.normals()[outside];
@@ -192,8 +192,8 @@ void polish_snaxels(const MeshTopology& topology, const ContourFunction& f, cons
     std::vector<Snaxel>& snaxels = result.fronts.snaxels;
     parallel_for(snaxels.size(), [&](std::size_t i) {
         Snaxel& s = snaxels[i];
-        s.t = polish_root(topology, f, s.inside, s.outside, result.vertex_f[std::size_t(s.inside)],
-                          result.vertex_f[std::size_t(s.outside)], options.polish_tolerance, scan);
+        s.t = polish_root(topology, f, s.inside, s.outside, result.vertex_f[s.inside],
+                          result.vertex_f[s.outside], options.polish_tolerance, scan);
     }, 1024);
 }
 
@@ -227,7 +227,7 @@ ContourResult SnaxelEngine::compute(const ContourSpec& spec, const Camera& camer
 
     f.evaluate_vertices(topo_, result.vertex_f);
 
-    std::vector<std::int32_t> label(nv, kNone);
+    VertexData<std::int32_t> label(nv, kNoRegion);
     RegionUnion regions;
     std::vector<Region> info;
     Sweep positive(topo_, result.vertex_f, +1, label, regions, info, result.stats, options);
@@ -235,13 +235,13 @@ ContourResult SnaxelEngine::compute(const ContourSpec& spec, const Camera& camer
     Sweep(topo_, result.vertex_f, -1, label, regions, info, result.stats, options).run();
 
     // Converged: compact the merged region labels.
-    std::vector<std::int32_t> compact(info.size(), kNone);
+    std::vector<std::int32_t> compact(info.size(), kNoRegion);
     result.vertex_region.resize(nv);
-    for (std::size_t v = 0; v < nv; ++v) {
-        if (label[v] == kNone)
-            throw InternalError("snaxel sweep left vertex " + std::to_string(v) + " unlabelled");
+    for (const VertexId v : topo_.vertices()) {
+        if (label[v] == kNoRegion)
+            throw InternalError("snaxel sweep left vertex " + std::to_string(v.index()) + " unlabelled");
         const std::int32_t root = regions.find(label[v]);
-        if (compact[root] == kNone) {
+        if (compact[root] == kNoRegion) {
             compact[root] = static_cast<std::int32_t>(result.regions.size());
             result.regions.push_back(info[root]);
         }
@@ -249,12 +249,12 @@ ContourResult SnaxelEngine::compute(const ContourSpec& spec, const Camera& camer
         ++result.regions[compact[root]].vertices;
     }
 
-    std::vector<std::uint8_t> inside(nv);
-    for (std::size_t v = 0; v < nv; ++v) inside[v] = result.regions[result.vertex_region[v]].sign > 0;
+    VertexData<std::uint8_t> inside(nv);
+    for (const VertexId v : topo_.vertices()) inside[v] = result.regions[result.vertex_region[v]].sign > 0;
     // In edge order, as a scan of the edges (and the tracker) gives them: a
     // tracked frame and the same frame computed anew have the same loops,
     // in the same order, from the same snaxels, so they draw the same SVG.
-    std::vector<std::int32_t> crossing = positive.stopped_edges();
+    std::vector<EdgeId> crossing = positive.stopped_edges();
     std::sort(crossing.begin(), crossing.end());
     result.fronts = extract_fronts(topo_, inside, crossing);
     polish_snaxels(topo_, f, options, result);
@@ -262,9 +262,9 @@ ContourResult SnaxelEngine::compute(const ContourSpec& spec, const Camera& camer
     if (options.check_invariants) {
         if (const std::string problem = check_fronts(topo_, result.fronts, inside); !problem.empty())
             throw InternalError("snaxel invariant broken after convergence: " + problem);
-        for (std::size_t v = 0; v < nv; ++v)
+        for (const VertexId v : topo_.vertices())
             if (bool(inside[v]) != (result.vertex_f[v] >= 0.0))
-                throw InternalError("region label of vertex " + std::to_string(v) + " disagrees with f");
+                throw InternalError("region label of vertex " + std::to_string(v.index()) + " disagrees with f");
     }
     result.stats.ms =
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();

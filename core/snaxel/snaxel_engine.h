@@ -44,15 +44,15 @@ struct ContourStats {
 /// One region swept by one (merged) front: f >= 0 (sign +1) or f < 0 (-1).
 struct Region {
     int sign = 1;
-    std::int32_t seed = MeshTopology::kNone; ///< vertex of the extremum it grew from
+    VertexId seed; ///< vertex of the extremum it grew from
     std::size_t vertices = 0;
 };
 
 struct ContourResult {
     ContourSpec spec;
     Fronts fronts;                      ///< the converged f = 0 contour, R = {f >= 0}
-    std::vector<double> vertex_f;       ///< f at every vertex
-    std::vector<std::int32_t> vertex_region; ///< index into regions, for every vertex
+    VertexData<double> vertex_f;             ///< f at every vertex
+    VertexData<std::int32_t> vertex_region; ///< index into regions, for every vertex
     std::vector<Region> regions;
     /// Per snaxel, for a kind whose drawing leaves parts of its loops out
     /// (suggestive contours: suggestive_margins): >= 0 where drawn. Empty
@@ -94,8 +94,8 @@ class SnaxelEngine {
 /// f(outside): the first sign change among @p scan_samples equal steps from
 /// the inside end, polished by the Illinois variant of regula falsi with the
 /// slerped normal until its bracket is below @p tolerance in t.
-double polish_root(const MeshTopology& topology, const ContourFunction& f, std::int32_t inside,
-                   std::int32_t outside, double f_inside, double f_outside, double tolerance,
+double polish_root(const MeshTopology& topology, const ContourFunction& f, VertexId inside,
+                   VertexId outside, double f_inside, double f_outside, double tolerance,
                    int scan_samples);
 
 } // namespace snaxels

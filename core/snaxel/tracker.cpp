@@ -11,7 +11,7 @@
 namespace snaxels {
 namespace {
 
-constexpr std::int32_t kNone = MeshTopology::kNone;
+constexpr std::int32_t kNone = kNoSnaxel;
 
 glm::dvec3 loop_centroid(const Fronts& fronts, const FrontLoop& loop,
                          const std::vector<glm::dvec3>& positions) {
@@ -111,7 +111,7 @@ void ContourTracker::start(const Camera& camera, const Light& light) {
     const Fronts& fronts = frame_.contour.fronts;
     inside_.assign(topo_.n_vertices(), 0);
     if (frame_.contour.vertex_f.size() == inside_.size()) // (parabolic curves bound no vertex set)
-        for (std::size_t v = 0; v < inside_.size(); ++v) inside_[v] = frame_.contour.vertex_f[v] >= 0.0;
+        for (const VertexId v : topo_.vertices()) inside_[v] = frame_.contour.vertex_f[v] >= 0.0;
     frame_.snaxel_id.resize(fronts.snaxels.size());
     frame_.born_from.assign(fronts.snaxels.size(), 0);
     snaxel_position_.resize(fronts.snaxels.size());
@@ -136,7 +136,7 @@ void ContourTracker::track(const Camera& camera, const Light& light) {
 
     // 1. f everywhere (new regions may appear anywhere) and what changed side.
     f.evaluate_vertices(topo_, result.vertex_f);
-    const std::vector<std::int32_t> changed = flip_changed_vertices();
+    const std::vector<VertexId> changed = flip_changed_vertices();
     sweep_parents(old, changed);
     result.fronts = extract_fronts(topo_, inside_, crossing_edges(old, changed));
     place_snaxels(engine, f);
@@ -158,12 +158,12 @@ void ContourTracker::track(const Camera& camera, const Light& light) {
 
 /// The vertices whose side of the contour differs from inside_ (ascending),
 /// flipped there.
-std::vector<std::int32_t> ContourTracker::flip_changed_vertices() {
-    const std::vector<double>& vertex_f = frame_.contour.vertex_f;
-    std::vector<std::int32_t> changed;
-    for (std::size_t v = 0; v < topo_.n_vertices(); ++v)
-        if (std::uint8_t(vertex_f[v] >= 0.0) != inside_[v]) changed.push_back(std::int32_t(v));
-    for (const std::int32_t v : changed) inside_[v] ^= 1;
+std::vector<VertexId> ContourTracker::flip_changed_vertices() {
+    const VertexData<double>& vertex_f = frame_.contour.vertex_f;
+    std::vector<VertexId> changed;
+    for (const VertexId v : topo_.vertices())
+        if (std::uint8_t(vertex_f[v] >= 0.0) != inside_[v]) changed.push_back(v);
+    for (const VertexId v : changed) inside_[v] ^= 1;
     return changed;
 }
 
@@ -171,11 +171,11 @@ std::vector<std::int32_t> ContourTracker::flip_changed_vertices() {
 /// passed by that snaxel (fan-out when it joins R, retreat when it leaves),
 /// and the sweep carries the same parent on across connected changed
 /// vertices of the same kind.
-void ContourTracker::sweep_parents(const Fronts& old, const std::vector<std::int32_t>& changed) {
+void ContourTracker::sweep_parents(const Fronts& old, const std::vector<VertexId>& changed) {
     vertex_parent_.assign(topo_.n_vertices(), kNone);
-    std::vector<std::int32_t> queue;
+    std::vector<VertexId> queue;
     for (std::size_t s = 0; s < old.snaxels.size(); ++s) {
-        for (const std::int32_t v : {old.snaxels[s].outside, old.snaxels[s].inside}) {
+        for (const VertexId v : {old.snaxels[s].outside, old.snaxels[s].inside}) {
             const bool joined = v == old.snaxels[s].outside && inside_[v];
             const bool left = v == old.snaxels[s].inside && !inside_[v];
             if ((joined || left) && vertex_parent_[v] == kNone) {
@@ -185,9 +185,9 @@ void ContourTracker::sweep_parents(const Fronts& old, const std::vector<std::int
         }
     }
     for (std::size_t q = 0; q < queue.size(); ++q) {
-        const std::int32_t v = queue[q];
+        const VertexId v = queue[q];
         (inside_[v] ? frame_.fanouts : frame_.retreats) += 1;
-        for (const std::int32_t w : topo_.neighbours(v)) {
+        for (const VertexId w : topo_.neighbours(v)) {
             if (vertex_parent_[w] != kNone || inside_[w] != inside_[v]) continue;
             if (std::binary_search(changed.begin(), changed.end(), w)) { // changed the same way
                 vertex_parent_[w] = vertex_parent_[v];
@@ -200,27 +200,27 @@ void ContourTracker::sweep_parents(const Fronts& old, const std::vector<std::int
 /// 3. The edges the fronts now cross: old front edges that still cross, and
 /// the edges around every vertex that changed side; ascending, as a scan
 /// would give them.
-std::vector<std::int32_t> ContourTracker::crossing_edges(const Fronts& old, const std::vector<std::int32_t>& changed) {
+std::vector<EdgeId> ContourTracker::crossing_edges(const Fronts& old, const std::vector<VertexId>& changed) {
     edge_mark_.resize(topo_.n_edges(), 0);
-    std::vector<std::int32_t> kept, fresh;
+    std::vector<EdgeId> kept, fresh;
     kept.reserve(old.snaxels.size());
-    auto consider = [&](std::int32_t e, std::vector<std::int32_t>& into) {
+    auto consider = [&](EdgeId e, std::vector<EdgeId>& into) {
         if (edge_mark_[e]) return;
         edge_mark_[e] = 1;
         const auto [a, b] = topo_.edge_vertices()[e];
         if (inside_[a] != inside_[b]) into.push_back(e);
     };
     for (const Snaxel& s : old.snaxels) consider(s.edge, kept);
-    for (const std::int32_t v : changed)
-        for (const std::int32_t e : topo_.vertex_edges(v)) consider(e, fresh);
+    for (const VertexId v : changed)
+        for (const EdgeId e : topo_.vertex_edges(v)) consider(e, fresh);
     for (const Snaxel& s : old.snaxels) edge_mark_[s.edge] = 0;
-    for (const std::int32_t v : changed)
-        for (const std::int32_t e : topo_.vertex_edges(v)) edge_mark_[e] = 0;
+    for (const VertexId v : changed)
+        for (const EdgeId e : topo_.vertex_edges(v)) edge_mark_[e] = 0;
     // The old snaxels come ascending by edge from the frame before (a
     // from-scratch frame may not): only the few new edges need sorting.
     if (!std::is_sorted(kept.begin(), kept.end())) std::sort(kept.begin(), kept.end());
     std::sort(fresh.begin(), fresh.end());
-    std::vector<std::int32_t> crossing(kept.size() + fresh.size());
+    std::vector<EdgeId> crossing(kept.size() + fresh.size());
     std::merge(kept.begin(), kept.end(), fresh.begin(), fresh.end(), crossing.begin());
     return crossing;
 }
@@ -291,7 +291,7 @@ void ContourTracker::match_loops(const TrackedFrame& prev, const std::vector<glm
     std::vector<std::int32_t> linked(static_cast<std::size_t>(bucket_start[old_loops]));
     std::vector<std::int32_t> fill(bucket_start.begin(), bucket_start.end() - 1);
     for (std::size_t s = 0; s < source.size(); ++s)
-        if (source[s] != kNone) linked[std::size_t(fill[std::size_t(old.snaxels[source[s]].loop)]++)] = fronts.snaxels[s].loop;
+        if (source[s] != kNone) linked[fill[std::size_t(old.snaxels[source[s]].loop)]++] = fronts.snaxels[s].loop;
     std::vector<std::pair<std::pair<std::int32_t, std::int32_t>, std::size_t>> shared; // (old, new) -> snaxels
     for (std::size_t l = 0; l < old_loops; ++l) {
         const auto first = linked.begin() + bucket_start[l], last = linked.begin() + bucket_start[l + 1];
@@ -305,8 +305,8 @@ void ContourTracker::match_loops(const TrackedFrame& prev, const std::vector<glm
     // Per loop, the loops on the other side, ascending.
     std::vector<std::vector<std::int32_t>> pred(new_loops), succ(old_loops);
     for (const auto& [link, count] : shared) {
-        succ[std::size_t(link.first)].push_back(link.second);
-        pred[std::size_t(link.second)].push_back(link.first);
+        succ[link.first].push_back(link.second);
+        pred[link.second].push_back(link.first);
     }
     // Through a split or merge the sequence goes on along the branch that
     // shares the most snaxels both ways; the other branches start anew.

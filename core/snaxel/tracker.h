@@ -61,9 +61,9 @@ class ContourTracker {
     void start(const Camera& camera, const Light& light);
     void track(const Camera& camera, const Light& light);
     // The stages of track(), in order.
-    std::vector<std::int32_t> flip_changed_vertices();
-    void sweep_parents(const Fronts& old, const std::vector<std::int32_t>& changed);
-    std::vector<std::int32_t> crossing_edges(const Fronts& old, const std::vector<std::int32_t>& changed);
+    std::vector<VertexId> flip_changed_vertices();
+    void sweep_parents(const Fronts& old, const std::vector<VertexId>& changed);
+    std::vector<EdgeId> crossing_edges(const Fronts& old, const std::vector<VertexId>& changed);
     void place_snaxels(const SnaxelEngine& engine, const ContourFunction& f);
     std::vector<std::int32_t> assign_identities(const TrackedFrame& prev, const std::vector<glm::dvec3>& old_position);
     void match_loops(const TrackedFrame& prev, const std::vector<glm::dvec3>& old_position,
@@ -75,11 +75,11 @@ class ContourTracker {
     TrackedFrame frame_;
     int frame_number_ = -1;
     std::uint64_t next_id_ = 1, next_sequence_ = 1;
-    std::vector<std::uint8_t> inside_;
+    VertexData<std::uint8_t> inside_;
     std::vector<glm::dvec3> snaxel_position_; ///< of the current frame's snaxels
     // Scratch, kept between frames to avoid reallocation.
-    std::vector<std::int32_t> vertex_parent_;
-    std::vector<std::uint8_t> edge_mark_;
+    VertexData<std::int32_t> vertex_parent_; ///< the old snaxel that passed each vertex, or kNoSnaxel
+    EdgeData<std::uint8_t> edge_mark_;
 };
 
 } // namespace snaxels

@@ -79,12 +79,12 @@ struct Parser {
 
     StyleDiagnostic where(std::ptrdiff_t offset, std::string message) const {
         // Node offsets point at the element name: report its '<'.
-        if (offset > 0 && offset <= std::ptrdiff_t(text.size()) && text[std::size_t(offset - 1)] == '<') --offset;
+        if (offset > 0 && offset <= std::ptrdiff_t(text.size()) && text[offset - 1] == '<') --offset;
         StyleDiagnostic d;
         d.line = 1;
         d.column = 1;
         for (std::ptrdiff_t i = 0; i < offset && i < std::ptrdiff_t(text.size()); ++i) {
-            if (text[std::size_t(i)] == '\n') {
+            if (text[i] == '\n') {
                 ++d.line;
                 d.column = 1;
             } else {

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <limits>
+#include <span>
 #include <stdexcept>
 
 #include <embree3/rtcore.h>
@@ -20,8 +21,8 @@ struct CountContext {
     // the original mesh around the original vertices the ray's ignored
     // vertices lie between, as they would be on the mesh as loaded.
     const MeshRefinement* refinement = nullptr;
-    std::array<std::int32_t, 9> ignore_base{};
-    int n_ignore_base = 0;
+    std::array<VertexId, 9> ignore_base{};
+    std::size_t n_ignore_base = 0;
     Crossings crossings;
     // A primitive can be reported more than once; remember what was counted.
     std::vector<std::uint32_t> seen;
@@ -29,16 +30,19 @@ struct CountContext {
 
 namespace {
 
-bool ignored(const CountContext& c, std::uint32_t prim) {
+/// The face Embree calls primitive @p prim (faces go in in id order).
+FaceId face_of_primitive(std::uint32_t prim) { return FaceId(std::int32_t(prim)); }
+
+bool ignored(const CountContext& c, FaceId face) {
     if (c.refinement) {
-        const auto& corners = c.refinement->base_faces[std::size_t(c.refinement->face_origin[prim])];
-        for (const std::int32_t v : corners)
-            for (int i = 0; i < c.n_ignore_base; ++i)
-                if (v == c.ignore_base[std::size_t(i)]) return true;
+        const auto& corners = c.refinement->base_faces[c.refinement->face_origin[face]];
+        const auto ignore = std::span(c.ignore_base).first(c.n_ignore_base);
+        for (const VertexId v : corners)
+            if (std::find(ignore.begin(), ignore.end(), v) != ignore.end()) return true;
         return false;
     }
-    for (const std::int32_t v : c.topo->face_vertices()[prim])
-        for (const std::int32_t w : c.ray->ignore)
+    for (const VertexId v : c.topo->face_vertices()[face])
+        for (const VertexId w : c.ray->ignore)
             if (v == w) return true;
     return false;
 }
@@ -49,10 +53,11 @@ void count_filter(const RTCFilterFunctionNArguments* args) {
         if (args->valid[i] != -1) continue;
         args->valid[i] = 0; // reject: keep traversing to find every crossing
         const std::uint32_t prim = RTCHitN_primID(args->hit, args->N, i);
-        if (ignored(*c, prim)) continue;
+        const FaceId face = face_of_primitive(prim);
+        if (ignored(*c, face)) continue;
         if (std::find(c->seen.begin(), c->seen.end(), prim) != c->seen.end()) continue;
         c->seen.push_back(prim);
-        const auto& fv = c->topo->face_vertices()[prim];
+        const auto& fv = c->topo->face_vertices()[face];
         const glm::dvec3 a = c->topo->positions()[fv[0]];
         const glm::dvec3 normal = glm::cross(c->topo->positions()[fv[1]] - a, c->topo->positions()[fv[2]] - a);
         if (glm::dot(normal, c->ray->dir) > 0.0) ++c->crossings.front;
@@ -63,7 +68,7 @@ void count_filter(const RTCFilterFunctionNArguments* args) {
 void occlusion_filter(const RTCFilterFunctionNArguments* args) {
     auto* c = reinterpret_cast<CountContext*>(args->context);
     for (unsigned i = 0; i < args->N; ++i)
-        if (args->valid[i] == -1 && ignored(*c, RTCHitN_primID(args->hit, args->N, i)))
+        if (args->valid[i] == -1 && ignored(*c, face_of_primitive(RTCHitN_primID(args->hit, args->N, i))))
             args->valid[i] = 0;
 }
 
@@ -97,7 +102,7 @@ RTCDevice shared_device() {
 
 RayScene::RayScene(MeshTopology topology) : topo_(std::move(topology)) {
     if (!topo_.positions().empty()) {
-        glm::dvec3 lo = topo_.positions()[0], hi = lo;
+        glm::dvec3 lo = topo_.positions().values().front(), hi = lo;
         for (const glm::dvec3& p : topo_.positions()) {
             lo = glm::min(lo, p);
             hi = glm::max(hi, p);
@@ -119,8 +124,8 @@ RayScene::RayScene(MeshTopology topology) : topo_(std::move(topology)) {
     auto* index = static_cast<std::uint32_t*>(rtcSetNewGeometryBuffer(
         geom, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, 3 * sizeof(std::uint32_t), topo_.n_faces()));
     if (!vertices_ || !index) throw Error("out of memory building the ray-tracing scene");
-    for (std::size_t f = 0; f < topo_.n_faces(); ++f)
-        for (int k = 0; k < 3; ++k) index[3 * f + k] = std::uint32_t(topo_.face_vertices()[f][k]);
+    for (const auto& corners : topo_.face_vertices())
+        for (const VertexId v : corners) *index++ = std::uint32_t(v.index());
     upload_positions();
     rtcCommitGeometry(geom);
     rtcAttachGeometry(scene, geom);
@@ -133,8 +138,9 @@ RayScene::~RayScene() {
 }
 
 void RayScene::upload_positions() {
-    for (std::size_t v = 0; v < topo_.n_vertices(); ++v)
-        for (int k = 0; k < 3; ++k) vertices_[3 * v + k] = float(topo_.positions()[v][k] - origin_[k]);
+    float* out = vertices_;
+    for (const glm::dvec3& p : topo_.positions())
+        for (int k = 0; k < 3; ++k) *out++ = float(p[k] - origin_[k]);
 }
 
 void RayScene::refit(const MeshTopology& pose) {
@@ -157,20 +163,20 @@ void RayScene::init_context(CountContext& c, const VisibilityRay& r, bool counti
     if (topo_.refinement() && r.original_neighbourhood) {
         const MeshRefinement& refinement = *topo_.refinement();
         c.refinement = &refinement;
-        auto add = [&](std::int32_t v) {
-            for (int i = 0; i < c.n_ignore_base; ++i)
-                if (c.ignore_base[std::size_t(i)] == v) return;
-            c.ignore_base[std::size_t(c.n_ignore_base++)] = v;
+        auto add = [&](VertexId v) {
+            const auto kept = std::span(c.ignore_base).first(c.n_ignore_base);
+            if (std::find(kept.begin(), kept.end(), v) == kept.end()) c.ignore_base[c.n_ignore_base++] = v;
         };
-        for (const std::int32_t v : r.ignore) {
+        const VertexId first_added(refinement.base_vertices);
+        for (const VertexId v : r.ignore) {
             if (v == MeshTopology::kNone) continue;
-            if (std::size_t(v) < refinement.base_vertices) {
+            if (v < first_added) {
                 add(v);
                 continue;
             }
-            const std::size_t i = std::size_t(v) - refinement.base_vertices;
-            for (int k = 0; k < 3; ++k)
-                if (refinement.weights[i][k] > 0.0) add(refinement.from[i][std::size_t(k)]);
+            const std::size_t i = std::size_t(v.index() - first_added.index());
+            for (std::size_t k = 0; k < 3; ++k)
+                if (refinement.weights[i][int(k)] > 0.0) add(refinement.from[i][k]);
         }
     }
 }
@@ -194,7 +200,7 @@ RayHit RayScene::nearest(const VisibilityRay& r) const {
     rtcIntersect1(static_cast<RTCScene>(scene_), &c.embree, &rayhit);
     RayHit hit;
     if (rayhit.hit.geomID == RTC_INVALID_GEOMETRY_ID) return hit;
-    hit.face = std::int32_t(rayhit.hit.primID);
+    hit.face = face_of_primitive(rayhit.hit.primID);
     hit.u = rayhit.hit.u;
     hit.v = rayhit.hit.v;
     hit.t = rayhit.ray.tfar;

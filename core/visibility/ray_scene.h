@@ -18,7 +18,7 @@ struct VisibilityRay {
     glm::dvec3 origin{0.0};
     glm::dvec3 dir{0.0, 0.0, 1.0}; ///< unit, toward the viewer
     double tfar = 0.0;              ///< where the viewer is (infinity: orthographic)
-    std::array<std::int32_t, 3> ignore{MeshTopology::kNone, MeshTopology::kNone, MeshTopology::kNone};
+    std::array<VertexId, 3> ignore{};
     /// On a refined mesh (core/mesh/refine.h): ignore the faces the mesh
     /// as loaded has around the original vertices the ignored ones lie
     /// between, not only the refined faces around them.
@@ -35,7 +35,7 @@ struct Crossings {
 /// The nearest surface a ray meets: its face, barycentric coordinates
 /// (point = (1-u-v) a + u b + v c over the face's corners) and distance.
 struct RayHit {
-    std::int32_t face = MeshTopology::kNone;
+    FaceId face;
     double u = 0.0, v = 0.0, t = 0.0;
     bool hit() const { return face != MeshTopology::kNone; }
 };

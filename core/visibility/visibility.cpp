@@ -8,22 +8,20 @@
 
 namespace snaxels {
 
-std::int32_t common_face(const MeshTopology& topo, const Snaxel& a, const Snaxel& b) {
-    for (const std::int32_t f : topo.edge_faces()[a.edge])
+FaceId common_face(const MeshTopology& topo, const Snaxel& a, const Snaxel& b) {
+    for (const FaceId f : topo.edge_faces()[a.edge])
         if (f != MeshTopology::kNone &&
             (f == topo.edge_faces()[b.edge][0] || f == topo.edge_faces()[b.edge][1]))
             return f;
     // Snaxels at the two ends of an edge (a crease or border chain's step):
     // a face of the edge they share.
-    auto vertex = [](const Snaxel& s) {
-        return s.t == 0.0 ? s.inside : s.t == 1.0 ? s.outside : MeshTopology::kNone;
-    };
-    const std::int32_t va = vertex(a), vb = vertex(b);
+    auto vertex = [](const Snaxel& s) { return s.t == 0.0 ? s.inside : s.t == 1.0 ? s.outside : VertexId(); };
+    const VertexId va = vertex(a), vb = vertex(b);
     if (va == MeshTopology::kNone || vb == MeshTopology::kNone || va == vb) return MeshTopology::kNone;
-    for (const std::int32_t e : {a.edge, b.edge}) {
-        const auto& ends = topo.edge_vertices()[std::size_t(e)];
+    for (const EdgeId e : {a.edge, b.edge}) {
+        const auto& ends = topo.edge_vertices()[e];
         if ((ends[0] == va && ends[1] == vb) || (ends[0] == vb && ends[1] == va))
-            for (const std::int32_t f : topo.edge_faces()[std::size_t(e)])
+            for (const FaceId f : topo.edge_faces()[e])
                 if (f != MeshTopology::kNone) return f;
     }
     return MeshTopology::kNone;
@@ -50,11 +48,11 @@ VisibilityRay VisibilitySampler::snaxel_ray(const Snaxel& s, const glm::dvec3& p
     const MeshTopology& topo = scene_.topology();
     const double len = glm::length(topo.positions()[s.inside] - topo.positions()[s.outside]);
     VisibilityRay ray = make_ray(p, n, len);
-    ray.ignore = {s.inside, s.outside, MeshTopology::kNone};
+    ray.ignore = {s.inside, s.outside, VertexId()};
     return ray;
 }
 
-VisibilityRay VisibilitySampler::face_ray(std::int32_t face, const glm::dvec3& p,
+VisibilityRay VisibilitySampler::face_ray(FaceId face, const glm::dvec3& p,
                                           const glm::dvec3& n) const {
     const MeshTopology& topo = scene_.topology();
     const auto& fv = topo.face_vertices()[face];
@@ -66,24 +64,24 @@ VisibilityRay VisibilitySampler::face_ray(std::int32_t face, const glm::dvec3& p
     return ray;
 }
 
-VisibilityRay VisibilitySampler::vertex_ray(std::int32_t v, bool back_side) const {
+VisibilityRay VisibilitySampler::vertex_ray(VertexId v, bool back_side) const {
     const MeshTopology& topo = scene_.topology();
     double len = 0.0;
-    const std::span<const std::int32_t> ring = topo.neighbours(v);
-    for (const std::int32_t w : ring) len += glm::length(topo.positions()[w] - topo.positions()[v]);
+    const std::span<const VertexId> ring = topo.neighbours(v);
+    for (const VertexId w : ring) len += glm::length(topo.positions()[w] - topo.positions()[v]);
     len = !ring.empty() ? len / double(ring.size()) : topo.mean_edge_length();
     VisibilityRay ray = make_ray(topo.positions()[v], back_side ? -topo.normals()[v] : topo.normals()[v], len);
-    ray.ignore = {v, MeshTopology::kNone, MeshTopology::kNone};
+    ray.ignore = {v, VertexId(), VertexId()};
     return ray;
 }
 
-VisibilityRay VisibilitySampler::edge_ray(std::int32_t e, double t) const {
+VisibilityRay VisibilitySampler::edge_ray(EdgeId e, double t) const {
     const MeshTopology& topo = scene_.topology();
-    const std::int32_t a = topo.edge_vertices()[e][0], b = topo.edge_vertices()[e][1];
+    const auto [a, b] = topo.edge_vertices()[e];
     const glm::dvec3 p = glm::mix(topo.positions()[a], topo.positions()[b], t);
     const glm::dvec3 n = slerp_normal(topo.normals()[a], topo.normals()[b], t);
     VisibilityRay ray = make_ray(p, n, glm::length(topo.positions()[a] - topo.positions()[b]));
-    ray.ignore = {a, b, MeshTopology::kNone};
+    ray.ignore = {a, b, VertexId()};
     return ray;
 }
 
@@ -109,12 +107,12 @@ ContourVisibility cut_runs(const SnaxelEngine& engine, const ContourResult& cont
         const FrontLoop& loop = fronts.loops[loop_index];
         LoopVisibility& lv = out.loops[loop_index];
         std::vector<std::int32_t> order;
-        order.reserve(std::size_t(loop.size));
+        order.reserve(loop.size);
         fronts.for_each_in_loop(loop, [&](std::int32_t s) { order.push_back(s); });
         const std::size_t n = order.size();
-        for (const std::int32_t s : order) lv.snaxel_qi.push_back(snaxel_qi[std::size_t(s)]);
+        for (const std::int32_t s : order) lv.snaxel_qi.push_back(snaxel_qi[s]);
         lv.change_before.assign(n, glm::dvec3(0.0));
-        auto point = [&](std::size_t k) { return engine.position(fronts.snaxels[std::size_t(order[k % n])]); };
+        auto point = [&](std::size_t k) { return engine.position(fronts.snaxels[order[k % n]]); };
 
         std::size_t start = 0; // where the first run begins
         bool any_change = false;
@@ -164,10 +162,9 @@ ContourVisibility cut_runs(const SnaxelEngine& engine, const ContourResult& cont
 /// Where the margin of a contour that leaves parts out crosses zero between
 /// snaxels a and b (linear in the margins).
 glm::dvec3 margin_zero(const SnaxelEngine& engine, const ContourResult& contour, std::int32_t a, std::int32_t b) {
-    const double ma = contour.snaxel_margin[std::size_t(a)], mb = contour.snaxel_margin[std::size_t(b)];
+    const double ma = contour.snaxel_margin[a], mb = contour.snaxel_margin[b];
     const double u = ma != mb ? std::clamp(ma / (ma - mb), 0.0, 1.0) : 0.5;
-    return (1.0 - u) * engine.position(contour.fronts.snaxels[std::size_t(a)]) +
-           u * engine.position(contour.fronts.snaxels[std::size_t(b)]);
+    return (1.0 - u) * engine.position(contour.fronts.snaxels[a]) + u * engine.position(contour.fronts.snaxels[b]);
 }
 
 } // namespace
@@ -186,13 +183,12 @@ ContourVisibility VisibilitySampler::classify(const SnaxelEngine& engine,
 
     // The point where QI stops being `from` between snaxels a and b.
     auto change_point = [&](std::int32_t ia, std::int32_t ib, int from) {
-        if (margins && (snaxel_qi[std::size_t(ia)] == kNotDrawn || snaxel_qi[std::size_t(ib)] == kNotDrawn))
-            return margin_zero(engine, contour, ia, ib);
-        const Snaxel& a = fronts.snaxels[std::size_t(ia)];
-        const Snaxel& b = fronts.snaxels[std::size_t(ib)];
+        if (margins && (snaxel_qi[ia] == kNotDrawn || snaxel_qi[ib] == kNotDrawn)) return margin_zero(engine, contour, ia, ib);
+        const Snaxel& a = fronts.snaxels[ia];
+        const Snaxel& b = fronts.snaxels[ib];
         const glm::dvec3 pa = engine.position(a), pb = engine.position(b);
         const glm::dvec3 na = engine.normal(a), nb = engine.normal(b);
-        const std::int32_t face = common_face(topo, a, b);
+        const FaceId face = common_face(topo, a, b);
         double lo = 0.0, hi = 1.0;
         for (int step = 0; step < options_.bisection_steps && face != MeshTopology::kNone; ++step) {
             const double mid = 0.5 * (lo + hi);

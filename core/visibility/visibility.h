@@ -58,14 +58,14 @@ class VisibilitySampler {
     /// The ray from a snaxel: its edge's end vertices' faces are ignored.
     VisibilityRay snaxel_ray(const Snaxel& s, const glm::dvec3& p, const glm::dvec3& n) const;
     /// The ray from a point inside face @p face: the faces around its corners are ignored.
-    VisibilityRay face_ray(std::int32_t face, const glm::dvec3& p, const glm::dvec3& n) const;
+    VisibilityRay face_ray(FaceId face, const glm::dvec3& p, const glm::dvec3& n) const;
     /// The ray from vertex @p v: the faces around it are ignored. It starts
     /// off the surface on its normal's side, or (@p back_side) the other:
     /// a vertex turned away is seen, if at all, from its back.
-    VisibilityRay vertex_ray(std::int32_t v, bool back_side = false) const;
+    VisibilityRay vertex_ray(VertexId v, bool back_side = false) const;
     /// The ray from the point at @p t along edge @p e (0 at its first
     /// vertex): the faces around both ends are ignored.
-    VisibilityRay edge_ray(std::int32_t e, double t) const;
+    VisibilityRay edge_ray(EdgeId e, double t) const;
     /// QI along a ray: crossings of front- and back-facing layers (the larger
     /// count, so open sheets seen from behind count too).
     int qi(const VisibilityRay& ray) const;
@@ -89,6 +89,6 @@ class VisibilitySampler {
 ContourVisibility drawn_parts(const SnaxelEngine& engine, const ContourResult& contour);
 
 /// The face two snaxels on edges of one face share (kNone if none).
-std::int32_t common_face(const MeshTopology& topology, const Snaxel& a, const Snaxel& b);
+FaceId common_face(const MeshTopology& topology, const Snaxel& a, const Snaxel& b);
 
 } // namespace snaxels

@@ -56,7 +56,7 @@ inline int direct_class(const RayScene& rays, const ImageProjection& projection,
     const RayHit hit = rays.nearest(ray);
     if (!hit.hit()) return -1;
     const MeshTopology& topo = rays.topology();
-    const auto& f = topo.face_vertices()[std::size_t(hit.face)];
+    const auto& f = topo.face_vertices()[hit.face];
     const glm::dvec3 p = (1.0 - hit.u - hit.v) * topo.positions()[f[0]] + hit.u * topo.positions()[f[1]] + hit.v * topo.positions()[f[2]];
     const glm::dvec3 n = glm::normalize((1.0 - hit.u - hit.v) * topo.normals()[f[0]] + hit.u * topo.normals()[f[1]] + hit.v * topo.normals()[f[2]]);
     (void)camera;

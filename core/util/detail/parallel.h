@@ -26,4 +26,15 @@ template <class Fn> void parallel_for(std::size_t n, Fn&& fn, std::size_t grain 
     });
 }
 
+/// Calls fn(id) for every id of @p ids, a range of ids numbered from 0
+/// (a mesh's vertices, edges, ...: ElementRange), as parallel_for above.
+template <class Ids, class Fn>
+    requires requires(const Ids& ids) {
+        ids.size();
+        typename Ids::Id;
+    }
+void parallel_for(const Ids& ids, Fn&& fn, std::size_t grain = 512) {
+    parallel_for(ids.size(), [&](std::size_t i) { fn(typename Ids::Id(i)); }, grain);
+}
+
 } // namespace snaxels

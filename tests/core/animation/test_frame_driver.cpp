@@ -14,6 +14,7 @@
 #include "snaxels/mesh/refine.h"
 #include "snaxels/snaxel/tracker.h"
 #include "tests/support/assets.h"
+#include "tests/support/plain_mesh.h"
 #include "tests/support/oracle_setup.h"
 
 using namespace snaxels;
@@ -43,10 +44,10 @@ double track_clip(const std::string& path, const std::string& clip, int frames, 
         const Camera& cam = pose.camera;
         const Light& light = pose.light;
         EXPECT_TRUE(topo.same_connectivity(rest_topo)); // one connectivity, shared
-        for (std::size_t v = 0; v < topo.n_vertices(); ++v) moved = std::max(moved, glm::length(topo.positions()[v] - rest[v]));
+        for (std::size_t v = 0; v < topo.n_vertices(); ++v) moved = std::max(moved, glm::length(topo.positions().values()[v] - rest[v]));
         const TrackedFrame& tf = tracker.step(topo, cam, light);
         // A moving mesh's normals are what its animation makes them.
-        const auto oracle = test::marching_triangles(topo.positions(), topo.face_vertices(), test::oracle_setup({}, cam, light), 1,
+        const auto oracle = test::marching_triangles(topo.positions(), test::plain_faces(topo), test::oracle_setup({}, cam, light), 1,
                                                      topo.normals());
         EXPECT_EQ(tf.contour.fronts.snaxels.size(), oracle.crossing.size()) << path << " frame " << k;
         EXPECT_EQ(tf.contour.fronts.loops.size(), oracle.loops) << path << " frame " << k;
@@ -257,7 +258,7 @@ TEST(FrameDriver, PosesAreValuesOfOneSharedConnectivity) {
     EXPECT_EQ(std::vector<glm::dvec3>(rest.positions().begin(), rest.positions().end()), loaded);
     double moved = 0.0;
     for (std::size_t v = 0; v < early_positions.size(); ++v)
-        moved = std::max(moved, glm::length(late.mesh.positions()[v] - early_positions[v]));
+        moved = std::max(moved, glm::length(late.mesh.positions().values()[v] - early_positions[v]));
     EXPECT_GT(moved, 0.1); // the bar bent between the two frames
 
     // A pose of another mesh is refused, not tracked as if it were this one.

@@ -23,8 +23,8 @@ namespace {
 
 // The snaxels of @p r as (edge, inside vertex, t), sorted: fronts compared
 // independently of their order in memory.
-std::vector<std::tuple<std::int32_t, std::int32_t, double>> crossings(const ContourResult& r) {
-    std::vector<std::tuple<std::int32_t, std::int32_t, double>> out;
+std::vector<std::tuple<EdgeId, VertexId, double>> crossings(const ContourResult& r) {
+    std::vector<std::tuple<EdgeId, VertexId, double>> out;
     for (const Snaxel& s : r.fronts.snaxels) out.emplace_back(s.edge, s.inside, s.t);
     std::sort(out.begin(), out.end());
     return out;

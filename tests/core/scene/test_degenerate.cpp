@@ -149,9 +149,9 @@ TEST(Degenerate, LightAtTheEyeCastsItsShadowOnTheSilhouette) {
     const SnaxelEngine engine(s.topology);
     ASSERT_GT(snaxel_count(out.results[0]), 0u);
     double edge = 0.0;
-    for (std::size_t f = 0; f < 50; ++f)
-        edge = std::max(edge, glm::length(s.topology.positions()[std::size_t(s.topology.face_vertices()[f][0])] -
-                                          s.topology.positions()[std::size_t(s.topology.face_vertices()[f][1])]));
+    for (FaceId f(0); f < FaceId(50); ++f)
+        edge = std::max(edge, glm::length(s.topology.positions()[s.topology.face_vertices()[f][0]] -
+                                          s.topology.positions()[s.topology.face_vertices()[f][1]]));
     for (const auto& sh : out.results[1].fronts.snaxels) {
         const glm::dvec3 p = engine.position(sh);
         double nearest = 1e300;
@@ -168,7 +168,7 @@ TEST(Degenerate, PointLightOnTheSurfaceLightsOnlyItsSpot) {
     const Scene s = scene_of(make_procedural("sphere:8000"));
     Light light;
     light.point = true;
-    light.pos = s.topology.positions()[0];
+    light.pos = s.topology.positions()[VertexId(0)];
     Camera c;
     c.view_dir = -glm::normalize(light.pos + glm::dvec3(0.3, 0.2, 0.0));
     const StillOutput out = draw(s, c, light,

@@ -24,6 +24,7 @@
 #include "snaxels/mesh/import.h"
 #include "snaxels/snaxel/snaxel_engine.h"
 #include "tests/support/oracle_setup.h"
+#include "tests/support/plain_mesh.h"
 
 using namespace snaxels;
 
@@ -35,7 +36,8 @@ TEST(ClosedForm, SphereContoursFollowThePapersFormulas) {
     for (const glm::dvec3& p : topo.positions()) ASSERT_NEAR(glm::length(p), 1.0, 1e-9);
     // Edges from the face list: vertex pair -> number of snaxels found on it.
     std::map<std::pair<std::int32_t, std::int32_t>, int> edges;
-    for (const auto& f : topo.face_vertices())
+    const auto faces = test::plain_faces(topo);
+    for (const auto& f : faces)
         for (int k = 0; k < 3; ++k) {
             const std::int32_t a = f[std::size_t(k)], b = f[std::size_t((k + 1) % 3)];
             edges[{std::min(a, b), std::max(a, b)}] = 0;
@@ -43,7 +45,7 @@ TEST(ClosedForm, SphereContoursFollowThePapersFormulas) {
     // Vertex normals: area-weighted face normals (the design's definition).
     // Vertex normals: area-weighted face normals (the design's definition),
     // computed by the tests' oracle (tests/support/marching_triangles.h).
-    const std::vector<glm::dvec3> normal = test::oracle_normals(topo.positions(), topo.face_vertices());
+    const std::vector<glm::dvec3> normal = test::oracle_normals(topo.positions(), faces);
     const SnaxelEngine engine(topo);
     std::mt19937 rng(5);
     std::normal_distribution<double> nd;
@@ -74,14 +76,14 @@ TEST(ClosedForm, SphereContoursFollowThePapersFormulas) {
             for (const FrontLoop& loop : r.fronts.loops)
                 r.fronts.for_each_in_loop(loop, [&](std::int32_t s) {
                     const Snaxel& sn = r.fronts.snaxels[std::size_t(s)];
-                    worst_root = std::max(worst_root, std::abs(f(test::oracle_slerp(normal[std::size_t(sn.inside)], normal[std::size_t(sn.outside)], sn.t))));
-                    const glm::dvec3 n = glm::normalize((1.0 - sn.t) * topo.positions()[std::size_t(sn.inside)] +
-                                                        sn.t * topo.positions()[std::size_t(sn.outside)]);
+                    const std::int32_t a = sn.inside.index(), b = sn.outside.index(); // as the oracle numbers them
+                    worst_root = std::max(worst_root, std::abs(f(test::oracle_slerp(normal[std::size_t(a)], normal[std::size_t(b)], sn.t))));
+                    const glm::dvec3 n = glm::normalize((1.0 - sn.t) * topo.positions()[sn.inside] + sn.t * topo.positions()[sn.outside]);
                     worst_exact = std::max(worst_exact, std::abs(f(n)));
                     // Where the curve is the light's circle (not the outline), as a circle.
                     if ((spec.kind == ContourKind::Shadow || spec.kind == ContourKind::Isophote) && glm::dot(n, V) > on_curve)
                         worst_circle = std::max(worst_circle, std::abs(glm::length(n - spec.k * L) - std::sqrt(1.0 - spec.k * spec.k)));
-                    ++edges[{std::min(sn.inside, sn.outside), std::max(sn.inside, sn.outside)}];
+                    ++edges[{std::min(a, b), std::max(a, b)}];
                 });
             EXPECT_LE(worst_root, root) << spec.label() << " view " << view;
             EXPECT_LE(worst_exact, on_curve) << spec.label() << " view " << view;

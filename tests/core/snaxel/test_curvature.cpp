@@ -45,7 +45,7 @@ Errors torus_errors(const MeshTopology& topo) {
     const CurvatureField field = vertex_curvatures(topo);
     EXPECT_EQ(field.size(), topo.n_vertices());
     Errors worst;
-    for (std::size_t v = 0; v < topo.n_vertices(); ++v) {
+    for (const VertexId v : topo.vertices()) {
         const TorusCurvature expected = torus_at(topo.positions()[v]);
         // |1/r| > |parallel| everywhere on this torus: k1 is the tube's.
         worst.tube = std::max(worst.tube, std::abs(field.k1[v] - expected.tube));
@@ -108,7 +108,7 @@ TEST(Curvature, SphereIsUmbilicAndAreasSumToTheSurface) {
     const LoadedMesh mesh = load_mesh("proc:sphere:20000");
     const MeshTopology unit = build_topology(mesh.mesh);
     auto scaled = std::make_shared<MeshPose>(*unit.pose());
-    for (std::size_t v = 0; v < scaled->positions.size(); ++v) {
+    for (const VertexId v : scaled->positions.ids()) {
         glm::dvec3& p = scaled->positions[v];
         scaled->normals[v] = glm::normalize(p); // the sphere's own normals (the estimate follows the normals it is given)
         p = 2.0 * scaled->normals[v];
@@ -118,7 +118,7 @@ TEST(Curvature, SphereIsUmbilicAndAreasSumToTheSurface) {
     // The cube sphere's eight valence-3 vertices and their neighbours are
     // the worst.
     double area = 0.0, mean = 0.0;
-    for (std::size_t v = 0; v < field.size(); ++v) {
+    for (const VertexId v : field.k1.ids()) {
         EXPECT_NEAR(field.k1[v], 0.5, 0.03 * 0.5) << v;
         EXPECT_NEAR(field.k2[v], 0.5, 0.03 * 0.5) << v;
         mean += (std::abs(field.k1[v] - 0.5) + std::abs(field.k2[v] - 0.5)) / double(2 * field.size());
@@ -127,8 +127,8 @@ TEST(Curvature, SphereIsUmbilicAndAreasSumToTheSurface) {
     EXPECT_LT(mean, 0.003 * 0.5);
     double faces = 0.0; // the triangles' own areas, summed here
     for (const auto& f : sphere.face_vertices()) {
-        const glm::dvec3 a = sphere.positions()[std::size_t(f[0])];
-        faces += 0.5 * glm::length(glm::cross(sphere.positions()[std::size_t(f[1])] - a, sphere.positions()[std::size_t(f[2])] - a));
+        const glm::dvec3 a = sphere.positions()[f[0]];
+        faces += 0.5 * glm::length(glm::cross(sphere.positions()[f[1]] - a, sphere.positions()[f[2]] - a));
     }
     EXPECT_NEAR(area, faces, 1e-9 * faces);
     EXPECT_NEAR(area, 4.0 * M_PI * 4.0, 0.01 * 4.0 * M_PI * 4.0);
@@ -141,7 +141,7 @@ TEST(Curvature, DegenerateFacesCountNowhere) {
     auto flat = std::make_shared<MeshPose>(*topo.pose());
     for (glm::dvec3& p : flat->positions) p = glm::dvec3(0.0); // every face collapsed
     const CurvatureField field = vertex_curvatures(topo.posed(flat));
-    for (std::size_t v = 0; v < field.size(); ++v) {
+    for (const VertexId v : field.k1.ids()) {
         EXPECT_EQ(field.k1[v], 0.0);
         EXPECT_EQ(field.area[v], 0.0);
         EXPECT_TRUE(std::isfinite(field.dir1[v].x));
@@ -219,13 +219,13 @@ TEST(Curvature, RadialCurvatureZerosMatchTheTorus) {
             camera.eye = -4.0 * d;
             camera.target = glm::dvec3(0.0);
         }
-        const std::vector<double> kr_est = radial_curvature(topo, field, camera);
-        for (std::size_t e = 0; e < topo.n_edges(); ++e) {
+        const VertexData<double> kr_est = radial_curvature(topo, field, camera);
+        for (const EdgeId e : topo.edges()) {
             const auto [a, b] = topo.edge_vertices()[e];
-            const double fa = kr_est[std::size_t(a)], fb = kr_est[std::size_t(b)];
+            const double fa = kr_est[a], fb = kr_est[b];
             if ((fa < 0.0) == (fb < 0.0)) continue;
             const double t = fa / (fa - fb);
-            const glm::dvec3 x = (1.0 - t) * topo.positions()[std::size_t(a)] + t * topo.positions()[std::size_t(b)];
+            const glm::dvec3 x = (1.0 - t) * topo.positions()[a] + t * topo.positions()[b];
             const double phi = std::atan2(x.y, x.x), theta = std::atan2(x.z, std::hypot(x.x, x.y) - kR);
             const NearZero z = torus_near_zero(theta, phi, 2.0 * h, camera);
             ++crossings;

@@ -6,6 +6,7 @@
 #include "snaxels/mesh/import.h"
 #include "snaxels/snaxel/snaxel_engine.h"
 #include "tests/support/assets.h"
+#include "tests/support/plain_mesh.h"
 #include "tests/support/oracle_setup.h"
 
 using namespace snaxels;
@@ -58,7 +59,7 @@ ViewSetup random_setup(std::mt19937& rng, const MeshTopology& topo, int i) {
 void expect_matches_oracle(const SnaxelEngine& engine, const MeshTopology& topo, const ContourResult& r,
                            const test::OracleSetup& setup, bool closed_mesh) {
     // Only positions and the face list go to the oracle.
-    const auto oracle = test::marching_triangles(topo.positions(), topo.face_vertices(), setup);
+    const auto oracle = test::marching_triangles(topo.positions(), test::plain_faces(topo), setup);
     ASSERT_EQ(oracle.edges, topo.n_edges());
     ASSERT_EQ(r.fronts.snaxels.size(), oracle.crossing.size());
     EXPECT_EQ(r.fronts.loops.size(), oracle.loops);
@@ -68,17 +69,17 @@ void expect_matches_oracle(const SnaxelEngine& engine, const MeshTopology& topo,
     if (closed_mesh) {
         EXPECT_EQ(open, 0u);
     }
-    for (std::size_t e = 0; e < topo.n_edges(); ++e) {
+    for (const EdgeId e : topo.edges()) {
         const auto [a, b] = topo.edge_vertices()[e];
         const std::int32_t s = r.fronts.edge_snaxel[e];
-        const auto o = oracle.crossing.find({std::min(a, b), std::max(a, b)});
+        const auto o = oracle.crossing.find({std::min(a, b).index(), std::max(a, b).index()});
         ASSERT_EQ(s >= 0, o != oracle.crossing.end()) << "edge " << e;
         if (s < 0) continue;
         const double len = glm::length(topo.positions()[a] - topo.positions()[b]);
         const double d = glm::length(engine.position(r.fronts.snaxels[s]) - o->second);
         ASSERT_LE(d, 1e-6 * len) << "edge " << e << " of " << r.spec.label();
     }
-    for (std::size_t v = 0; v < topo.n_vertices(); ++v)
+    for (const VertexId v : topo.vertices())
         ASSERT_EQ(r.regions[r.vertex_region[v]].sign > 0, r.vertex_f[v] >= 0.0) << "vertex " << v;
 }
 
@@ -107,8 +108,8 @@ TEST_P(EngineOracle, ConvergedSnaxelsAreTheSignChangesOfF) {
         for (const ContourSpec& kind : s.kinds) {
             SCOPED_TRACE(spec + " view " + std::to_string(i) + " " + kind.label());
             const ContourResult r = engine.compute(kind, s.camera, s.light, options);
-            std::vector<std::uint8_t> inside(topo.n_vertices());
-            for (std::size_t v = 0; v < inside.size(); ++v) inside[v] = r.vertex_f[v] >= 0.0;
+            VertexData<std::uint8_t> inside(topo.n_vertices());
+            for (const VertexId v : topo.vertices()) inside[v] = r.vertex_f[v] >= 0.0;
             EXPECT_EQ(check_fronts(topo, r.fronts, inside), "");
             expect_matches_oracle(engine, topo, r, test::oracle_setup(kind, s.camera, s.light), GetParam().closed);
             if (HasFatalFailure()) return;
@@ -154,8 +155,8 @@ TEST(Engine, InvariantCheckerCatchesBrokenFronts) {
     const LoadedMesh m = load_mesh("proc:sphere:2000");
     const MeshTopology topo = build_topology(m.mesh);
     const ContourResult r = SnaxelEngine(topo).compute({}, Camera{}, Light{});
-    std::vector<std::uint8_t> inside(topo.n_vertices());
-    for (std::size_t v = 0; v < inside.size(); ++v) inside[v] = r.vertex_f[v] >= 0.0;
+    VertexData<std::uint8_t> inside(topo.n_vertices());
+    for (const VertexId v : topo.vertices()) inside[v] = r.vertex_f[v] >= 0.0;
     ASSERT_EQ(check_fronts(topo, r.fronts, inside), "");
     Fronts broken = r.fronts;
     broken.snaxels[3].t = 1.5;
@@ -229,11 +230,11 @@ TEST(Engine, EyeOrLightAtAVertex) {
     options.check_invariants = true;
     Camera cam;
     cam.projection = Camera::Projection::Perspective;
-    cam.eye = topo.positions()[7];
+    cam.eye = topo.positions()[VertexId(7)];
     cam.target = glm::dvec3(0.0);
     Light light;
     light.point = true;
-    light.pos = topo.positions()[11];
+    light.pos = topo.positions()[VertexId(11)];
     for (const ContourSpec kind : {ContourSpec{}, ContourSpec{ContourKind::Shadow, 0.0}, ContourSpec{ContourKind::Gleam, 0.8}})
         EXPECT_NO_THROW(engine.compute(kind, cam, light, options)) << kind.label();
 }

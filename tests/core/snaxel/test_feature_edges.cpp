@@ -71,17 +71,17 @@ std::set<Segment> face_list_segments(const std::string& path, double degrees) {
 /// Checks that @p chains hold each of @p edges once and only them, that
 /// each chain is a connected walk along them, and that chains end only
 /// where one or three and more of the edges meet.
-void check_chains(const MeshTopology& topo, const std::vector<std::int32_t>& edges, const std::vector<EdgeChain>& chains) {
-    std::multiset<std::int32_t> seen;
-    std::map<std::int32_t, int> degree;
-    for (const std::int32_t e : edges)
-        for (const std::int32_t v : topo.edge_vertices()[std::size_t(e)]) ++degree[v];
+void check_chains(const MeshTopology& topo, const std::vector<EdgeId>& edges, const std::vector<EdgeChain>& chains) {
+    std::multiset<EdgeId> seen;
+    std::map<VertexId, int> degree;
+    for (const EdgeId e : edges)
+        for (const VertexId v : topo.edge_vertices()[e]) ++degree[v];
     for (const EdgeChain& c : chains) {
         ASSERT_EQ(c.vertices.size(), c.edges.size() + 1);
         for (std::size_t i = 0; i < c.edges.size(); ++i) {
             seen.insert(c.edges[i]);
-            const auto& ends = topo.edge_vertices()[std::size_t(c.edges[i])];
-            const std::set<std::int32_t> a{ends[0], ends[1]}, b{c.vertices[i], c.vertices[i + 1]};
+            const auto& ends = topo.edge_vertices()[c.edges[i]];
+            const std::set<VertexId> a{ends[0], ends[1]}, b{c.vertices[i], c.vertices[i + 1]};
             ASSERT_EQ(a, b) << "chain step " << i;
             if (i > 0) {
                 EXPECT_EQ(degree[c.vertices[i]], 2) << "a chain passes only where two edges meet";
@@ -94,7 +94,7 @@ void check_chains(const MeshTopology& topo, const std::vector<std::int32_t>& edg
             EXPECT_NE(degree[c.vertices.back()], 2);
         }
     }
-    EXPECT_EQ(seen, std::multiset<std::int32_t>(edges.begin(), edges.end()));
+    EXPECT_EQ(seen, std::multiset<EdgeId>(edges.begin(), edges.end()));
 }
 
 } // namespace
@@ -106,7 +106,7 @@ TEST(FeatureEdges, FandiskCreasesMatchTheFaceList) {
     const MeshTopology topo = build_topology(import_mesh(path).mesh);
     for (const double degrees : {20.0, 30.0, 45.0, 60.0}) {
         const std::size_t expected = face_list_segments(path, degrees).size();
-        const std::vector<std::int32_t> creases = crease_edges(topo, degrees);
+        const std::vector<EdgeId> creases = crease_edges(topo, degrees);
         std::printf("fandisk: %zu creases over %g degrees\n", creases.size(), degrees);
         EXPECT_EQ(creases.size(), expected) << degrees << " degrees";
         EXPECT_GT(creases.size(), 0u);
@@ -121,7 +121,7 @@ TEST(FeatureEdges, BordersOfOpenMeshes) {
     for (const std::string file : {"teapot.obj", "stanford-bunny.obj"}) {
         const std::string path = test::asset(file);
         const MeshTopology topo = build_topology(import_mesh(path).mesh);
-        const std::vector<std::int32_t> borders = border_edges(topo);
+        const std::vector<EdgeId> borders = border_edges(topo);
         EXPECT_EQ(borders.size(), face_list_segments(path, -1.0).size()) << file;
         ASSERT_GT(borders.size(), 0u) << file;
         const std::vector<EdgeChain> chains = chain_edges(topo, borders);
@@ -143,16 +143,16 @@ TEST(FeatureEdges, RefinedCreasesAreTheCoarseOnesSplit) {
 TEST(FeatureEdges, ChainsLoopsPathsAndJunctions) {
     const MeshTopology topo = build_topology(load_mesh("proc:torus:200").mesh);
     // All the torus's edges: six meet at each vertex, junctions only.
-    std::vector<std::int32_t> all(topo.n_edges());
-    std::iota(all.begin(), all.end(), 0);
+    std::vector<EdgeId> all(topo.n_edges());
+    std::iota(all.begin(), all.end(), EdgeId(0));
     const std::vector<EdgeChain> chains = chain_edges(topo, all);
     check_chains(topo, all, chains);
     EXPECT_EQ(chains.size(), all.size()); // each edge its own chain, from junction to junction
     // One vertex's ring of neighbours: a closed loop of edges that meet in twos.
-    std::vector<std::int32_t> ring;
-    const auto around = topo.neighbours(0);
+    std::vector<EdgeId> ring;
+    const auto around = topo.neighbours(VertexId(0));
     for (std::size_t i = 0; i < around.size(); ++i) {
-        const std::int32_t a = around[i], b = around[(i + 1) % around.size()];
+        const VertexId a = around[i], b = around[(i + 1) % around.size()];
         for (const auto [w, e] : topo.ring_of(a))
             if (w == b) ring.push_back(e);
     }
@@ -162,7 +162,7 @@ TEST(FeatureEdges, ChainsLoopsPathsAndJunctions) {
     EXPECT_TRUE(loop[0].closed);
     check_chains(topo, ring, loop);
     // Without one edge it is one open path from end to end.
-    const std::vector<std::int32_t> path(ring.begin() + 1, ring.end());
+    const std::vector<EdgeId> path(ring.begin() + 1, ring.end());
     const std::vector<EdgeChain> open = chain_edges(topo, path);
     ASSERT_EQ(open.size(), 1u);
     EXPECT_FALSE(open[0].closed);

@@ -11,6 +11,7 @@
 #include "snaxels/mesh/refine.h"
 #include "snaxels/visibility/visibility.h"
 #include "tests/support/assets.h"
+#include "tests/support/plain_mesh.h"
 
 using namespace snaxels;
 
@@ -159,7 +160,7 @@ TEST_P(ParabolicOnSurfaces, MarksLieWhereGaussianCurvatureChangesSign) {
     const LoadedMesh m = load(GetParam());
     const MeshTopology topo = build_topology(m.mesh);
     const ParabolicResult r = find_parabolic(topo);
-    const SignChanges reference = gaussian_sign_changes(topo.positions(), topo.face_vertices());
+    const SignChanges reference = gaussian_sign_changes(topo.positions(), test::plain_faces(topo));
     std::vector<glm::dvec3> marks;
     for (const ParabolicPoint& p : r.points) marks.push_back(p.where);
     const double share = share_near(marks, reference.places, 2.0 * reference.mean_edge);
@@ -320,7 +321,7 @@ TEST(Parabolic, RequiredOncePerPoseAndOptions) {
     EXPECT_EQ(a->smoothing_passes, 0);
     EXPECT_GT(b->smoothing_passes, 0);
     auto marks = [](const ParabolicResult& r) {
-        std::vector<std::int32_t> v;
+        std::vector<VertexId> v;
         for (const ParabolicPoint& p : r.points) v.push_back(p.vertex);
         std::sort(v.begin(), v.end());
         return v;

@@ -13,18 +13,19 @@
 #include "snaxels/visibility/visibility.h"
 #include "tests/support/assets.h"
 #include "tests/support/marching_triangles.h"
+#include "tests/support/plain_mesh.h"
 #include "tests/support/views.h"
 
 using namespace snaxels;
 
 namespace {
 
-using Weights = std::map<std::int32_t, double>; // original vertex -> weight
+using Weights = std::map<VertexId, double>; // original vertex -> weight
 
 /// Where a vertex of a refined topology lies on the original mesh.
-Weights origin(const MeshTopology& t, std::int32_t v) {
-    if (!t.refinement() || std::size_t(v) < t.refinement()->base_vertices) return {{v, 1.0}};
-    const std::size_t i = std::size_t(v) - t.refinement()->base_vertices;
+Weights origin(const MeshTopology& t, VertexId v) {
+    if (!t.refinement() || v < VertexId(t.refinement()->base_vertices)) return {{v, 1.0}};
+    const auto i = std::size_t(v.index()) - t.refinement()->base_vertices;
     Weights w;
     for (int k = 0; k < 3; ++k) w[t.refinement()->from[i][std::size_t(k)]] += t.refinement()->weights[i][k];
     return w;
@@ -40,7 +41,7 @@ Weights mix(const Weights& a, const Weights& b, double s) {
 /// The original mesh's smooth (Phong) normal at a point given by weights.
 glm::dvec3 phong_normal(const MeshTopology& base, const Weights& w) {
     glm::dvec3 n(0.0);
-    for (const auto& [v, x] : w) n += x * base.normals()[std::size_t(v)];
+    for (const auto& [v, x] : w) n += x * base.normals()[v];
     return glm::normalize(n);
 }
 
@@ -55,16 +56,16 @@ std::vector<double> isophote_errors(const MeshTopology& base, const MeshTopology
     const ContourFunction f(spec, cam, light); // min(N.L - k, N.V): the isophote's region ends at the visual contour
     std::vector<double> errors;
     for (const FrontLoop& loop : r.fronts.loops) {
-        std::int32_t prev = MeshTopology::kNone;
+        std::int32_t prev = kNoSnaxel;
         auto point = [&](std::int32_t s) {
             const Snaxel& x = r.fronts.snaxels[std::size_t(s)];
             return mix(origin(topo, x.inside), origin(topo, x.outside), x.t);
         };
         r.fronts.for_each_in_loop(loop, [&](std::int32_t s) {
-            if (prev != MeshTopology::kNone) {
+            if (prev != kNoSnaxel) {
                 const Weights mid = mix(point(prev), point(s), 0.5);
                 glm::dvec3 p(0.0);
-                for (const auto& [v, x] : mid) p += x * base.positions()[std::size_t(v)];
+                for (const auto& [v, x] : mid) p += x * base.positions()[v];
                 errors.push_back(std::abs(f(p, phong_normal(base, mid))));
             }
             prev = s;
@@ -115,26 +116,26 @@ TEST(Refine, SplitsFacesOnTheirPlanesWithInterpolatedNormals) {
             EXPECT_EQ(t.n_faces(), base.n_faces() * n * n) << file;
             EXPECT_EQ(t.n_base_vertices(), base.n_vertices());
             std::size_t base_boundary = 0, boundary = 0;
-            for (std::int32_t e = 0; e < std::int32_t(base.n_edges()); ++e) base_boundary += base.is_boundary_edge(e);
-            for (std::int32_t e = 0; e < std::int32_t(t.n_edges()); ++e) boundary += t.is_boundary_edge(e);
+            for (const EdgeId e : base.edges()) base_boundary += base.is_boundary_edge(e);
+            for (const EdgeId e : t.edges()) boundary += t.is_boundary_edge(e);
             EXPECT_EQ(boundary, base_boundary * n) << file;
-            for (std::size_t v = 0; v < base.n_vertices(); ++v) {
+            for (const VertexId v : base.vertices()) {
                 ASSERT_EQ(t.positions()[v], base.positions()[v]);
                 ASSERT_EQ(t.normals()[v], base.normals()[v]);
             }
-            for (std::size_t v = base.n_vertices(); v < t.n_vertices(); ++v) {
-                const Weights w = origin(t, std::int32_t(v));
+            for (VertexId v(base.n_vertices()); v < VertexId(t.n_vertices()); ++v) {
+                const Weights w = origin(t, v);
                 glm::dvec3 p(0.0);
                 double sum = 0.0;
-                for (const auto& [u, x] : w) p += x * base.positions()[std::size_t(u)], sum += x;
+                for (const auto& [u, x] : w) p += x * base.positions()[u], sum += x;
                 ASSERT_NEAR(sum, 1.0, 1e-12);
                 ASSERT_LT(glm::length(t.positions()[v] - p), 1e-12);
                 ASSERT_LT(glm::length(t.normals()[v] - phong_normal(base, w)), 1e-12);
             }
             // Every refined face lies in one original face's plane, facing its way.
-            std::map<std::array<std::int32_t, 3>, std::size_t> face_of;
-            for (std::size_t f = 0; f < base.n_faces(); ++f) {
-                std::array<std::int32_t, 3> key = base.face_vertices()[f];
+            std::map<std::array<VertexId, 3>, FaceId> face_of;
+            for (const FaceId f : base.faces()) {
+                std::array<VertexId, 3> key = base.face_vertices()[f];
                 std::sort(key.begin(), key.end());
                 face_of[key] = f;
             }
@@ -143,19 +144,17 @@ TEST(Refine, SplitsFacesOnTheirPlanesWithInterpolatedNormals) {
             };
             for (const auto& f : t.face_vertices()) {
                 Weights corners;
-                for (const std::int32_t v : f)
+                for (const VertexId v : f)
                     for (const auto& [u, x] : origin(t, v)) if (x > 0.0) corners[u] = 1.0;
                 ASSERT_EQ(corners.size(), 3u) << file;
-                std::array<std::int32_t, 3> key{};
+                std::array<VertexId, 3> key{};
                 std::size_t i = 0;
                 for (const auto& [u, x] : corners) key[i++] = u;
                 const auto it = face_of.find(key);
                 ASSERT_NE(it, face_of.end()) << file;
                 const auto& bf = base.face_vertices()[it->second];
-                const glm::dvec3 n0 = unit_normal(base.positions()[std::size_t(bf[0])], base.positions()[std::size_t(bf[1])],
-                                                  base.positions()[std::size_t(bf[2])]);
-                const glm::dvec3 n1 = unit_normal(t.positions()[std::size_t(f[0])], t.positions()[std::size_t(f[1])],
-                                                  t.positions()[std::size_t(f[2])]);
+                const glm::dvec3 n0 = unit_normal(base.positions()[bf[0]], base.positions()[bf[1]], base.positions()[bf[2]]);
+                const glm::dvec3 n1 = unit_normal(t.positions()[f[0]], t.positions()[f[1]], t.positions()[f[2]]);
                 ASSERT_GT(glm::dot(n0, n1), 1.0 - 1e-9) << file;
             }
         }
@@ -176,18 +175,18 @@ TEST(Refine, AddedVerticesFollowAPose) {
     const MeshTopology t = refined.posed(std::make_shared<const MeshPose>(make_pose(*refined.connectivity(), moved)));
     EXPECT_TRUE(t.same_connectivity(refined));
     // The base pose's normals are the area-weighted ones (the tests' own oracle).
-    const std::vector<glm::dvec3> oracle = test::oracle_normals(base.positions(), base.face_vertices());
-    for (std::size_t v = 0; v < base.n_vertices(); ++v) ASSERT_LT(glm::length(base.normals()[v] - oracle[v]), 1e-12);
-    for (std::size_t v = 0; v < t.n_vertices(); ++v) {
-        const Weights w = origin(t, std::int32_t(v));
+    const std::vector<glm::dvec3> oracle = test::oracle_normals(base.positions(), test::plain_faces(base));
+    for (std::size_t v = 0; v < base.n_vertices(); ++v) ASSERT_LT(glm::length(base.normals().values()[v] - oracle[v]), 1e-12);
+    for (const VertexId v : t.vertices()) {
+        const Weights w = origin(t, v);
         glm::dvec3 p(0.0);
-        for (const auto& [u, x] : w) p += x * base.positions()[std::size_t(u)];
+        for (const auto& [u, x] : w) p += x * base.positions()[u];
         ASSERT_LT(glm::length(t.positions()[v] - p), 1e-12);
         ASSERT_LT(glm::length(t.normals()[v] - phong_normal(base, w)), 1e-12);
     }
     // The loaded poses are values: posing made new ones and left them as they were.
-    EXPECT_EQ(refined.positions()[0], rest.positions()[0]);
-    EXPECT_NE(t.positions()[0], refined.positions()[0]);
+    EXPECT_EQ(refined.positions()[VertexId(0)], rest.positions()[VertexId(0)]);
+    EXPECT_NE(t.positions()[VertexId(0)], refined.positions()[VertexId(0)]);
 }
 
 // What refining is for: on a coarse mesh an isophote cuts straight across

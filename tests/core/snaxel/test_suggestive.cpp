@@ -162,9 +162,9 @@ namespace {
 /// kappa_r at every vertex from the pose's curvature field, computed here:
 /// k1 cos^2 + k2 sin^2 of the angle between the projected view and dir1;
 /// positive at a vertex facing away (the tracked function's convention).
-std::vector<double> oracle_kr(const MeshTopology& topo, const CurvatureField& field, const Camera& cam) {
-    std::vector<double> kr(topo.n_vertices());
-    for (std::size_t v = 0; v < kr.size(); ++v) {
+VertexData<double> oracle_kr(const MeshTopology& topo, const CurvatureField& field, const Camera& cam) {
+    VertexData<double> kr(topo.n_vertices());
+    for (const VertexId v : topo.vertices()) {
         const glm::dvec3 n = topo.normals()[v];
         const glm::dvec3 view = cam.to_viewer(topo.positions()[v]);
         if (glm::dot(n, view) <= 0.0) {
@@ -208,20 +208,19 @@ TEST_P(SuggestiveTurntable, TrackedEqualsFromScratchAtEveryFrame) {
         ASSERT_EQ(a.snaxels.size(), b.snaxels.size()) << "frame " << frame;
         ASSERT_EQ(tf.contour.snaxel_margin.size(), a.snaxels.size());
         // Oracle: the edges where kappa_r changes sign.
-        const std::vector<double> kr = oracle_kr(topo, field, cam);
+        const VertexData<double> kr = oracle_kr(topo, field, cam);
         std::size_t crossing = 0;
-        for (std::size_t e = 0; e < topo.n_edges(); ++e) {
-            const auto [u, w] = topo.edge_vertices()[e];
-            crossing += (kr[std::size_t(u)] >= 0.0) != (kr[std::size_t(w)] >= 0.0);
+        for (const auto& [u, w] : topo.edge_vertices()) {
+            crossing += (kr[u] >= 0.0) != (kr[w] >= 0.0);
         }
         ASSERT_EQ(a.snaxels.size(), crossing) << "frame " << frame;
         for (std::size_t i = 0; i < a.snaxels.size(); ++i) {
             const Snaxel& s = a.snaxels[i];
-            const std::int32_t j = b.edge_snaxel[std::size_t(s.edge)];
-            ASSERT_NE(j, MeshTopology::kNone) << "frame " << frame;
+            const std::int32_t j = b.edge_snaxel[s.edge];
+            ASSERT_NE(j, kNoSnaxel) << "frame " << frame;
             const double len = glm::length(topo.positions()[s.inside] - topo.positions()[s.outside]);
             ASSERT_LE(glm::length(engine.position(s) - engine.position(b.snaxels[std::size_t(j)])), 1e-9 * len);
-            const double ki = kr[std::size_t(s.inside)], ko = kr[std::size_t(s.outside)];
+            const double ki = kr[s.inside], ko = kr[s.outside];
             if (ki != 1.0 && ko != 1.0) ASSERT_NEAR(s.t, ki / (ki - ko), 1e-9) << "frame " << frame;
             else ASSERT_LT(tf.contour.snaxel_margin[i], 0.0) << "frame " << frame; // the rim: never drawn
             ASSERT_EQ(tf.contour.snaxel_margin[i] >= 0.0, fresh.snaxel_margin[std::size_t(j)] >= 0.0) << "frame " << frame;
@@ -304,7 +303,7 @@ TEST(Suggestive, SmoothingKeepsShapeAndRemovesNoise) {
         const MeshTopology topo = build_topology(load_mesh("proc:torus:40000").mesh);
         const std::shared_ptr<const CurvatureField> field = require_curvature(topo);
         double worst = 0.0;
-        for (std::size_t v = 0; v < topo.n_vertices(); ++v) {
+        for (const VertexId v : topo.vertices()) {
             double theta, phi;
             torus_angles(topo.positions()[v], theta, phi);
             worst = std::max({worst, std::abs(field->k1[v] - 1.0 / kTube),
@@ -319,14 +318,14 @@ TEST(Suggestive, SmoothingKeepsShapeAndRemovesNoise) {
     Camera cam;
     cam.view_dir = glm::normalize(glm::dvec3(-1.0, -0.2, -0.3));
     auto sign_changes = [&](const CurvatureField& f) {
-        const std::vector<double> kr = oracle_kr(horse, f, cam);
+        const VertexData<double> kr = oracle_kr(horse, f, cam);
         std::size_t n = 0;
-        for (const auto& [a, b] : horse.edge_vertices()) n += (kr[std::size_t(a)] >= 0.0) != (kr[std::size_t(b)] >= 0.0);
+        for (const auto& [a, b] : horse.edge_vertices()) n += (kr[a] >= 0.0) != (kr[b] >= 0.0);
         return n;
     };
     auto roughness = [&](const CurvatureField& f) { // mean |k1 - k1 of a neighbour| over the edges, in typical units
         double sum = 0.0;
-        for (const auto& [a, b] : horse.edge_vertices()) sum += std::abs(f.k1[std::size_t(a)] - f.k1[std::size_t(b)]);
+        for (const auto& [a, b] : horse.edge_vertices()) sum += std::abs(f.k1[a] - f.k1[b]);
         return sum / double(horse.n_edges()) / f.typical;
     };
     const std::size_t before = sign_changes(raw), after = sign_changes(smooth);
