@@ -114,6 +114,7 @@ OverlayResult compute_overlay(const LoadedMesh& mesh, ContourScene& scene, const
                               std::shared_ptr<const ParabolicResult> parabolic, bool show_parabolic) {
     const auto start = std::chrono::steady_clock::now();
     OverlayResult out;
+    out.camera = camera;
     try {
         if (pose_scene(mesh, scene, pose))
             out.geometry = std::make_shared<MeshGeometry>(mesh_geometry(scene.topology, display_face_budget()));

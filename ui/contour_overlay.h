@@ -56,6 +56,8 @@ struct OverlayResult {
     std::shared_ptr<MeshGeometry> geometry;
     QString error; ///< posing failed (the clip could not be read)
     Light light;   ///< the light the frame was computed with
+    Camera camera; ///< the camera it was computed for
+    int frame = 0; ///< the timeline frame it was computed for
 };
 
 /// The region colouring of @p style lit by @p light: the style's fills

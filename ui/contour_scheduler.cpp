@@ -8,17 +8,20 @@ namespace snaxels::ui {
 ContourScheduler::ContourScheduler(std::function<std::optional<Work>()> source, QObject* parent)
     : QObject(parent), source_(std::move(source)), timer_(new QTimer(this)) {
     timer_->setSingleShot(true);
-    timer_->setInterval(30);
+    timer_->setInterval(0);
     connect(timer_, &QTimer::timeout, this, &ContourScheduler::start);
     connect(&watcher_, &QFutureWatcher<OverlayResult>::finished, this, &ContourScheduler::onFinished);
 }
 
 ContourScheduler::~ContourScheduler() { watcher_.waitForFinished(); }
 
-void ContourScheduler::schedule() { timer_->start(); }
+void ContourScheduler::schedule() {
+    if (watcher_.isRunning()) pending_ = true;
+    else if (!timer_->isActive()) timer_->start();
+}
 
 void ContourScheduler::invalidate() {
-    if (watcher_.isRunning()) pending_ = true;
+    if (watcher_.isRunning()) stale_ = pending_ = true;
 }
 
 bool ContourScheduler::busy() const { return timer_->isActive() || watcher_.isRunning(); }
@@ -30,16 +33,16 @@ void ContourScheduler::start() {
     }
     std::optional<Work> work = source_();
     if (!work) return;
-    pending_ = false;
+    pending_ = stale_ = false;
     watcher_.setFuture(QtConcurrent::run(std::move(*work)));
 }
 
 void ContourScheduler::onFinished() {
-    if (pending_) { // the scene changed meanwhile: this result is stale
-        start();
-        return;
-    }
-    emit ready(watcher_.result());
+    const bool again = pending_, drop = stale_;
+    // A result for the mesh shown is the newest the view can have, even
+    // when the input moved on meanwhile; one for another mesh is not.
+    if (!drop) emit ready(watcher_.result());
+    if (again) start();
 }
 
 } // namespace snaxels::ui

@@ -1,9 +1,11 @@
 #pragma once
-// When the application's contours are computed: shortly after the camera,
-// the light, the style or the frame stops changing, off the GUI thread, one
-// computation at a time, the newest request winning (a result that a later
-// request made stale is dropped and the computation runs again). A
-// controller beside the window (no widgets).
+// When the application's contours are computed: as soon as the camera, the
+// light, the style or the frame changes, off the GUI thread, one
+// computation at a time. Requests made while one runs are one request,
+// started when it ends: during an orbit or playback the computations follow
+// each other back to back, each showing its result (the newest the view has)
+// while the next one catches up, so the contours never wait for the input
+// to stop. A controller beside the window (no widgets).
 
 #include <functional>
 #include <optional>
@@ -29,7 +31,8 @@ class ContourScheduler : public QObject {
     explicit ContourScheduler(std::function<std::optional<Work>()> source, QObject* parent = nullptr);
     ~ContourScheduler() override;
 
-    /// A computation soon (the requests of the next 30 ms are one).
+    /// A computation: at once when none runs (the requests of one pass of
+    /// the event loop are one), else when the running one ends.
     void schedule();
     /// What is under way is stale (another mesh): its result is dropped.
     void invalidate();
@@ -48,6 +51,7 @@ class ContourScheduler : public QObject {
     QTimer* timer_;
     QFutureWatcher<OverlayResult> watcher_;
     bool pending_ = false; ///< asked for while one was running
+    bool stale_ = false;   ///< the running one's result is for another mesh
 };
 
 } // namespace snaxels::ui

@@ -89,6 +89,10 @@ void MainWindow::createDocks() {
     timelineDock->setWidget(timeline_);
     addDockWidget(Qt::BottomDockWidgetArea, timelineDock);
     connect(timeline_, &Timeline::changed, this, &MainWindow::applyFrame);
+    connect(timeline_, &Timeline::playbackStatus, this, [this](const QString& text) {
+        if (text.isEmpty()) statusBar()->clearMessage();
+        else statusBar()->showMessage(text); // stays while playing
+    });
     document_->resetAnimation(timeline_->spec());
     connect(timeline_, &Timeline::specEdited, this, [this] {
         if (!restoring_) document_->setAnimation(timeline_->spec());
@@ -267,6 +271,7 @@ Light MainWindow::frameLight() const {
 
 void MainWindow::scheduleContours() {
     if (scene_) contours_->schedule();
+    else timeline_->frameShown(timeline_->frame()); // nothing to compute: the frame shows as it is
 }
 
 std::optional<std::function<OverlayResult()>> MainWindow::contourWork() const {
@@ -282,8 +287,11 @@ std::optional<std::function<OverlayResult()>> MainWindow::contourWork() const {
         pose = ClipPose{spec, timeline_->frame()}; // the driver adds the in point
     const std::shared_ptr<const ParabolicResult> parabolic = parabolic_->curves();
     const bool showParabolic = parabolicAction_ && parabolicAction_->isChecked();
-    return [mesh, scene, camera, style, light, pose, parabolic, showParabolic] {
-        return compute_overlay(*mesh, *scene, camera, style, light, pose, parabolic, showParabolic);
+    const int frame = timeline_->frame();
+    return [mesh, scene, camera, style, light, pose, parabolic, showParabolic, frame] {
+        OverlayResult result = compute_overlay(*mesh, *scene, camera, style, light, pose, parabolic, showParabolic);
+        result.frame = frame;
+        return result;
     };
 }
 
@@ -304,7 +312,8 @@ void MainWindow::onContoursReady(const OverlayResult& ready) {
     view_->setRegionShading(region_shading(document_->style(), result.light, regionsAction_->isChecked()));
     contourLoops_ = result.loops;
     contourLabel_->setText(tr("%1 loops, %2 snaxels, %3 ms").arg(result.loops).arg(result.snaxels).arg(result.ms, 0, 'f', 1));
-    view_->setContours(std::move(result.strips));
+    view_->setContours(std::move(result.strips), result.camera);
+    timeline_->frameShown(result.frame);
     svg_ = QByteArray::fromStdString(result.svg);
     svgPane_->load(svg_);
     emit contoursUpdated();

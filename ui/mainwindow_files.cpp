@@ -69,7 +69,7 @@ void MainWindow::onLoadFinished(const LoadResult& result) {
     scene_ = result.scene;
     parabolic_->setMesh(scene_->rest);
     parabolic_->ensure();
-    view_->setContours({});
+    view_->setContours({}, view_->camera());
     ++restoring_; // framing the new mesh is not an edit
     view_->setGeometry(MeshGeometry(*result.geometry)); // frames the camera, which schedules contours
     timeline_->setClips(scene_->clips);

@@ -143,6 +143,7 @@ layout(location = 1) in vec3 colour;
 layout(location = 2) in float hidden;
 layout(location = 3) in float arc;
 uniform mat4 mvp;
+uniform float depthBias;
 out vec3 lineColour;
 out float lineHidden;
 out float lineArc;
@@ -151,6 +152,7 @@ void main() {
     lineHidden = hidden;
     lineArc = arc;
     gl_Position = mvp * vec4(position, 1.0);
+    gl_Position.z -= depthBias * gl_Position.w; // a line on the surface wins against it
 }
 )";
 
@@ -323,11 +325,12 @@ void MeshView::clearMesh() {
     vertices_.clear();
     vertexCount_ = 0;
     dirty_ = true;
-    setContours({});
+    setContours({}, camera());
 }
 
-void MeshView::setContours(std::vector<ContourStrip> strips) {
+void MeshView::setContours(std::vector<ContourStrip> strips, const Camera& seenFrom) {
     strips_ = std::move(strips);
+    contourCamera_ = seenFrom;
     linesDirty_ = true;
     update();
 }
@@ -459,13 +462,24 @@ void MeshView::paintGL() {
     }
     program_.release();
 
-    // Contours: visibility is already known, so no depth test; hidden first.
+    // Contours seen from this camera: their visibility is known, so no
+    // depth test, hidden parts first. Contours of an earlier camera (an
+    // orbit under way, their successors not yet computed) are drawn where
+    // they lie on the surface, against the surface's depth: what turned
+    // behind the mesh is hidden by it instead of crossing its face.
     if (linesDirty_) uploadContours();
-    if (!lineRanges_.empty()) drawContours(mvp);
+    if (!lineRanges_.empty()) drawContours(mvp, contoursStale());
 }
 
-void MeshView::drawContours(const glm::mat4& mvp) {
-    glDisable(GL_DEPTH_TEST);
+bool MeshView::contoursStale() const { return !(contourCamera_ == camera()); }
+
+void MeshView::drawContours(const glm::mat4& mvp, bool stale) {
+    if (stale) {
+        glEnable(GL_DEPTH_TEST);
+        glDepthFunc(GL_LEQUAL);
+    } else {
+        glDisable(GL_DEPTH_TEST);
+    }
     glEnable(GL_BLEND);
     // Blend colour only: the widget composites its framebuffer as
     // premultiplied, so its alpha must stay opaque.
@@ -475,15 +489,19 @@ void MeshView::drawContours(const glm::mat4& mvp) {
     // Dashes of about 6 pixels at the mesh's distance.
     const double worldPerPixel = 2.0 * orbit_.distance * std::tan(glm::radians(orbit_.fov_deg * 0.5)) / std::max(height(), 1);
     lineProgram_.setUniformValue("dashLength", float(6.0 * worldPerPixel));
+    lineProgram_.setUniformValue("depthBias", stale ? 2e-4f : 0.0f);
     QOpenGLVertexArrayObject::Binder bind(&lineVao_);
-    for (const bool hiddenPass : {true, false})
+    for (const bool hiddenPass : {true, false}) {
+        if (stale && hiddenPass) continue; // what was hidden then may show now: the depth test decides
         for (std::size_t i = 0, r = 0; i < strips_.size(); ++i) {
             if (strips_[i].points.size() < 2) continue;
             if (strips_[i].hidden == hiddenPass) glDrawArrays(GL_LINE_STRIP, lineRanges_[r].first, lineRanges_[r].second);
             ++r;
         }
+    }
     lineProgram_.release();
     glDisable(GL_BLEND);
+    glDepthFunc(GL_LESS);
 }
 
 void MeshView::mousePressEvent(QMouseEvent* event) {

@@ -86,7 +86,11 @@ class MeshView : public QOpenGLWidget, protected QOpenGLFunctions_3_3_Core {
     /// The point the camera orbits (the mesh's centre, as framed).
     glm::dvec3 orbitCentre() const { return centre_; }
     /// Replaces the contours drawn over the mesh.
-    void setContours(std::vector<ContourStrip> strips);
+    /// The contours to draw, computed for the camera @p seenFrom.
+    void setContours(std::vector<ContourStrip> strips, const Camera& seenFrom);
+    /// The contours drawn were computed for another camera than the view's
+    /// (an orbit under way): they are drawn against the surface's depth.
+    bool contoursStale() const;
     /// The view's camera, as the engine sees it (a perspective camera).
     Camera camera() const;
     /// The camera before the turntable turns (frame 0), with world +Y as up:
@@ -126,7 +130,7 @@ class MeshView : public QOpenGLWidget, protected QOpenGLFunctions_3_3_Core {
     void upload();
     void setRegionUniforms();
     void buildSurfaceProgram();
-    void drawContours(const glm::mat4& mvp);
+    void drawContours(const glm::mat4& mvp, bool stale);
     void resizeEvent(QResizeEvent* event) override;
     void uploadContours();
     glm::dmat4 viewMatrix() const;
@@ -145,6 +149,7 @@ class MeshView : public QOpenGLWidget, protected QOpenGLFunctions_3_3_Core {
 
     RegionShading shading_;
     std::vector<ContourStrip> strips_;
+    Camera contourCamera_; ///< the camera strips_ were computed for
     std::vector<float> lineVertices_; // position, colour, hidden flag, arc length
     std::vector<std::pair<int, int>> lineRanges_; // first vertex, count per strip
     bool linesDirty_ = false;

@@ -1,5 +1,7 @@
 #include "ui/timeline.h"
 
+#include <algorithm>
+
 #include <cmath>
 
 #include <QCheckBox>
@@ -51,7 +53,8 @@ Timeline::Timeline(QWidget* parent)
     : QWidget(parent), source_(new QComboBox(this)), degrees_(new QDoubleSpinBox(this)), frames_(new QSpinBox(this)),
       start_(new QSpinBox(this)), fps_(new QDoubleSpinBox(this)), slider_(new QSlider(Qt::Horizontal, this)),
       frameBox_(new QSpinBox(this)), label_(new QLabel(this)),
-      play_(new QPushButton(tr("Play"), this)), loop_(new QCheckBox(tr("Loop"), this)) {
+      play_(new QPushButton(tr("Play"), this)), loop_(new QCheckBox(tr("Loop"), this)),
+      everyFrame_(new QCheckBox(tr("Every frame"), this)) {
     setClips({});
     source_->setToolTip(tr("What moves from frame to frame"));
     source_->setSizeAdjustPolicy(QComboBox::AdjustToContents); // clip and sequence names in full
@@ -76,6 +79,8 @@ Timeline::Timeline(QWidget* parent)
     fps_->setToolTip(tr("Frames a second, in the preview and in the exported animation"));
     play_->setToolTip(tr("Play or pause the preview (Space)"));
     loop_->setToolTip(tr("Start again at the first frame after the last"));
+    everyFrame_->setToolTip(tr("Show every frame even when the preview cannot keep up (it then plays slower than "
+                               "real time); off, frames that cannot be shown in time are dropped to keep time"));
     slider_->setToolTip(tr("The current frame: click or drag to scrub (Left and Right step a frame)"));
     auto* jump = new JumpSliderStyle;
     jump->setParent(slider_);
@@ -84,14 +89,16 @@ Timeline::Timeline(QWidget* parent)
     frameBox_->setPrefix(tr("frame "));
     frameBox_->setToolTip(tr("The current frame: type one and press Enter"));
     frameBox_->setKeyboardTracking(false);
-    label_->setToolTip(tr("The last frame, and the current frame's time in seconds"));
+    label_->setToolTip(tr("The last frame, the current frame's time in seconds and, while playing, how many "
+                          "frames a second the preview shows"));
     // Typed values take effect on Enter or when the box is left, not at
     // every keystroke (a frame count typed as 1, 10, 102 would clamp the
     // current frame at 1).
     for (QAbstractSpinBox* box : std::initializer_list<QAbstractSpinBox*>{degrees_, frames_, start_, fps_})
         box->setKeyboardTracking(false);
     auto* layout = new QHBoxLayout(this);
-    for (QWidget* w : std::initializer_list<QWidget*>{source_, degrees_, start_, frames_, fps_, play_, loop_}) layout->addWidget(w);
+    for (QWidget* w : std::initializer_list<QWidget*>{source_, degrees_, start_, frames_, fps_, play_, loop_, everyFrame_})
+        layout->addWidget(w);
     layout->addWidget(slider_, 1);
     layout->addWidget(frameBox_);
     layout->addWidget(label_);
@@ -127,7 +134,7 @@ Timeline::Timeline(QWidget* parent)
         edited();
     });
     connect(fps_, &QDoubleSpinBox::valueChanged, this, [this, refresh] {
-        timer_.setInterval(int(1000.0 / fps_->value()));
+        anchorClock(); // on from here at the new rate
         refresh(); // a clip's frames are at other times now
         edited();
     });
@@ -138,7 +145,18 @@ Timeline::Timeline(QWidget* parent)
     });
     connect(play_, &QPushButton::clicked, this, &Timeline::togglePlay);
     connect(&timer_, &QTimer::timeout, this, &Timeline::advance);
-    timer_.setInterval(int(1000.0 / fps_->value()));
+    connect(everyFrame_, &QCheckBox::toggled, this, [this] {
+        anchorClock();
+        lastStepNs_ = 0;
+    });
+    // A frame the user picks while playing: play goes on from there.
+    connect(slider_, &QSlider::valueChanged, this, [this] {
+        if (playing() && !advancing_) anchorClock();
+    });
+    // The clock says which frame is due; the ticks only look at it, often
+    // enough to show each frame within a few milliseconds of its time.
+    timer_.setTimerType(Qt::PreciseTimer);
+    timer_.setInterval(5);
     showPosition();
 }
 
@@ -258,17 +276,73 @@ void Timeline::showPosition() {
     frameBox_->setRange(0, slider_->maximum());
     frameBox_->setValue(slider_->value());
     const double fps = fps_->value();
-    label_->setText(tr("/ %1 · %2 s of %3 s")
-                        .arg(slider_->maximum())
-                        .arg(slider_->value() / fps, 0, 'f', 2)
-                        .arg(frames_->value() / fps, 0, 'f', 2));
+    QString text = tr("/ %1 · %2 s of %3 s")
+                       .arg(slider_->maximum())
+                       .arg(slider_->value() / fps, 0, 'f', 2)
+                       .arg(frames_->value() / fps, 0, 'f', 2);
+    if (playing()) text += tr(" · %1 fps shown").arg(shownRate_, 0, 'f', 1);
+    label_->setText(text);
 }
 
+bool Timeline::playsEveryFrame() const { return everyFrame_->isChecked(); }
+
+void Timeline::setPlaysEveryFrame(bool every) { everyFrame_->setChecked(every); }
+
 void Timeline::togglePlay() {
-    if (timer_.isActive()) timer_.stop();
-    else timer_.start();
+    if (timer_.isActive()) {
+        timer_.stop();
+        shownAt_.clear();
+        shownRate_ = 0.0;
+        status_.clear();
+        showPosition();
+        emit playbackStatus({});
+    } else {
+        clock_.start();
+        anchorClock();
+        lastStepNs_ = 0;
+        lastShown_ = frame(); // on screen when play starts
+        timer_.start();
+    }
     play_->setChecked(timer_.isActive());
     play_->setText(timer_.isActive() ? tr("Pause") : tr("Play"));
+}
+
+void Timeline::anchorClock() {
+    clockStartFrame_ = frame();
+    clockStartNs_ = clock_.isValid() ? clock_.nsecsElapsed() : 0;
+}
+
+int Timeline::nextFrame(int frame) const {
+    if (frame + 1 < frames_->value()) return frame + 1;
+    return loop_->isChecked() ? 0 : -1;
+}
+
+void Timeline::frameShown(int frame) {
+    if (!playing()) return;
+    lastShown_ = frame;
+    shownAt_.push_back(clock_.nsecsElapsed());
+    updateRate();
+}
+
+void Timeline::updateRate() {
+    const qint64 now = clock_.nsecsElapsed();
+    while (!shownAt_.empty() && shownAt_.front() < now - 1'000'000'000) shownAt_.pop_front();
+    // Over the last second (or the time played, at the start).
+    const double window = std::clamp(double(now) * 1e-9, 0.25, 1.0);
+    shownRate_ = double(shownAt_.size()) / window;
+    const double set = fps_->value();
+    showPosition();
+    if (now < 1'000'000'000) return; // too early to judge
+    QString status;
+    if (shownRate_ < 0.95 * set)
+        status = everyFrame_->isChecked()
+                     ? tr("Preview slower than real time: %1 of %2 fps, every frame shown").arg(shownRate_, 0, 'f', 1).arg(set)
+                     : tr("Preview slower than real time: %1 of %2 fps, dropping frames to keep time")
+                           .arg(shownRate_, 0, 'f', 1)
+                           .arg(set);
+    else
+        status = tr("Preview at full rate (%1 fps)").arg(set);
+    if (status != status_) emit playbackStatus(status_ = status);
 }
 
 void Timeline::step(int delta) {
@@ -277,9 +351,32 @@ void Timeline::step(int delta) {
 }
 
 void Timeline::advance() {
-    if (frame() + 1 < frames_->value()) setFrame(frame() + 1);
-    else if (loop_->isChecked()) setFrame(0);
-    else togglePlay();
+    const qint64 now = clock_.nsecsElapsed();
+    const double fps = fps_->value();
+    const int n = frames_->value();
+    if (shownAt_.empty() || now - shownAt_.back() > 250'000'000) updateRate(); // nothing shown for a while: say so
+    if (everyFrame_->isChecked()) {
+        // The next frame once this one is shown, and no sooner than the rate allows.
+        if (lastShown_ != frame() || now - lastStepNs_ < qint64(1e9 / fps)) return;
+        const int next = nextFrame(frame());
+        if (next < 0) return togglePlay();
+        lastStepNs_ = now;
+        advancing_ = true;
+        setFrame(next);
+        advancing_ = false;
+        return;
+    }
+    // The frame due now by the clock; those the preview had no time for are dropped.
+    const qint64 due = clockStartFrame_ + qint64(double(now - clockStartNs_) * 1e-9 * fps);
+    advancing_ = true;
+    if (due >= n && !loop_->isChecked()) {
+        setFrame(n - 1);
+        advancing_ = false;
+        return togglePlay();
+    }
+    const int frame_due = int(due % n);
+    if (frame_due != frame()) setFrame(frame_due);
+    advancing_ = false;
 }
 
 } // namespace snaxels::ui

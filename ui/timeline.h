@@ -3,6 +3,9 @@
 // mesh's own clips or a sequence of mesh files), how far per frame,
 // how many frames at what rate, the current frame, play/pause and loop.
 
+#include <deque>
+
+#include <QElapsedTimer>
 #include <QTimer>
 #include <QWidget>
 
@@ -44,10 +47,20 @@ class Timeline : public QWidget {
     void setFrame(int frame);
     void setFrameCount(int frames);
     bool playing() const { return timer_.isActive(); }
+    /// Play shows every frame, however long each takes (else, the default,
+    /// it drops the frames it cannot show in time, as a video player does).
+    bool playsEveryFrame() const;
+    void setPlaysEveryFrame(bool every);
+    /// Frames a second the preview showed over the last second of play
+    /// (0 when not playing or nothing was shown yet).
+    double shownRate() const { return shownRate_; }
 
   public slots:
     void togglePlay();
     void step(int delta);
+    /// The view now shows frame @p frame (its contours arrived): the
+    /// achieved rate counts it, and a play of every frame goes on from it.
+    void frameShown(int frame);
 
   signals:
     /// The current frame or the animation settings changed.
@@ -55,9 +68,14 @@ class Timeline : public QWidget {
     /// The user changed the animation settings (source, degrees, frames,
     /// rate): one step for the undo stack.
     void specEdited();
+    /// How play keeps up, for the status bar (empty when it stops).
+    void playbackStatus(const QString& text);
 
   private:
     void advance();
+    /// The frame after @p frame, or -1 at the end without loop.
+    int nextFrame(int frame) const;
+    void updateRate();
     void edited();
     void updateEnabled();
 
@@ -73,7 +91,20 @@ class Timeline : public QWidget {
     void showPosition();
     QPushButton* play_;
     QCheckBox* loop_;
+    QCheckBox* everyFrame_;
     QTimer timer_;
+    // Play keeps time by a clock: the frame due now is the one it started
+    // at plus the time played times the rate.
+    QElapsedTimer clock_;
+    qint64 clockStartFrame_ = 0, clockStartNs_ = 0;
+    bool advancing_ = false; ///< the clock moves the frame (not the user)
+    /// The clock goes on from the current frame, now.
+    void anchorClock();
+    qint64 lastStepNs_ = 0;        ///< every-frame play: when it last stepped
+    int lastShown_ = -1;            ///< the frame shown last
+    std::deque<qint64> shownAt_;    ///< when frames were shown (ns on clock_), the last second
+    double shownRate_ = 0.0;
+    QString status_;
     int quiet_ = 0; ///< set while showing a spec: no specEdited
 };
 

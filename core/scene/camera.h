@@ -19,6 +19,7 @@ struct Camera {
     double fov_deg = 35.0;              ///< perspective: vertical field of view
     glm::dvec3 up{0.0, 1.0, 0.0};       ///< world direction that appears upward
 
+    bool operator==(const Camera&) const = default;
     bool orthographic() const { return projection == Projection::Orthographic; }
     /// Unit vector from @p p toward the viewer (V of the paper).
     glm::dvec3 to_viewer(const glm::dvec3& p) const {

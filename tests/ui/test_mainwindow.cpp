@@ -37,6 +37,10 @@
 #include <QSvgRenderer>
 #include <QMessageBox>
 #include <QPushButton>
+#include <QCheckBox>
+#include <QMouseEvent>
+#include <algorithm>
+#include <cmath>
 #include <QUndoStack>
 #include <QComboBox>
 #include <QDoubleSpinBox>
@@ -131,6 +135,73 @@ bool showWithMesh(MainWindow& window, const QString& mesh, QSize size = {1000, 7
     QSignalSpy contours(&window, &MainWindow::contoursUpdated);
     window.openMesh(mesh);
     return contours.wait(60000);
+}
+
+/// The toon preset's text.
+QString toonStyle() {
+    QFile toon(snaxels::ui::dataDirectory() + "/styles/toon.xml");
+    return toon.open(QIODevice::ReadOnly) ? QString::fromUtf8(toon.readAll()) : QString();
+}
+
+template <class W> W* childWithText(QWidget* parent, const QString& text) {
+    for (W* w : parent->findChildren<W*>())
+        if (w->text() == text) return w;
+    return nullptr;
+}
+
+/// An ellipsoid (semi-axes 2, 1, 0.8) as an OBJ file: convex, so every
+/// part of its visual contour is on its outline in the image, and not a
+/// solid of revolution about the orbit's axes, so the outline changes as
+/// the view turns.
+bool writeEllipsoid(const QString& path) {
+    QFile file(path);
+    if (!file.open(QIODevice::WriteOnly)) return false;
+    QTextStream out(&file);
+    const int rings = 48, segments = 96;
+    out << "v 0 0.8 0\n";
+    for (int i = 1; i < rings; ++i)
+        for (int j = 0; j < segments; ++j) {
+            const double theta = M_PI * i / rings, phi = 2.0 * M_PI * j / segments;
+            out << "v " << 2.0 * std::sin(theta) * std::cos(phi) << ' ' << 0.8 * std::cos(theta) << ' '
+                << 1.0 * std::sin(theta) * std::sin(phi) << '\n';
+        }
+    out << "v 0 -0.8 0\n";
+    auto at = [&](int i, int j) { return 2 + (i - 1) * segments + (j % segments); }; // 1-based, ring i >= 1
+    const int last = 2 + (rings - 1) * segments;
+    for (int j = 0; j < segments; ++j) out << "f 1 " << at(1, j + 1) << ' ' << at(1, j) << '\n';
+    for (int i = 1; i + 1 < rings; ++i)
+        for (int j = 0; j < segments; ++j) {
+            out << "f " << at(i, j) << ' ' << at(i, j + 1) << ' ' << at(i + 1, j + 1) << '\n';
+            out << "f " << at(i, j) << ' ' << at(i + 1, j + 1) << ' ' << at(i + 1, j) << '\n';
+        }
+    for (int j = 0; j < segments; ++j) out << "f " << last << ' ' << at(rings - 1, j) << ' ' << at(rings - 1, j + 1) << '\n';
+    return true;
+}
+
+/// The largest distance in pixels from a contour pixel (the visual
+/// contour's red-orange) to the mesh's outline in @p image: the mesh's
+/// pixels are those not of the background colour, its outline those of
+/// them next to the background. -1 when no contour pixel shows.
+double contourOffOutline(const QImage& image) {
+    const QRgb background = image.pixel(2, 2);
+    const int w = image.width(), h = image.height();
+    auto mesh = [&](int x, int y) { return x >= 0 && y >= 0 && x < w && y < h && image.pixel(x, y) != background; };
+    std::vector<QPoint> outline, ink;
+    for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x) {
+            if (!mesh(x, y)) continue;
+            if (!mesh(x - 1, y) || !mesh(x + 1, y) || !mesh(x, y - 1) || !mesh(x, y + 1)) outline.push_back({x, y});
+            const QRgb p = image.pixel(x, y);
+            if (qRed(p) > 170 && qGreen(p) < 120 && qBlue(p) < 110) ink.push_back({x, y});
+        }
+    if (ink.empty()) return -1.0;
+    double worst = 0.0;
+    for (const QPoint& p : ink) {
+        double best = 1e9;
+        for (const QPoint& q : outline) best = std::min(best, std::hypot(double(p.x() - q.x()), double(p.y() - q.y())));
+        worst = std::max(worst, best);
+    }
+    return worst;
 }
 
 QImage paneImage(MainWindow& window) {
@@ -777,6 +848,125 @@ class TestMainWindow : public QObject {
     // The timeline: a click on the track goes to the click, a typed frame
     // goes there on Enter, and a frame count typed digit by digit takes
     // effect on Enter (not clamping the current frame to its first digit).
+    // Point 3 of the first hour: Play keeps wall-clock time when the
+    // preview cannot keep up (frames it has no time for are dropped), and
+    // says how many frames a second it shows. The horse in the toon preset
+    // takes longer than a 24 fps frame to draw on this machine.
+    void playKeepsTimeAndReportsItsRate() {
+        MainWindow window;
+        QVERIFY(showWithMesh(window, QString(SNAXELS_TEST_ASSETS) + "/horse.ply"));
+        QSignalSpy restyled(&window, &MainWindow::contoursUpdated);
+        window.styleEditor()->setText(toonStyle(), "toon.xml");
+        QVERIFY(restyled.wait(60000));
+        window.timeline()->setFrameCount(720); // 30 s: no loop within the test
+        window.timeline()->setFrame(0);
+        QTest::qWait(500);
+        std::vector<qint64> shownAt; // when contours arrived, on the wall clock
+        QElapsedTimer wall;
+        connect(&window, &MainWindow::contoursUpdated, this, [&] { shownAt.push_back(wall.nsecsElapsed()); });
+        QPushButton* play = childWithText<QPushButton>(window.timeline(), tr("Play"));
+        QVERIFY(play);
+        QCheckBox* every = childWithText<QCheckBox>(window.timeline(), tr("Every frame"));
+        QVERIFY(every && !every->isChecked()); // dropping frames is the default
+        wall.start();
+        QTest::mouseClick(play, Qt::LeftButton);
+        QTest::qWait(10000);
+        const double seconds = double(wall.nsecsElapsed()) * 1e-9;
+        const int frame = window.timeline()->frame();
+        const double reported = window.timeline()->shownRate();
+        const QString status = window.statusBar()->currentMessage();
+        bool shown_beside = false; // the timeline says the rate beside the time
+        for (QLabel* label : window.timeline()->findChildren<QLabel*>())
+            shown_beside |= label->text().contains(QString(" · %1 fps shown").arg(reported, 0, 'f', 1));
+        QTest::mouseClick(play, Qt::LeftButton);
+        QVERIFY(shown_beside);
+        const double expected = seconds * 24.0;
+        std::printf("play: frame %d after %.2f s (%.1f due), %.1f fps reported, %zu frames shown; \"%s\"\n", frame,
+                    seconds, expected, reported, shownAt.size(), qPrintable(status));
+        QVERIFY2(std::abs(frame - expected) <= 0.05 * expected, qPrintable(QString("frame %1, %2 due").arg(frame).arg(expected)));
+        // The rate reported is the rate of frames shown over the last second.
+        const double last_second = double(std::count_if(shownAt.begin(), shownAt.end(), [&](qint64 t) {
+            return double(t) * 1e-9 > seconds - 1.0;
+        }));
+        QVERIFY2(reported > 0.0 && std::abs(reported - last_second) <= std::max(2.0, 0.25 * last_second),
+                 qPrintable(QString("reported %1 fps, %2 shown in the last second").arg(reported).arg(last_second)));
+        if (reported < 0.95 * 24.0) QVERIFY2(status.contains("dropping frames"), qPrintable(status));
+        else QVERIFY2(status.contains("full rate"), qPrintable(status));
+        QVERIFY(window.statusBar()->currentMessage().isEmpty()); // stopped: the message goes
+    }
+
+    // The option: every frame is shown, in order, the preview then running
+    // slower than real time (and saying so).
+    void playOfEveryFrameShowsEachFrame() {
+        MainWindow window;
+        QVERIFY(showWithMesh(window, QString(SNAXELS_TEST_ASSETS) + "/horse.ply"));
+        QSignalSpy restyled(&window, &MainWindow::contoursUpdated);
+        window.styleEditor()->setText(toonStyle(), "toon.xml");
+        QVERIFY(restyled.wait(60000));
+        window.timeline()->setFrame(0);
+        QTest::qWait(500);
+        QCheckBox* every = childWithText<QCheckBox>(window.timeline(), tr("Every frame"));
+        QVERIFY(every);
+        QTest::mouseClick(every, Qt::LeftButton);
+        QVERIFY(window.timeline()->playsEveryFrame());
+        std::vector<int> frames; // the timeline's frame at each contour update
+        connect(&window, &MainWindow::contoursUpdated, this, [&] { frames.push_back(window.timeline()->frame()); });
+        QPushButton* play = childWithText<QPushButton>(window.timeline(), tr("Play"));
+        QVERIFY(play);
+        QElapsedTimer wall;
+        wall.start();
+        QTest::mouseClick(play, Qt::LeftButton);
+        QTest::qWait(4000);
+        const QString status = window.statusBar()->currentMessage();
+        const double reported = window.timeline()->shownRate();
+        QTest::mouseClick(play, Qt::LeftButton);
+        QVERIFY(frames.size() > 10);
+        for (std::size_t i = 1; i < frames.size(); ++i)
+            QVERIFY2(frames[i] == frames[i - 1] || frames[i] == frames[i - 1] + 1,
+                     qPrintable(QString("frame %1 after %2: one was skipped").arg(frames[i]).arg(frames[i - 1])));
+        std::printf("every frame: %zu updates up to frame %d in %.1f s, %.1f fps reported; \"%s\"\n", frames.size(),
+                    frames.back(), double(wall.elapsed()) / 1000.0, reported, qPrintable(status));
+        if (reported < 0.95 * 24.0) QVERIFY2(status.contains("every frame shown"), qPrintable(status));
+    }
+
+    // While the camera orbits, the contours drawn at each repaint lie on the
+    // mesh's outline (a convex mesh: its visual contour is all outline),
+    // read back from the GL view: contours of an earlier camera, still
+    // computing their successors, are drawn on the surface against its depth.
+    void orbitKeepsContoursOnTheOutline() {
+        QTemporaryDir dir;
+        const QString path = dir.filePath("ellipsoid.obj");
+        QVERIFY(writeEllipsoid(path));
+        MainWindow window;
+        QVERIFY(showWithMesh(window, path, {1000, 700}));
+        QTest::qWait(300);
+        snaxels::ui::MeshView* view = window.meshView();
+        const QImage still = view->grabFramebuffer().convertToFormat(QImage::Format_RGB32);
+        const double at_rest = contourOffOutline(still);
+        QVERIFY2(at_rest >= 0.0 && at_rest <= 2.0, qPrintable(QString("at rest %1 px").arg(at_rest)));
+        // A drag of 60 steps of 3 pixels (1.7 degrees each), a repaint read back after each.
+        QPoint at(view->width() / 2, view->height() / 2);
+        QTest::mousePress(view, Qt::LeftButton, {}, at);
+        double worst = 0.0;
+        int stale = 0;
+        for (int step = 0; step < 60; ++step) {
+            at += QPoint(3, step % 3 == 0 ? 1 : 0);
+            QMouseEvent move(QEvent::MouseMove, QPointF(at), view->mapToGlobal(QPointF(at)), Qt::NoButton, Qt::LeftButton, {});
+            QApplication::sendEvent(view, &move);
+            QTest::qWait(15);
+            stale += view->contoursStale();
+            const QImage frame = view->grabFramebuffer().convertToFormat(QImage::Format_RGB32);
+            const double off = contourOffOutline(frame);
+            if (step == 30) frame.save(QString(SCREENSHOT_DIR) + "/mainwindow-orbit-step.png");
+            QVERIFY2(off >= 0.0, qPrintable(QString("no contour drawn at step %1").arg(step)));
+            worst = std::max(worst, off);
+        }
+        QTest::mouseRelease(view, Qt::LeftButton, {}, at);
+        std::printf("orbit: contour pixels at most %.1f px off the outline over 60 repaints (%d with contours of an earlier camera)\n",
+                    worst, stale);
+        QVERIFY2(worst <= 2.0, qPrintable(QString("%1 px off the outline").arg(worst)));
+    }
+
     void timelineTakesClicksAndTypedFrames() {
         MainWindow window;
         QVERIFY(showWithMesh(window, QString(SNAXELS_TEST_ASSETS) + "/spot.obj", {1200, 800}));
