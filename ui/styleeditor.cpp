@@ -10,7 +10,9 @@
 #include <QKeyEvent>
 #include <QLabel>
 #include <QScrollBar>
-#include <QStringListModel>
+#include <QPainter>
+#include <QStandardItemModel>
+#include <QToolTip>
 #include <QRegularExpression>
 #include <QSyntaxHighlighter>
 #include <QTextBlock>
@@ -20,6 +22,9 @@
 
 namespace snaxels::ui {
 namespace {
+
+/// The completion model's role holding the word itself.
+constexpr int kWordRole = Qt::UserRole + 1;
 
 class XmlHighlighter : public QSyntaxHighlighter {
   public:
@@ -66,9 +71,81 @@ class CompletingEdit : public QPlainTextEdit {
   public:
     CompletingEdit(QWidget* parent, QCompleter* completer, std::function<void(bool forced)> offer,
                    std::function<bool(int position)> pick_colour)
-        : QPlainTextEdit(parent), completer_(completer), offer_(std::move(offer)), pick_colour_(std::move(pick_colour)) {}
+        : QPlainTextEdit(parent), completer_(completer), offer_(std::move(offer)), pick_colour_(std::move(pick_colour)),
+          gutter_(new Gutter(this)) {
+        setViewportMargins(gutterWidth(), 0, 0, 0);
+        connect(this, &QPlainTextEdit::updateRequest, this, [this](const QRect& rect, int dy) {
+            if (dy) gutter_->scroll(0, dy);
+            else gutter_->update(0, rect.y(), gutter_->width(), rect.height());
+        });
+    }
+
+    /// The swatch of line @p block's first colour, in gutter coordinates
+    /// (empty where the line has none), and where the colour's value is.
+    std::pair<QRect, int> swatch(const QTextBlock& block) const {
+        static const QRegularExpression colour("\"(#[0-9a-fA-F]{6}|#[0-9a-fA-F]{3})\"");
+        const QRegularExpressionMatch m = colour.match(block.text());
+        if (!m.hasMatch()) return {QRect(), -1};
+        const QRectF line = blockBoundingGeometry(block).translated(contentOffset());
+        const int side = std::min(fontMetrics().height() - 4, gutterWidth() - 4);
+        return {QRect(2, int(line.top()) + 2, side, side), block.position() + int(m.capturedStart(1))};
+    }
 
   protected:
+    /// A colour swatch beside each line that sets a colour: the first one
+    /// on the line; a click on it picks the colour in a dialog.
+    class Gutter : public QWidget {
+      public:
+        explicit Gutter(CompletingEdit* edit) : QWidget(edit), edit_(edit) {
+            setCursor(Qt::PointingHandCursor);
+            setToolTip(tr("Click a swatch to pick its line's colour"));
+        }
+
+      protected:
+        void paintEvent(QPaintEvent* event) override {
+            QPainter painter(this);
+            painter.fillRect(event->rect(), palette().window());
+            for (QTextBlock block = edit_->firstVisibleBlock(); block.isValid(); block = block.next()) {
+                const auto [rect, at] = edit_->swatch(block);
+                if (edit_->blockBoundingGeometry(block).translated(edit_->contentOffset()).top() > height()) break;
+                if (at < 0) continue;
+                painter.fillRect(rect, QColor(edit_->toPlainText().mid(at, 7).section('"', 0, 0)));
+                painter.setPen(palette().color(QPalette::Mid));
+                painter.drawRect(rect.adjusted(0, 0, -1, -1));
+            }
+        }
+        void mousePressEvent(QMouseEvent* event) override {
+            for (QTextBlock block = edit_->firstVisibleBlock(); block.isValid(); block = block.next()) {
+                const auto [rect, at] = edit_->swatch(block);
+                if (at >= 0 && rect.contains(event->position().toPoint())) {
+                    edit_->pick_colour_(at);
+                    return;
+                }
+            }
+        }
+
+      private:
+        CompletingEdit* edit_;
+    };
+
+    int gutterWidth() const { return fontMetrics().height() + 4; }
+    void resizeEvent(QResizeEvent* event) override {
+        QPlainTextEdit::resizeEvent(event);
+        const QRect r = contentsRect();
+        gutter_->setGeometry(r.left(), r.top(), gutterWidth(), r.height());
+    }
+    /// Hovering an element's or attribute's name says what it does.
+    bool viewportEvent(QEvent* event) override {
+        if (event->type() == QEvent::ToolTip) {
+            auto* help = static_cast<QHelpEvent*>(event);
+            const QString summary = style_summary_at(toPlainText(), cursorForPosition(help->pos()).position());
+            if (!summary.isEmpty()) {
+                QToolTip::showText(help->globalPos(), summary, viewport());
+                return true;
+            }
+        }
+        return QPlainTextEdit::viewportEvent(event);
+    }
     /// Ctrl+click on a colour value picks the colour in a dialog.
     void mousePressEvent(QMouseEvent* event) override {
         if (event->button() == Qt::LeftButton && (event->modifiers() & Qt::ControlModifier) &&
@@ -114,6 +191,7 @@ class CompletingEdit : public QPlainTextEdit {
     QCompleter* completer_;
     std::function<void(bool)> offer_;
     std::function<bool(int)> pick_colour_;
+    Gutter* gutter_;
 };
 
 } // namespace
@@ -130,7 +208,10 @@ StyleCompletion style_completion_at(const QString& text, int position) {
     if (name_end == tag.size()) { // still typing the element's name
         out.kind = StyleCompletion::Kind::Element;
         out.prefix = tag;
-        for (const StyleElement& e : style_vocabulary()) out.candidates << QString::fromStdString(e.name);
+        for (const StyleElement& e : style_vocabulary()) {
+            out.candidates << QString::fromStdString(e.name);
+            out.summaries << QString::fromStdString(e.summary);
+        }
         return out;
     }
     const StyleElement* element = style_element(tag.left(name_end).toStdString());
@@ -147,7 +228,10 @@ StyleCompletion style_completion_at(const QString& text, int position) {
         const std::string attribute = tag.mid(start + 1, end - start).toStdString();
         for (const StyleAttribute& a : element->attributes)
             if (a.name == attribute)
-                for (const std::string& word : a.values) out.candidates << QString::fromStdString(word);
+                for (const std::string& word : a.values) {
+                    out.candidates << QString::fromStdString(word);
+                    out.summaries << QString();
+                }
         out.kind = out.candidates.isEmpty() ? StyleCompletion::Kind::None : StyleCompletion::Kind::Value;
         out.prefix = tag.mid(quote + 1);
         return out;
@@ -160,9 +244,41 @@ StyleCompletion style_completion_at(const QString& text, int position) {
     for (const StyleAttribute& a : element->attributes) {
         const QString name = QString::fromStdString(a.name);
         const QRegularExpression present("(^|\\s)" + QRegularExpression::escape(name) + "\\s*=");
-        if (!tag.left(start).contains(present)) out.candidates << name;
+        if (!tag.left(start).contains(present)) {
+            out.candidates << name;
+            out.summaries << QString::fromStdString(a.summary);
+        }
     }
     return out;
+}
+
+QString style_summary_at(const QString& text, int position) {
+    if (position < 0 || position >= text.size() || !name_char(text[position])) return {};
+    int start = position, end = position;
+    while (start > 0 && name_char(text[start - 1])) --start;
+    while (end < text.size() && name_char(text[end])) ++end;
+    const QString word = text.mid(start, end - start);
+    // An element: its name right after '<' (or '</').
+    int before = start - 1;
+    if (before >= 0 && text[before] == '/') --before;
+    if (before >= 0 && text[before] == '<') {
+        const StyleElement* e = style_element(word.toStdString());
+        return e ? word + ": " + QString::fromStdString(e->summary) : QString();
+    }
+    // An attribute: a name followed by '=' inside a tag, the element's
+    // name being the first word after the tag's '<'.
+    int after = end;
+    while (after < text.size() && text[after].isSpace()) ++after;
+    if (after >= text.size() || text[after] != '=') return {};
+    const int open = int(text.left(start).lastIndexOf('<'));
+    if (open < 0 || text.left(start).lastIndexOf('>') > open) return {};
+    int name_end = open + 1;
+    while (name_end < text.size() && name_char(text[name_end])) ++name_end;
+    const StyleElement* e = style_element(text.mid(open + 1, name_end - open - 1).toStdString());
+    if (!e) return {};
+    for (const StyleAttribute& a : e->attributes)
+        if (QString::fromStdString(a.name) == word) return word + ": " + QString::fromStdString(a.summary);
+    return {};
 }
 
 QString initial_style_text() {
@@ -183,7 +299,7 @@ QString initial_style_text() {
 }
 
 StyleEditor::StyleEditor(QWidget* parent)
-    : QWidget(parent), completer_(new QCompleter(this)), completions_(new QStringListModel(this)) {
+    : QWidget(parent), completer_(new QCompleter(this)), completions_(new QStandardItemModel(this)) {
     edit_ = new CompletingEdit(
         this, completer_, [this](bool forced) { complete(forced); }, [this](int position) { return pickColour(position); });
     status_ = new QLabel(this);
@@ -205,6 +321,7 @@ StyleEditor::StyleEditor(QWidget* parent)
     connect(&debounce_, &QTimer::timeout, this, &StyleEditor::apply);
     connect(edit_, &QPlainTextEdit::textChanged, this, [this] { debounce_.start(); });
     completer_->setModel(completions_);
+    completer_->setCompletionRole(kWordRole); // the word; the list shows it with its summary
     completer_->setWidget(edit_);
     completer_->setCompletionMode(QCompleter::PopupCompletion);
     completer_->setCaseSensitivity(Qt::CaseInsensitive);
@@ -219,7 +336,15 @@ void StyleEditor::complete(bool forced) {
         completer_->popup()->hide();
         return;
     }
-    completions_->setStringList(c.candidates);
+    completions_->clear();
+    for (qsizetype i = 0; i < c.candidates.size(); ++i) {
+        auto* item = new QStandardItem;
+        item->setData(c.candidates[i], kWordRole);
+        const QString summary = c.summaries.value(i);
+        item->setData(summary.isEmpty() ? c.candidates[i] : c.candidates[i] + "  —  " + summary, Qt::DisplayRole);
+        item->setData(summary, Qt::ToolTipRole);
+        completions_->appendRow(item);
+    }
     completer_->setCompletionPrefix(c.prefix);
     if (completer_->completionCount() == 0 ||
         (completer_->completionCount() == 1 && completer_->currentCompletion() == c.prefix)) {
@@ -228,7 +353,8 @@ void StyleEditor::complete(bool forced) {
     }
     completer_->popup()->setCurrentIndex(completer_->completionModel()->index(0, 0));
     QRect rect = edit_->cursorRect();
-    rect.setWidth(completer_->popup()->sizeHintForColumn(0) + completer_->popup()->verticalScrollBar()->sizeHint().width());
+    rect.setWidth(std::min(completer_->popup()->sizeHintForColumn(0), std::max(280, edit_->width())) +
+                  completer_->popup()->verticalScrollBar()->sizeHint().width());
     completer_->complete(rect);
 }
 
@@ -266,9 +392,11 @@ bool StyleEditor::pickColour(int position) {
     const QColor chosen = QColorDialog::getColor(current, this, tr("Pick a colour"));
     if (!chosen.isValid() || chosen == current) return true;
     QTextCursor cursor(edit_->document());
+    cursor.beginEditBlock(); // one undo step
     cursor.setPosition(value->first);
     cursor.setPosition(value->first + value->second, QTextCursor::KeepAnchor);
     cursor.insertText(chosen.name(QColor::HexRgb));
+    cursor.endEditBlock();
     debounce_.stop();
     apply(); // at once: one edit of the document
     return true;

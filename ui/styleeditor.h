@@ -14,7 +14,7 @@
 
 class QCompleter;
 class QLabel;
-class QStringListModel;
+class QStandardItemModel;
 
 namespace snaxels::ui {
 
@@ -27,10 +27,15 @@ struct StyleCompletion {
     enum class Kind { None, Element, Attribute, Value } kind = Kind::None;
     QString prefix;        ///< what is typed of the word so far
     QStringList candidates; ///< every word that fits there, in the vocabulary's order
+    QStringList summaries;  ///< what each candidate does, in a line (the vocabulary's; empty for words)
 };
 
 /// The completion at @p position (a cursor position) in @p text.
 StyleCompletion style_completion_at(const QString& text, int position);
+
+/// What the element or attribute name at @p position of @p text does, as
+/// "name: summary" from the vocabulary; empty elsewhere.
+QString style_summary_at(const QString& text, int position);
 
 class StyleEditor : public QWidget {
     Q_OBJECT
@@ -65,7 +70,7 @@ class StyleEditor : public QWidget {
     void insertCompletion(const QString& word);
 
     QCompleter* completer_;
-    QStringListModel* completions_;
+    QStandardItemModel* completions_; ///< each word (edit role) with its summary beside it (display role)
     QPlainTextEdit* edit_;
     QLabel* status_;
     QTimer debounce_;

@@ -89,24 +89,31 @@ class StyleError : public Error {
     StyleDiagnostic diagnostic_;
 };
 
-/// One attribute of a style element: its name and the words it takes: all
-/// of them where it is one of a few words (cap, kind, class...), the special
-/// ones beside numbers or colours (background="none"), else none.
+/// One attribute of a style element: its name, the words it takes (all of
+/// them where it is one of a few words: cap, kind, class...; the special
+/// ones beside numbers or colours: background="none"; else none) and what
+/// it does in one line, as the style reference (docs/styles.md) begins
+/// its meaning.
 struct StyleAttribute {
     std::string name;
     std::vector<std::string> values;
+    std::string summary;
 };
 
-/// One element of the style language, with every attribute it takes.
+/// One element of the style language, what it is in one line, and every
+/// attribute it takes.
 struct StyleElement {
     std::string name;
+    std::string summary;
     std::vector<StyleAttribute> attributes;
 };
 
-/// The style language's vocabulary: every element, its attributes and their
-/// words. The parser checks documents against it (an attribute not listed
-/// warns; a word not listed is an error), and the application's style
-/// editor completes from it, so the two cannot drift apart.
+/// The style language's vocabulary: every element, its attributes, their
+/// words and what each does. The parser checks documents against it (an
+/// attribute not listed warns; a word not listed is an error), the
+/// application's style editor completes and explains from it, and the
+/// style reference's tables begin each meaning with its summaries (a test
+/// holds them to it), so none of them can drift apart.
 const std::vector<StyleElement>& style_vocabulary();
 /// The element called @p name in style_vocabulary(), or nullptr.
 const StyleElement* style_element(const std::string& name);

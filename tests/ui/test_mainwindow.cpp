@@ -37,6 +37,8 @@
 #include <QSvgRenderer>
 #include <QMessageBox>
 #include <QPushButton>
+#include <QScrollBar>
+#include <QTextBlock>
 #include <QCheckBox>
 #include <QMouseEvent>
 #include <algorithm>
@@ -202,6 +204,14 @@ double contourOffOutline(const QImage& image) {
         worst = std::max(worst, best);
     }
     return worst;
+}
+
+/// The window showing the horse in the toon preset, its contours drawn.
+bool showHorseInToon(MainWindow& window) {
+    if (!showWithMesh(window, QString(SNAXELS_TEST_ASSETS) + "/horse.ply")) return false;
+    QSignalSpy restyled(&window, &MainWindow::contoursUpdated);
+    window.styleEditor()->setText(toonStyle(), "toon.xml");
+    return restyled.wait(60000);
 }
 
 QImage paneImage(MainWindow& window) {
@@ -854,10 +864,7 @@ class TestMainWindow : public QObject {
     // takes longer than a 24 fps frame to draw on this machine.
     void playKeepsTimeAndReportsItsRate() {
         MainWindow window;
-        QVERIFY(showWithMesh(window, QString(SNAXELS_TEST_ASSETS) + "/horse.ply"));
-        QSignalSpy restyled(&window, &MainWindow::contoursUpdated);
-        window.styleEditor()->setText(toonStyle(), "toon.xml");
-        QVERIFY(restyled.wait(60000));
+        QVERIFY(showHorseInToon(window));
         window.timeline()->setFrameCount(720); // 30 s: no loop within the test
         window.timeline()->setFrame(0);
         QTest::qWait(500);
@@ -899,10 +906,7 @@ class TestMainWindow : public QObject {
     // slower than real time (and saying so).
     void playOfEveryFrameShowsEachFrame() {
         MainWindow window;
-        QVERIFY(showWithMesh(window, QString(SNAXELS_TEST_ASSETS) + "/horse.ply"));
-        QSignalSpy restyled(&window, &MainWindow::contoursUpdated);
-        window.styleEditor()->setText(toonStyle(), "toon.xml");
-        QVERIFY(restyled.wait(60000));
+        QVERIFY(showHorseInToon(window));
         window.timeline()->setFrame(0);
         QTest::qWait(500);
         QCheckBox* every = childWithText<QCheckBox>(window.timeline(), tr("Every frame"));
@@ -965,6 +969,43 @@ class TestMainWindow : public QObject {
         std::printf("orbit: contour pixels at most %.1f px off the outline over 60 repaints (%d with contours of an earlier camera)\n",
                     worst, stale);
         QVERIFY2(worst <= 2.0, qPrintable(QString("%1 px off the outline").arg(worst)));
+    }
+
+    // At the window's default size the style dock shows every preset's
+    // longest line whole (wrapped at the dock's edge, nothing scrolled out
+    // of sight sideways); the screenshots are kept.
+    void stylePresetsReadWholeAtTheDefaultSize() {
+        MainWindow window; // its own default size
+        window.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&window));
+        std::printf("default window: %dx%d, style dock %d px wide\n", window.width(), window.height(),
+                    window.styleEditor()->width());
+        QPlainTextEdit* edit = window.styleEditor()->editor();
+        const QDir presets(snaxels::ui::dataDirectory() + "/styles");
+        const QStringList files = presets.entryList({"*.xml"}, QDir::Files);
+        QVERIFY(files.size() >= 8);
+        QDir().mkpath(SCREENSHOT_DIR);
+        for (const QString& name : files) {
+            QFile f(presets.filePath(name));
+            QVERIFY(f.open(QIODevice::ReadOnly));
+            window.styleEditor()->setText(QString::fromUtf8(f.readAll()), name);
+            QCoreApplication::processEvents();
+            QTextBlock longest = edit->document()->firstBlock();
+            for (QTextBlock b = longest; b.isValid(); b = b.next())
+                if (b.length() > longest.length()) longest = b;
+            QTextCursor end(longest);
+            end.movePosition(QTextCursor::EndOfBlock);
+            edit->setTextCursor(end);
+            edit->ensureCursorVisible();
+            QCoreApplication::processEvents();
+            QCOMPARE(edit->horizontalScrollBar()->maximum(), 0); // nothing to scroll to sideways
+            QTextCursor start(longest);
+            const QRect first = edit->cursorRect(start), last = edit->cursorRect(end);
+            const QRect seen = edit->viewport()->rect();
+            QVERIFY2(seen.contains(first.center()) && seen.contains(last.center()),
+                     qPrintable(name + ": its longest line (" + QString::number(longest.length()) + " characters) is cut"));
+            window.styleEditor()->grab().save(QString(SCREENSHOT_DIR) + "/style-dock-" + QFileInfo(name).baseName() + ".png");
+        }
     }
 
     void timelineTakesClicksAndTypedFrames() {

@@ -6,6 +6,9 @@
 #include <QAbstractItemView>
 #include <QApplication>
 #include <QColorDialog>
+#include <QHelpEvent>
+#include <QToolTip>
+#include <QTextBlock>
 #include <QDir>
 #include <QFile>
 #include <QScrollBar>
@@ -188,6 +191,96 @@ class TestStyleEditor : public QObject {
         QCOMPARE(editor.text(), QString(text).replace("#111111", "#ff8800"));
         QCOMPARE(applied.count(), 1);
         QVERIFY(!editor.pickColour(int(text.indexOf("width")) + 2)); // no colour there: no dialog
+    }
+
+    // The gutter shows a swatch beside each line that sets a colour; a click
+    // on it opens a colour dialog, and the colour chosen is written into the
+    // XML as one change of the text (one undo step), applied at once.
+    void swatchInTheGutterPicksAColour() {
+        StyleEditor editor;
+        editor.resize(420, 300);
+        editor.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&editor));
+        const QString text = "<style version=\"1\">\n  <contour kind=\"visual\">\n    <visible stroke=\"#2f5fa8\" width=\"2\"/>\n"
+                             "  </contour>\n</style>\n";
+        editor.setText(text, "test");
+        QPlainTextEdit* edit = editor.editor();
+        QWidget* gutter = nullptr; // the edit's child beside its viewport
+        for (QWidget* child : edit->findChildren<QWidget*>(Qt::FindDirectChildrenOnly))
+            if (child != edit->viewport() && child->isVisible() && child->geometry().right() <= edit->viewport()->geometry().left() + 1 &&
+                child->width() > 4)
+                gutter = child;
+        QVERIFY(gutter);
+        const QImage shown = gutter->grab().toImage();
+        // The swatch of line 3 is the line's colour.
+        const QRect line3 = edit->cursorRect(QTextCursor(edit->document()->findBlockByNumber(2)));
+        const QPoint swatch(gutter->width() / 2, line3.center().y());
+        QCOMPARE(QColor(shown.pixel(swatch * shown.devicePixelRatio())).name(), QString("#2f5fa8"));
+        // Lines without a colour have none.
+        const QRect line2 = edit->cursorRect(QTextCursor(edit->document()->findBlockByNumber(1)));
+        QVERIFY(QColor(shown.pixel(QPoint(gutter->width() / 2, line2.center().y()) * shown.devicePixelRatio())).name() != "#2f5fa8");
+        QSignalSpy applied(&editor, &StyleEditor::textApplied);
+        QTimer poll;
+        poll.setInterval(20);
+        bool asked = false;
+        QObject::connect(&poll, &QTimer::timeout, [&] {
+            auto* dialog = qobject_cast<QColorDialog*>(QApplication::activeModalWidget());
+            if (!dialog) return;
+            poll.stop();
+            asked = dialog->currentColor() == QColor("#2f5fa8");
+            dialog->setCurrentColor(QColor("#aa3300"));
+            dialog->accept();
+        });
+        poll.start();
+        QTest::mouseClick(gutter, Qt::LeftButton, {}, swatch);
+        QVERIFY(asked);
+        QCOMPARE(editor.text(), QString(text).replace("#2f5fa8", "#aa3300"));
+        QCOMPARE(applied.count(), 1);
+        QVERIFY(edit->document()->isUndoAvailable());
+        QTest::keyClick(edit, Qt::Key_Z, Qt::ControlModifier); // one undo takes the whole pick back
+        QCOMPARE(editor.text(), text);
+    }
+
+    // Completion and hover say what each element and attribute does, in the
+    // words of the vocabulary (which the style reference begins with).
+    void explainsElementsAndAttributes() {
+        const QString text = "<style version=\"1\">\n  <contour kind=\"visual\" k=\"0.5\">\n  </contour>\n</style>\n";
+        const snaxels::StyleElement* contour = snaxels::style_element("contour");
+        QVERIFY(contour);
+        QCOMPARE(snaxels::ui::style_summary_at(text, int(text.indexOf("contour")) + 2),
+                 "contour: " + QString::fromStdString(contour->summary));
+        QCOMPARE(snaxels::ui::style_summary_at(text, int(text.indexOf("kind")) + 1), QString("kind: the contour function"));
+        QVERIFY(snaxels::ui::style_summary_at(text, int(text.indexOf("visual")) + 1).isEmpty()); // a value
+        QVERIFY(snaxels::ui::style_summary_at(text, int(text.indexOf("0.5"))).isEmpty());
+
+        StyleEditor editor;
+        editor.resize(420, 300);
+        editor.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&editor));
+        editor.setText("<style version=\"1\">\n  <canvas ", "test");
+        QPlainTextEdit* edit = editor.editor();
+        edit->setFocus();
+        edit->moveCursor(QTextCursor::End);
+        QTest::keyClick(edit, Qt::Key_Space, Qt::ControlModifier);
+        QTRY_VERIFY(editor.completer()->popup()->isVisible());
+        QStringList shown;
+        for (int row = 0; row < editor.completer()->completionModel()->rowCount(); ++row)
+            shown << editor.completer()->completionModel()->index(row, 0).data(Qt::DisplayRole).toString();
+        QVERIFY2(shown.contains("margin  —  space between the mesh's bounding circle and the image edge"), qPrintable(shown.join(" | ")));
+        QVERIFY2(shown.contains("background  —  the background fill"), qPrintable(shown.join(" | ")));
+        QTest::keyClick(editor.completer()->popup(), Qt::Key_Return); // takes the word alone
+        QCOMPARE(edit->toPlainText(), QString("<style version=\"1\">\n  <canvas width=\"\""));
+
+        // Hovering the element's name shows its summary as a tooltip.
+        const QRect at = edit->cursorRect(QTextCursor(edit->document()->findBlockByNumber(1)));
+        QTextCursor name(edit->document()->findBlockByNumber(1));
+        name.movePosition(QTextCursor::Right, QTextCursor::MoveAnchor, 4);
+        const QPoint hover = edit->cursorRect(name).center() + QPoint(2, 0);
+        QHelpEvent help(QEvent::ToolTip, hover, edit->viewport()->mapToGlobal(hover));
+        QApplication::sendEvent(edit->viewport(), &help);
+        QTRY_VERIFY(QToolTip::isVisible());
+        QCOMPARE(QToolTip::text(), "canvas: " + QString::fromStdString(snaxels::style_element("canvas")->summary));
+        (void)at;
     }
 };
 

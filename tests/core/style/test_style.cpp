@@ -1,6 +1,10 @@
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <filesystem>
+#include <fstream>
+#include <map>
+#include <sstream>
 
 #include "snaxels/export/bezier.h"
 #include "snaxels/export/drawing.h"
@@ -179,4 +183,44 @@ TEST(Bezier, HorseOutlineSmoothedWithinToleranceWithFewerCommands) {
     }
     std::printf("horse outline: %zu polyline points, %zu Bezier segments\n", points, commands);
     EXPECT_LE(3 * commands, points);
+}
+
+// The vocabulary's one-line summaries are the style reference's: each
+// element has its section in docs/styles.md, and each attribute's row there
+// begins its meaning with the summary the editor shows.
+TEST(StyleVocabulary, SummariesAreTheReferencesWords) {
+    std::ifstream in(std::filesystem::path(SNAXELS_SOURCE_DIR) / "docs" / "styles.md");
+    ASSERT_TRUE(in.good());
+    // section heading -> its table rows (attribute -> meaning)
+    std::map<std::string, std::map<std::string, std::string>> sections;
+    std::string line, section;
+    while (std::getline(in, line)) {
+        if (line.rfind("## ", 0) == 0) {
+            section = line;
+            sections[section];
+            continue;
+        }
+        if (section.empty() || line.rfind("| `", 0) != 0) continue;
+        std::vector<std::string> cells; // | name | type | default | meaning |
+        std::stringstream row(line.substr(1));
+        for (std::string cell; std::getline(row, cell, '|');) {
+            const auto first = cell.find_first_not_of(' '), last = cell.find_last_not_of(' ');
+            cells.push_back(first == std::string::npos ? "" : cell.substr(first, last - first + 1));
+        }
+        ASSERT_EQ(cells.size(), 4u) << line;
+        sections[section][cells[0].substr(1, cells[0].size() - 2)] = cells[3];
+    }
+    for (const StyleElement& e : style_vocabulary()) {
+        EXPECT_FALSE(e.summary.empty()) << e.name;
+        const auto it = std::find_if(sections.begin(), sections.end(),
+                                     [&](const auto& s) { return s.first.find("`<" + e.name + ">`") != std::string::npos; });
+        ASSERT_NE(it, sections.end()) << "no section for <" << e.name << "> in docs/styles.md";
+        for (const StyleAttribute& a : e.attributes) {
+            const auto row = it->second.find(a.name);
+            ASSERT_NE(row, it->second.end()) << "<" << e.name << "> " << a.name << " has no row in docs/styles.md";
+            EXPECT_EQ(row->second.rfind(a.summary, 0), 0u)
+                << "<" << e.name << "> " << a.name << ": the reference says \"" << row->second << "\", the vocabulary \""
+                << a.summary << "\"";
+        }
+    }
 }
