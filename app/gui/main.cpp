@@ -8,12 +8,23 @@
 #include <QTimer>
 
 #include <cstdio>
+#include <string>
 
 #include "snaxels/mesh/isolated_import.h"
 #include "snaxels/version.h"
 #include "ui/mainwindow.h"
 #include "ui/resources.h"
 #include "ui/styleeditor.h"
+
+namespace {
+
+void name_application() {
+    QCoreApplication::setApplicationName("snaxels");
+    QCoreApplication::setOrganizationName("snaxels");
+    QCoreApplication::setApplicationVersion(snaxels::version);
+}
+
+} // namespace
 
 int main(int argc, char** argv) {
     QSurfaceFormat format;
@@ -22,11 +33,6 @@ int main(int argc, char** argv) {
     format.setDepthBufferSize(24);
     format.setSamples(4);
     QSurfaceFormat::setDefaultFormat(format);
-
-    QApplication app(argc, argv);
-    QApplication::setApplicationName("snaxels");
-    QApplication::setOrganizationName("snaxels");
-    QApplication::setApplicationVersion(snaxels::version);
 
     QCommandLineParser parser;
     parser.setApplicationDescription("Snaxels: vector line art from 3-D meshes.");
@@ -41,6 +47,19 @@ int main(int argc, char** argv) {
     parser.addOption(style_option);
     parser.addOption(screenshot_option);
     parser.addOption(parabolic_option);
+    // --help and --version answer without a display (a GUI application
+    // cannot start without one): a plain application reads them and quits.
+    for (int i = 1; i < argc; ++i) {
+        const std::string arg = argv[i];
+        if (arg == "--help" || arg == "-h" || arg == "--help-all" || arg == "--version" || arg == "-v") {
+            QCoreApplication plain(argc, argv);
+            name_application();
+            parser.process(plain); // prints and exits
+        }
+    }
+
+    QApplication app(argc, argv);
+    name_application();
     parser.process(app);
 
     // Mesh files are read by the snaxels-import helper in a process of its
