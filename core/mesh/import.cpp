@@ -410,6 +410,35 @@ std::string plain_assimp_error(std::string why) {
     return "cannot be read as a mesh (" + why + ")";
 }
 
+/// A file's axis system as the FBX format records it (Assimp passes the
+/// file's GlobalSettings on as scene metadata: axis 0, 1, 2 for X, Y, Z and a
+/// sign of +1 or -1 for up, front and the third, "coord" axis): the rotation
+/// that makes its up +Y and its front +Z, the convention of glTF, OBJ and the
+/// engine. Identity for a file that records none (Assimp turns Collada's up
+/// axis to +Y itself) or is already +Y up.
+aiMatrix4x4 upright_axes(const aiScene* scene) {
+    const aiMetadata* meta = scene->mMetaData;
+    std::int32_t up = 1, up_sign = 1, front = 2, front_sign = 1, coord = 0, coord_sign = 1;
+    if (!meta || !meta->Get("UpAxis", up)) return {};
+    meta->Get("UpAxisSign", up_sign);
+    meta->Get("FrontAxis", front);
+    meta->Get("FrontAxisSign", front_sign);
+    meta->Get("CoordAxis", coord);
+    meta->Get("CoordAxisSign", coord_sign);
+    const std::array<std::int32_t, 3> axes{coord, up, front};
+    if (axes[0] == axes[1] || axes[1] == axes[2] || axes[0] == axes[2] ||
+        std::any_of(axes.begin(), axes.end(), [](std::int32_t a) { return a < 0 || a > 2; }))
+        return {}; // not an axis system: leave the file as it is
+    // Row k of the rotation picks the file's axis that becomes X, Y, Z.
+    aiMatrix4x4 m;
+    for (unsigned r = 0; r < 3; ++r)
+        for (unsigned c = 0; c < 3; ++c) m[r][c] = 0.0f;
+    m[0][unsigned(coord)] = coord_sign < 0 ? -1.0f : 1.0f;
+    m[1][unsigned(up)] = up_sign < 0 ? -1.0f : 1.0f;
+    m[2][unsigned(front)] = front_sign < 0 ? -1.0f : 1.0f;
+    return m;
+}
+
 } // namespace
 
 namespace detail {
@@ -424,6 +453,12 @@ const aiScene* read_assimp_scene(Assimp::Importer& importer, const std::string& 
     if (!scene) throw Error(path + ": " + plain_assimp_error(importer.GetErrorString()));
     if (scene->mNumMeshes == 0 || !scene->mRootNode)
         throw Error(path + ": contains no mesh with faces");
+    // Upright in the file's own axes: the root takes the turn, so the
+    // meshes, their instances and an animation's every pose all follow it.
+    // (The scene is the importer's, given out const; its root node is
+    // changed once, before anything reads it.)
+    if (const aiMatrix4x4 axes = upright_axes(scene); !axes.IsIdentity())
+        const_cast<aiNode*>(scene->mRootNode)->mTransformation = axes * scene->mRootNode->mTransformation;
     return scene;
 }
 

@@ -41,6 +41,17 @@ TEST(Import, AppliesEveryNodeTransform) {
     EXPECT_DOUBLE_EQ(m.report.bbox_max.y, 2.0);
 }
 
+// A file that records its axes (FBX's GlobalSettings: 3ds Max saves Z up,
+// front -Y) loads upright, +Y up and its front toward +Z, as a glTF, OBJ or
+// PLY does. The box stands three times as tall as it is wide on its own Z.
+TEST(Import, FbxAxesAreTurnedUpright) {
+    const auto m = import_mesh(asset("z-up-tall-box.fbx"));
+    const glm::dvec3 size = m.report.bbox_max - m.report.bbox_min;
+    EXPECT_NEAR(size.y, 3.0 * size.x, 1e-6 * size.y) << "the tall side is up";
+    EXPECT_NEAR(size.z, size.x, 1e-6 * size.x);
+    EXPECT_NEAR(m.report.bbox_min.y, 0.0, 1e-9) << "it stands on its base, not on its top";
+}
+
 TEST(Import, ClosedMeshesHaveOneComponent) {
     EXPECT_EQ(import_mesh(asset("spot.obj")).report.components, 1u);
     EXPECT_EQ(import_mesh(asset("horse.ply")).report.components, 1u);
