@@ -52,6 +52,18 @@ TEST(Import, FbxAxesAreTurnedUpright) {
     EXPECT_NEAR(m.report.bbox_min.y, 0.0, 1e-9) << "it stands on its base, not on its top";
 }
 
+// So does a Collada file whose up_axis is Z (Assimp turns it itself): the
+// same box, 1 x 1 x 3 on its own axes, stands 3 tall along +Y.
+TEST(Import, ColladaUpAxisIsTurnedUpright) {
+    const auto m = import_mesh(asset("z-up-tall-box.dae"));
+    const glm::dvec3 size = m.report.bbox_max - m.report.bbox_min;
+    EXPECT_NEAR(size.y, 3.0, 1e-9);
+    EXPECT_NEAR(size.x, 1.0, 1e-9);
+    EXPECT_NEAR(size.z, 1.0, 1e-9);
+    EXPECT_NEAR(m.report.bbox_min.y, 0.0, 1e-9);
+    EXPECT_EQ(m.report.flipped_components, 0u); // still facing outward after the turn
+}
+
 TEST(Import, ClosedMeshesHaveOneComponent) {
     EXPECT_EQ(import_mesh(asset("spot.obj")).report.components, 1u);
     EXPECT_EQ(import_mesh(asset("horse.ply")).report.components, 1u);
