@@ -26,6 +26,12 @@ namespace {
 /// The completion model's role holding the word itself.
 constexpr int kWordRole = Qt::UserRole + 1;
 
+/// A colour value in quotes, "#rrggbb" or "#rgb" (captured without its quotes).
+const QRegularExpression& colour_in_quotes() {
+    static const QRegularExpression colour("\"(#[0-9a-fA-F]{6}|#[0-9a-fA-F]{3})\"");
+    return colour;
+}
+
 class XmlHighlighter : public QSyntaxHighlighter {
   public:
     using QSyntaxHighlighter::QSyntaxHighlighter;
@@ -80,15 +86,20 @@ class CompletingEdit : public QPlainTextEdit {
         });
     }
 
-    /// The swatch of line @p block's first colour, in gutter coordinates
-    /// (empty where the line has none), and where the colour's value is.
-    std::pair<QRect, int> swatch(const QTextBlock& block) const {
-        static const QRegularExpression colour("\"(#[0-9a-fA-F]{6}|#[0-9a-fA-F]{3})\"");
-        const QRegularExpressionMatch m = colour.match(block.text());
-        if (!m.hasMatch()) return {QRect(), -1};
+    /// The swatch of line @p block's first colour, in gutter coordinates,
+    /// where the colour's value is in the text (-1 where the line has none)
+    /// and the colour.
+    struct Swatch {
+        QRect rect;
+        int at = -1;
+        QColor colour;
+    };
+    Swatch swatch(const QTextBlock& block) const {
+        const QRegularExpressionMatch m = colour_in_quotes().match(block.text());
+        if (!m.hasMatch()) return {};
         const QRectF line = blockBoundingGeometry(block).translated(contentOffset());
         const int side = std::min(fontMetrics().height() - 4, gutterWidth() - 4);
-        return {QRect(2, int(line.top()) + 2, side, side), block.position() + int(m.capturedStart(1))};
+        return {QRect(2, int(line.top()) + 2, side, side), block.position() + int(m.capturedStart(1)), QColor(m.captured(1))};
     }
 
   protected:
@@ -106,19 +117,20 @@ class CompletingEdit : public QPlainTextEdit {
             QPainter painter(this);
             painter.fillRect(event->rect(), palette().window());
             for (QTextBlock block = edit_->firstVisibleBlock(); block.isValid(); block = block.next()) {
-                const auto [rect, at] = edit_->swatch(block);
                 if (edit_->blockBoundingGeometry(block).translated(edit_->contentOffset()).top() > height()) break;
-                if (at < 0) continue;
-                painter.fillRect(rect, QColor(edit_->toPlainText().mid(at, 7).section('"', 0, 0)));
+                const Swatch s = edit_->swatch(block);
+                if (s.at < 0) continue;
+                const QRect& rect = s.rect;
+                painter.fillRect(rect, s.colour);
                 painter.setPen(palette().color(QPalette::Mid));
                 painter.drawRect(rect.adjusted(0, 0, -1, -1));
             }
         }
         void mousePressEvent(QMouseEvent* event) override {
             for (QTextBlock block = edit_->firstVisibleBlock(); block.isValid(); block = block.next()) {
-                const auto [rect, at] = edit_->swatch(block);
-                if (at >= 0 && rect.contains(event->position().toPoint())) {
-                    edit_->pick_colour_(at);
+                const Swatch s = edit_->swatch(block);
+                if (s.at >= 0 && s.rect.contains(event->position().toPoint())) {
+                    edit_->pick_colour_(s.at);
                     return;
                 }
             }
@@ -376,8 +388,7 @@ void StyleEditor::insertCompletion(const QString& word) {
 
 std::optional<std::pair<int, int>> colour_value_at(const QString& text, int position) {
     // A "#rrggbb" (or #rgb) value in quotes around the position.
-    static const QRegularExpression colour("\"(#[0-9a-fA-F]{6}|#[0-9a-fA-F]{3})\"");
-    for (auto it = colour.globalMatch(text); it.hasNext();) {
+    for (auto it = colour_in_quotes().globalMatch(text); it.hasNext();) {
         const QRegularExpressionMatch m = it.next();
         if (position >= m.capturedStart(0) && position <= m.capturedEnd(0))
             return std::pair<int, int>(int(m.capturedStart(1)), int(m.capturedLength(1)));

@@ -1,7 +1,6 @@
 #include "ui/timeline.h"
 
 #include <algorithm>
-
 #include <cmath>
 
 #include <QCheckBox>
@@ -299,7 +298,7 @@ void Timeline::togglePlay() {
     } else {
         clock_.start();
         anchorClock();
-        lastStepNs_ = 0;
+        lastStepNs_ = rateAt_ = 0;
         lastShown_ = frame(); // on screen when play starts
         timer_.start();
     }
@@ -326,6 +325,7 @@ void Timeline::frameShown(int frame) {
 
 void Timeline::updateRate() {
     const qint64 now = clock_.nsecsElapsed();
+    rateAt_ = now;
     while (!shownAt_.empty() && shownAt_.front() < now - 1'000'000'000) shownAt_.pop_front();
     // Over the last second (or the time played, at the start).
     const double window = std::clamp(double(now) * 1e-9, 0.25, 1.0);
@@ -354,7 +354,8 @@ void Timeline::advance() {
     const qint64 now = clock_.nsecsElapsed();
     const double fps = fps_->value();
     const int n = frames_->value();
-    if (shownAt_.empty() || now - shownAt_.back() > 250'000'000) updateRate(); // nothing shown for a while: say so
+    // Nothing shown for a while: say so, four times a second (not every tick).
+    if ((shownAt_.empty() || now - shownAt_.back() > 250'000'000) && now - rateAt_ > 250'000'000) updateRate();
     if (everyFrame_->isChecked()) {
         // The next frame once this one is shown, and no sooner than the rate allows.
         if (lastShown_ != frame() || now - lastStepNs_ < qint64(1e9 / fps)) return;

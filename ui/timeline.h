@@ -103,6 +103,7 @@ class Timeline : public QWidget {
     qint64 lastStepNs_ = 0;        ///< every-frame play: when it last stepped
     int lastShown_ = -1;            ///< the frame shown last
     std::deque<qint64> shownAt_;    ///< when frames were shown (ns on clock_), the last second
+    qint64 rateAt_ = 0;             ///< when the rate was last worked out
     double shownRate_ = 0.0;
     QString status_;
     int quiet_ = 0; ///< set while showing a spec: no specEdited

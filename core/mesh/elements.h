@@ -142,7 +142,6 @@ template <class Tag, class T> class ElementData {
     ElementRange<Tag> ids() const { return ElementRange<Tag>(values_.size()); }
 
     operator ElementSpan<Tag, const T>() const { return ElementSpan<Tag, const T>(values_); } // NOLINT
-    ElementSpan<Tag, const T> view() const { return ElementSpan<Tag, const T>(values_); }
 
     friend bool operator==(const ElementData&, const ElementData&) = default;
 
