@@ -6,12 +6,17 @@
 
 #include <algorithm>
 #include <chrono>
+#include <optional>
+#include <string>
 
 #include <glm/gtx/rotate_vector.hpp>
 
 #include "snaxels/animation/pipeline.h"
 #include "snaxels/mesh/import.h"
 #include "snaxels/mesh/procedural.h"
+#include "snaxels/mesh/refine.h"
+#include "snaxels/mesh/sharp_edges.h"
+#include "snaxels/snaxel/tracker.h"
 #include "snaxels/util/detail/parallel.h"
 #include "bench/brute_force_contour.h"
 
@@ -31,6 +36,20 @@ Camera horse_camera(int frame) {
     return c;
 }
 
+/// The time of each of @p frames tracked frames, in ms, the camera of
+/// frame f being @p camera(f).
+template <class CameraAt> std::vector<double> tracked_frame_ms(ContourTracker& tracker, int frames, CameraAt&& camera) {
+    std::vector<double> ms;
+    for (int f = 0; f < frames; ++f) {
+        const Camera cam = camera(f);
+        const auto t0 = std::chrono::steady_clock::now();
+        const TrackedFrame& tf = tracker.step(cam, default_light(cam));
+        benchmark::DoNotOptimize(tf.contour.fronts.snaxels.data());
+        ms.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count());
+    }
+    return ms;
+}
+
 double median(std::vector<double> v) {
     std::sort(v.begin(), v.end());
     return v.empty() ? 0.0 : v[v.size() / 2];
@@ -46,14 +65,7 @@ static void BM_TrackHorseTurntable360(benchmark::State& state) {
     std::vector<double> ms;
     for (auto _ : state) {
         ContourTracker tracker(topo, ContourSpec{}, options);
-        ms.clear();
-        for (int f = 0; f < 360; ++f) {
-            const Camera cam = horse_camera(f);
-            const auto t0 = std::chrono::steady_clock::now();
-            const TrackedFrame& tf = tracker.step(cam, default_light(cam));
-            benchmark::DoNotOptimize(tf.contour.fronts.snaxels.data());
-            ms.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count());
-        }
+        ms = tracked_frame_ms(tracker, 360, horse_camera);
     }
     ms.erase(ms.begin()); // frame 0 starts from scratch
     state.counters["median_frame_ms"] = median(ms);
@@ -195,3 +207,36 @@ static void BM_TrackBumpy1MTurntable(benchmark::State& state) {
     state.counters["median_frame_ms"] = median_ms;
 }
 BENCHMARK(BM_TrackBumpy1MTurntable)->Unit(benchmark::kMillisecond)->Iterations(1);
+
+// Hard surfaces (#35): a 120-frame turntable (3 degrees a frame) of a mesh
+// split along its sharp edges against the same mesh shaded smooth, on the
+// topology the product uses (refined as it refines them). The counters are
+// the median frame and that frame's cost per face of the mesh as loaded.
+static void BM_TrackTurntableHardAndSmooth(benchmark::State& state) {
+    static const char* const files[] = {"fandisk.obj", "hard/CesiumMilkTruck.gltf"};
+    const LoadedMesh loaded = load_mesh(std::string(SNAXELS_TEST_ASSETS) + "/" + files[state.range(0)]);
+    SurfaceOptions surface;
+    surface.sharp_angle = state.range(1) ? (state.range(0) == 0 ? 40.0 : kFileNormals) : 180.0;
+    std::optional<LoadedMesh> split;
+    const MeshTopology topo = engine_topology(with_sharp_edges(loaded, surface, split).mesh);
+    EngineOptions options;
+    options.check_invariants = false;
+    std::vector<double> ms;
+    for (auto _ : state) {
+        ContourTracker tracker(topo, ContourSpec{}, options);
+        ms = tracked_frame_ms(tracker, 120, [](int f) {
+            Camera cam;
+            cam.view_dir = glm::rotate(glm::normalize(glm::dvec3(0.3, -0.35, 1.0)), glm::radians(3.0 * f), glm::dvec3(0, 1, 0));
+            return cam;
+        });
+    }
+    ms.erase(ms.begin());
+    state.counters["median_frame_ms"] = median(ms);
+    state.counters["faces"] = double(loaded.report.faces);
+    state.counters["engine_faces"] = double(topo.n_faces());
+    state.counters["ns_per_face"] = 1e6 * median(ms) / double(loaded.report.faces);
+    state.SetLabel(std::string(files[state.range(0)]) + (state.range(1) ? " hard" : " smooth"));
+}
+BENCHMARK(BM_TrackTurntableHardAndSmooth)
+    ->Args({0, 0})->Args({0, 1})->Args({1, 0})->Args({1, 1})
+    ->Unit(benchmark::kMillisecond)->Iterations(3);

@@ -61,13 +61,27 @@ RegionShading region_shading(const Style& style, const Light& light, bool enable
     return r;
 }
 
-std::shared_ptr<ContourScene> make_contour_scene(const LoadedMesh& mesh, const std::string& path) {
+namespace {
+
+// The scene's surface split as @p surface says, in its loaded pose.
+void build_surface(const LoadedMesh& mesh, ContourScene& scene, const SurfaceOptions& surface) {
+    scene.surface = surface;
+    scene.split = split_sharp_edges(mesh, surface);
+    scene.rest = engine_topology(scene.split ? scene.split->mesh : mesh.mesh);
+    scene.topology = scene.rest;
+    scene.rays = std::make_unique<RayScene>(scene.topology);
+    scene.driver.reset();
+    scene.posed = false;
+    scene.tracking = std::make_unique<StillTracking>();
+}
+
+} // namespace
+
+std::shared_ptr<ContourScene> make_contour_scene(const LoadedMesh& mesh, const std::string& path,
+                                                 const SurfaceOptions& surface) {
     auto scene = std::make_shared<ContourScene>();
-    scene->rest = engine_topology(mesh.mesh);
-    scene->topology = scene->rest;
-    scene->rays = std::make_unique<RayScene>(scene->topology);
+    build_surface(mesh, *scene, surface);
     scene->mesh_path = path;
-    scene->tracking = std::make_unique<StillTracking>();
     // Only formats that carry animation are read a second time for clips.
     const QString suffix = QString::fromStdString(path).section('.', -1).toLower();
     static const QStringList animated{"gltf", "glb", "fbx", "dae", "x", "blend", "md5mesh", "ms3d", "b3d", "smd", "bvh"};
@@ -116,19 +130,28 @@ OverlayResult compute_overlay(const LoadedMesh& mesh, ContourScene& scene, const
     OverlayResult out;
     out.camera = camera;
     try {
-        if (pose_scene(mesh, scene, pose))
-            out.geometry = std::make_shared<MeshGeometry>(mesh_geometry(scene.topology, display_face_budget()));
+        // A style that moves the sharp edges gives the surface new vertices:
+        // its scene is built again, and drawn anew.
+        bool changed = false;
+        if (!(style.surface == scene.surface)) {
+            build_surface(mesh, scene, style.surface);
+            changed = true;
+        }
+        changed = pose_scene(scene.split ? *scene.split : mesh, scene, pose) || changed;
+        if (changed) out.geometry = std::make_shared<MeshGeometry>(mesh_geometry(scene.topology, display_face_budget()));
     } catch (const std::exception& e) {
         out.error = QString::fromStdString(e.what());
         return out;
     }
+    // Curves found before the surface was split anew lie on other edges.
+    if (parabolic && parabolic->mesh_edges != scene.topology.n_edges()) parabolic.reset();
     keep_parabolic(scene.topology, ParabolicOptions{}, parabolic);
     StillJob job = make_still_job(style, camera, light);
     auto is_parabolic = [](const ContourSpec& k) { return k.kind == ContourKind::Parabolic; };
     if (!parabolic) job.scene.kinds.erase(std::remove_if(job.scene.kinds.begin(), job.scene.kinds.end(), is_parabolic), job.scene.kinds.end());
     StillOutput still;
     try {
-        still = render_still(mesh, scene.topology, scene.rays.get(), job, scene.tracking.get());
+        still = render_still(scene.split ? *scene.split : mesh, scene.topology, scene.rays.get(), job, scene.tracking.get());
     } catch (const Error& e) { // a view the drawing cannot show (the eye inside the mesh): said in the status bar
         out.error = QString::fromStdString(e.what());
         return out;

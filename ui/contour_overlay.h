@@ -23,6 +23,8 @@ namespace snaxels::ui {
 /// For the mesh's own clips the scene moves to another pose of the same
 /// connectivity frame by frame; one computation at a time may use it.
 struct ContourScene {
+    SurfaceOptions surface;          ///< where the drawn surface is sharp (the style's <surface>)
+    std::optional<LoadedMesh> split; ///< the mesh split along its sharp edges, when it has any
     MeshTopology rest;              ///< the mesh as loaded (its topology for the engine)
     MeshTopology topology;          ///< the pose computed last: rest, or a clip frame
     std::unique_ptr<RayScene> rays; ///< the BVH of topology's pose
@@ -38,8 +40,9 @@ struct ContourScene {
 };
 
 /// Builds the scene of @p mesh read from @p path (topology, ray-tracing
-/// BVH, the file's clips).
-std::shared_ptr<ContourScene> make_contour_scene(const LoadedMesh& mesh, const std::string& path);
+/// BVH, the file's clips), its sharp edges found as @p surface says.
+std::shared_ptr<ContourScene> make_contour_scene(const LoadedMesh& mesh, const std::string& path,
+                                                 const SurfaceOptions& surface = {});
 
 /// A clip frame to pose the mesh in before computing contours.
 struct ClipPose {

@@ -159,6 +159,8 @@ class MainWindow : public QMainWindow {
     void createExportMenu();
     void createViewMenu();
     void createStyleMenu();
+    /// Style > Sharp Edges: the style's <surface sharp-angle>, asked for.
+    void askSharpEdges();
     void createHelpMenu();
     /// Shows the bundled document @p name (Markdown) in a window of its own.
     void showDocument(const QString& name, const QString& title);

@@ -6,6 +6,8 @@
 #include <QDockWidget>
 #include <QFile>
 #include <QFileDialog>
+#include <QRegularExpression>
+#include <QInputDialog>
 #include <QFileInfo>
 #include <QMenuBar>
 #include <QMessageBox>
@@ -216,6 +218,8 @@ void MainWindow::createStyleMenu() {
             styleEditor_->setText(QString::fromUtf8(in.readAll()), path);
         });
     presets->setEnabled(!presets->isEmpty());
+    menu->addAction(tr("S&harp Edges…"), this, &MainWindow::askSharpEdges)
+        ->setToolTip(tr("Where the surface's edges are hard: from the file's normals, or by the angle its faces meet at"));
     menu->addAction(tr("&Load Style…"), this, [this] {
         const QString path = QFileDialog::getOpenFileName(this, tr("Load Style"), QSettings().value(kStyleFolder).toString(),
                                                           tr("Styles (*.xml)"));
@@ -238,6 +242,36 @@ void MainWindow::createStyleMenu() {
             QMessageBox::warning(this, tr("Save Style"), QString::fromStdString(e.what()));
         }
     });
+}
+
+void MainWindow::askSharpEdges() {
+    const QString file = tr("From the file's normals (default)"), smooth = tr("None: smooth everywhere");
+    const QStringList choices{file, tr("20°"), tr("30° (Blender's Auto Smooth)"), tr("45°"), tr("60°"), smooth};
+    const Style& style = document_->style();
+    const double now = style.surface.sharp_angle;
+    const int current = now < 0.0 ? 0 : now >= 180.0 ? int(choices.size()) - 1 : -1;
+    bool ok = false;
+    QString chosen = QInputDialog::getItem(
+        this, tr("Sharp Edges"),
+        tr("Edges shaded hard, with contours running along them.\nChoose, or type an angle in degrees (0 to 180):"),
+        current >= 0 ? choices : QStringList(choices) << QString::number(now), current >= 0 ? current : int(choices.size()),
+        true, &ok);
+    if (!ok) return;
+    chosen = chosen.trimmed();
+    QString value;
+    if (chosen == file) value = "file";
+    else if (chosen == smooth) value = "180";
+    else {
+        static const QRegularExpression degrees(QStringLiteral("^\\s*([0-9]+(\\.[0-9]*)?)\\s*°?"));
+        const QRegularExpressionMatch m = degrees.match(chosen);
+        const double angle = m.hasMatch() ? m.captured(1).toDouble() : -1.0;
+        if (!(angle >= 0.0 && angle <= 180.0)) {
+            QMessageBox::warning(this, tr("Sharp Edges"), tr("'%1' is not an angle from 0 to 180 degrees.").arg(chosen));
+            return;
+        }
+        value = QString::number(angle);
+    }
+    styleEditor_->setSharpAngle(value);
 }
 
 QString MainWindow::suggestedPath(const char* folder_key, const QString& extension) const {

@@ -413,6 +413,36 @@ bool StyleEditor::pickColour(int position) {
     return true;
 }
 
+std::optional<std::pair<std::pair<int, int>, QString>> sharp_angle_edit(const QString& text, const QString& value) {
+    const QString attribute = QStringLiteral("sharp-angle=\"%1\"").arg(value);
+    static const QRegularExpression surface(QStringLiteral("<surface\\b[^>]*>"));
+    if (const QRegularExpressionMatch m = surface.match(text); m.hasMatch()) {
+        static const QRegularExpression existing(QStringLiteral("sharp-angle\\s*=\\s*(\"[^\"]*\"|'[^']*')"));
+        const QString element = m.captured();
+        if (const QRegularExpressionMatch a = existing.match(element); a.hasMatch())
+            return std::pair{std::pair{int(m.capturedStart() + a.capturedStart()), int(a.capturedLength())}, attribute};
+        const int name_end = int(m.capturedStart() + QStringLiteral("<surface").size());
+        return std::pair{std::pair{name_end, 0}, " " + attribute};
+    }
+    static const QRegularExpression root(QStringLiteral("<style\\b[^>]*>"));
+    const QRegularExpressionMatch r = root.match(text);
+    if (!r.hasMatch() || r.captured().endsWith("/>")) return std::nullopt;
+    return std::pair{std::pair{int(r.capturedEnd()), 0}, "\n  <surface " + attribute + "/>"};
+}
+
+void StyleEditor::setSharpAngle(const QString& value) {
+    const auto edit = sharp_angle_edit(text(), value);
+    if (!edit) return;
+    QTextCursor cursor(edit_->document());
+    cursor.beginEditBlock(); // one undo step
+    cursor.setPosition(edit->first.first);
+    cursor.setPosition(edit->first.first + edit->first.second, QTextCursor::KeepAnchor);
+    cursor.insertText(edit->second);
+    cursor.endEditBlock();
+    debounce_.stop();
+    apply(); // at once: one edit of the document
+}
+
 void StyleEditor::setText(const QString& text, const QString& source) {
     source_ = source;
     edit_->setPlainText(text);

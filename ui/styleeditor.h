@@ -56,6 +56,10 @@ class StyleEditor : public QWidget {
     /// asks for a colour in a dialog and writes it there (one edit, applied
     /// at once); false when it is in no colour value.
     bool pickColour(int position);
+    /// Writes @p value (degrees, or "file") as the <surface> element's
+    /// sharp-angle, adding the element after the root's opening tag when
+    /// the style has none (one edit, applied at once).
+    void setSharpAngle(const QString& value);
 
   signals:
     /// The text was taken up (typing paused, or set): parsed or not. The
@@ -81,6 +85,12 @@ class StyleEditor : public QWidget {
 /// The colour value ("#rrggbb" or "#rgb", in quotes) around @p position
 /// of @p text: where its "#" is and its length, or nothing.
 std::optional<std::pair<int, int>> colour_value_at(const QString& text, int position);
+
+/// @p text with its <surface> element's sharp-angle set to @p value (the
+/// element added after the root's opening tag when there is none), as the
+/// range of the text to replace and what to put there; nothing when @p
+/// text has no root element.
+std::optional<std::pair<std::pair<int, int>, QString>> sharp_angle_edit(const QString& text, const QString& value);
 
 /// The style text the application starts with: the visual contour in ink
 /// with dashed hidden lines, and the shadow line.

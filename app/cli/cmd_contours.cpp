@@ -66,9 +66,11 @@ int run_contours(const std::vector<std::string>& argv) {
     const Camera& camera = job.scene.camera;
     const Light& light = job.scene.light;
 
-    MeshTopology topology = engine_topology(loaded.mesh, job.scene.refine);
+    std::optional<LoadedMesh> split;
+    const LoadedMesh& surface = with_sharp_edges(loaded, job.scene.style.surface, split);
+    MeshTopology topology = engine_topology(surface.mesh, job.scene.refine);
     find_parabolic_with_progress(topology, job.scene.kinds);
-    const StillOutput still = render_still(loaded, topology, nullptr, job);
+    const StillOutput still = render_still(surface, topology, nullptr, job);
     const std::vector<ContourResult>& results = still.results;
     const std::vector<ContourVisibility>& visibility = still.visibility;
 

@@ -74,18 +74,8 @@ int run_parabolic(const std::vector<std::string>& argv) {
     }
     ParabolicOptions options;
     if (const auto v = args.value("samples")) options.samples = parse_int("samples", *v, 24, 1000000);
-    if (const auto v = args.value("smoothing")) {
-        std::size_t used = 0;
-        double s = -1.0;
-        try {
-            s = std::stod(*v, &used);
-        } catch (const std::exception&) {
-            used = 0;
-        }
-        if (used == 0 || used != v->size() || !(s >= 0.0 && s <= 1.0))
-            throw UsageError("--smoothing takes a number from 0 to 1, not '" + *v + "'");
-        options.smoothing = s;
-    }
+    if (const auto v = args.value("smoothing"))
+        options.smoothing = parse_closed_number("smoothing", *v, 0.0, 1.0, "a number from 0 to 1");
     const std::string mesh = args.positional()[0];
     const LoadedMesh loaded = load_mesh(mesh);
     const MeshTopology topology = engine_topology(loaded.mesh);

@@ -67,15 +67,17 @@ int run_render(const std::vector<std::string>& argv) {
         return 0;
     }
     const int frame = args.value("frame") ? parse_int("frame", *args.value("frame"), 0, 100000) : project.frame;
-    MeshTopology topology = engine_topology(loaded.mesh, job.scene.refine);
+    std::optional<LoadedMesh> split;
+    const LoadedMesh& surface = with_sharp_edges(loaded, job.scene.style.surface, split);
+    MeshTopology topology = engine_topology(surface.mesh, job.scene.refine);
     find_parabolic_with_progress(topology, job.scene.kinds); // on the pose as loaded, as the animation does
     const glm::dvec3 centre = loaded.report.centre();
-    FrameDriver driver(job.animation, loaded, topology, job.scene.camera, job.scene.light, centre, mesh_path);
+    FrameDriver driver(job.animation, surface, topology, job.scene.camera, job.scene.light, centre, mesh_path);
     const FramePose pose = driver.pose(frame);
     StillJob still{job.scene}; // the animation's scene at this frame's camera and light
     still.scene.camera = pose.camera;
     still.scene.light = pose.light;
-    const StillOutput out = render_still(loaded, pose.mesh, nullptr, still);
+    const StillOutput out = render_still(surface, pose.mesh, nullptr, still);
     write_file_atomically(*output, out.svg);
     std::printf("%s: frame %d, %zu bytes\n", output->c_str(), frame, out.svg.size());
     return 0;

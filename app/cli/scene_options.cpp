@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <iostream>
+#include <limits>
 #include <sstream>
 
 #include "snaxels/error.h"
@@ -25,7 +26,10 @@ glm::dvec3 parse_vec3(const std::string& option, const std::string& text, bool d
     return v;
 }
 
-double parse_number(const std::string& option, const std::string& text, double lo, double hi) {
+namespace {
+
+// The whole of @p text as a number, or NaN.
+double whole_number(const std::string& text) {
     std::size_t used = 0;
     double v = 0.0;
     try {
@@ -33,7 +37,21 @@ double parse_number(const std::string& option, const std::string& text, double l
     } catch (const std::exception&) {
         used = 0;
     }
-    if (used == 0 || used != text.size() || !(v > lo && v < hi)) {
+    return used == 0 || used != text.size() ? std::numeric_limits<double>::quiet_NaN() : v;
+}
+
+} // namespace
+
+double parse_closed_number(const std::string& option, const std::string& text, double lo, double hi,
+                           const std::string& takes) {
+    const double v = whole_number(text);
+    if (!(v >= lo && v <= hi)) throw UsageError("--" + option + " takes " + takes + ", not '" + text + "'");
+    return v;
+}
+
+double parse_number(const std::string& option, const std::string& text, double lo, double hi) {
+    const double v = whole_number(text);
+    if (!(v > lo && v < hi)) {
         std::ostringstream msg;
         msg << "--" << option << " takes a number between " << lo << " and " << hi << ", not '" << text << "'";
         throw UsageError(msg.str());
@@ -74,6 +92,9 @@ std::vector<OptionSpec> scene_option_specs() {
              "split each face into 4^N on its own plane, new vertices taking the interpolated normal, so contours "
              "and regions follow the smooth shading of a coarse mesh (default auto: meshes under 20000 faces are "
              "refined to at least that)"},
+            {"sharp-angle", "DEG|file",
+             "edges whose faces meet at more than DEG degrees are drawn sharp (hard-edged shading; 180: none); "
+             "file (default): where the file's own normals part, else none"},
             {"check", "", "check the snaxel invariants after every iteration (slower)"}};
 }
 
@@ -141,6 +162,9 @@ SceneOptions parse_scene_options(const Args& args) {
         else if (r->size() == 1 && (*r)[0] >= '0' && (*r)[0] <= char('0' + kMaxRefineLevels)) o.overrides.refine = (*r)[0] - '0';
         else throw UsageError("--refine takes auto or a level from 0 to " + std::to_string(kMaxRefineLevels) + ", not '" + *r + "'");
     }
+    if (const auto a = args.value("sharp-angle"))
+        o.style.surface.sharp_angle =
+            *a == "file" ? kFileNormals : parse_closed_number("sharp-angle", *a, 0.0, 180.0, "degrees from 0 to 180, or file");
     o.overrides.visibility = !args.flag("no-visibility");
     if (args.flag("check")) o.overrides.check_invariants = true;
     return o;

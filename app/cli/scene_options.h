@@ -38,6 +38,10 @@ SceneSettings complete_scene(const SceneOptions& options, const MeshReport& repo
 
 glm::dvec3 parse_vec3(const std::string& option, const std::string& text, bool direction);
 double parse_number(const std::string& option, const std::string& text, double lo, double hi);
+/// A number from @p lo to @p hi, both included; else UsageError "--OPTION
+/// takes TAKES, not 'TEXT'".
+double parse_closed_number(const std::string& option, const std::string& text, double lo, double hi,
+                           const std::string& takes);
 int parse_int(const std::string& option, const std::string& text, int lo, int hi);
 
 } // namespace snaxels::cli

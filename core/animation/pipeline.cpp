@@ -174,8 +174,10 @@ void finish_output(AnimationWriter& writer, AtomicFile* file, AnimationOutput& o
 
 } // namespace
 
-AnimationOutput run_animation(const LoadedMesh& mesh, const std::string& mesh_path, const AnimationJob& job) {
+AnimationOutput run_animation(const LoadedMesh& loaded, const std::string& mesh_path, const AnimationJob& job) {
     AnimationOutput out;
+    std::optional<LoadedMesh> split;
+    const LoadedMesh& mesh = with_sharp_edges(loaded, job.scene.style.surface, split);
     MeshTopology rest = engine_topology(mesh.mesh, job.scene.refine); // the mesh as loaded
     attach_parabolic(rest, job);
     const glm::dvec3 mesh_centre = mesh.report.centre();

@@ -118,8 +118,9 @@ class RepairingFaceAdder {
     RepairingFaceAdder(Mesh& mesh, OpenMesh::VPropHandleT<std::uint32_t> source)
         : mesh_(mesh), source_(source) {}
 
-    void add(const std::array<Mesh::VertexHandle, 3>& vh) {
-        if (mesh_.add_face(vh[0], vh[1], vh[2]).is_valid()) return;
+    /// The face added (invalid when no repair could add it).
+    Mesh::FaceHandle add(const std::array<Mesh::VertexHandle, 3>& vh) {
+        if (const auto fh = mesh_.add_face(vh[0], vh[1], vh[2]); fh.is_valid()) return fh;
         // Replace subsets of corners, smallest first: by the copy an earlier
         // repair made of the same vertex (so a second fan around a vertex
         // becomes one new vertex, not one per face), else by a fresh copy.
@@ -133,21 +134,23 @@ class RepairingFaceAdder {
                     if (it == latest_copy_.end()) all_copied = false;
                     else trial[i] = it->second;
                 }
-            if (all_copied && mesh_.add_face(trial[0], trial[1], trial[2]).is_valid()) return;
+            if (!all_copied) continue;
+            if (const auto fh = mesh_.add_face(trial[0], trial[1], trial[2]); fh.is_valid()) return fh;
         }
         for (const int subset : kSubsets) {
             auto trial = vh;
             std::size_t used = 0;
             for (int i = 0; i < 3; ++i)
                 if (subset & (1 << i)) trial[i] = spare(used++, vh[i]);
-            if (mesh_.add_face(trial[0], trial[1], trial[2]).is_valid()) {
+            if (const auto fh = mesh_.add_face(trial[0], trial[1], trial[2]); fh.is_valid()) {
                 for (int i = 0; i < 3; ++i)
                     if (subset & (1 << i)) latest_copy_[vh[i].idx()] = trial[i];
                 spares_.erase(spares_.begin(), spares_.begin() + static_cast<long>(used));
                 copies_ += used;
-                return;
+                return fh;
             }
         }
+        return Mesh::FaceHandle();
     }
 
     /// Removes unused spare vertices; call once after the last face.
@@ -224,7 +227,8 @@ std::vector<std::uint32_t> weld(const TriangleSoup& soup, std::vector<glm::dvec3
 // 2. The faces with three distinct corners and a non-zero area, over the
 // welded vertices.
 std::vector<std::array<std::uint32_t, 3>> kept_faces(const TriangleSoup& soup, const std::vector<std::uint32_t>& welded,
-                                                     const std::vector<glm::dvec3>& unique, MeshReport& report) {
+                                                     const std::vector<glm::dvec3>& unique, MeshReport& report,
+                                                     std::vector<std::uint32_t>& face_source) {
     std::vector<std::array<std::uint32_t, 3>> faces;
     faces.reserve(soup.triangles.size());
     for (std::size_t f = 0; f < soup.triangles.size(); ++f) {
@@ -241,6 +245,7 @@ std::vector<std::array<std::uint32_t, 3>> kept_faces(const TriangleSoup& soup, c
             continue;
         }
         faces.push_back(t);
+        face_source.push_back(std::uint32_t(f));
     }
     if (faces.empty())
         throw Error(soup.triangles.empty() ? "the mesh has no faces" : "the mesh has no faces with a non-zero area");
@@ -270,19 +275,22 @@ void count_edges(const std::vector<std::array<std::uint32_t, 3>>& faces, MeshRep
 // 5b. Fans that add_face accepted around one vertex (bow ties, also left by
 // the repairs of step 5): the mesh is built again with a copy of the vertex
 // for each fan but the first. Rare, so only then. Returns the copies made.
-std::size_t split_complex_vertices(Mesh& mesh, OpenMesh::VPropHandleT<std::uint32_t> soup_vertex) {
+std::size_t split_complex_vertices(Mesh& mesh, OpenMesh::VPropHandleT<std::uint32_t> soup_vertex,
+                                   OpenMesh::FPropHandleT<std::uint32_t> soup_face) {
     auto complex_vertex = [&] {
         return std::any_of(mesh.vertices_begin(), mesh.vertices_end(), [&](auto vh) { return !mesh.is_manifold(vh); });
     };
     std::size_t copies = 0;
     for (int round = 0; round < 4 && complex_vertex(); ++round) { // a rebuild's own repairs may leave one more
         std::vector<std::array<std::uint32_t, 3>> built;
+        std::vector<std::uint32_t> built_source;
         built.reserve(mesh.n_faces());
         for (const auto fh : mesh.faces()) {
             std::array<std::uint32_t, 3> t{};
             int k = 0;
             for (const auto vh : mesh.fv_range(fh)) t[k++] = std::uint32_t(vh.idx());
             built.push_back(t);
+            built_source.push_back(mesh.property(soup_face, fh));
         }
         std::vector<glm::dvec3> points;
         std::vector<std::uint32_t> sources;
@@ -299,7 +307,11 @@ std::size_t split_complex_vertices(Mesh& mesh, OpenMesh::VPropHandleT<std::uint3
             mesh.property(soup_vertex, again.back()) = sources[v];
         }
         RepairingFaceAdder readder(mesh, soup_vertex);
-        for (const auto& t : built) readder.add({again[t[0]], again[t[1]], again[t[2]]});
+        for (std::size_t f = 0; f < built.size(); ++f) {
+            const auto& t = built[f];
+            if (const auto fh = readder.add({again[t[0]], again[t[1]], again[t[2]]}); fh.is_valid())
+                mesh.property(soup_face, fh) = built_source[f];
+        }
         copies += fan_copies + readder.finish();
     }
     return copies;
@@ -308,7 +320,7 @@ std::size_t split_complex_vertices(Mesh& mesh, OpenMesh::VPropHandleT<std::uint3
 // 6. Components; closed ones that enclose negative volume face inward (some
 // scanners write them so) and are turned outward, because shading contours
 // (N.L) depend on which side is out.
-void orient_components(Mesh& mesh, MeshReport& report) {
+void orient_components(Mesh& mesh, MeshReport& report, std::vector<std::uint32_t>& face_source) {
     UnionFind components(mesh.n_vertices());
     for (const auto eh : mesh.edges())
         components.unite(static_cast<std::uint32_t>(mesh.from_vertex_handle(mesh.halfedge_handle(eh, 0)).idx()),
@@ -339,14 +351,36 @@ void orient_components(Mesh& mesh, MeshReport& report) {
     Mesh turned;
     turned.reserve(mesh.n_vertices(), mesh.n_edges(), mesh.n_faces());
     for (const auto vh : mesh.vertices()) turned.add_vertex(mesh.point(vh));
+    std::vector<std::uint32_t> turned_source;
+    turned_source.reserve(face_source.size());
     for (const auto fh : mesh.faces()) {
         std::array<Mesh::VertexHandle, 3> c;
         int k = 0;
         for (const auto vh : mesh.fv_range(fh)) c[k++] = vh;
         if (flip[components.find(c[0].idx())]) std::swap(c[1], c[2]);
-        turned.add_face(c[0], c[1], c[2]);
+        if (turned.add_face(c[0], c[1], c[2]).is_valid()) turned_source.push_back(face_source[slot(fh)]);
     }
     mesh = std::move(turned);
+    face_source = std::move(turned_source);
+}
+
+// 7. The file's normal at each corner of each face: the corner of the
+// face's soup triangle at the same (welded, exact) position.
+std::vector<std::array<glm::dvec3, 3>> corner_normals(const Mesh& mesh, const TriangleSoup& soup,
+                                                      const std::vector<std::uint32_t>& face_source) {
+    std::vector<std::array<glm::dvec3, 3>> out(mesh.n_faces());
+    for (const auto fh : mesh.faces()) {
+        const auto& tri = soup.triangles[face_source[slot(fh)]];
+        auto corner = out[slot(fh)].begin();
+        for (const auto vh : mesh.fv_range(fh)) {
+            const glm::dvec3 p = to_glm(mesh.point(vh));
+            glm::dvec3 n(0.0); // none found: matches any (a repair's copy keeps its position, so it is found)
+            for (const std::uint32_t i : tri)
+                if (soup.positions[i] == p) n = soup.normals[i];
+            *corner++ = n;
+        }
+    }
+    return out;
 }
 
 } // namespace
@@ -365,7 +399,8 @@ LoadedMesh build_mesh(const TriangleSoup& soup, const std::string& source) {
     report.source = source;
     std::vector<glm::dvec3> unique;
     const std::vector<std::uint32_t> welded = weld(soup, unique);
-    const auto faces = kept_faces(soup, welded, unique, report);
+    std::vector<std::uint32_t> kept_source; // per kept face, its soup triangle
+    const auto faces = kept_faces(soup, welded, unique, report, kept_source);
     count_edges(faces, report);
 
     // 4. Vertices referenced by a kept face, in first-use order of the input.
@@ -388,19 +423,29 @@ LoadedMesh build_mesh(const TriangleSoup& soup, const std::string& source) {
 
     // 5. Faces, repairing non-manifold configurations by splitting vertices.
     omerr().disable(); // failed add_face attempts are expected and handled
+    OpenMesh::FPropHandleT<std::uint32_t> soup_face;
+    mesh.add_property(soup_face);
     RepairingFaceAdder adder(mesh, soup_vertex);
-    for (const auto& t : faces) adder.add({handles[remap[t[0]]], handles[remap[t[1]]], handles[remap[t[2]]]});
+    for (std::size_t f = 0; f < faces.size(); ++f) {
+        const auto& t = faces[f];
+        if (const auto fh = adder.add({handles[remap[t[0]]], handles[remap[t[1]]], handles[remap[t[2]]]}); fh.is_valid())
+            mesh.property(soup_face, fh) = kept_source[f];
+    }
     report.split_vertices = adder.finish();
-    report.split_vertices += split_complex_vertices(mesh, soup_vertex);
+    report.split_vertices += split_complex_vertices(mesh, soup_vertex, soup_face);
     omerr().enable();
     out.vertex_source.resize(mesh.n_vertices());
     for (const auto vh : mesh.vertices()) out.vertex_source[vh.idx()] = mesh.property(soup_vertex, vh);
     mesh.remove_property(soup_vertex);
+    std::vector<std::uint32_t> face_source(mesh.n_faces());
+    for (const auto fh : mesh.faces()) face_source[slot(fh)] = mesh.property(soup_face, fh);
+    mesh.remove_property(soup_face);
 
     report.vertices = handles.size(); // welded input; split copies are counted apart
     report.faces = mesh.n_faces();
-    orient_components(mesh, report);
+    orient_components(mesh, report, face_source);
     compute_vertex_normals(mesh);
+    if (!soup.normals.empty()) out.corner_normals = corner_normals(mesh, soup, face_source);
 
     report.bbox_min = report.bbox_max = to_glm(mesh.point(Mesh::VertexHandle(0)));
     for (const auto vh : mesh.vertices()) {

@@ -5,8 +5,12 @@
 /// to a manifold halfedge mesh, and computes
 /// area-weighted vertex normals.
 
+#include <array>
 #include <cstdint>
 #include <string>
+#include <vector>
+
+#include <glm/vec3.hpp>
 
 #include "snaxels/mesh/mesh.h"
 #include "snaxels/mesh/report.h"
@@ -21,6 +25,12 @@ struct LoadedMesh {
     /// Per mesh vertex: an input (soup) vertex at its place. Posing the soup
     /// (animation) and reading these gives the mesh's posed positions.
     std::vector<std::uint32_t> vertex_source;
+    /// Per face, the file's normal at each corner in the order of the face's
+    /// vertices (fv_range), or empty when the file has no normals. A zero
+    /// vector is a corner the file gave no usable normal. Where corners at
+    /// one vertex disagree across an edge, the file shades the edge hard
+    /// (split_sharp_edges).
+    std::vector<std::array<glm::dvec3, 3>> corner_normals;
 };
 
 /// Memory a mesh needs per face to be drawn, estimated from the peaks of

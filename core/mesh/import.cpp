@@ -4,11 +4,13 @@
 #include <array>
 #include <cctype>
 #include <cerrno>
+#include <cmath>
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <functional>
+#include <iterator>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -17,6 +19,7 @@
 #include <assimp/postprocess.h>
 #include <assimp/scene.h>
 #include <glm/glm.hpp>
+#include <nlohmann/json.hpp>
 
 #include "snaxels/error.h"
 #include "snaxels/mesh/detail/assimp_scene.h"
@@ -439,6 +442,52 @@ aiMatrix4x4 upright_axes(const aiScene* scene) {
     return m;
 }
 
+/// The JSON of a glTF 1.0 file (a .gltf, or the scene of a binary .glb of
+/// version 1), or null for anything else.
+nlohmann::json gltf1_json(const std::string& path) {
+    std::ifstream in(path, std::ios::binary);
+    std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    if (text.size() >= 20 && text.compare(0, 4, "glTF") == 0) {
+        std::uint32_t version = 0, length = 0;
+        std::memcpy(&version, text.data() + 4, 4);
+        std::memcpy(&length, text.data() + 12, 4);
+        if (version != 1 || length > text.size() - 20) return nullptr;
+        text = text.substr(20, length);
+    }
+    nlohmann::json doc = nlohmann::json::parse(text, nullptr, false);
+    if (doc.is_discarded() || !doc.is_object() || !doc.contains("asset") || !doc["asset"].is_object()) return nullptr;
+    const nlohmann::json& version = doc["asset"].value("version", nlohmann::json());
+    const bool one = (version.is_number() && version.get<double>() < 2.0) ||
+                     (version.is_string() && version.get<std::string>().rfind("1", 0) == 0);
+    return one ? doc : nullptr;
+}
+
+/// Assimp 5.2 composes a glTF 1.0 node's translation, rotation and scale as
+/// R S T where the format means T R S (its glTF 2 reader has it right): a
+/// node that is rotated or scaled has its translation turned with it (the
+/// milk truck's wheels sink into the road). Such a node's matrix R S T is
+/// put back to T R S: the same R S, translation (R S)^-1 times its own.
+void mend_gltf1_node_order(const aiScene* scene, const std::string& path) {
+    const std::string ext = fs::path(path).extension().string();
+    if (ext != ".gltf" && ext != ".glb" && ext != ".GLTF" && ext != ".GLB") return;
+    const nlohmann::json doc = gltf1_json(path);
+    if (doc.is_null() || !doc.contains("nodes") || !doc["nodes"].is_object()) return;
+    const nlohmann::json& nodes = doc["nodes"];
+    std::function<void(aiNode*)> visit = [&](aiNode* node) {
+        const auto it = nodes.find(node->mName.C_Str());
+        if (it != nodes.end() && it->is_object() && !it->contains("matrix")) {
+            aiMatrix4x4& m = node->mTransformation;
+            aiMatrix3x3 linear(m);
+            if (linear.Determinant() != 0.0f) {
+                const aiVector3D t = linear.Inverse() * aiVector3D(m.a4, m.b4, m.c4);
+                m.a4 = t.x, m.b4 = t.y, m.c4 = t.z;
+            }
+        }
+        for (unsigned c = 0; c < node->mNumChildren; ++c) visit(node->mChildren[c]);
+    };
+    visit(scene->mRootNode);
+}
+
 } // namespace
 
 namespace detail {
@@ -457,6 +506,7 @@ const aiScene* read_assimp_scene(Assimp::Importer& importer, const std::string& 
     // meshes, their instances and an animation's every pose all follow it.
     // (The scene is the importer's, given out const; its root node is
     // changed once, before anything reads it.)
+    mend_gltf1_node_order(scene, path);
     if (const aiMatrix4x4 axes = upright_axes(scene); !axes.IsIdentity())
         const_cast<aiNode*>(scene->mRootNode)->mTransformation = axes * scene->mRootNode->mTransformation;
     return scene;
@@ -483,8 +533,21 @@ TriangleSoup detail::read_triangle_soup_here(const std::string& path) {
     Assimp::Importer importer;
     const aiScene* scene = detail::read_assimp_scene(importer, path);
     TriangleSoup soup;
+    // Normals are kept only when every mesh of the scene has them (a file
+    // whose parts disagree is read as having none: smooth by default).
+    bool normals = true;
+    detail::for_each_mesh_instance(scene, [&](const aiNode*, const aiMesh* mesh, const aiMatrix4x4&) {
+        normals = normals && mesh->mNormals != nullptr;
+    });
     detail::for_each_mesh_instance(scene, [&](const aiNode*, const aiMesh* mesh, const aiMatrix4x4& xf) {
         const auto base = static_cast<std::uint32_t>(soup.positions.size());
+        glm::dmat3 linear{};
+        for (int r = 0; r < 3; ++r)
+            for (int c = 0; c < 3; ++c) linear[c][r] = double(xf[unsigned(r)][unsigned(c)]);
+        // Normals turn by the inverse transpose (a scaled node keeps them
+        // perpendicular to its faces; a mirrored one is turned outward with
+        // its faces by build_mesh).
+        const glm::dmat3 normal_turn = glm::transpose(glm::inverse(linear));
         for (unsigned v = 0; v < mesh->mNumVertices; ++v) {
             const aiVector3D& p = mesh->mVertices[v];
             // Transform in double so welding sees exactly repeatable values.
@@ -493,6 +556,12 @@ TriangleSoup detail::read_triangle_soup_here(const std::string& path) {
                 q[r] = double(xf[r][0]) * p.x + double(xf[r][1]) * p.y + double(xf[r][2]) * p.z +
                        double(xf[r][3]);
             soup.positions.push_back(q);
+            if (!normals) continue;
+            const aiVector3D& n = mesh->mNormals[v];
+            const glm::dvec3 turned = normal_turn * glm::dvec3(n.x, n.y, n.z);
+            const double len = glm::length(turned);
+            // A zero or broken normal says nothing: it matches any other.
+            soup.normals.push_back(len > 0.0 && std::isfinite(len) ? turned / len : glm::dvec3(0.0));
         }
         for (unsigned f = 0; f < mesh->mNumFaces; ++f) {
             const aiFace& face = mesh->mFaces[f];

@@ -291,6 +291,11 @@ TriangleSoup read_soup_isolated(const std::string& helper, const std::string& pa
     soup.triangles.resize(nt);
     in.bytes(soup.positions.data(), nv * sizeof(glm::dvec3));
     in.bytes(soup.triangles.data(), nt * sizeof(soup.triangles[0]));
+    const auto nn = in.value<std::uint64_t>();
+    if (nn != 0 && nn != nv) throw Error(path + ": the importer's reply has normals for some vertices only");
+    if (nn > in.left() / sizeof(glm::dvec3)) throw Error(path + ": the importer's reply is cut short");
+    soup.normals.resize(nn);
+    in.bytes(soup.normals.data(), nn * sizeof(glm::dvec3));
     return soup;
 }
 
@@ -318,6 +323,8 @@ int serve_import(ImportRequest request, const std::string& path, int fd) {
             out.value(std::uint64_t(soup.triangles.size()));
             out.bytes(soup.positions.data(), soup.positions.size() * sizeof(glm::dvec3));
             out.bytes(soup.triangles.data(), soup.triangles.size() * sizeof(soup.triangles[0]));
+            out.value(std::uint64_t(soup.normals.size()));
+            out.bytes(soup.normals.data(), soup.normals.size() * sizeof(glm::dvec3));
         } else {
             const auto clips = animation_clips_here(path);
             out.value(kOk);

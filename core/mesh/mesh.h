@@ -19,6 +19,8 @@ struct MeshTraits : public OpenMesh::DefaultTraits {
 using Mesh = OpenMesh::TriMesh_ArrayKernelT<MeshTraits>;
 
 inline glm::dvec3 to_glm(const OpenMesh::Vec3d& p) { return {p[0], p[1], p[2]}; }
+/// The index of an OpenMesh element's handle in arrays kept beside the mesh.
+inline std::size_t slot(OpenMesh::BaseHandle h) { return std::size_t(h.idx()); }
 inline OpenMesh::Vec3d to_om(const glm::dvec3& p) { return {p.x, p.y, p.z}; }
 
 } // namespace snaxels

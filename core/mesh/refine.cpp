@@ -20,8 +20,54 @@ int refine_levels(std::size_t faces, int requested) {
 }
 
 MeshTopology engine_topology(const Mesh& mesh, int levels) {
-    return refine_topology(build_topology(mesh), refine_levels(mesh.n_faces(), levels));
+    const MeshTopology topology = build_topology(mesh);
+    // The levels go by the faces of the surface: a split sharp edge's
+    // zero-area strips add faces but nothing to shade.
+    std::size_t faces = topology.n_faces();
+    if (topology.has_strips()) {
+        faces = 0;
+        for (const FaceId f : topology.faces()) faces += face_has_area(topology, f);
+    }
+    return refine_topology(topology, refine_levels(faces, levels));
 }
+
+namespace {
+
+/// A face of a split sharp edge's strip, refined without a grid: it covers
+/// nothing, so only its edges of some length need their points (shared with
+/// the faces beside them). A triangle with one edge of no length (two
+/// corners at one point) becomes a zigzag between its two long edges'
+/// points; one whose corners are all at one point stays whole. Appends
+/// the faces, in the face's own turn, to @p out; false for a face of no
+/// area with no edge of no length (refined as any face).
+template <class OnEdge>
+bool refine_strip_face(const MeshTopology& t, FaceId f, std::int32_t n, OnEdge&& on_edge,
+                       std::vector<std::array<VertexId, 3>>& out) {
+    const auto& c = t.face_vertices()[f];
+    const auto& fe = t.face_edges()[f]; // edge k joins corners k and k + 1
+    const auto P = t.positions();
+    std::size_t zero = 0, zeros = 0;
+    for (std::size_t k = 0; k < 3; ++k)
+        if (P[c[k]] == P[c[(k + 1) % 3]]) zero = k, ++zeros;
+    if (zeros == 3 || zeros == 2) {
+        out.push_back(c);
+        return true;
+    }
+    if (zeros == 0) return false;
+    // Corners k, k + 1 at one point; the apex is corner k + 2, and the long
+    // edges run from it to corner k and to corner k + 1.
+    const std::size_t k = zero, k1 = (zero + 1) % 3, apex = (zero + 2) % 3;
+    auto a = [&](std::int32_t i) { return i == 0 ? c[apex] : i == n ? c[k] : on_edge(fe[apex], c[apex], i); };
+    auto b = [&](std::int32_t i) { return i == 0 ? c[apex] : i == n ? c[k1] : on_edge(fe[k1], c[apex], i); };
+    out.push_back({c[apex], a(1), b(1)});
+    for (std::int32_t i = 1; i < n; ++i) {
+        out.push_back({a(i), a(i + 1), b(i + 1)});
+        out.push_back({a(i), b(i + 1), b(i)});
+    }
+    return true;
+}
+
+} // namespace
 
 MeshTopology refine_topology(const MeshTopology& t, int levels) {
     if (levels <= 0 || t.n_faces() == 0) return t;
@@ -42,11 +88,13 @@ MeshTopology refine_topology(const MeshTopology& t, int levels) {
         r->weights.push_back(w);
         return id;
     };
-    // Points along each edge, from its first vertex, shared by its faces.
+    // Points along each edge, from its first vertex, shared by its faces
+    // (none along the zero-length edges across a split sharp edge's strip).
     EdgeData<std::int32_t> edge_first(t.n_edges());
     for (const EdgeId e : t.edges()) {
         const VertexId a = t.edge_vertices()[e][0], b = t.edge_vertices()[e][1];
         edge_first[e] = std::int32_t(positions.size());
+        if (t.has_strips() && t.positions()[a] == t.positions()[b]) continue;
         for (std::int32_t i = 1; i < n; ++i) {
             const double s = double(i) / double(n);
             add({a, b, a}, {1.0 - s, s, 0.0});
@@ -64,6 +112,10 @@ MeshTopology refine_topology(const MeshTopology& t, int levels) {
     for (const FaceId f : t.faces()) {
         const auto& c = t.face_vertices()[f];
         const auto& fe = t.face_edges()[f]; // edge k joins corners k and k + 1
+        if (t.has_strips() && !face_has_area(t, f) && refine_strip_face(t, f, n, on_edge, faces)) {
+            r->face_origin.resize(faces.size(), f);
+            continue;
+        }
         // Point (a, b) of the face's grid: a steps from corner 0 toward 1,
         // b from corner 0 toward 2.
         auto at = [&](std::int32_t a, std::int32_t b) -> VertexId& { return grid[a * (n + 1) + b]; };

@@ -55,7 +55,7 @@ constexpr int kAutoRefine = -1;
 int refine_levels(std::size_t faces, int requested);
 
 /// The topology the engine works on: @p mesh's, refined by @p levels
-/// (kAutoRefine: auto_refine_levels).
+/// (kAutoRefine: auto_refine_levels of its faces with an area).
 MeshTopology engine_topology(const Mesh& mesh, int levels = kAutoRefine);
 
 } // namespace snaxels

@@ -1,5 +1,6 @@
 #include "snaxels/mesh/topology.h"
 
+#include <algorithm>
 #include <limits>
 #include <string>
 
@@ -52,15 +53,20 @@ MeshTopology build_topology(const Mesh& mesh, std::shared_ptr<const MeshRefineme
     t.edge_vertices.resize(ne);
     t.edge_faces.resize(ne);
     double total = 0.0;
+    std::size_t counted = 0;
     for (const auto eh : mesh.edges()) {
         const auto h0 = mesh.halfedge_handle(eh, 0), h1 = mesh.halfedge_handle(eh, 1);
         const VertexId a(mesh.from_vertex_handle(h0).idx()), b(mesh.to_vertex_handle(h0).idx());
         const EdgeId e(eh.idx());
         t.edge_vertices[e] = {a, b};
         t.edge_faces[e] = {FaceId(mesh.face_handle(h0).idx()), FaceId(mesh.face_handle(h1).idx())};
-        total += glm::length(pose->positions[a] - pose->positions[b]);
+        // The zero-length edges of a split sharp edge (core/mesh/sharp_edges.h)
+        // are no measure of the mesh's scale.
+        const double length = glm::length(pose->positions[a] - pose->positions[b]);
+        total += length;
+        counted += length > 0.0;
     }
-    t.mean_edge_length = ne ? total / double(ne) : 0.0;
+    t.mean_edge_length = counted ? total / double(counted) : 0.0;
     t.face_vertices.resize(nf);
     t.face_edges.resize(nf);
     for (const auto fh : mesh.faces()) {
@@ -82,7 +88,44 @@ MeshTopology build_topology(const Mesh& mesh, std::shared_ptr<const MeshRefineme
         }
     }
     t.ring_start[nv] = static_cast<std::int32_t>(t.ring.size());
-    return MeshTopology(std::move(c), std::move(pose));
+    MeshTopology out(c, std::move(pose));
+    const auto faces = out.faces();
+    t.has_strips = std::any_of(faces.begin(), faces.end(), [&](FaceId f) { return !face_has_area(out, f); });
+    if (t.has_strips) {
+        // Copies are joined by edges of zero length: each takes the lowest
+        // vertex it reaches over them.
+        t.point_of.resize(nv);
+        for (const VertexId v : out.vertices()) t.point_of[v] = v;
+        auto root = [&](VertexId v) {
+            while (t.point_of[v] != v) v = t.point_of[v] = t.point_of[t.point_of[v]];
+            return v;
+        };
+        for (const EdgeId e : out.edges()) {
+            const auto [a, b] = t.edge_vertices[e];
+            if (out.positions()[a] != out.positions()[b]) continue;
+            const VertexId ra = root(a), rb = root(b);
+            if (ra < rb) t.point_of[rb] = ra;
+            else if (rb < ra) t.point_of[ra] = rb;
+        }
+        for (const VertexId v : out.vertices()) t.point_of[v] = root(v);
+    }
+    return out;
+}
+
+bool face_has_area(const MeshTopology& topo, FaceId f) {
+    const auto& fv = topo.face_vertices()[f];
+    const auto P = topo.positions();
+    const glm::dvec3 e0 = P[fv[1]] - P[fv[0]], e1 = P[fv[2]] - P[fv[0]], e2 = P[fv[2]] - P[fv[1]];
+    const double longest = std::max({glm::dot(e0, e0), glm::dot(e1, e1), glm::dot(e2, e2)});
+    // Relative, as import's test for degenerate faces: refined points of a
+    // strip lie on its line up to rounding.
+    return glm::length(glm::cross(e0, e1)) > 1e-12 * longest;
+}
+
+bool edge_in_strip(const MeshTopology& topo, EdgeId e) {
+    for (const FaceId f : topo.edge_faces()[e])
+        if (f != MeshTopology::kNone && face_has_area(topo, f)) return false;
+    return true;
 }
 
 double bounding_radius(const MeshTopology& topo) {

@@ -40,6 +40,14 @@ struct MeshConnectivity {
     /// Set on a refined coarse mesh (refine_topology): how the vertices past
     /// the original ones follow them.
     std::shared_ptr<const MeshRefinement> refinement;
+    /// Whether the mesh has faces of zero area: the strips of split sharp
+    /// edges (core/mesh/sharp_edges.h), and with them flat faces whose
+    /// corners share one normal.
+    bool has_strips = false;
+    /// With strips: per vertex, the lowest-numbered vertex at the same point
+    /// (the copies of one vertex of a sharp edge name one of them; joined
+    /// through the strips' zero-length edges). Empty without strips.
+    VertexData<VertexId> point_of;
 
     std::size_t n_vertices() const { return ring_start.empty() ? 0 : ring_start.size() - 1; }
     /// The mesh's own vertices (the first ones; all of them unless refined).
@@ -152,6 +160,13 @@ class MeshTopology {
     ElementSpan<FaceTag, const std::array<EdgeId, 3>> face_edges() const { return face_edges_; }
     double mean_edge_length() const { return connectivity_->mean_edge_length; }
     const std::shared_ptr<const MeshRefinement>& refinement() const { return connectivity_->refinement; }
+    /// Whether the mesh has split sharp edges (MeshConnectivity::has_strips).
+    bool has_strips() const { return connectivity_->has_strips; }
+    /// Whether @p a and @p b are one point of the surface: the same vertex,
+    /// or copies of it along a split sharp edge.
+    bool same_point(VertexId a, VertexId b) const {
+        return a == b || (connectivity_->has_strips && connectivity_->point_of[a] == connectivity_->point_of[b]);
+    }
 
     std::size_t n_vertices() const { return positions_.size(); }
     /// The mesh's own vertices (the first ones; all of them unless refined).
@@ -238,6 +253,14 @@ inline FaceCorner FacesAround::iterator::operator*() const {
     const FaceId f = range_->topology_->face_leaving(range_->edges_[k_], range_->v_);
     return {f, range_->topology_->corner_of(f, range_->v_)};
 }
+
+/// Whether face @p f has an area in @p topology's pose: not one of the
+/// zero-area faces a split sharp edge adds (core/mesh/sharp_edges.h), nor a
+/// face of rounding-size area made from one by refinement.
+bool face_has_area(const MeshTopology& topology, FaceId f);
+/// Whether edge @p e lies inside a split sharp edge's strip: none of its
+/// faces has an area (a contour there runs along the sharp edge).
+bool edge_in_strip(const MeshTopology& topology, EdgeId e);
 
 /// Builds the flat connectivity of @p mesh, in its pose (normals as stored
 /// on the mesh); @p refinement, when the mesh is a refined one, says how its

@@ -160,6 +160,7 @@ class PostMapBuilder {
         parallel_for(topo_.faces(), [&](FaceId i) {
             const auto& f = topo_.face_vertices()[i];
             const glm::dvec3 &a = topo_.positions()[f[0]], &b = topo_.positions()[f[1]], &c = topo_.positions()[f[2]];
+            if (topo_.has_strips() && !face_has_area(topo_, i)) return; // a sharp edge's strip covers nothing: hidden
             const glm::dvec3 n = glm::normalize(glm::cross(b - a, c - a));
             if (!facing(f)) {
                 // Turned away inside a patch (its corners face the viewer by

@@ -253,7 +253,9 @@ class SnaxelMapBuilder {
     bool face_hidden(FaceId f) const {
         const auto& fv = topo_.face_vertices()[f];
         const glm::dvec3 &p0 = position(fv[0]), &p1 = position(fv[1]), &p2 = position(fv[2]);
-        return rays_.occluded(sampler_.face_ray(f, (p0 + p1 + p2) / 3.0, glm::normalize(glm::cross(p1 - p0, p2 - p0))));
+        const glm::dvec3 n = glm::cross(p1 - p0, p2 - p0);
+        if (topo_.has_strips() && !face_has_area(topo_, f)) return true; // a sharp edge's strip covers nothing
+        return rays_.occluded(sampler_.face_ray(f, (p0 + p1 + p2) / 3.0, glm::normalize(n)));
     }
 
     // ---- label vertices -------------------------------------------------

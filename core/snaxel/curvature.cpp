@@ -381,7 +381,10 @@ std::vector<double> suggestive_margins(const MeshTopology& topo, const Curvature
         // where suggestive_function holds its stand-in) lies on the rim of
         // the side seen, a zero of suggestive_function only: never drawn.
         const bool rim = kr[s.inside] == away;
-        margin[i] = rim ? -1.0 : std::min(most_facing - nv, nv);
+        // Inside a sharp edge's strip kappa_r jumps from one side's to the
+        // other's: a zero there is no suggestive contour (they are drawn on
+        // smooth patches only).
+        margin[i] = rim || (topo.has_strips() && edge_in_strip(topo, s.edge)) ? -1.0 : std::min(most_facing - nv, nv);
     }, 4096);
     // The derivative at each end vertex of the other snaxels, once per vertex.
     VertexData<std::size_t> slot(topo.n_vertices(), kNoSlot);

@@ -1,6 +1,7 @@
 #include "snaxels/snaxel/feature_edges.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 
 #include <glm/glm.hpp>
@@ -19,6 +20,31 @@ glm::dvec3 face_normal(const MeshTopology& topo, FaceId f) {
     return len > 0.0 ? n / len : glm::dvec3(0.0);
 }
 
+/// Where edge @p e lies along a split sharp edge (one of its faces has an
+/// area, the other is the strip's): the face with an area on the strip's
+/// far side, along the same line, or kNone. Found by walking the strip's
+/// zero-area faces (a few; more where refinement divided them).
+FaceId face_across_strip(const MeshTopology& topo, EdgeId e, FaceId near, FaceId strip) {
+    const auto P = topo.positions();
+    const glm::dvec3 a = P[topo.edge_vertices()[e][0]], b = P[topo.edge_vertices()[e][1]];
+    const double tol = 1e-9 * glm::length(b - a);
+    auto coincides = [&](EdgeId c) {
+        const glm::dvec3 p = P[topo.edge_vertices()[c][0]], q = P[topo.edge_vertices()[c][1]];
+        return (glm::length(p - a) <= tol && glm::length(q - b) <= tol) ||
+               (glm::length(p - b) <= tol && glm::length(q - a) <= tol);
+    };
+    constexpr std::size_t kMostFaces = 256;
+    std::vector<FaceId> walk{strip};
+    for (std::size_t i = 0; i < walk.size() && walk.size() < kMostFaces; ++i)
+        for (const EdgeId c : topo.face_edges()[walk[i]])
+            for (const FaceId g : topo.edge_faces()[c]) {
+                if (g == MeshTopology::kNone || g == near || std::find(walk.begin(), walk.end(), g) != walk.end()) continue;
+                if (!face_has_area(topo, g)) walk.push_back(g);
+                else if (c != e && coincides(c)) return g;
+            }
+    return MeshTopology::kNone;
+}
+
 } // namespace
 
 std::vector<EdgeId> crease_edges(const MeshTopology& topo, double degrees) {
@@ -26,7 +52,20 @@ std::vector<EdgeId> crease_edges(const MeshTopology& topo, double degrees) {
     std::vector<EdgeId> out;
     for (const EdgeId e : topo.edges()) {
         if (topo.is_boundary_edge(e)) continue;
-        const auto& faces = topo.edge_faces()[e];
+        std::array<FaceId, 2> faces = topo.edge_faces()[e];
+        const bool strips = topo.has_strips();
+        const bool has_area[2] = {!strips || face_has_area(topo, faces[0]), !strips || face_has_area(topo, faces[1])};
+        if (has_area[0] != has_area[1]) {
+            // One side of a split sharp edge: its faces meet across the
+            // strip. Both sides find each other; the side whose face comes
+            // first draws the crease.
+            const FaceId near = has_area[0] ? faces[0] : faces[1];
+            const FaceId across = face_across_strip(topo, e, near, has_area[0] ? faces[1] : faces[0]);
+            if (across == MeshTopology::kNone || across < near) continue;
+            faces = {near, across};
+        } else if (!has_area[0]) {
+            continue; // inside a strip
+        }
         const glm::dvec3 a = face_normal(topo, faces[0]), b = face_normal(topo, faces[1]);
         if (glm::dot(a, a) == 0.0 || glm::dot(b, b) == 0.0) continue;
         if (glm::dot(a, b) < limit) out.push_back(e);

@@ -178,11 +178,17 @@ void critical_crossings(const MeshTopology& topo, const VertexData<std::uint8_t>
     }
 }
 
+/// The vertices on a mesh boundary or on a split sharp edge (a corner of a
+/// zero-area strip face: the normals jump there, and the contour's events
+/// at them are the edge's, not the smooth surface's parabolic curves).
 VertexData<std::uint8_t> boundary_vertices(const MeshTopology& topo) {
     VertexData<std::uint8_t> boundary(topo.n_vertices(), 0);
     for (const EdgeId e : topo.edges())
         if (topo.is_boundary_edge(e))
             for (const VertexId v : topo.edge_vertices()[e]) boundary[v] = 1;
+    for (const FaceId f : topo.faces())
+        if (topo.has_strips() && !face_has_area(topo, f))
+            for (const VertexId v : topo.face_vertices()[f]) boundary[v] = 1;
     return boundary;
 }
 
@@ -722,6 +728,7 @@ ParabolicResult find_parabolic(const MeshTopology& mesh_topo, const ParabolicOpt
     const double gap = kPi * kPi / std::max(walked, 1e-9);
     const double link = std::max(4.0 * edge, 1.5 * gap * radius);
     result.curves = chain_curves(topo, result.points, link, 6.0 * link, 2);
+    result.mesh_edges = topo.n_edges();
     result.ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
     return result;
 }

@@ -82,6 +82,8 @@ struct ParabolicResult {
     std::size_t events = 0;   ///< visual events the tracker reported
     std::size_t unplaced = 0; ///< events with no topology-changing vertex crossing near them
     double ms = 0.0;
+    /// The edges of the mesh the curves were found on (their edge ids index it).
+    std::size_t mesh_edges = 0;
 };
 
 /// @p samples directions of a spherical Fibonacci set, in the order of a

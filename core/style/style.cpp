@@ -4,6 +4,7 @@
 #include <cctype>
 #include <cerrno>
 #include <cmath>
+#include <cstdlib>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
@@ -40,6 +41,9 @@ const std::vector<StyleElement>& style_vocabulary() {
              "the light: a direction or a point",
              {{"dir", {}, "a directional light: the direction from the surface toward it"},
               {"pos", {}, "a point light at this position"}}},
+            {"surface",
+             "how the surface is shaded: where its edges are sharp",
+             {{"sharp-angle", {"file"}, "edges whose faces meet at more than this angle are sharp"}}},
             {"contour",
              "which contour to find and how to draw it",
              {{"kind", {"visual", "shadow", "isophote", "gleam", "parabolic", "crease", "border", "suggestive"},
@@ -275,6 +279,18 @@ struct Parser {
                     light.pos = vector(child, "pos");
                 }
                 style.light = light;
+            } else if (name == "surface") {
+                check_attributes(child);
+                const std::string angle = child.attribute("sharp-angle").value();
+                if (angle == "file") {
+                    style.surface.sharp_angle = kFileNormals;
+                } else {
+                    char* end = nullptr;
+                    const double degrees = std::strtod(angle.c_str(), &end);
+                    if (child.attribute("sharp-angle") && (end == angle.c_str() || *end != '\0' || !(degrees >= 0.0 && degrees <= 180.0)))
+                        fail(child, "sharp-angle=\"" + angle + "\" must be degrees from 0 to 180, or file");
+                    style.surface.sharp_angle = number(child, "sharp-angle", kFileNormals, 0.0, 180.0);
+                }
             } else if (name == "contour") {
                 check_attributes(child);
                 const std::string kind = child.attribute("kind").value();
@@ -343,7 +359,7 @@ struct Parser {
                     if (other.cls == rs.cls && std::abs(other.k - rs.k) < 1e-9) fail(child, "a second <region> for " + cls);
                 style.regions.push_back(rs);
             } else {
-                warn(child, "unknown element <" + name + "> (expected <canvas>, <light>, <contour> or <region>)");
+                warn(child, "unknown element <" + name + "> (expected <canvas>, <light>, <surface>, <contour> or <region>)");
             }
         }
         if (2.0 * style.margin >= std::min(style.width, style.height))

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "snaxels/error.h"
+#include "snaxels/mesh/sharp_edges.h"
 #include "snaxels/planarmap/region.h"
 #include "snaxels/scene/camera.h"
 #include "snaxels/snaxel/contour_function.h"
@@ -49,6 +50,7 @@ struct Style {
     double margin = 32.0;               ///< pixels between the mesh's bounding circle and the edge
     std::string background = "#ffffff"; ///< or "none"
     std::optional<Light> light;
+    SurfaceOptions surface; ///< where the surface's edges are sharp
     std::vector<ContourStyle> contours;
     std::vector<RegionStyle> regions; ///< fills; empty: none
 

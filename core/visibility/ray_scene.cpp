@@ -38,12 +38,15 @@ bool ignored(const CountContext& c, FaceId face) {
         const auto& corners = c.refinement->base_faces[c.refinement->face_origin[face]];
         const auto ignore = std::span(c.ignore_base).first(c.n_ignore_base);
         for (const VertexId v : corners)
-            if (std::find(ignore.begin(), ignore.end(), v) != ignore.end()) return true;
+            for (const VertexId w : ignore)
+                if (c.topo->same_point(v, w)) return true;
         return false;
     }
+    // The copies of a vertex along a split sharp edge are the same point:
+    // the faces around all of them are the sample's own surface.
     for (const VertexId v : c.topo->face_vertices()[face])
         for (const VertexId w : c.ray->ignore)
-            if (v == w) return true;
+            if (w != MeshTopology::kNone && c.topo->same_point(v, w)) return true;
     return false;
 }
 

@@ -230,11 +230,35 @@ struct View {
     double margin = 32.0;
 };
 
+/// Calls @p fn(x, y, wa, wb, wc) for every pixel whose centre lies in the
+/// image triangle @p a, @p b, @p c (pixels, y down), with the centre's
+/// barycentric weights; nothing for a triangle of no area.
+template <class Fn>
+void for_each_pixel_in(const glm::dvec2& a, const glm::dvec2& b, const glm::dvec2& c, int width, int height, Fn&& fn) {
+    const double area = (b.x - a.x) * (c.y - a.y) - (c.x - a.x) * (b.y - a.y);
+    if (area == 0.0) return;
+    const int x0 = std::max(0, int(std::floor(std::min({a.x, b.x, c.x}))));
+    const int x1 = std::min(width - 1, int(std::ceil(std::max({a.x, b.x, c.x}))));
+    const int y0 = std::max(0, int(std::floor(std::min({a.y, b.y, c.y}))));
+    const int y1 = std::min(height - 1, int(std::ceil(std::max({a.y, b.y, c.y}))));
+    for (int y = y0; y <= y1; ++y)
+        for (int x = x0; x <= x1; ++x) {
+            const double px = x + 0.5, py = y + 0.5;
+            const double wa = ((b.x - px) * (c.y - py) - (c.x - px) * (b.y - py)) / area;
+            const double wb = ((c.x - px) * (a.y - py) - (a.x - px) * (c.y - py)) / area;
+            const double wc = 1.0 - wa - wb;
+            if (wa < 0.0 || wb < 0.0 || wc < 0.0) continue;
+            fn(x, y, wa, wb, wc);
+        }
+}
+
 /// Per pixel: 0 shadow (N.L < 0), 1 lit, 2 + i at or above bands[i]
 /// (ascending), -1 where no triangle covers the pixel centre. @p to_light:
-/// direction toward a directional light.
+/// direction toward a directional light. With @p corner_normals (per face,
+/// per corner) the normal is interpolated from those: a hard-edged mesh.
 inline std::vector<int> class_image(const Mesh& m, const View& view, const glm::dvec3& to_light,
-                                    const std::vector<double>& bands) {
+                                    const std::vector<double>& bands,
+                                    const std::vector<std::array<glm::dvec3, 3>>* corner_normals = nullptr) {
     const glm::dvec3 fwd = glm::normalize(view.orthographic ? view.dir : view.target - view.eye);
     glm::dvec3 up = glm::normalize(view.up);
     if (std::abs(glm::dot(fwd, up)) > 0.999) up = std::abs(fwd.z) < 0.9 ? glm::dvec3(0, 0, 1) : glm::dvec3(1, 0, 0);
@@ -262,19 +286,7 @@ inline std::vector<int> class_image(const Mesh& m, const View& view, const glm::
         const Projected& b = pv[std::size_t(m.faces[f][1])];
         const Projected& c = pv[std::size_t(m.faces[f][2])];
         if (!view.orthographic && (a.z <= 1e-9 || b.z <= 1e-9 || c.z <= 1e-9)) continue;
-        const double area = (b.x - a.x) * (c.y - a.y) - (c.x - a.x) * (b.y - a.y);
-        if (area == 0.0) continue;
-        const int x0 = std::max(0, int(std::floor(std::min({a.x, b.x, c.x}))));
-        const int x1 = std::min(view.width - 1, int(std::ceil(std::max({a.x, b.x, c.x}))));
-        const int y0 = std::max(0, int(std::floor(std::min({a.y, b.y, c.y}))));
-        const int y1 = std::min(view.height - 1, int(std::ceil(std::max({a.y, b.y, c.y}))));
-        for (int y = y0; y <= y1; ++y)
-            for (int x = x0; x <= x1; ++x) {
-                const double px = x + 0.5, py = y + 0.5;
-                const double wa = ((b.x - px) * (c.y - py) - (c.x - px) * (b.y - py)) / area;
-                const double wb = ((c.x - px) * (a.y - py) - (a.x - px) * (c.y - py)) / area;
-                const double wc = 1.0 - wa - wb;
-                if (wa < 0.0 || wb < 0.0 || wc < 0.0) continue;
+        for_each_pixel_in({a.x, a.y}, {b.x, b.y}, {c.x, c.y}, view.width, view.height, [&](int x, int y, double wa, double wb, double wc) {
                 glm::dvec3 w(wa, wb, wc);
                 double z;
                 if (view.orthographic) {
@@ -286,17 +298,20 @@ inline std::vector<int> class_image(const Mesh& m, const View& view, const glm::
                     w /= inv;
                 }
                 const std::size_t at = std::size_t(y) * std::size_t(view.width) + std::size_t(x);
-                if (z >= depth[at]) continue;
+                if (z >= depth[at]) return;
                 depth[at] = z, face[at] = int(f), weight[at] = w;
-            }
+            });
     }
     const glm::dvec3 l = glm::normalize(to_light);
     std::vector<int> out(n, -1);
     for (std::size_t at = 0; at < n; ++at) {
         if (face[at] < 0) continue;
         const auto& f = m.faces[std::size_t(face[at])];
-        const glm::dvec3 nrm = glm::normalize(weight[at].x * m.normals[std::size_t(f[0])] + weight[at].y * m.normals[std::size_t(f[1])] +
-                                              weight[at].z * m.normals[std::size_t(f[2])]);
+        // The face's own corner normals where given (hard edges), else the vertices'.
+        const auto corner = [&](int k) {
+            return corner_normals ? (*corner_normals)[std::size_t(face[at])][std::size_t(k)] : m.normals[std::size_t(f[std::size_t(k)])];
+        };
+        const glm::dvec3 nrm = glm::normalize(weight[at].x * corner(0) + weight[at].y * corner(1) + weight[at].z * corner(2));
         const double nl = glm::dot(nrm, l);
         int cls = nl < 0.0 ? 0 : 1;
         for (std::size_t i = 0; i < bands.size(); ++i)

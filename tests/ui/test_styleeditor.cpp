@@ -164,6 +164,34 @@ class TestStyleEditor : public QObject {
                                               "    <visible width=\"2\"/>\n    <hidden draw=\"false\"/>"));
     }
 
+    // Style > Sharp Edges writes the style's <surface sharp-angle>: added
+    // after the root when the style has no <surface>, the value replaced
+    // when it has one; each one undo step, applied at once, and the parser
+    // reads the angle back.
+    void setsTheSharpAngle() {
+        StyleEditor editor;
+        const QString text = "<style version=\"1\">\n  <contour kind=\"visual\"/>\n</style>\n";
+        editor.setText(text, "test");
+        QSignalSpy applied(&editor, &StyleEditor::textApplied);
+        editor.setSharpAngle("30");
+        QCOMPARE(editor.text(), QString("<style version=\"1\">\n  <surface sharp-angle=\"30\"/>\n  <contour kind=\"visual\"/>\n</style>\n"));
+        QCOMPARE(applied.count(), 1);
+        auto parsed = [&] { return snaxels::parse_style(editor.text().toStdString(), "test", nullptr).surface.sharp_angle; };
+        QCOMPARE(parsed(), 30.0);
+        editor.setSharpAngle("file");
+        QCOMPARE(editor.text(), QString("<style version=\"1\">\n  <surface sharp-angle=\"file\"/>\n  <contour kind=\"visual\"/>\n</style>\n"));
+        QCOMPARE(parsed(), snaxels::kFileNormals);
+        editor.editor()->undo();
+        QCOMPARE(parsed(), 30.0);
+        editor.editor()->undo();
+        QCOMPARE(editor.text(), text);
+        // A <surface> without the attribute takes it.
+        editor.setText("<style>\n  <surface/>\n</style>\n", "test");
+        editor.setSharpAngle("45");
+        QCOMPARE(editor.text(), QString("<style>\n  <surface sharp-angle=\"45\"/>\n</style>\n"));
+        QVERIFY(!snaxels::ui::sharp_angle_edit("not a style", "30"));
+    }
+
     // Ctrl+click on a colour: a colour dialog, and the colour chosen is
     // written in place as one change of the text, applied at once.
     void picksAColour() {

@@ -10,6 +10,7 @@
 #include "snaxels/snaxel/tracker.h"
 #include "tests/support/assets.h"
 #include "tests/support/plain_mesh.h"
+#include "tests/support/fronts_oracle.h"
 #include "tests/support/oracle_setup.h"
 
 using namespace snaxels;
@@ -45,17 +46,8 @@ TEST_P(TurntableTracking, EqualsRecomputationAtEveryFrame) {
     for (int frame = 0; frame < 360; ++frame) {
         const Camera cam = turntable_camera(frame, 1.0);
         const TrackedFrame& tf = tracker.step(cam, light);
-        const Fronts& fronts = tf.contour.fronts;
         // Visual contours have one crossing per edge: no scan needed.
-        const auto oracle = test::marching_triangles(topo.positions(), test::plain_faces(topo), test::oracle_setup({}, cam, light), 1);
-        ASSERT_EQ(fronts.snaxels.size(), oracle.crossing.size()) << "frame " << frame;
-        ASSERT_EQ(fronts.loops.size(), oracle.loops) << "frame " << frame;
-        for (const Snaxel& s : fronts.snaxels) {
-            const auto o = oracle.crossing.find({std::min(s.inside, s.outside).index(), std::max(s.inside, s.outside).index()});
-            ASSERT_TRUE(o != oracle.crossing.end()) << "frame " << frame;
-            const double len = glm::length(topo.positions()[s.inside] - topo.positions()[s.outside]);
-            ASSERT_LE(glm::length(engine.position(s) - o->second), 1e-6 * len) << "frame " << frame;
-        }
+        ASSERT_TRUE(test::fronts_match_oracle(topo, engine, tf.contour.fronts, cam, light)) << "frame " << frame;
         // Identities are unique within a frame.
         std::set<std::uint64_t> ids(tf.snaxel_id.begin(), tf.snaxel_id.end());
         ASSERT_EQ(ids.size(), tf.snaxel_id.size()) << "frame " << frame;

@@ -224,3 +224,24 @@ TEST(StyleVocabulary, SummariesAreTheReferencesWords) {
         }
     }
 }
+
+// <surface sharp-angle>: degrees, or "file" (the default: the file's own
+// normals decide); anything else is an error that says what it takes.
+TEST(Style, SurfaceSharpAngle) {
+    auto parse = [](const std::string& surface) {
+        return parse_style("<style version=\"1\">" + surface + "</style>", "test", nullptr).surface.sharp_angle;
+    };
+    EXPECT_EQ(parse(""), kFileNormals);
+    EXPECT_EQ(parse("<surface sharp-angle=\"30\"/>"), 30.0);
+    EXPECT_EQ(parse("<surface sharp-angle=\"0\"/>"), 0.0);
+    EXPECT_EQ(parse("<surface sharp-angle=\"180\"/>"), 180.0);
+    EXPECT_EQ(parse("<surface sharp-angle=\"file\"/>"), kFileNormals);
+    for (const std::string bad : {"x", "-5", "200", "30deg"}) {
+        try {
+            parse("<surface sharp-angle=\"" + bad + "\"/>");
+            ADD_FAILURE() << bad << " was taken";
+        } catch (const StyleError& e) {
+            EXPECT_NE(std::string(e.what()).find("must be degrees from 0 to 180, or file"), std::string::npos) << e.what();
+        }
+    }
+}

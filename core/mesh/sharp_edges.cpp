@@ -1,0 +1,186 @@
+#include "snaxels/mesh/sharp_edges.h"
+
+#include <array>
+#include <cmath>
+#include <numeric>
+#include <unordered_map>
+#include <vector>
+
+#include <OpenMesh/Core/System/omstream.hh>
+#include <glm/glm.hpp>
+
+namespace snaxels {
+namespace {
+
+using Halfedge = Mesh::HalfedgeHandle;
+
+glm::dvec3 face_normal(const Mesh& mesh, Mesh::FaceHandle fh) {
+    auto it = mesh.cfv_iter(fh);
+    const glm::dvec3 a = to_glm(mesh.point(*it)), b = to_glm(mesh.point(*++it)), c = to_glm(mesh.point(*++it));
+    const glm::dvec3 n = glm::cross(b - a, c - a);
+    const double len = glm::length(n);
+    return len > 0.0 ? n / len : glm::dvec3(0.0);
+}
+
+// The file's normal at @p v's corner of @p fh (zero: none).
+glm::dvec3 corner_normal(const LoadedMesh& loaded, Mesh::FaceHandle fh, Mesh::VertexHandle v) {
+    auto corner = loaded.corner_normals[slot(fh)].begin();
+    for (const auto vh : loaded.mesh.fv_range(fh)) {
+        if (vh == v) return *corner;
+        ++corner;
+    }
+    return glm::dvec3(0.0);
+}
+
+// Whether the edge of halfedge @p h (and its twin) is sharp.
+bool is_sharp(const LoadedMesh& loaded, Halfedge h, const SurfaceOptions& options) {
+    const Mesh& mesh = loaded.mesh;
+    const Halfedge t = mesh.opposite_halfedge_handle(h);
+    const auto left = mesh.face_handle(h), right = mesh.face_handle(t);
+    if (!left.is_valid() || !right.is_valid()) return false; // a border has one side
+    if (options.sharp_angle >= 0.0) {
+        const double cos_limit = std::cos(glm::radians(std::min(options.sharp_angle, 180.0)));
+        return glm::dot(face_normal(mesh, left), face_normal(mesh, right)) < cos_limit;
+    }
+    if (loaded.corner_normals.empty()) return false;
+    const double same = std::cos(glm::radians(kSameNormalDegrees));
+    for (const auto v : {mesh.from_vertex_handle(h), mesh.to_vertex_handle(h)}) {
+        const glm::dvec3 a = corner_normal(loaded, left, v), b = corner_normal(loaded, right, v);
+        const bool known = glm::dot(a, a) > 0.0 && glm::dot(b, b) > 0.0;
+        if (known && glm::dot(a, b) < same) return true;
+    }
+    return false;
+}
+
+struct Corners {
+    std::vector<std::size_t> parent;
+    explicit Corners(std::size_t n) : parent(n) { std::iota(parent.begin(), parent.end(), std::size_t{0}); }
+    std::size_t find(std::size_t x) {
+        while (parent[x] != x) x = parent[x] = parent[parent[x]];
+        return x;
+    }
+    void unite(Halfedge a, Halfedge b) { parent[find(slot(a))] = find(slot(b)); }
+};
+
+} // namespace
+
+std::optional<LoadedMesh> split_sharp_edges(const LoadedMesh& loaded, const SurfaceOptions& options, SharpSplit* what) {
+    const Mesh& mesh = loaded.mesh;
+    SharpSplit split;
+    // A face's corner at a vertex is the face's halfedge pointing to it.
+    // Corners at one vertex in faces joined by a smooth edge are one wedge.
+    std::vector<std::uint8_t> sharp(mesh.n_edges(), 0);
+    Corners wedges(mesh.n_halfedges());
+    for (const auto eh : mesh.edges()) {
+        const Halfedge h0 = mesh.halfedge_handle(eh, 0), h1 = mesh.halfedge_handle(eh, 1);
+        if (mesh.is_boundary(h0) || mesh.is_boundary(h1)) continue;
+        if (is_sharp(loaded, h0, options)) {
+            sharp[slot(eh)] = 1;
+            ++split.sharp_edges;
+            continue;
+        }
+        wedges.unite(h0, mesh.prev_halfedge_handle(h1)); // at h0's end
+        wedges.unite(h1, mesh.prev_halfedge_handle(h0)); // at h1's end
+    }
+    if (split.sharp_edges == 0) return std::nullopt;
+
+    // Each wedge at a vertex but the first gets a copy of the vertex.
+    std::vector<Mesh::Point> points;
+    std::vector<std::uint32_t> source = loaded.vertex_source;
+    points.reserve(mesh.n_vertices());
+    for (const auto vh : mesh.vertices()) points.push_back(mesh.point(vh));
+    std::vector<std::size_t> corner_vertex(mesh.n_halfedges(), 0); // the new vertex of each face corner
+    std::unordered_map<std::size_t, std::size_t> vertex_of_wedge;
+    for (const auto vh : mesh.vertices()) {
+        vertex_of_wedge.clear();
+        for (const auto h : mesh.vih_range(vh)) {
+            if (mesh.is_boundary(h)) continue;
+            auto [it, fresh] = vertex_of_wedge.try_emplace(wedges.find(slot(h)), slot(vh));
+            if (fresh && vertex_of_wedge.size() > 1) {
+                it->second = points.size();
+                points.push_back(mesh.point(vh));
+                source.push_back(source[slot(vh)]);
+                ++split.copies;
+            }
+            corner_vertex[slot(h)] = it->second;
+        }
+    }
+    if (split.copies == 0) {
+        if (what) *what = split;
+        return std::nullopt; // sharp edges that part no vertex's faces: smooth everywhere
+    }
+
+    LoadedMesh out;
+    out.report = loaded.report;
+    out.vertex_source = std::move(source);
+    Mesh& m = out.mesh;
+    m.reserve(points.size(), mesh.n_edges() + 3 * split.sharp_edges, mesh.n_faces() + 2 * split.sharp_edges);
+    std::vector<Mesh::VertexHandle> handle;
+    handle.reserve(points.size());
+    for (const auto& p : points) handle.push_back(m.add_vertex(p));
+    omerr().disable(); // a strip or fan the halfedge structure refuses leaves a hole (below)
+    for (const auto fh : mesh.faces()) {
+        std::array<Mesh::VertexHandle, 3> c;
+        auto corner = c.begin();
+        for (const auto h : mesh.fh_range(fh)) *corner++ = handle[corner_vertex[slot(h)]];
+        m.add_face(c[0], c[1], c[2]); // the corners in the face's own turn
+    }
+    // Strips: the face left of h (a -> b) has corners aL, bL, the one on
+    // the right aR, bR; the strip is the quad bL, aL, aR, bR, a triangle
+    // where one end is not parted. Its free edges at each end (aR -> aL,
+    // bL -> bR) close the fan round a vertex where three or more wedges meet.
+    // Per original vertex, the free edges of its copies.
+    std::unordered_map<int, std::vector<std::pair<std::size_t, std::size_t>>> hole;
+    auto add_strip_face = [&](std::size_t a, std::size_t b, std::size_t c) {
+        if (m.add_face(handle[a], handle[b], handle[c]).is_valid()) ++split.strip_faces;
+    };
+    for (const auto eh : mesh.edges()) {
+        if (!sharp[slot(eh)]) continue;
+        const Halfedge h = mesh.halfedge_handle(eh, 0), t = mesh.halfedge_handle(eh, 1);
+        const std::size_t bL = corner_vertex[slot(h)], aL = corner_vertex[slot(mesh.prev_halfedge_handle(h))];
+        const std::size_t aR = corner_vertex[slot(t)], bR = corner_vertex[slot(mesh.prev_halfedge_handle(t))];
+        if (aL != aR) {
+            add_strip_face(bL, aL, aR);
+            hole[mesh.from_vertex_handle(h).idx()].push_back({aR, aL});
+        }
+        if (bL != bR) {
+            add_strip_face(bL, aR, bR);
+            hole[mesh.to_vertex_handle(h).idx()].push_back({bL, bR});
+        }
+    }
+    for (auto& [v, edges] : hole) {
+        if (edges.size() < 3 || mesh.is_boundary(Mesh::VertexHandle(v))) continue;
+        std::unordered_map<std::size_t, std::size_t> next;
+        for (const auto& [from, to] : edges) next[from] = to;
+        std::vector<std::size_t> cycle{edges.front().first};
+        while (cycle.size() <= edges.size()) {
+            const auto it = next.find(cycle.back());
+            if (it == next.end() || it->second == cycle.front()) break;
+            cycle.push_back(it->second);
+        }
+        if (cycle.size() != edges.size()) continue; // not one loop round the vertex: left open
+        for (std::size_t i = 1; i + 1 < cycle.size(); ++i) add_strip_face(cycle[0], cycle[i], cycle[i + 1]);
+    }
+    omerr().enable();
+    compute_vertex_normals(m); // zero-area faces weigh nothing: each copy takes its wedge's normal
+    if (options.sharp_angle < 0.0) {
+        // Where the file gave the edges, its own normals shade the surface:
+        // each vertex takes the mean of the file's normals at its corners.
+        std::vector<glm::dvec3> file(points.size(), glm::dvec3(0.0));
+        for (const auto h : mesh.halfedges())
+            if (!mesh.is_boundary(h))
+                file[corner_vertex[slot(h)]] += corner_normal(loaded, mesh.face_handle(h), mesh.to_vertex_handle(h));
+        for (const auto vh : m.vertices())
+            if (const double len = glm::length(file[slot(vh)]); len > 0.0) m.set_normal(vh, to_om(file[slot(vh)] / len));
+    }
+    if (what) *what = split;
+    return out;
+}
+
+const LoadedMesh& with_sharp_edges(const LoadedMesh& loaded, const SurfaceOptions& options,
+                                   std::optional<LoadedMesh>& storage) {
+    storage = split_sharp_edges(loaded, options);
+    return storage ? *storage : loaded;
+}
+
+} // namespace snaxels
