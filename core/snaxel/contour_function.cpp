@@ -167,12 +167,13 @@ void ContourFunction::evaluate_vertices(const MeshTopology& topology, VertexData
     if (spec_.kind == ContourKind::Suggestive) suggestive_function(topology, *require_curvature(topology), camera_, out);
     else evaluate_vertices(topology.positions(), topology.normals(), out);
     if (!topology.has_strips()) return;
-    // A flat face seen exactly edge-on (a box's sides in a front view) has
-    // f = 0 at every corner: counted as turned away, so the outline runs
-    // along the edges nearest the viewer, not along the hidden ones behind
-    // them that project to the same place.
+    // A flat face seen edge-on (a box's sides in a front view) has f = 0 at
+    // every corner, up to the rounding of the file's single-precision
+    // normals: counted as turned away, so the outline runs along the edges
+    // nearest the viewer, not along the hidden ones behind them that
+    // project to the same place.
     for (double& f : out)
-        if (f == 0.0) f = -std::numeric_limits<double>::denorm_min();
+        if (std::abs(f) < kEdgeOn) f = -std::numeric_limits<double>::denorm_min();
 }
 
 void ContourFunction::evaluate_vertices(ElementSpan<VertexTag, const glm::dvec3> positions,

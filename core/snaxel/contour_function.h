@@ -15,6 +15,13 @@ namespace snaxels {
 
 enum class ContourKind { Visual, Shadow, Isophote, Gleam, Parabolic, Crease, Border, Suggestive };
 
+/// On a mesh with split sharp edges, f within this of zero at a vertex is a
+/// face seen edge-on (some 0.0006 degrees: ten times the rounding of a
+/// file's single-precision normal), and counts as turned away: a box seen
+/// square-on is outlined along its near edges, not the hidden ones behind
+/// them that project to the same place (ContourFunction::evaluate_vertices).
+constexpr double kEdgeOn = 1e-5;
+
 /// Suggestive contours' defaults: the least scale-free derivative of the
 /// radial curvature (ContourSpec::k) and the least angle, in degrees,
 /// between the normal and the view (ContourSpec::min_angle).

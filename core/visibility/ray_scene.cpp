@@ -127,8 +127,14 @@ RayScene::RayScene(MeshTopology topology) : topo_(std::move(topology)) {
     auto* index = static_cast<std::uint32_t*>(rtcSetNewGeometryBuffer(
         geom, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, 3 * sizeof(std::uint32_t), topo_.n_faces()));
     if (!vertices_ || !index) throw Error("out of memory building the ray-tracing scene");
-    for (const auto& corners : topo_.face_vertices())
-        for (const VertexId v : corners) *index++ = std::uint32_t(v.index());
+    // A split sharp edge's zero-area faces hide nothing; in float they can
+    // keep a rounding-size area a ray could graze, so each is given one
+    // corner three times, which Embree never hits.
+    for (const FaceId f : topo_.faces()) {
+        const auto& corners = topo_.face_vertices()[f];
+        const bool strip = topo_.has_strips() && !face_has_area(topo_, f);
+        for (const VertexId v : corners) *index++ = std::uint32_t((strip ? corners[0] : v).index());
+    }
     upload_positions();
     rtcCommitGeometry(geom);
     rtcAttachGeometry(scene, geom);

@@ -33,6 +33,9 @@ struct OracleSetup {
     glm::dvec3 view_dir{0, 0, 1}, eye{0, 0, 5}; ///< orthographic: where the camera looks; perspective: the eye
     bool point_light = false;
     glm::dvec3 light_dir{0, 0, 1}, light_pos{0.0}; ///< toward the light; or where it is
+    /// When above 0: a vertex's f within this of zero counts as outside (a
+    /// face seen edge-on on a mesh with sharp edges, as the product defines it).
+    double edge_on = 0.0;
 };
 
 struct OracleContour {
@@ -85,7 +88,10 @@ inline OracleContour marching_triangles(std::span<const glm::dvec3> positions,
     const std::vector<glm::dvec3> normal =
         !normals.empty() ? std::vector<glm::dvec3>(normals.begin(), normals.end()) : oracle_normals(positions, faces);
     std::vector<double> fv(positions.size());
-    for (std::size_t v = 0; v < fv.size(); ++v) fv[v] = oracle_f(setup, positions[v], normal[v]);
+    for (std::size_t v = 0; v < fv.size(); ++v) {
+        fv[v] = oracle_f(setup, positions[v], normal[v]);
+        if (std::abs(fv[v]) < setup.edge_on) fv[v] = -1e-300;
+    }
     OracleContour out;
     std::map<std::pair<std::int32_t, std::int32_t>, std::int32_t> index; // edge -> crossing number, or -1
     for (const auto& f : faces)

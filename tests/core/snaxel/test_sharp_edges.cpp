@@ -326,7 +326,7 @@ TEST(SharpEdges, TurntableTrackingEqualsTheOracleAtEveryFrame) {
             Camera cam;
             cam.view_dir = glm::rotate(glm::normalize(glm::dvec3(0.3, -0.35, 1.0)), glm::radians(3.0 * frame), glm::dvec3(0, 1, 0));
             const TrackedFrame& tf = tracker.step(cam, light);
-            ASSERT_TRUE(test::fronts_match_oracle(topo, engine, tf.contour.fronts, cam, light, tolerance, file_normals))
+            ASSERT_TRUE(test::fronts_match_oracle(topo, engine, tf.contour.fronts, cam, light, tolerance, file_normals, kEdgeOn))
                 << model.file << " frame " << frame;
             for (const Snaxel& s : tf.contour.fronts.snaxels) on_strips += edge_in_strip(topo, s.edge);
             events += tf.events.size();
