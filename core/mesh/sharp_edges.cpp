@@ -82,7 +82,10 @@ std::optional<LoadedMesh> split_sharp_edges(const LoadedMesh& loaded, const Surf
         wedges.unite(h0, mesh.prev_halfedge_handle(h1)); // at h0's end
         wedges.unite(h1, mesh.prev_halfedge_handle(h0)); // at h1's end
     }
-    if (split.sharp_edges == 0) return std::nullopt;
+    if (split.sharp_edges == 0) {
+        if (what) *what = split;
+        return std::nullopt;
+    }
 
     // Each wedge at a vertex but the first gets a copy of the vertex.
     std::vector<Mesh::Point> points;
