@@ -58,12 +58,27 @@ Camera camera_of(const ref::View& v) {
     return cam;
 }
 
-/// The contours a map of the classes shadow, lit and band k needs.
-struct MapContours {
+/// The product's side of one view: its camera, the light toward @p to_light,
+/// and the contours a map of the classes shadow, lit and band k needs.
+struct ProductView {
+    Camera cam;
+    Light light;
+    ImageProjection proj;
     ContourResult visual, shadow, iso;
-    MapContours(const SnaxelEngine& engine, const Camera& cam, const Light& light, double k)
-        : visual(engine.compute({}, cam, light)), shadow(engine.compute({ContourKind::Shadow, 0.0}, cam, light)),
+    ProductView(const SnaxelEngine& engine, const ref::View& v, const glm::dvec3& to_light, double k)
+        : cam(camera_of(v)), light(light_toward(to_light)), proj(cam, v.centre, v.radius, v.width, v.height, v.margin),
+          visual(engine.compute({}, cam, light)), shadow(engine.compute({ContourKind::Shadow, 0.0}, cam, light)),
           iso(engine.compute({ContourKind::Isophote, k}, cam, light)) {}
+    PlanarMap map(PlanarMapKind kind, const SnaxelEngine& engine, const RayScene& rays) const {
+        return build_planar_map(kind, engine, {&visual, &shadow, &iso}, &rays, proj, cam, light);
+    }
+
+  private:
+    static Light light_toward(const glm::dvec3& dir) {
+        Light l;
+        l.dir = dir;
+        return l;
+    }
 };
 
 /// How many of the mesh's pixels (@p truth >= 0) the map gives the same class.
@@ -121,13 +136,9 @@ TEST(PlanarMaps, AgreeWithAnIndependentZBuffer) {
             glm::dvec3 to_light = glm::normalize(-v.dir + glm::dvec3(normal(rng), normal(rng), normal(rng)));
             const std::vector<int> truth = ref::class_image(reference, v, to_light, {k});
 
-            const Camera cam = camera_of(v);
-            Light light;
-            light.dir = to_light;
-            const ImageProjection proj(cam, centre, radius, kSize, kSize, v.margin);
-            const MapContours c(engine, cam, light, k);
+            const ProductView product(engine, v, to_light, k);
             for (const PlanarMapKind kind : {PlanarMapKind::Snaxel, PlanarMapKind::Post}) {
-                const PlanarMap map = build_planar_map(kind, engine, {&c.visual, &c.shadow, &c.iso}, &rays, proj, cam, light);
+                const PlanarMap map = product.map(kind, engine, rays);
                 const std::vector<int> image = test::rasterize_regions(map.regions, kSize, kSize);
                 Agreement a;
                 std::map<std::pair<int, int>, int> confusion;
@@ -216,13 +227,9 @@ TEST(PlanarMaps, AgreeOnHardSurfaces) {
             frame_view(v, view % 2 == 0, centre, radius);
             const glm::dvec3 to_light = glm::normalize(-v.dir + glm::dvec3(normal(rng), normal(rng), normal(rng)));
             const std::vector<int> truth = ref::class_image(reference, v, to_light, {k}, &scene.normals);
-            const Camera cam = camera_of(v);
-            Light light;
-            light.dir = to_light;
-            const ImageProjection proj(cam, centre, radius, kSize, kSize, v.margin);
-            const MapContours c(engine, cam, light, k);
+            const ProductView product(engine, v, to_light, k);
             for (const PlanarMapKind kind : {PlanarMapKind::Snaxel, PlanarMapKind::Post}) {
-                const PlanarMap map = build_planar_map(kind, engine, {&c.visual, &c.shadow, &c.iso}, &rays, proj, cam, light);
+                const PlanarMap map = product.map(kind, engine, rays);
                 const Agreement a = agreement(map, test::rasterize_regions(map.regions, kSize, kSize), truth, k);
                 const int which = kind == PlanarMapKind::Snaxel ? 0 : 1;
                 least[which] = std::min(least[which], a.fraction());
