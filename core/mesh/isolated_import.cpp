@@ -79,6 +79,7 @@ class Reader {
     }
     void bytes(void* out, std::size_t n) {
         if (n > data_.size() - at_) throw Error(path_ + ": the importer's reply is cut short");
+        if (n == 0) return;  // an empty vector's data() may be null, which memcpy must not see
         std::memcpy(out, data_.data() + at_, n);
         at_ += n;
     }
