@@ -23,26 +23,32 @@ AnimationJob Document::animationJob() const {
 bool Document::isModified() const { return meshChanged_ || !undo_->isClean(); }
 
 template <class T>
-void Document::edit(const T& now, const T& value, const char* text, int id, void (Document::*assign)(const T&)) {
+void Document::edit(const T& now, const T& value, const QString& text, int id, void (Document::*assign)(const T&),
+                    bool mergeable) {
     if (value == now) return;
     // Pushing the step runs its redo, which makes the change.
-    undo_->push(new SetValueCommand<T>(tr(text), id, now, value, [this, assign](const T& v) { (this->*assign)(v); }));
+    undo_->push(new SetValueCommand<T>(text, id, now, value, [this, assign](const T& v) { (this->*assign)(v); },
+                                       mergeable));
 }
 
 void Document::setStyleText(const QString& text) {
-    edit(style_, text, QT_TR_NOOP("Edit Style"), kUndoStyle, &Document::assignStyle);
+    edit(style_, text, tr("Edit Style"), kUndoStyle, &Document::assignStyle);
 }
 
 void Document::setView(const OrbitView& view) {
-    edit(view_, view, QT_TR_NOOP("Move Camera"), kUndoCamera, &Document::assignView);
+    edit(view_, view, tr("Move Camera"), kUndoCamera, &Document::assignView);
+}
+
+void Document::setView(const OrbitView& view, const QString& step) {
+    edit(view_, view, step, kUndoCamera, &Document::assignView, false);
 }
 
 void Document::setLight(const std::optional<Light>& light) {
-    edit(light_, light, QT_TR_NOOP("Move Light"), kUndoLight, &Document::assignLight);
+    edit(light_, light, tr("Move Light"), kUndoLight, &Document::assignLight);
 }
 
 void Document::setAnimation(const AnimationSpec& animation) {
-    edit(animation_, animation, QT_TR_NOOP("Change Animation"), kUndoAnimation, &Document::assignAnimation);
+    edit(animation_, animation, tr("Change Animation"), kUndoAnimation, &Document::assignAnimation);
 }
 
 void Document::assignStyle(const QString& text) {

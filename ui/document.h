@@ -56,6 +56,9 @@ class Document : public QObject {
     // one) and emits what changed; setting the value it has does nothing.
     void setStyleText(const QString& text);
     void setView(const OrbitView& view);
+    /// A camera change that is a step of its own, named @p step in the
+    /// Edit menu (a named view, an up axis): never merged with a drag.
+    void setView(const OrbitView& view, const QString& step);
     void setLight(const std::optional<Light>& light);
     void setAnimation(const AnimationSpec& animation);
 
@@ -108,7 +111,8 @@ class Document : public QObject {
   private:
     /// One undo step from @p now to @p value (none if they are equal), applied by @p assign.
     template <class T>
-    void edit(const T& now, const T& value, const char* text, int id, void (Document::*assign)(const T&));
+    void edit(const T& now, const T& value, const QString& text, int id, void (Document::*assign)(const T&),
+              bool mergeable = true);
     void assignStyle(const QString& text);
     void assignView(const OrbitView& view);
     void assignLight(const std::optional<Light>& light);

@@ -232,7 +232,7 @@ void MainWindow::onLightDragged(glm::dvec3 axis_a, double angle_a, glm::dvec3 ax
     const bool turns = (spec.kind == AnimationSpec::Kind::Turntable && !light.point) ||
                        spec.kind == AnimationSpec::Kind::LightOrbit;
     const double frame_angle = turns ? glm::radians(spec.degrees_per_frame * timeline_->sourceFrame()) : 0.0;
-    const glm::dvec3 y(0.0, 1.0, 0.0);
+    const glm::dvec3 y = glm::normalize(view_->orbit().up); // the turntable's axis
     auto turn = [&](glm::dvec3 v) {
         v = glm::rotate(v, frame_angle, y);
         v = glm::rotate(v, angle_a, glm::normalize(axis_a));
@@ -266,7 +266,7 @@ glm::dvec3 MainWindow::meshCentre() const {
 Light MainWindow::frameLight() const {
     // As FrameDriver poses it, about the orbit's vertical axis.
     const glm::dvec3 centre = meshCentre();
-    return light_at_frame(timeline_->spec(), baseLight(), timeline_->sourceFrame(), glm::dvec3(0.0, 1.0, 0.0), centre);
+    return light_at_frame(timeline_->spec(), baseLight(), timeline_->sourceFrame(), glm::normalize(view_->orbit().up), centre);
 }
 
 void MainWindow::scheduleContours() {

@@ -2,6 +2,7 @@
 #include "ui/mainwindow.h"
 
 #include <QAction>
+#include <QActionGroup>
 #include <QDir>
 #include <QDockWidget>
 #include <QFile>
@@ -31,6 +32,10 @@ namespace snaxels::ui {
 namespace {
 
 constexpr int kMaxRecent = 8;
+
+/// View > Up Axis, in menu order.
+const std::pair<const char*, glm::dvec3> kUpAxes[] = {{"+X", {1, 0, 0}}, {"-X", {-1, 0, 0}}, {"+Y", {0, 1, 0}},
+                                                      {"-Y", {0, -1, 0}}, {"+Z", {0, 0, 1}}, {"-Z", {0, 0, -1}}};
 
 } // namespace
 
@@ -115,6 +120,52 @@ void MainWindow::createViewMenu() {
     QMenu* viewMenu = menuBar()->addMenu(tr("&View"));
     QAction* reset = viewMenu->addAction(tr("&Reset Camera"), view_, &MeshView::resetCamera);
     reset->setShortcut(Qt::Key_Home);
+    reset->setToolTip(tr("Look at the model's front from a little above"));
+    // Named views in the model's frame (its up axis and front), keeping the
+    // distance and pan: one undo step each.
+    const std::pair<QString, ViewPreset> presets[] = {{tr("&Front"), ViewPreset::Front},
+                                                      {tr("&Back"), ViewPreset::Back},
+                                                      {tr("&Left"), ViewPreset::Left},
+                                                      {tr("Ri&ght"), ViewPreset::Right},
+                                                      {tr("&Top"), ViewPreset::Top}};
+    const char* presetNames[] = {"viewFront", "viewBack", "viewLeft", "viewRight", "viewTop"};
+    for (int i = 0; i < 5; ++i) {
+        const ViewPreset preset = presets[i].second;
+        const QString step = tr("%1 View").arg(QString(presets[i].first).remove('&'));
+        QAction* a = viewMenu->addAction(presets[i].first, this, [this, preset, step] {
+            if (scene_) document_->setView(preset_view(viewState(), preset), step);
+        });
+        a->setObjectName(presetNames[i]);
+        a->setShortcut(QKeySequence(Qt::CTRL | Qt::Key(Qt::Key_1 + i)));
+    }
+    QMenu* upMenu = viewMenu->addMenu(tr("&Up Axis"));
+    upMenu->setObjectName("upAxisMenu");
+    upMenu->setToolTip(tr("The model's up axis: FBX and Collada files are turned upright on import; "
+                          "OBJ, PLY and STL files stand on +Y unless you say otherwise (+Z for most scans)"));
+    auto* ups = new QActionGroup(upMenu);
+    ups->setExclusionPolicy(QActionGroup::ExclusionPolicy::ExclusiveOptional); // a project's own axis may be none of these
+    for (const auto& [name, axis] : kUpAxes) {
+        QAction* a = upMenu->addAction(QString::fromLatin1(name).replace('-', QChar(0x2212)));
+        a->setObjectName(QStringLiteral("up") + QString::fromLatin1(name).replace('+', 'P').replace('-', 'M'));
+        a->setCheckable(true);
+        ups->addAction(a);
+        connect(a, &QAction::triggered, this, [this, name = name, axis = axis] {
+            OrbitView v = viewState();
+            if (!scene_ || v.up == axis) return;
+            // The old yaw and pitch meant the old frame: look at the front again.
+            v.up = axis;
+            v.yaw = 0.0;
+            v.pitch = kDefaultPitch;
+            document_->setView(v, tr("Up Axis %1").arg(QString::fromLatin1(name)));
+        });
+    }
+    auto showUp = [this, ups] {
+        const glm::dvec3 up = glm::normalize(view_->orbit().up);
+        const QList<QAction*> list = ups->actions();
+        for (int i = 0; i < list.size(); ++i) list[i]->setChecked(glm::length(up - kUpAxes[i].second) < 1e-9);
+    };
+    connect(view_, &MeshView::cameraChanged, upMenu, showUp);
+    showUp();
     viewMenu->addAction(tr("Reset &Light"), this, [this] {
         // Back to the style's light (or the default); one undo step.
         if (!light_) return;

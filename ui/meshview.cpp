@@ -265,6 +265,9 @@ void MeshView::setGeometry(MeshGeometry geometry) {
     centre_ = geometry.centre;
     radius_ = geometry.radius;
     dirty_ = true;
+    // A new file stands on +Y (import turns FBX and Collada files upright
+    // from their own axes); the user's up axis was for the file before.
+    orbit_.up = glm::dvec3(0.0, 1.0, 0.0);
     resetCamera();
 }
 
@@ -394,9 +397,9 @@ void MeshView::centreView() {
 }
 
 void MeshView::resetCamera() {
-    // A three-quarter view from slightly above reads shapes best.
+    // The model's front from a little above, standing on its up axis.
     const double turntable = orbit_.turntable;
-    orbit_ = framing_view(centre_, radius_);
+    orbit_ = framing_view(centre_, radius_, orbit_.up);
     orbit_.turntable = turntable;
     update();
     emit cameraChanged();
@@ -541,7 +544,7 @@ void MeshView::mouseMoveEvent(QMouseEvent* event) {
     }
     if (event->buttons() & Qt::LeftButton) {
         orbit_.yaw += d.x() * 0.01;
-        orbit_.pitch = std::clamp(orbit_.pitch + d.y() * 0.01, -1.55, 1.55);
+        orbit_.pitch = std::clamp(orbit_.pitch + d.y() * 0.01, -kMaxPitch, kMaxPitch);
     } else if (event->buttons() & (Qt::RightButton | Qt::MiddleButton)) {
         const double perPixel = 2.0 * orbit_.distance * std::tan(glm::radians(orbit_.fov_deg * 0.5)) /
                                 std::max(height(), 1);

@@ -6,6 +6,7 @@
 #include <sstream>
 
 #include "snaxels/error.h"
+#include "snaxels/scene/orbit.h"
 
 namespace snaxels::cli {
 
@@ -74,11 +75,15 @@ int parse_int(const std::string& option, const std::string& text, int lo, int hi
 }
 
 std::vector<OptionSpec> scene_option_specs() {
-    return {{"view-dir", "X,Y,Z", "orthographic view: the direction the camera looks (default 0,0,1)"},
+    return {{"view-dir", "X,Y,Z",
+             "orthographic view: the direction the camera looks (default: at the model's front, +Z for +Y up, from a "
+             "little above)"},
             {"eye", "X,Y,Z", "perspective view from this point"},
             {"target", "X,Y,Z", "perspective: the point looked at (default: the mesh's centre)"},
             {"fov", "DEG", "perspective: vertical field of view in degrees (default 35)"},
-            {"up", "X,Y,Z", "the world direction shown upward (default 0,1,0)"},
+            {"up", "X,Y,Z",
+             "the model's up axis: shown upward, turned about by --turntable (default 0,1,0; FBX and Collada files "
+             "are turned upright from their own axes on import; 0,0,1 for Z-up scans and Blender's axes)"},
             {"light-dir", "X,Y,Z", "directional light: the direction toward the light"},
             {"light-pos", "X,Y,Z", "point light at this position"},
             {"kind", "KIND", "contour to find: visual, shadow, isophote:K, gleam:K, parabolic, crease[:DEG], border, suggestive[:D[:DEG]] (default visual)", true},
@@ -135,6 +140,7 @@ SceneOptions parse_scene_options(const Args& args) {
     }
     if (const auto up = args.value("up")) o.camera.up = parse_vec3("up", *up, true);
     if (const auto v = args.value("view-dir")) o.camera.view_dir = glm::normalize(parse_vec3("view-dir", *v, true));
+    else o.camera.view_dir = default_view_dir(o.camera.up);
     if (const auto eye = args.value("eye")) {
         o.camera.projection = Camera::Projection::Perspective;
         o.camera.eye = parse_vec3("eye", *eye, false);

@@ -18,7 +18,8 @@ namespace fs = std::filesystem;
 using nlohmann::json;
 
 constexpr const char* kFormat = "snaxels-project";
-constexpr int kVersion = 1;
+// 2: view.up (the model's up axis); version 1 files are +Y up.
+constexpr int kVersion = 2;
 
 struct Kinds {
     AnimationSpec::Kind kind;
@@ -115,6 +116,7 @@ std::string project_text(const Project& p) {
                      {"pitch", p.view.pitch},
                      {"distance", p.view.distance},
                      {"pan", vec(p.view.pan)},
+                     {"up", vec(p.view.up)},
                      {"fov_deg", p.view.fov_deg}}},
                    {"light", light},
                    {"animation", anim},
@@ -165,6 +167,11 @@ Project read_project(const std::string& path) {
     p.view.distance = view.number("distance");
     if (!(p.view.distance > 0.0)) view.fail_field("distance", "must be positive");
     p.view.pan = view.vec3("pan");
+    if (view.has("up")) {
+        p.view.up = view.vec3("up");
+        // Kept as written (the orbit normalizes it), so a project reads back exactly.
+        if (!(glm::length(p.view.up) > 1e-9)) view.fail_field("up", "must be a direction, not zero");
+    }
     if (view.has("fov_deg")) p.view.fov_deg = view.number("fov_deg", 1.0, 179.0);
     if (top.has("light")) {
         const Reader light = top.object("light");

@@ -6,9 +6,42 @@
 
 namespace snaxels {
 
-OrbitView framing_view(const glm::dvec3& centre, double radius) {
+glm::dvec3 model_front(const glm::dvec3& up_in) {
+    const glm::dvec3 up = glm::normalize(up_in);
+    const glm::dvec3 z(0.0, 0.0, 1.0);
+    glm::dvec3 f = std::abs(up.z) < 0.9 ? z : glm::dvec3(0.0, up.z > 0.0 ? -1.0 : 1.0, 0.0);
+    return glm::normalize(f - glm::dot(f, up) * up);
+}
+
+glm::dvec3 default_view_dir(const glm::dvec3& up_in) {
+    const glm::dvec3 up = glm::normalize(up_in);
+    const glm::dvec3 to_eye = std::cos(kDefaultPitch) * model_front(up) + std::sin(kDefaultPitch) * up;
+    return -glm::normalize(to_eye);
+}
+
+namespace {
+
+/// World to the model's frame: rows right, up, front (an orthonormal,
+/// right-handed basis; the identity for +Y up).
+glm::dmat4 model_frame(const glm::dvec3& up_in) {
+    const glm::dvec3 up = glm::normalize(up_in);
+    const glm::dvec3 front = model_front(up);
+    const glm::dvec3 right = glm::cross(up, front);
+    glm::dmat4 m(1.0);
+    for (int c = 0; c < 3; ++c) {
+        m[c][0] = right[c];
+        m[c][1] = up[c];
+        m[c][2] = front[c];
+    }
+    return m;
+}
+
+} // namespace
+
+OrbitView framing_view(const glm::dvec3& centre, double radius, const glm::dvec3& up) {
     OrbitView v;
     v.centre = centre;
+    v.up = glm::normalize(up);
     v.distance = radius / std::sin(glm::radians(v.fov_deg * 0.5)) * 1.05;
     return v;
 }
@@ -18,7 +51,25 @@ glm::dmat4 orbit_view_matrix(const OrbitView& o) {
     v = glm::rotate(v, o.pitch, glm::dvec3(1, 0, 0));
     // The camera orbits by +turntable: the world turns the other way.
     v = glm::rotate(v, o.yaw - o.turntable, glm::dvec3(0, 1, 0));
+    if (o.up != glm::dvec3(0.0, 1.0, 0.0)) v = v * model_frame(o.up);
     return glm::translate(v, -o.centre);
+}
+
+OrbitView preset_view(OrbitView view, ViewPreset preset) {
+    view.pitch = 0.0;
+    switch (preset) {
+    case ViewPreset::Front: view.yaw = 0.0; break;
+    case ViewPreset::Back: view.yaw = M_PI; break;
+    // Right looks from +X of the model's frame (right = up x front), the
+    // front view's right hand, as Blender's and Maya's right views do.
+    case ViewPreset::Left: view.yaw = M_PI_2; break;
+    case ViewPreset::Right: view.yaw = -M_PI_2; break;
+    case ViewPreset::Top:
+        view.yaw = 0.0;
+        view.pitch = kMaxPitch;
+        break;
+    }
+    return view;
 }
 
 Camera orbit_camera(const OrbitView& o) {
@@ -37,7 +88,7 @@ Camera orbit_camera(const OrbitView& o) {
 Camera orbit_base_camera(OrbitView o) {
     o.turntable = 0.0;
     Camera c = orbit_camera(o);
-    c.up = glm::dvec3(0.0, 1.0, 0.0); // the turntable's axis; the screen basis is the same (no roll)
+    c.up = glm::normalize(o.up); // the turntable's axis; the screen basis is the same (no roll)
     return c;
 }
 

@@ -4,6 +4,10 @@
 /// space) at a distance, turned by yaw and pitch, with a turntable angle on
 /// top. One function turns it into the engine's Camera, so the 3-D view,
 /// the project file and the command line see the very same camera.
+///
+/// Yaw and pitch are measured in the model's own frame: its up axis (the
+/// world direction shown upward, +Y unless the user says otherwise) and its
+/// front (model_front()). Yaw 0, pitch 0 looks at the front.
 
 #include <glm/glm.hpp>
 
@@ -11,11 +15,26 @@
 
 namespace snaxels {
 
+/// Radians above the horizon the default views look from: a little above.
+inline constexpr double kDefaultPitch = 0.3;
+
+/// The front of a model whose up axis is @p up (unit): the direction it
+/// faces, perpendicular to up. +Z for +Y up (the glTF and OBJ convention);
+/// -Y for +Z up (Blender's, whose exporters turn -Y into glTF's +Z); for
+/// other ups, +Z (or +Y when up lies near the Z axis) made perpendicular.
+glm::dvec3 model_front(const glm::dvec3& up);
+
+/// The orthographic view direction (eye to scene) that looks at the front
+/// of a model with up axis @p up from a little above: the command line's
+/// default view.
+glm::dvec3 default_view_dir(const glm::dvec3& up);
+
 struct OrbitView {
     glm::dvec3 centre{0.0}; ///< the mesh's bounding-box centre
     glm::dvec3 pan{0.0};    ///< screen-space shift (x right, y up) in world units
-    double yaw = 3.8;       ///< radians about world +Y
-    double pitch = 0.3;     ///< radians above the horizon
+    glm::dvec3 up{0.0, 1.0, 0.0}; ///< the model's up axis (unit): the orbit and the turntable turn about it
+    double yaw = 0.0;       ///< radians about up; 0 looks at the model's front
+    double pitch = kDefaultPitch; ///< radians above the horizon
     double distance = 3.0;  ///< eye to the orbited point
     double turntable = 0.0; ///< radians; the camera orbits by this about world +Y
     double fov_deg = 35.0;  ///< vertical field of view
@@ -23,9 +42,21 @@ struct OrbitView {
     bool operator==(const OrbitView&) const = default;
 };
 
-/// A three-quarter view from slightly above that frames a sphere of
-/// @p radius about @p centre.
-OrbitView framing_view(const glm::dvec3& centre, double radius);
+/// A view of the model's front from a little above that frames a sphere of
+/// @p radius about @p centre, the model standing on @p up.
+OrbitView framing_view(const glm::dvec3& centre, double radius, const glm::dvec3& up = {0.0, 1.0, 0.0});
+
+/// The named views of the View menu and the command line.
+enum class ViewPreset { Front, Back, Left, Right, Top };
+
+/// @p view turned to look at the model from @p preset (level, or from
+/// straight above for Top, short of the pole by the orbit's pitch limit),
+/// keeping its distance, pan, up and field of view.
+OrbitView preset_view(OrbitView view, ViewPreset preset);
+
+/// The orbit's pitch limit: a little short of straight above or below, where
+/// the up axis would lie along the line of sight.
+inline constexpr double kMaxPitch = 1.55;
 
 /// World to eye space (OpenGL convention: the eye looks down -Z).
 glm::dmat4 orbit_view_matrix(const OrbitView& view);
@@ -33,8 +64,9 @@ glm::dmat4 orbit_view_matrix(const OrbitView& view);
 /// The perspective camera of @p view.
 Camera orbit_camera(const OrbitView& view);
 
-/// The camera of @p view before the turntable turns, with world +Y up: what
-/// an animation export starts from.
+/// The camera of @p view before the turntable turns, with the model's up
+/// axis as its up: what an animation export starts from (a turntable turns
+/// about that axis).
 Camera orbit_base_camera(OrbitView view);
 
 } // namespace snaxels

@@ -151,23 +151,23 @@ template <class W> W* childWithText(QWidget* parent, const QString& text) {
     return nullptr;
 }
 
-/// An ellipsoid (semi-axes 2, 1, 0.8) as an OBJ file: convex, so every
-/// part of its visual contour is on its outline in the image, and not a
-/// solid of revolution about the orbit's axes, so the outline changes as
-/// the view turns.
-bool writeEllipsoid(const QString& path) {
+/// An ellipsoid (semi-axes 2, 0.8, 1 along x, y, z by default) as an OBJ
+/// file: convex, so every part of its visual contour is on its outline in
+/// the image, and not a solid of revolution about the orbit's axes, so the
+/// outline changes as the view turns.
+bool writeEllipsoid(const QString& path, glm::dvec3 semi = {2.0, 0.8, 1.0}) {
     QFile file(path);
     if (!file.open(QIODevice::WriteOnly)) return false;
     QTextStream out(&file);
     const int rings = 48, segments = 96;
-    out << "v 0 0.8 0\n";
+    out << "v 0 " << semi.y << " 0\n";
     for (int i = 1; i < rings; ++i)
         for (int j = 0; j < segments; ++j) {
             const double theta = M_PI * i / rings, phi = 2.0 * M_PI * j / segments;
-            out << "v " << 2.0 * std::sin(theta) * std::cos(phi) << ' ' << 0.8 * std::cos(theta) << ' '
-                << 1.0 * std::sin(theta) * std::sin(phi) << '\n';
+            out << "v " << semi.x * std::sin(theta) * std::cos(phi) << ' ' << semi.y * std::cos(theta) << ' '
+                << semi.z * std::sin(theta) * std::sin(phi) << '\n';
         }
-    out << "v 0 -0.8 0\n";
+    out << "v 0 " << -semi.y << " 0\n";
     auto at = [&](int i, int j) { return 2 + (i - 1) * segments + (j % segments); }; // 1-based, ring i >= 1
     const int last = 2 + (rings - 1) * segments;
     for (int j = 0; j < segments; ++j) out << "f 1 " << at(1, j + 1) << ' ' << at(1, j) << '\n';
@@ -216,6 +216,20 @@ bool showHorseInToon(MainWindow& window) {
 
 QImage paneImage(MainWindow& window) {
     return window.svgPane()->grab().toImage().convertToFormat(QImage::Format_RGB32);
+}
+
+/// Height over width of the ink in the SVG pane (the default style's
+/// blue strokes; not the canvas's grey frame).
+double drawnAspect(MainWindow& window) {
+    const QImage image = paneImage(window);
+    int x0 = image.width(), x1 = -1, y0 = image.height(), y1 = -1;
+    for (int y = 0; y < image.height(); ++y)
+        for (int x = 0; x < image.width(); ++x)
+            if (const QRgb p = image.pixel(x, y); qBlue(p) > qRed(p) + 40) {
+                x0 = std::min(x0, x), x1 = std::max(x1, x);
+                y0 = std::min(y0, y), y1 = std::max(y1, y);
+            }
+    return x1 < x0 ? 0.0 : double(y1 - y0 + 1) / double(x1 - x0 + 1);
 }
 
 } // namespace
@@ -786,6 +800,79 @@ class TestMainWindow : public QObject {
         QCOMPARE(window.projectPath(), second);
         QVERIFY(!window.isModified());
         QCOMPARE(readAll(first), saved); // the first project, byte for byte
+    }
+
+    // View > Up Axis stands a Z-up file upright, the presets look from the
+    // model's sides, each is one undo step, and a project keeps the axis.
+    void upAxisAndViewPresets() {
+        QTemporaryDir dir;
+        const QString mesh = dir.filePath("tall-z-up.obj");
+        QVERIFY(writeEllipsoid(mesh, {1.2, 0.4, 2.0})); // 4 units tall along Z, 2.4 wide
+        MainWindow window;
+        QVERIFY(showWithMesh(window, mesh));
+        auto action = [&](const char* name) {
+            QAction* a = window.findChild<QAction*>(name);
+            if (!a) qFatal("no action %s", name);
+            return a;
+        };
+        auto eyeFromCentre = [&] {
+            const snaxels::Camera c = window.meshView()->camera();
+            return glm::normalize(c.eye - window.meshView()->orbitCentre());
+        };
+        // A new file stands on +Y and is seen from its front (+Z), a little above.
+        QVERIFY(action("upPY")->isChecked());
+        QVERIFY(eyeFromCentre().z > 0.9 && eyeFromCentre().y > 0.1);
+        const double lying = drawnAspect(window);
+        QVERIFY2(lying < 1.0, qPrintable(QString("aspect %1 on +Y").arg(lying))); // seen end on, it is wide
+
+        QSignalSpy contours(&window, &MainWindow::contoursUpdated);
+        const int steps = window.undoStack()->count();
+        action("upPZ")->trigger();
+        QVERIFY(contours.wait(30000));
+        QTest::qWait(100);
+        QVERIFY(action("upPZ")->isChecked() && !action("upPY")->isChecked());
+        QCOMPARE(window.meshView()->orbit().up, glm::dvec3(0.0, 0.0, 1.0));
+        // Upright: the screen's up is the model's +Z, its front (-Y, Blender's) faces the viewer.
+        QVERIFY(window.meshView()->camera().up.z > 0.9);
+        QVERIFY(eyeFromCentre().y < -0.9);
+        const double upright = drawnAspect(window);
+        QVERIFY2(upright > 1.4, qPrintable(QString("aspect %1 on +Z").arg(upright)));
+        QCOMPARE(window.undoStack()->count(), steps + 1);
+
+        action("viewRight")->trigger();
+        QVERIFY(eyeFromCentre().x > 0.99);
+        action("viewLeft")->trigger();
+        QVERIFY(eyeFromCentre().x < -0.99);
+        action("viewBack")->trigger();
+        QVERIFY(eyeFromCentre().y > 0.99);
+        action("viewTop")->trigger();
+        QVERIFY(eyeFromCentre().z > 0.99);
+        action("viewFront")->trigger();
+        QVERIFY(eyeFromCentre().y < -0.99);
+        QCOMPARE(window.undoStack()->count(), steps + 6);
+        window.undoStack()->undo(); // back to the top view
+        QVERIFY(eyeFromCentre().z > 0.99);
+
+        // Home keeps the axis; the project keeps it too.
+        action("viewFront")->trigger();
+        window.meshView()->resetCamera();
+        QCOMPARE(window.meshView()->orbit().up, glm::dvec3(0.0, 0.0, 1.0));
+        const QString project = dir.filePath("tall.snaxels");
+        QVERIFY(window.saveProject(project));
+        MainWindow reopened;
+        QVERIFY(showWindow(reopened, {1000, 700}));
+        QSignalSpy opened(&reopened, &MainWindow::projectOpened);
+        reopened.openFile(project);
+        QVERIFY(opened.wait(60000));
+        QCOMPARE(reopened.meshView()->orbit().up, glm::dvec3(0.0, 0.0, 1.0));
+        QVERIFY(reopened.findChild<QAction*>("upPZ")->isChecked());
+        QVERIFY(reopened.meshView()->orbit() == window.meshView()->orbit());
+
+        // Another file stands on +Y again.
+        QSignalSpy loaded(&window, &MainWindow::meshLoaded);
+        window.openMesh(QString(SNAXELS_TEST_ASSETS) + "/spot.obj");
+        QVERIFY(loaded.wait(60000));
+        QCOMPARE(window.meshView()->orbit().up, glm::dvec3(0.0, 1.0, 0.0));
     }
 
     // A style given on the command line is where the session starts, not an

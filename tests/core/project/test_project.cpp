@@ -47,6 +47,7 @@ TEST_F(ProjectFile, EveryNumberReadsBackExactly) {
         p.view.distance = std::abs(u(rng)) + 1e-3;
         p.view.pan = {u(rng) * 1e-7, u(rng), u(rng) * 1e9};
         p.view.fov_deg = 20.0 + std::abs(u(rng));
+        if (trial % 2) p.view.up = glm::normalize(glm::dvec3(u(rng), u(rng), u(rng)));
         if (trial % 3) {
             Light l;
             l.point = trial % 3 == 2;
@@ -97,6 +98,22 @@ TEST_F(ProjectFile, MeshPathsAreRelativeToTheProject) {
     EXPECT_EQ(resolve_project_mesh(project, "/abs/x.obj"), "/abs/x.obj");
 }
 
+TEST_F(ProjectFile, TheUpAxisRoundTripsAndOldProjectsStandOnY) {
+    Project p;
+    p.mesh = "scan.ply";
+    p.view.up = {0.0, 0.0, 1.0};
+    const std::string text = project_text(p);
+    EXPECT_EQ(read_project(write("z.snaxels", text)).view.up, glm::dvec3(0.0, 0.0, 1.0));
+    // A version 1 project has no up axis: +Y, as it was drawn then.
+    std::string old = text;
+    old.replace(old.find("\"version\": 2"), 12, "\"version\": 1");
+    const auto up = old.find("\"up\"");
+    old.erase(up, old.find(']', up) + 2 - up);
+    const Project back = read_project(write("old.snaxels", old));
+    EXPECT_EQ(back.view.up, glm::dvec3(0.0, 1.0, 0.0));
+    EXPECT_EQ(back.view.yaw, p.view.yaw);
+}
+
 TEST_F(ProjectFile, BadFilesNameTheProblem) {
     Project p;
     p.mesh = "m.obj";
@@ -112,12 +129,14 @@ TEST_F(ProjectFile, BadFilesNameTheProblem) {
         text.replace(at, from.size(), to);
         return error_of(write("edited.snaxels", text));
     };
-    EXPECT_NE(edit("\"version\": 1", "\"version\": 9").find("newer snaxels"), std::string::npos);
+    EXPECT_NE(edit("\"version\": 2", "\"version\": 9").find("newer snaxels"), std::string::npos);
     EXPECT_NE(edit("\"mesh\": \"m.obj\",", "").find("\"mesh\" is missing"), std::string::npos);
-    EXPECT_NE(edit("\"yaw\": 3.8", "\"yaw\": \"left\"").find("\"view.yaw\" must be a finite number"), std::string::npos);
+    EXPECT_NE(edit("\"yaw\": 0.0", "\"yaw\": \"left\"").find("\"view.yaw\" must be a finite number"), std::string::npos);
     EXPECT_NE(edit("\"source\": \"still\"", "\"source\": \"spin\"").find("\"animation.source\" must be one of"), std::string::npos);
     EXPECT_NE(edit("\"frames\": 1", "\"frames\": -4").find("\"animation.frames\""), std::string::npos);
     EXPECT_NE(edit("\"distance\": 3.0", "\"distance\": 0").find("\"view.distance\" must be positive"), std::string::npos);
+    EXPECT_NE(edit("\"up\": [\n      0.0,\n      1.0,", "\"up\": [\n      0.0,\n      0.0,").find("\"view.up\" must be a direction"),
+              std::string::npos);
     EXPECT_NE(error_of((dir_ / "missing.snaxels").string()).find("cannot open"), std::string::npos);
     EXPECT_NE(error_of(dir_.string()).find("is a directory"), std::string::npos);
     // The message names the file.
