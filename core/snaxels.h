@@ -10,6 +10,7 @@
 #include "snaxels/version.h"
 
 #include "snaxels/mesh/import.h"
+#include "snaxels/mesh/file_cameras.h"
 #include "snaxels/mesh/mesh_animation.h"
 #include "snaxels/mesh/procedural.h"
 #include "snaxels/mesh/refine.h"

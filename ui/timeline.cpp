@@ -187,6 +187,7 @@ bool Timeline::setSpec(const AnimationSpec& s) {
     case AnimationSpec::Kind::Turntable:
     case AnimationSpec::Kind::LightOrbit:
     case AnimationSpec::Kind::Still: index = source_->findData(int(s.kind), kKindRole); break;
+    case AnimationSpec::Kind::Camera: found = false; break;
     case AnimationSpec::Kind::Clip: {
         found = false;
         int nth = 0;

@@ -13,6 +13,7 @@
 #include "app/cli/progress.h"
 #include "app/cli/scene_options.h"
 #include "snaxels/error.h"
+#include "snaxels/mesh/file_cameras.h"
 #include "snaxels/mesh/import.h"
 #include "snaxels/animation/pipeline.h"
 #include "snaxels/util/atomic_file.h"
@@ -61,7 +62,7 @@ int run_animate(const std::vector<std::string>& argv) {
                   {"events", "OUT.json", "write the visual events (creation, annihilation, split, merge)"},
                   {"stats", "OUT.json", "write the animated SVG's paths: frames shown, vertices, keyframes"}});
     Args args("animate",
-              "animate MESH (--turntable DEG | --light-orbit DEG | --clip NAME | --sequence PATTERN)\n"
+              "animate MESH (--turntable DEG | --light-orbit DEG | --clip NAME | --sequence PATTERN | --camera NAME)\n"
               "       --frames N [--fps F] [view, light and kind options as in contours]\n"
               "       [--tolerance PX] -o OUT.svg|OUT.json [--format svg|lottie] [--frames-dir DIR]\n"
               "       [--events OUT.json] [--stats OUT.json]",
@@ -101,13 +102,19 @@ int run_animate(const std::vector<std::string>& argv) {
             throw UsageError("--sequence needs #### or %04d in the pattern where the frame number goes");
         ++sources;
     }
-    if (sources != 1)
-        throw UsageError("give exactly one of --turntable, --light-orbit, --clip, --sequence");
+    if (scene.file_camera) anim.camera = *scene.file_camera;
+    // The file's camera alone: it moves through its own clip (checked once
+    // the file is read: a camera no clip moves has nothing to animate).
+    if (sources == 0 && scene.file_camera) anim.kind = AnimationSpec::Kind::Camera;
+    else if (sources != 1)
+        throw UsageError("give exactly one of --turntable, --light-orbit, --clip, --sequence (or --camera NAME alone, "
+                         "for a camera the file animates)");
     if (const auto v = args.value("fps")) anim.fps = parse_number("fps", *v, 0.0, 1000.0);
     if (const auto v = args.value("start")) anim.start = parse_int("start", *v, 0, 1000000);
     int frames = 0;
     if (const auto v = args.value("frames")) frames = parse_int("frames", *v, 1, 100000);
-    else if (anim.kind != AnimationSpec::Kind::Clip) throw UsageError("--frames is required");
+    else if (anim.kind != AnimationSpec::Kind::Clip && anim.kind != AnimationSpec::Kind::Camera)
+        throw UsageError("--frames is required");
     AnimatedSvgOptions svg_options;
     if (const auto v = args.value("tolerance")) svg_options.tolerance_px = parse_number("tolerance", *v, -1e-12, 100.0);
     const auto output = args.value("output");
@@ -131,7 +138,14 @@ int run_animate(const std::vector<std::string>& argv) {
     if (mesh_path.empty()) mesh_path = loaded.report.source;
     AnimationJob job;
     job.animation = anim;
-    job.scene = complete_scene(scene, loaded.report);
+    if (anim.kind == AnimationSpec::Kind::Camera) {
+        const CameraTrack track(mesh_path, anim.camera);
+        if (!track.info().animated())
+            throw Error(mesh_path + ": camera '" + track.info().name +
+                        "' is not moved by any clip; draw it with contours --camera, or animate it with --turntable");
+    }
+    // The first frame's camera decides the default light, as a turntable's does.
+    job.scene = complete_scene(scene, loaded.report, mesh_path, anim.start / anim.fps);
     job.svg = svg_options;
     job.format = format;
     job.frames_dir = frames_dir;

@@ -62,7 +62,7 @@ int run_contours(const std::vector<std::string>& argv) {
     // Everything about the command line is checked: now the expensive part.
     const LoadedMesh loaded = load_mesh(args.positional()[0]);
     const MeshReport& report = loaded.report;
-    const StillJob job{complete_scene(scene, report)};
+    const StillJob job{complete_scene(scene, report, args.positional()[0])};
     const Camera& camera = job.scene.camera;
     const Light& light = job.scene.light;
 

@@ -4,6 +4,7 @@
 
 #include "app/cli/args.h"
 #include "app/cli/commands.h"
+#include "snaxels/mesh/file_cameras.h"
 #include "snaxels/mesh/import.h"
 #include "snaxels/mesh/refine.h"
 
@@ -14,7 +15,8 @@ int run_info(const std::vector<std::string>& argv) {
               std::string("Reads MESH, welds and repairs it as the engine sees it, and prints a "
                           "report:\nvertices, faces, edges, boundary and non-manifold edges of the "
                           "input, vertices\nsplit and faces dropped by the repair, connected "
-                          "components and bounding box,\nand how far the engine refines it (--refine auto).\n\n") +
+                          "components and bounding box,\nhow far the engine refines it (--refine auto), and "
+                          "the file's cameras\n(for --camera).\n\n") +
                   kMeshArgumentHelp,
               {{"json", "", "print one JSON object instead of text"}}, {"MESH"});
     if (!args.parse(argv)) {
@@ -22,18 +24,39 @@ int run_info(const std::vector<std::string>& argv) {
         return 0;
     }
     const LoadedMesh loaded = load_mesh(args.positional()[0]);
+    const std::vector<FileCamera> cameras =
+        may_hold_cameras(args.positional()[0]) ? file_cameras(args.positional()[0]) : std::vector<FileCamera>{};
     // What the engine works on by default (--refine auto): docs/engine.md.
     const int levels = refine_levels(loaded.report.faces, kAutoRefine);
     const std::size_t engine_faces = loaded.report.faces * (std::size_t(1) << (2 * levels));
     if (args.flag("json")) {
         nlohmann::json doc = to_json(loaded.report);
         doc["engine"] = {{"refine_levels", levels}, {"faces", engine_faces}};
+        nlohmann::json list = nlohmann::json::array();
+        for (const FileCamera& c : cameras) {
+            nlohmann::json j = {{"name", c.name}, {"projection", c.orthographic ? "orthographic" : "perspective"}};
+            if (c.orthographic) j["height"] = c.ortho_height;
+            else j["fov_deg"] = c.fov_deg;
+            j["aspect"] = c.aspect > 0.0 ? nlohmann::json(c.aspect) : nlohmann::json(nullptr);
+            j["clip"] = c.animated() ? nlohmann::json(c.clip) : nlohmann::json(nullptr);
+            if (c.animated()) j["seconds"] = c.clip_seconds;
+            list.push_back(std::move(j));
+        }
+        doc["cameras"] = std::move(list);
         std::cout << doc.dump(2) << '\n';
     } else {
         std::cout << to_text(loaded.report);
         if (levels > 0)
             std::cout << "refined for contours: " << levels << (levels == 1 ? " level, " : " levels, ") << engine_faces
                       << " faces\n";
+        for (const FileCamera& c : cameras) {
+            std::cout << "camera \"" << c.name << "\": ";
+            if (c.orthographic) std::cout << "orthographic, " << c.ortho_height << " units high";
+            else std::cout << "perspective, " << c.fov_deg << " degrees vertical field of view";
+            if (c.aspect > 0.0) std::cout << ", aspect " << c.aspect;
+            if (c.animated()) std::cout << ", moved by clip \"" << c.clip << "\" (" << c.clip_seconds << " s)";
+            std::cout << '\n';
+        }
     }
     return 0;
 }

@@ -6,6 +6,7 @@
 #include <sstream>
 
 #include "snaxels/error.h"
+#include "snaxels/mesh/file_cameras.h"
 #include "snaxels/scene/orbit.h"
 
 namespace snaxels::cli {
@@ -81,6 +82,9 @@ std::vector<OptionSpec> scene_option_specs() {
             {"eye", "X,Y,Z", "perspective view from this point"},
             {"target", "X,Y,Z", "perspective: the point looked at (default: the mesh's centre)"},
             {"fov", "DEG", "perspective: vertical field of view in degrees (default 35)"},
+            {"camera", "NAME",
+             "draw from the file's camera NAME (or its index; info lists them) with its field of view, and its "
+             "aspect unless --size is given"},
             {"up", "X,Y,Z",
              "the model's up axis: shown upward, turned about by --turntable (default 0,1,0; FBX and Collada files "
              "are turned upright from their own axes on import; 0,0,1 for Z-up scans and Blender's axes)"},
@@ -109,6 +113,9 @@ SceneOptions parse_scene_options(const Args& args) {
         throw UsageError("--view-dir (orthographic) and --eye (perspective) exclude each other");
     if (!args.flag("eye") && (args.flag("target") || args.flag("fov")))
         throw UsageError("--target and --fov need --eye (a perspective view)");
+    if (args.flag("camera"))
+        for (const char* view : {"view-dir", "eye", "target", "fov", "up"})
+            if (args.flag(view)) throw UsageError(std::string("--camera and --") + view + " exclude each other (the file's camera sets the view)");
     if (args.flag("light-dir") && args.flag("light-pos"))
         throw UsageError("--light-dir and --light-pos exclude each other");
     for (const std::string& k : args.values("kind")) {
@@ -124,6 +131,8 @@ SceneOptions parse_scene_options(const Args& args) {
         for (const StyleDiagnostic& w : warnings)
             std::cerr << "snaxels-cli: " << *path << ":" << w.line << ":" << w.column << ": warning: " << w.message << '\n';
     }
+    o.file_camera = args.value("camera");
+    o.size_given = args.flag("size");
     if (const auto size = args.value("size")) {
         const auto x = size->find('x');
         bool ok = x != std::string::npos;
@@ -176,7 +185,8 @@ SceneOptions parse_scene_options(const Args& args) {
     return o;
 }
 
-SceneSettings complete_scene(const SceneOptions& o, const MeshReport& report) {
+SceneSettings complete_scene(const SceneOptions& o, const MeshReport& report, const std::string& mesh_path,
+                             double seconds) {
     SceneOverrides overrides = o.overrides;
     if (overrides.refine > 0 && refine_levels(report.faces, overrides.refine) < overrides.refine) {
         const int levels = refine_levels(report.faces, overrides.refine);
@@ -186,12 +196,17 @@ SceneSettings complete_scene(const SceneOptions& o, const MeshReport& report) {
         overrides.refine = levels;
     }
     Camera camera = o.camera;
-    if (!camera.orthographic()) {
+    Style style = o.style;
+    if (o.file_camera) {
+        const CameraTrack track(mesh_path, *o.file_camera);
+        camera = track.at(seconds);
+        if (!o.size_given) style.height = canvas_height_for(track.info(), style.width, style.height);
+    } else if (!camera.orthographic()) {
         camera.target = o.target.value_or(report.centre());
         if (glm::length(camera.target - camera.eye) < 1e-12)
             throw UsageError("--eye and --target are the same point");
     }
-    return scene_settings(o.style, camera, overrides);
+    return scene_settings(style, camera, overrides);
 }
 
 } // namespace snaxels::cli

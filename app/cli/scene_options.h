@@ -26,15 +26,20 @@ struct SceneOptions {
     /// --light-*, --kind, --no-visibility, --planar-map (for contours, also
     /// listing its regions), --refine and --check over the style.
     SceneOverrides overrides;
+    std::optional<std::string> file_camera; ///< --camera: one of the file's cameras
+    bool size_given = false;                ///< --size (else a file camera's aspect sets the height)
 };
 
 std::vector<OptionSpec> scene_option_specs();
 /// Parses the options and reads --style (its warnings go to standard error).
 SceneOptions parse_scene_options(const Args& args);
-/// The scene, with what depends on the mesh filled in: the perspective
-/// target (its centre by default), the default light, and --refine lowered
+/// The scene, with what depends on the mesh filled in: the file's camera
+/// (--camera; read from @p mesh_path at @p seconds into its clip, the
+/// canvas's height following its aspect), the perspective target (the
+/// mesh's centre by default), the default light, and --refine lowered
 /// (with a warning) where it would make too many faces.
-SceneSettings complete_scene(const SceneOptions& options, const MeshReport& report);
+SceneSettings complete_scene(const SceneOptions& options, const MeshReport& report, const std::string& mesh_path,
+                             double seconds = 0.0);
 
 glm::dvec3 parse_vec3(const std::string& option, const std::string& text, bool direction);
 double parse_number(const std::string& option, const std::string& text, double lo, double hi);

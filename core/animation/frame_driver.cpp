@@ -17,6 +17,13 @@ FrameDriver::FrameDriver(const AnimationSpec& spec, const LoadedMesh& mesh, cons
     : spec_(spec), vertex_source_(mesh.vertex_source), rest_(topology), camera_(camera), light_(light),
       centre_(centre) {
     if (spec_.kind == AnimationSpec::Kind::Clip) clip_ = std::make_unique<MeshAnimation>(mesh_path, spec_.clip);
+    if (spec_.kind == AnimationSpec::Kind::Camera && spec_.camera.empty())
+        throw Error(mesh_path + ": a camera animation needs one of the file's cameras");
+    if (!spec_.camera.empty()) {
+        const bool shared_clip = spec_.kind == AnimationSpec::Kind::Clip || spec_.kind == AnimationSpec::Kind::Camera;
+        track_ = std::make_unique<CameraTrack>(mesh_path, spec_.camera, shared_clip ? spec_.clip : "");
+        camera_ = file_camera_at(*track_, spec_.start / spec_.fps, centre_);
+    }
     if (spec_.kind == AnimationSpec::Kind::Sequence) {
         if (spec_.first_file < 0) {
             // Numbering starts at 0 or 1, whichever file exists.
@@ -111,25 +118,64 @@ Light light_at_frame(const AnimationSpec& spec, const Light& light, double sourc
     return out;
 }
 
+Camera file_camera_at(const CameraTrack& track, double seconds, const glm::dvec3& centre) {
+    Camera c = track.at(seconds);
+    // Aimed at the orbited point's depth, so a turntable turns it about a
+    // point before it, not about its own eye.
+    if (!c.orthographic()) c.target = c.eye + c.forward() * std::max(glm::dot(centre - c.eye, c.forward()), 1e-9);
+    return c;
+}
+
+glm::dvec3 turntable_axis(const Camera& camera, const CameraTrack* track) {
+    // A file's camera turns about the model's up (its own up is the
+    // picture's, tilted with it); the view's camera's up is the model's.
+    return track ? glm::dvec3(0.0, 1.0, 0.0) : glm::normalize(camera.up);
+}
+
+Camera camera_at_frame(const AnimationSpec& spec, const Camera& camera, const CameraTrack* track, int source_frame,
+                       const glm::dvec3& centre) {
+    Camera out = track ? file_camera_at(*track, source_frame / spec.fps, centre) : camera;
+    if (spec.kind != AnimationSpec::Kind::Turntable) return out;
+    // The camera orbits the target about the up axis, as on a turntable.
+    const Camera base = out;
+    const double angle = glm::radians(spec.degrees_per_frame * source_frame);
+    const glm::dvec3 axis = turntable_axis(camera, track);
+    if (out.orthographic()) {
+        out.view_dir = glm::rotate(base.view_dir, angle, axis);
+        out.eye = centre + glm::rotate(base.eye - centre, angle, axis); // a file's framing camera
+    } else {
+        out.eye = base.target + glm::rotate(base.eye - base.target, angle, axis);
+    }
+    if (track) out.up = glm::rotate(base.up, angle, axis);
+    return out;
+}
+
+int animation_frame_count(const AnimationSpec& spec, const std::string& mesh_path) {
+    int frames = spec.frames;
+    if (frames <= 0 && spec.kind == AnimationSpec::Kind::Clip) {
+        const MeshAnimation clip(mesh_path, spec.clip);
+        frames = clip_frame_count(clip.duration(), spec.fps) - spec.start;
+    } else if (frames <= 0 && spec.kind == AnimationSpec::Kind::Camera) {
+        const CameraTrack track(mesh_path, spec.camera, spec.clip);
+        frames = clip_frame_count(track.info().clip_seconds, spec.fps) - spec.start;
+    }
+    return std::max(frames, 1);
+}
+
 FramePose FrameDriver::pose(int k) {
     FramePose out{camera_, light_, rest_};
     k += spec_.start;
-    const double angle = glm::radians(spec_.degrees_per_frame * k);
-    const glm::dvec3 axis = glm::normalize(camera_.up);
+    out.camera = camera_at_frame(spec_, camera_, track_.get(), k, centre_);
+    const glm::dvec3 axis = turntable_axis(camera_, track_.get());
     switch (spec_.kind) {
     case AnimationSpec::Kind::Turntable:
-        // The camera orbits the target about the up axis, as on a turntable.
-        if (out.camera.orthographic()) {
-            out.camera.view_dir = glm::rotate(camera_.view_dir, angle, axis);
-        } else {
-            out.camera.eye = camera_.target + glm::rotate(camera_.eye - camera_.target, angle, axis);
-        }
         out.light = light_at_frame(spec_, light_, double(k), axis, centre_);
         break;
     case AnimationSpec::Kind::LightOrbit: out.light = light_at_frame(spec_, light_, double(k), axis, centre_); break;
     case AnimationSpec::Kind::Clip:
     case AnimationSpec::Kind::Sequence: out.mesh = mesh_pose(k); break;
-    case AnimationSpec::Kind::Still: break;
+    case AnimationSpec::Kind::Still:
+    case AnimationSpec::Kind::Camera: break;
     }
     return out;
 }

@@ -63,15 +63,6 @@ void attach_parabolic(const MeshTopology& topology, const AnimationJob& job) {
     }
 }
 
-int frame_count(const AnimationJob& job, const std::string& mesh_path) {
-    int frames = job.animation.frames;
-    if (job.animation.kind == AnimationSpec::Kind::Clip && frames <= 0) {
-        const MeshAnimation clip(mesh_path, job.animation.clip);
-        frames = std::max(1, clip_frame_count(clip.duration(), job.animation.fps) - job.animation.start);
-    }
-    return std::max(frames, 1);
-}
-
 /// What the image is framed on, and the camera of a moving mesh.
 struct ImageFrame {
     glm::dvec3 centre{0.0};
@@ -182,7 +173,7 @@ AnimationOutput run_animation(const LoadedMesh& loaded, const std::string& mesh_
     attach_parabolic(rest, job);
     const glm::dvec3 mesh_centre = mesh.report.centre();
     FrameDriver driver(job.animation, mesh, rest, job.scene.camera, job.scene.light, mesh_centre, mesh_path);
-    const int frames = frame_count(job, mesh_path);
+    const int frames = animation_frame_count(job.animation, mesh_path);
     out.frames = frames;
     const ImageFrame image = frame_image(driver, mesh, job, frames);
 
@@ -217,7 +208,9 @@ AnimationOutput run_animation(const LoadedMesh& loaded, const std::string& mesh_
         const MeshTopology& topology = pose.mesh;
         const Light& light = pose.light;
         Camera& camera = pose.camera;
-        if (driver.mesh_moves()) camera = image.camera; // a moving mesh's camera stays (framed on its poses)
+        // A moving mesh's camera stays (framed on its poses), unless the
+        // file's camera moves with it.
+        if (driver.mesh_moves() && !driver.camera_moves()) camera = image.camera;
         require_mesh_in_front(camera, topology.positions(), image.radius);
         if (job.scene.visibility || fills) {
             if (!rays) rays = std::make_unique<RayScene>(topology);

@@ -445,17 +445,8 @@ aiMatrix4x4 upright_axes(const aiScene* scene) {
 /// The JSON of a glTF 1.0 file (a .gltf, or the scene of a binary .glb of
 /// version 1), or null for anything else.
 nlohmann::json gltf1_json(const std::string& path) {
-    std::ifstream in(path, std::ios::binary);
-    std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-    if (text.size() >= 20 && text.compare(0, 4, "glTF") == 0) {
-        std::uint32_t version = 0, length = 0;
-        std::memcpy(&version, text.data() + 4, 4);
-        std::memcpy(&length, text.data() + 12, 4);
-        if (version != 1 || length > text.size() - 20) return nullptr;
-        text = text.substr(20, length);
-    }
-    nlohmann::json doc = nlohmann::json::parse(text, nullptr, false);
-    if (doc.is_discarded() || !doc.is_object() || !doc.contains("asset") || !doc["asset"].is_object()) return nullptr;
+    nlohmann::json doc = detail::gltf_json(path);
+    if (doc.is_null()) return nullptr;
     const nlohmann::json& version = doc["asset"].value("version", nlohmann::json());
     const bool one = (version.is_number() && version.get<double>() < 2.0) ||
                      (version.is_string() && version.get<std::string>().rfind("1", 0) == 0);
@@ -468,8 +459,6 @@ nlohmann::json gltf1_json(const std::string& path) {
 /// milk truck's wheels sink into the road). Such a node's matrix R S T is
 /// put back to T R S: the same R S, translation (R S)^-1 times its own.
 void mend_gltf1_node_order(const aiScene* scene, const std::string& path) {
-    const std::string ext = fs::path(path).extension().string();
-    if (ext != ".gltf" && ext != ".glb" && ext != ".GLTF" && ext != ".GLB") return;
     const nlohmann::json doc = gltf1_json(path);
     if (doc.is_null() || !doc.contains("nodes") || !doc["nodes"].is_object()) return;
     const nlohmann::json& nodes = doc["nodes"];
@@ -491,6 +480,33 @@ void mend_gltf1_node_order(const aiScene* scene, const std::string& path) {
 } // namespace
 
 namespace detail {
+
+nlohmann::json gltf_json(const std::string& path) {
+    const std::string ext = fs::path(path).extension().string();
+    if (ext != ".gltf" && ext != ".glb" && ext != ".GLTF" && ext != ".GLB") return nullptr;
+    std::ifstream in(path, std::ios::binary);
+    std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    if (text.size() >= 12 && text.compare(0, 4, "glTF") == 0) {
+        std::uint32_t version = 0;
+        std::memcpy(&version, text.data() + 4, 4);
+        if (version == 1 && text.size() >= 20) { // header, then the scene's length and format
+            std::uint32_t length = 0;
+            std::memcpy(&length, text.data() + 12, 4);
+            if (length > text.size() - 20) return nullptr;
+            text = text.substr(20, length);
+        } else if (version == 2 && text.size() >= 20) { // header, then chunks; the first is the JSON
+            std::uint32_t length = 0;
+            std::memcpy(&length, text.data() + 12, 4);
+            if (text.compare(16, 4, "JSON") != 0 || length > text.size() - 20) return nullptr;
+            text = text.substr(20, length);
+        } else {
+            return nullptr;
+        }
+    }
+    nlohmann::json doc = nlohmann::json::parse(text, nullptr, false);
+    if (doc.is_discarded() || !doc.is_object() || !doc.contains("asset") || !doc["asset"].is_object()) return nullptr;
+    return doc;
+}
 
 const aiScene* read_assimp_scene(Assimp::Importer& importer, const std::string& path) {
     check_readable(path);

@@ -42,6 +42,36 @@ glm::dvec3 transform(const aiMatrix4x4& m, const aiVector3D& p) {
 
 } // namespace
 
+std::map<std::string, aiMatrix4x4> detail::node_transforms_at(const aiScene* scene, const aiAnimation* anim,
+                                                               double t) {
+    std::map<std::string, const aiNodeAnim*> channel;
+    if (anim)
+        for (unsigned c = 0; c < anim->mNumChannels; ++c) channel[anim->mChannels[c]->mNodeName.C_Str()] = anim->mChannels[c];
+    std::map<std::string, aiMatrix4x4> global;
+    std::function<void(const aiNode*, const aiMatrix4x4&)> walk = [&](const aiNode* node, const aiMatrix4x4& parent) {
+        aiMatrix4x4 local = node->mTransformation;
+        if (const auto it = channel.find(node->mName.C_Str()); it != channel.end()) {
+            const aiNodeAnim* ch = it->second;
+            aiVector3D scale(1, 1, 1), pos;
+            aiQuaternion rot;
+            node->mTransformation.Decompose(scale, rot, pos);
+            if (ch->mNumScalingKeys) scale = lerp_keys(ch->mScalingKeys, ch->mNumScalingKeys, t);
+            if (ch->mNumRotationKeys) rot = slerp_keys(ch->mRotationKeys, ch->mNumRotationKeys, t);
+            if (ch->mNumPositionKeys) pos = lerp_keys(ch->mPositionKeys, ch->mNumPositionKeys, t);
+            local = aiMatrix4x4(scale, rot, pos);
+        }
+        const aiMatrix4x4 g = parent * local;
+        global[node->mName.C_Str()] = g;
+        for (unsigned c = 0; c < node->mNumChildren; ++c) walk(node->mChildren[c], g);
+    };
+    walk(scene->mRootNode, aiMatrix4x4());
+    return global;
+}
+
+double detail::ticks_per_second(const aiAnimation* anim) {
+    return anim->mTicksPerSecond > 0 ? anim->mTicksPerSecond : 25.0;
+}
+
 struct MeshAnimation::Impl {
     Assimp::Importer importer;
     const aiScene* scene = nullptr;
@@ -66,8 +96,8 @@ std::vector<AnimationClipInfo> detail::animation_clips_here(const std::string& p
     for (unsigned a = 0; a < scene->mNumAnimations; ++a) {
         const aiAnimation* anim = scene->mAnimations[a];
         std::string n = anim->mName.C_Str();
-        const double tps = anim->mTicksPerSecond > 0 ? anim->mTicksPerSecond : 25.0;
-        clips.push_back({n.empty() ? "clip" + std::to_string(a) : n, std::max(anim->mDuration, 0.0) / tps});
+        clips.push_back({n.empty() ? "clip" + std::to_string(a) : n,
+                         std::max(anim->mDuration, 0.0) / detail::ticks_per_second(anim)});
     }
     return clips;
 }
@@ -104,42 +134,21 @@ const std::vector<std::string>& MeshAnimation::clip_names() const { return impl_
 const std::string& MeshAnimation::clip() const { return impl_->clip; }
 
 double MeshAnimation::duration() const {
-    const double tps = impl_->anim->mTicksPerSecond > 0 ? impl_->anim->mTicksPerSecond : 25.0;
-    return std::max(impl_->anim->mDuration, 0.0) / tps;
+    return std::max(impl_->anim->mDuration, 0.0) / detail::ticks_per_second(impl_->anim);
 }
 
 void MeshAnimation::pose(double seconds, std::vector<glm::dvec3>& positions) const {
     const aiAnimation* anim = impl_->anim;
     const aiScene* scene = impl_->scene;
-    const double tps = anim->mTicksPerSecond > 0 ? anim->mTicksPerSecond : 25.0;
-    double t = seconds * tps;
+    double t = seconds * detail::ticks_per_second(anim);
     if (anim->mDuration > 0) t = std::fmod(std::max(t, 0.0), anim->mDuration + 1e-9);
 
-    std::map<std::string, const aiNodeAnim*> channel;
-    for (unsigned c = 0; c < anim->mNumChannels; ++c) channel[anim->mChannels[c]->mNodeName.C_Str()] = anim->mChannels[c];
     std::map<std::string, const aiMeshMorphAnim*> morph;
     for (unsigned c = 0; c < anim->mNumMorphMeshChannels; ++c)
         morph[anim->mMorphMeshChannels[c]->mName.C_Str()] = anim->mMorphMeshChannels[c];
 
     // Every node's global transform at t.
-    std::map<std::string, aiMatrix4x4> global;
-    std::function<void(const aiNode*, const aiMatrix4x4&)> walk = [&](const aiNode* node, const aiMatrix4x4& parent) {
-        aiMatrix4x4 local = node->mTransformation;
-        if (const auto it = channel.find(node->mName.C_Str()); it != channel.end()) {
-            const aiNodeAnim* ch = it->second;
-            aiVector3D scale(1, 1, 1), pos;
-            aiQuaternion rot;
-            node->mTransformation.Decompose(scale, rot, pos);
-            if (ch->mNumScalingKeys) scale = lerp_keys(ch->mScalingKeys, ch->mNumScalingKeys, t);
-            if (ch->mNumRotationKeys) rot = slerp_keys(ch->mRotationKeys, ch->mNumRotationKeys, t);
-            if (ch->mNumPositionKeys) pos = lerp_keys(ch->mPositionKeys, ch->mNumPositionKeys, t);
-            local = aiMatrix4x4(scale, rot, pos);
-        }
-        const aiMatrix4x4 g = parent * local;
-        global[node->mName.C_Str()] = g;
-        for (unsigned c = 0; c < node->mNumChildren; ++c) walk(node->mChildren[c], g);
-    };
-    walk(scene->mRootNode, aiMatrix4x4());
+    const std::map<std::string, aiMatrix4x4> global = detail::node_transforms_at(scene, anim, t);
 
     positions.clear();
     std::vector<aiVector3D> local;
@@ -168,7 +177,7 @@ void MeshAnimation::pose(double seconds, std::vector<glm::dvec3>& positions) con
                 }
             }
         }
-        const aiMatrix4x4& node_xf = global[node->mName.C_Str()];
+        const aiMatrix4x4& node_xf = global.at(node->mName.C_Str());
         if (!mesh->mNumBones) {
             for (const auto& p : local) positions.push_back(transform(node_xf, p));
             return;

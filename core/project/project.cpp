@@ -29,7 +29,8 @@ constexpr Kinds kKinds[] = {{AnimationSpec::Kind::Still, "still"},
                             {AnimationSpec::Kind::Turntable, "turntable"},
                             {AnimationSpec::Kind::LightOrbit, "light-orbit"},
                             {AnimationSpec::Kind::Clip, "clip"},
-                            {AnimationSpec::Kind::Sequence, "sequence"}};
+                            {AnimationSpec::Kind::Sequence, "sequence"},
+                            {AnimationSpec::Kind::Camera, "camera"}};
 
 json vec(const glm::dvec3& v) { return json::array({v.x, v.y, v.z}); }
 
@@ -101,7 +102,9 @@ std::string project_text(const Project& p) {
         if (k.kind == p.animation.kind) anim["source"] = k.name;
     if (p.animation.kind == AnimationSpec::Kind::Turntable || p.animation.kind == AnimationSpec::Kind::LightOrbit)
         anim["degrees_per_frame"] = p.animation.degrees_per_frame;
-    if (p.animation.kind == AnimationSpec::Kind::Clip) anim["clip"] = p.animation.clip;
+    if (p.animation.kind == AnimationSpec::Kind::Clip || p.animation.kind == AnimationSpec::Kind::Camera)
+        anim["clip"] = p.animation.clip;
+    if (!p.animation.camera.empty()) anim["camera"] = p.animation.camera;
     if (p.animation.kind == AnimationSpec::Kind::Sequence) {
         anim["pattern"] = p.animation.pattern;
         anim["first_file"] = p.animation.first_file;
@@ -191,17 +194,21 @@ Project read_project(const std::string& path) {
     for (const Kinds& k : kKinds)
         if (source == k.name) p.animation.kind = k.kind, known = true;
     if (!known)
-        anim.fail_field("source", "must be one of still, turntable, light-orbit, clip, sequence (not \"" + source + "\")");
+        anim.fail_field("source", "must be one of still, turntable, light-orbit, clip, sequence, camera (not \"" + source + "\")");
     p.animation.frames = anim.integer("frames", 0, 100000);
     p.animation.fps = anim.number("fps", 1e-3, 1000.0);
     if (anim.has("start")) p.animation.start = anim.integer("start", 0, 1000000);
     if (anim.has("degrees_per_frame")) p.animation.degrees_per_frame = anim.number("degrees_per_frame", -360.0, 360.0);
     if (anim.has("clip")) p.animation.clip = anim.string("clip");
+    if (anim.has("camera")) p.animation.camera = anim.string("camera");
+    if (p.animation.kind == AnimationSpec::Kind::Camera && p.animation.camera.empty())
+        anim.fail_field("camera", "must name one of the file's cameras for a camera animation");
     if (p.animation.kind == AnimationSpec::Kind::Sequence) {
         p.animation.pattern = anim.string("pattern");
         if (anim.has("first_file")) p.animation.first_file = anim.integer("first_file", -1, 1 << 30);
     }
-    if (p.animation.kind != AnimationSpec::Kind::Clip && p.animation.frames < 1)
+    if (p.animation.kind != AnimationSpec::Kind::Clip && p.animation.kind != AnimationSpec::Kind::Camera &&
+        p.animation.frames < 1)
         anim.fail_field("frames", "must be at least 1");
     p.frame = top.has("frame") ? top.integer("frame", 0, 100000) : 0;
     p.style = top.has("style") ? top.string("style") : std::string();

@@ -48,11 +48,17 @@ ImageProjection::ImageProjection(const Camera& camera, const glm::dvec3& centre,
     : camera_(camera), centre_(centre), width_(width), height_(height) {
     camera.screen_basis(right_, up_);
     forward_ = camera.forward();
-    const double half = 0.5 * std::min(width, height);
-    if (camera.orthographic())
+    const double half = 0.5 * (camera.own_frame ? height : std::min(width, height));
+    if (camera.orthographic() && camera.own_frame) {
+        // Centred on the eye's line, at the bounding sphere's depth (where
+        // pixel rays start from, `back` before it).
+        centre_ = camera.eye + forward_ * glm::dot(centre - camera.eye, forward_);
+        scale_ = half / std::max(0.5 * camera.ortho_height, 1e-12);
+    } else if (camera.orthographic()) {
         scale_ = std::max(half - margin, 1.0) / std::max(radius, 1e-12);
-    else
+    } else {
         scale_ = half / std::tan(0.5 * camera.fov_deg * M_PI / 180.0);
+    }
 }
 
 glm::dvec2 ImageProjection::project(const glm::dvec3& p) const {
@@ -78,12 +84,23 @@ void ImageProjection::pixel_ray(const glm::dvec2& pixel, double back, glm::dvec3
 }
 
 nlohmann::json to_json(const Camera& c) {
+    nlohmann::json j;
     if (c.orthographic())
-        return {{"projection", "orthographic"}, {"view_dir", {c.view_dir.x, c.view_dir.y, c.view_dir.z}}};
-    return {{"projection", "perspective"},
-            {"eye", {c.eye.x, c.eye.y, c.eye.z}},
-            {"target", {c.target.x, c.target.y, c.target.z}},
-            {"fov_deg", c.fov_deg}};
+        j = {{"projection", "orthographic"}, {"view_dir", {c.view_dir.x, c.view_dir.y, c.view_dir.z}}};
+    else
+        j = {{"projection", "perspective"},
+             {"eye", {c.eye.x, c.eye.y, c.eye.z}},
+             {"target", {c.target.x, c.target.y, c.target.z}},
+             {"fov_deg", c.fov_deg}};
+    if (c.own_frame) {
+        // A file's camera: where it stands and what it frames.
+        j["up"] = {c.up.x, c.up.y, c.up.z};
+        if (c.orthographic()) {
+            j["eye"] = {c.eye.x, c.eye.y, c.eye.z};
+            j["ortho_height"] = c.ortho_height;
+        }
+    }
+    return j;
 }
 
 nlohmann::json to_json(const Light& l) {

@@ -18,6 +18,14 @@ struct Camera {
     glm::dvec3 target{0.0};             ///< perspective
     double fov_deg = 35.0;              ///< perspective: vertical field of view
     glm::dvec3 up{0.0, 1.0, 0.0};       ///< world direction that appears upward
+    /// A camera that frames the picture itself (a file's camera): the
+    /// perspective field of view spans the image's height, and an
+    /// orthographic view shows ortho_height world units from top to bottom
+    /// about the line through `eye` along view_dir. Otherwise the field of
+    /// view spans the image's smaller side and an orthographic view fits
+    /// the mesh's bounding sphere into the image.
+    bool own_frame = false;
+    double ortho_height = 0.0; ///< orthographic, own_frame: the view's height in world units
 
     bool operator==(const Camera&) const = default;
     bool orthographic() const { return projection == Projection::Orthographic; }
