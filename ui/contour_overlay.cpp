@@ -85,7 +85,10 @@ std::shared_ptr<ContourScene> make_contour_scene(const LoadedMesh& mesh, const s
     // Only formats that carry animation are read a second time for clips.
     const QString suffix = QString::fromStdString(path).section('.', -1).toLower();
     static const QStringList animated{"gltf", "glb", "fbx", "dae", "x", "blend", "md5mesh", "ms3d", "b3d", "smd", "bvh"};
-    if (path.rfind("proc:", 0) != 0 && animated.contains(suffix)) scene->clips = animation_clips(path);
+    if (path.rfind("proc:", 0) != 0 && animated.contains(suffix)) {
+        scene->clips = animation_clips(path);
+        scene->cameras = file_cameras(path);
+    }
     return scene;
 }
 
@@ -125,10 +128,12 @@ bool pose_scene(const LoadedMesh& mesh, ContourScene& scene, const std::optional
 OverlayResult compute_overlay(const LoadedMesh& mesh, ContourScene& scene, const Camera& camera,
                               const Style& style, const std::optional<Light>& light,
                               const std::optional<ClipPose>& pose,
-                              std::shared_ptr<const ParabolicResult> parabolic, bool show_parabolic) {
+                              std::shared_ptr<const ParabolicResult> parabolic, bool show_parabolic,
+                              const std::optional<CameraShot>& shot) {
     const auto start = std::chrono::steady_clock::now();
     OverlayResult out;
     out.camera = camera;
+    Style framed = style;
     try {
         // A style that moves the sharp edges gives the surface new vertices:
         // its scene is built again, and drawn anew.
@@ -138,6 +143,20 @@ OverlayResult compute_overlay(const LoadedMesh& mesh, ContourScene& scene, const
             changed = true;
         }
         changed = pose_scene(scene.split ? *scene.split : mesh, scene, pose) || changed;
+        if (shot) {
+            // The track of the file's camera, read once per camera and clip.
+            const AnimationSpec& a = shot->animation;
+            const bool shared_clip = a.kind == AnimationSpec::Kind::Clip || a.kind == AnimationSpec::Kind::Camera;
+            const std::string clip = shared_clip ? a.clip : "";
+            if (!scene.track || scene.track_camera != a.camera || scene.track_clip != clip) {
+                scene.track.reset();
+                scene.track = std::make_unique<CameraTrack>(scene.mesh_path, a.camera, clip);
+                scene.track_camera = a.camera;
+                scene.track_clip = clip;
+            }
+            out.camera = camera_at_frame(a, camera, scene.track.get(), a.start + shot->frame, mesh.report.centre());
+            framed.height = canvas_height_for(scene.track->info(), framed.width, framed.height);
+        }
         if (changed) out.geometry = std::make_shared<MeshGeometry>(mesh_geometry(scene.topology, display_face_budget()));
     } catch (const std::exception& e) {
         out.error = QString::fromStdString(e.what());
@@ -146,7 +165,7 @@ OverlayResult compute_overlay(const LoadedMesh& mesh, ContourScene& scene, const
     // Curves found before the surface was split anew lie on other edges.
     if (parabolic && parabolic->mesh_edges != scene.topology.n_edges()) parabolic.reset();
     keep_parabolic(scene.topology, ParabolicOptions{}, parabolic);
-    StillJob job = make_still_job(style, camera, light);
+    StillJob job = make_still_job(framed, out.camera, light);
     auto is_parabolic = [](const ContourSpec& k) { return k.kind == ContourKind::Parabolic; };
     if (!parabolic) job.scene.kinds.erase(std::remove_if(job.scene.kinds.begin(), job.scene.kinds.end(), is_parabolic), job.scene.kinds.end());
     StillOutput still;

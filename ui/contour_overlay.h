@@ -30,6 +30,9 @@ struct ContourScene {
     std::unique_ptr<RayScene> rays; ///< the BVH of topology's pose
     std::string mesh_path;          ///< the file clips are read from
     std::vector<AnimationClipInfo> clips;
+    std::vector<FileCamera> cameras;     ///< the file's cameras
+    std::unique_ptr<CameraTrack> track;  ///< the file's camera looked through last
+    std::string track_camera, track_clip; ///< its name and the clip moving it
     std::unique_ptr<FrameDriver> driver; ///< for the clip posed last
     AnimationSpec driver_spec;
     bool posed = false;  ///< topology is a clip frame, not rest
@@ -40,7 +43,8 @@ struct ContourScene {
 };
 
 /// Builds the scene of @p mesh read from @p path (topology, ray-tracing
-/// BVH, the file's clips), its sharp edges found as @p surface says.
+/// BVH, the file's clips and cameras), its sharp edges found as @p surface
+/// says.
 std::shared_ptr<ContourScene> make_contour_scene(const LoadedMesh& mesh, const std::string& path,
                                                  const SurfaceOptions& surface = {});
 
@@ -48,6 +52,13 @@ std::shared_ptr<ContourScene> make_contour_scene(const LoadedMesh& mesh, const s
 struct ClipPose {
     AnimationSpec clip;
     int frame = 0;
+};
+
+/// A frame seen through one of the file's cameras (animation.camera): its
+/// pose at the frame, turned by a turntable, as the export sees it.
+struct CameraShot {
+    AnimationSpec animation;
+    int frame = 0; ///< the timeline's frame (the in point is added)
 };
 
 struct OverlayResult {
@@ -77,6 +88,8 @@ const char* view_colour(ContourKind kind);
 /// SVG that export writes, from one computation.
 /// With @p pose the mesh is first posed at that clip frame; without, it is
 /// put back in its loaded pose if a clip had moved it.
+/// With @p shot the frame is seen through the file's camera instead of
+/// @p camera, the canvas's height following its aspect.
 /// The mesh's parabolic curves are drawn (as the style says) once @p
 /// parabolic holds them (they are left out until then: finding them takes
 /// seconds, see MainWindow::ensureParabolic); with @p show_parabolic they are
@@ -85,6 +98,7 @@ const char* view_colour(ContourKind kind);
 OverlayResult compute_overlay(const LoadedMesh& mesh, ContourScene& scene, const Camera& camera,
                               const Style& style, const std::optional<Light>& light = std::nullopt,
                               const std::optional<ClipPose>& pose = std::nullopt,
-                              std::shared_ptr<const ParabolicResult> parabolic = nullptr, bool show_parabolic = false);
+                              std::shared_ptr<const ParabolicResult> parabolic = nullptr, bool show_parabolic = false,
+                              const std::optional<CameraShot>& shot = std::nullopt);
 
 } // namespace snaxels::ui

@@ -76,6 +76,9 @@ void MainWindow::createDocks() {
     connect(styleEditor_, &StyleEditor::textApplied, this, [this](const QString& text) {
         if (!restoring_) document_->setStyleText(text);
     });
+    connect(view_, &MeshView::lockedToFileCamera, this, [this] {
+        statusBar()->showMessage(tr("Looking through the file's camera: choose View camera in the timeline to orbit"), 4000);
+    });
     connect(view_, &MeshView::viewEdited, this, [this] {
         if (!restoring_) document_->setView(viewState());
     });
@@ -216,7 +219,14 @@ void MainWindow::applyFrame() {
     scheduleContours();
 }
 
-Light MainWindow::baseLight() const { return job_light(document_->style(), view_->baseCamera(), light_); }
+Light MainWindow::baseLight() const {
+    // Through a file's camera the default light is placed from it where it
+    // starts, as the export and snaxels-cli place it.
+    if (const std::string name = timeline_->spec().camera; scene_ && !name.empty())
+        for (const FileCamera& c : scene_->cameras)
+            if (c.name == name) return job_light(document_->style(), c.first, light_);
+    return job_light(document_->style(), view_->baseCamera(), light_);
+}
 
 OrbitView MainWindow::viewState() const {
     OrbitView v = view_->orbit();
@@ -288,8 +298,13 @@ std::optional<std::function<OverlayResult()>> MainWindow::contourWork() const {
     const std::shared_ptr<const ParabolicResult> parabolic = parabolic_->curves();
     const bool showParabolic = parabolicAction_ && parabolicAction_->isChecked();
     const int frame = timeline_->frame();
-    return [mesh, scene, camera, style, light, pose, parabolic, showParabolic, frame] {
-        OverlayResult result = compute_overlay(*mesh, *scene, camera, style, light, pose, parabolic, showParabolic);
+    std::optional<CameraShot> shot;
+    if (const AnimationSpec spec = timeline_->spec(); !spec.camera.empty()) shot = CameraShot{spec, frame};
+    // Through a file's camera the view's orbit is not the camera: the
+    // turntable's orbit is the shot's to apply.
+    const Camera seen = shot ? view_->baseCamera() : camera;
+    return [mesh, scene, seen, style, light, pose, parabolic, showParabolic, frame, shot] {
+        OverlayResult result = compute_overlay(*mesh, *scene, seen, style, light, pose, parabolic, showParabolic, shot);
         result.frame = frame;
         return result;
     };
@@ -312,6 +327,8 @@ void MainWindow::onContoursReady(const OverlayResult& ready) {
     view_->setRegionShading(region_shading(document_->style(), result.light, regionsAction_->isChecked()));
     contourLoops_ = result.loops;
     contourLabel_->setText(tr("%1 loops, %2 snaxels, %3 ms").arg(result.loops).arg(result.snaxels).arg(result.ms, 0, 'f', 1));
+    // Through a file's camera, the 3-D view looks through it too.
+    view_->setFileCamera(timeline_->spec().camera.empty() ? std::nullopt : std::optional<Camera>(result.camera));
     view_->setContours(std::move(result.strips), result.camera);
     timeline_->frameShown(result.frame);
     svg_ = QByteArray::fromStdString(result.svg);

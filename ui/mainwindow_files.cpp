@@ -73,6 +73,7 @@ void MainWindow::onLoadFinished(const LoadResult& result) {
     ++restoring_; // framing the new mesh is not an edit
     view_->setGeometry(MeshGeometry(*result.geometry)); // frames the camera, which schedules contours
     timeline_->setClips(scene_->clips);
+    timeline_->setCameras(scene_->cameras);
     --restoring_;
     document_->resetView(viewState());
     document_->resetAnimation(timeline_->spec());

@@ -338,7 +338,13 @@ void MeshView::setContours(std::vector<ContourStrip> strips, const Camera& seenF
     update();
 }
 
-Camera MeshView::camera() const { return orbit_camera(orbit_); }
+Camera MeshView::camera() const { return fileCamera_ ? *fileCamera_ : orbit_camera(orbit_); }
+
+void MeshView::setFileCamera(const std::optional<Camera>& camera) {
+    if (fileCamera_ == camera) return;
+    fileCamera_ = camera;
+    update();
+}
 
 Camera MeshView::baseCamera() const { return orbit_base_camera(orbit_); }
 
@@ -437,10 +443,28 @@ void MeshView::upload() {
     dirty_ = false;
 }
 
-glm::dmat4 MeshView::viewMatrix() const { return orbit_view_matrix(orbit_); }
+glm::dmat4 MeshView::viewMatrix() const {
+    if (!fileCamera_) return orbit_view_matrix(orbit_);
+    const Camera& c = *fileCamera_;
+    glm::dvec3 right, up;
+    c.screen_basis(right, up);
+    return glm::lookAt(c.eye, c.eye + c.forward(), up);
+}
 
 glm::dmat4 MeshView::projectionMatrix() const {
     const double aspect = double(std::max(width(), 1)) / std::max(height(), 1);
+    if (fileCamera_) {
+        // The file's framing: its field of view (or height) spans the
+        // view's height, as it spans the drawing's.
+        const Camera& c = *fileCamera_;
+        const double depth = glm::dot(centre_ - c.eye, c.forward());
+        const double far = std::max(depth + radius_ * 1.5, radius_ * 1e-3);
+        if (c.orthographic()) {
+            const double h = 0.5 * c.ortho_height;
+            return glm::ortho(-h * aspect, h * aspect, -h, h, depth - radius_ * 1.5, far);
+        }
+        return glm::perspective(glm::radians(c.fov_deg), aspect, std::max(depth - radius_ * 1.5, far * 1e-4), far);
+    }
     const double near = std::max(orbit_.distance - radius_ * 1.5, orbit_.distance * 1e-3);
     return glm::perspective(glm::radians(orbit_.fov_deg), aspect, near, orbit_.distance + radius_ * 1.5);
 }
@@ -542,6 +566,10 @@ void MeshView::mouseMoveEvent(QMouseEvent* event) {
         emit lightDragged(up, d.x() * 0.01, right, d.y() * 0.01);
         return;
     }
+    if (fileCamera_ && (event->buttons() & (Qt::LeftButton | Qt::RightButton | Qt::MiddleButton))) {
+        emit lockedToFileCamera();
+        return;
+    }
     if (event->buttons() & Qt::LeftButton) {
         orbit_.yaw += d.x() * 0.01;
         orbit_.pitch = std::clamp(orbit_.pitch + d.y() * 0.01, -kMaxPitch, kMaxPitch);
@@ -557,6 +585,10 @@ void MeshView::mouseMoveEvent(QMouseEvent* event) {
 }
 
 void MeshView::wheelEvent(QWheelEvent* event) {
+    if (fileCamera_) {
+        emit lockedToFileCamera();
+        return;
+    }
     const double steps = event->angleDelta().y() / 120.0;
     orbit_.distance = std::clamp(orbit_.distance * std::pow(0.85, steps), radius_ * 0.05, radius_ * 100.0);
     update();

@@ -4,6 +4,7 @@
 // or middle drag), zoom (wheel) and the light turned by Shift+left drag. It draws what it is given and reports
 // camera changes; it computes nothing itself.
 
+#include <optional>
 #include <vector>
 
 #include <QOpenGLBuffer>
@@ -73,8 +74,14 @@ class MeshView : public QOpenGLWidget, protected QOpenGLFunctions_3_3_Core {
     /// frame) without moving the camera.
     void setPose(MeshGeometry geometry);
     void clearMesh();
-    /// Frames the whole mesh in a three-quarter view.
+    /// Frames the whole mesh, its front seen from a little above.
     void resetCamera();
+    /// Looks through @p camera (one of the file's cameras, posed for the
+    /// frame) instead of the orbit; nullopt goes back to the orbit. Orbit,
+    /// pan and zoom then leave the view as it is and say why
+    /// (lockedToFileCamera).
+    void setFileCamera(const std::optional<Camera>& camera);
+    bool looksThroughFileCamera() const { return fileCamera_.has_value(); }
     /// Turns the mesh about the vertical axis through its centre, as a
     /// turntable at @p degrees (the user's orbit is kept on top of it).
     void setTurntable(double degrees);
@@ -105,6 +112,8 @@ class MeshView : public QOpenGLWidget, protected QOpenGLFunctions_3_3_Core {
   signals:
     /// The camera moved (orbit, pan, zoom, reset or a new mesh).
     void cameraChanged();
+    /// An orbit, pan or zoom while the view looks through a file's camera.
+    void lockedToFileCamera();
     /// The user finished moving the camera (a drag released, a wheel turn,
     /// a reset): one step for the undo stack.
     void viewEdited();
@@ -144,6 +153,7 @@ class MeshView : public QOpenGLWidget, protected QOpenGLFunctions_3_3_Core {
     glm::dvec3 centre_{0.0};
     double radius_ = 1.0;
     OrbitView orbit_;
+    std::optional<Camera> fileCamera_;
     QPoint lastPos_;
     bool dragged_ = false, draggingLight_ = false;
 

@@ -23,6 +23,7 @@ constexpr int kSecondsRole = Qt::UserRole + 2;
 constexpr int kPatternRole = Qt::UserRole + 3; // a sequence's pattern
 constexpr int kFirstRole = Qt::UserRole + 4;   // its first file's number
 constexpr int kCountRole = Qt::UserRole + 5;   // its files (0: unknown)
+constexpr int kCameraRole = Qt::UserRole + 6;  // a camera source's camera
 } // namespace
 
 namespace {
@@ -49,12 +50,19 @@ AnimationSpec initial_animation() {
 }
 
 Timeline::Timeline(QWidget* parent)
-    : QWidget(parent), source_(new QComboBox(this)), degrees_(new QDoubleSpinBox(this)), frames_(new QSpinBox(this)),
+    : QWidget(parent), source_(new QComboBox(this)), camera_(new QComboBox(this)), degrees_(new QDoubleSpinBox(this)), frames_(new QSpinBox(this)),
       start_(new QSpinBox(this)), fps_(new QDoubleSpinBox(this)), slider_(new QSlider(Qt::Horizontal, this)),
       frameBox_(new QSpinBox(this)), label_(new QLabel(this)),
       play_(new QPushButton(tr("Play"), this)), loop_(new QCheckBox(tr("Loop"), this)),
       everyFrame_(new QCheckBox(tr("Every frame"), this)) {
     setClips({});
+    camera_->setObjectName("cameraChoice");
+    camera_->addItem(tr("View camera"), QString());
+    camera_->setToolTip(tr("The camera the frames are seen through: the view's (orbit with the mouse), or one of "
+                           "the file's, with its field of view and aspect (a camera the file animates moves with "
+                           "its clip)"));
+    camera_->setSizeAdjustPolicy(QComboBox::AdjustToContents);
+    camera_->setVisible(false); // until a file has cameras
     source_->setToolTip(tr("What moves from frame to frame"));
     source_->setSizeAdjustPolicy(QComboBox::AdjustToContents); // clip and sequence names in full
     degrees_->setRange(-90.0, 90.0);
@@ -96,7 +104,7 @@ Timeline::Timeline(QWidget* parent)
     for (QAbstractSpinBox* box : std::initializer_list<QAbstractSpinBox*>{degrees_, frames_, start_, fps_})
         box->setKeyboardTracking(false);
     auto* layout = new QHBoxLayout(this);
-    for (QWidget* w : std::initializer_list<QWidget*>{source_, degrees_, start_, frames_, fps_, play_, loop_, everyFrame_})
+    for (QWidget* w : std::initializer_list<QWidget*>{source_, camera_, degrees_, start_, frames_, fps_, play_, loop_, everyFrame_})
         layout->addWidget(w);
     layout->addWidget(slider_, 1);
     layout->addWidget(frameBox_);
@@ -111,9 +119,11 @@ Timeline::Timeline(QWidget* parent)
         updateEnabled();
         // A clip plays its own length at the rate set, a sequence its files.
         const auto kind = AnimationSpec::Kind(source_->currentData(kKindRole).toInt());
-        if (!quiet_ && kind == AnimationSpec::Kind::Clip) {
+        if (!quiet_ && (kind == AnimationSpec::Kind::Clip || kind == AnimationSpec::Kind::Camera)) {
             ++quiet_;
             setFrameCount(clip_frame_count(source_->currentData(kSecondsRole).toDouble(), fps_->value()));
+            if (kind == AnimationSpec::Kind::Camera) // the moving camera is the one looked through
+                camera_->setCurrentIndex(std::max(0, camera_->findData(source_->currentData(kCameraRole))));
             --quiet_;
         }
         if (!quiet_ && kind == AnimationSpec::Kind::Sequence && source_->currentData(kCountRole).toInt() > 0) {
@@ -121,6 +131,10 @@ Timeline::Timeline(QWidget* parent)
             setFrameCount(std::max(1, source_->currentData(kCountRole).toInt() - start_->value()));
             --quiet_;
         }
+        refresh();
+        edited();
+    });
+    connect(camera_, &QComboBox::currentIndexChanged, this, [this, refresh] {
         refresh();
         edited();
     });
@@ -179,6 +193,28 @@ void Timeline::setClips(const std::vector<AnimationClipInfo>& clips) {
     --quiet_;
 }
 
+void Timeline::setCameras(const std::vector<FileCamera>& cameras) {
+    ++quiet_;
+    // The sources of the last file's cameras go; this file's come.
+    for (int i = source_->count() - 1; i >= 0; --i)
+        if (AnimationSpec::Kind(source_->itemData(i, kKindRole).toInt()) == AnimationSpec::Kind::Camera) source_->removeItem(i);
+    while (camera_->count() > 1) camera_->removeItem(1);
+    camera_->setCurrentIndex(0);
+    for (const FileCamera& c : cameras) {
+        const QString name = QString::fromStdString(c.name);
+        camera_->addItem(tr("Camera: %1").arg(name), name);
+        if (!c.animated()) continue;
+        source_->addItem(tr("Camera move: %1").arg(name), int(AnimationSpec::Kind::Camera));
+        const int i = source_->count() - 1;
+        source_->setItemData(i, QString::fromStdString(c.clip), kClipRole);
+        source_->setItemData(i, c.clip_seconds, kSecondsRole);
+        source_->setItemData(i, name, kCameraRole);
+    }
+    camera_->setVisible(!cameras.empty());
+    updateEnabled();
+    --quiet_;
+}
+
 bool Timeline::setSpec(const AnimationSpec& s) {
     ++quiet_;
     int index = 0; // the turntable, if the source cannot be shown
@@ -187,7 +223,14 @@ bool Timeline::setSpec(const AnimationSpec& s) {
     case AnimationSpec::Kind::Turntable:
     case AnimationSpec::Kind::LightOrbit:
     case AnimationSpec::Kind::Still: index = source_->findData(int(s.kind), kKindRole); break;
-    case AnimationSpec::Kind::Camera: found = false; break;
+    case AnimationSpec::Kind::Camera: {
+        found = false;
+        for (int i = 0; i < source_->count() && !found; ++i)
+            if (AnimationSpec::Kind(source_->itemData(i, kKindRole).toInt()) == AnimationSpec::Kind::Camera &&
+                source_->itemData(i, kCameraRole).toString().toStdString() == s.camera)
+                index = i, found = true;
+        break;
+    }
     case AnimationSpec::Kind::Clip: {
         found = false;
         int nth = 0;
@@ -219,11 +262,15 @@ bool Timeline::setSpec(const AnimationSpec& s) {
     }
     }
     source_->setCurrentIndex(std::max(index, 0));
+    // The camera looked through: the file's, if it has that camera.
+    const int camera = s.camera.empty() ? 0 : camera_->findData(QString::fromStdString(s.camera));
+    if (camera < 0) found = false;
+    camera_->setCurrentIndex(std::max(camera, 0));
     degrees_->setValue(s.degrees_per_frame);
     start_->setValue(s.start);
     fps_->setValue(s.fps);
     int frames = s.frames;
-    if (frames <= 0 && s.kind == AnimationSpec::Kind::Clip && found)
+    if (frames <= 0 && (s.kind == AnimationSpec::Kind::Clip || s.kind == AnimationSpec::Kind::Camera) && found)
         frames = clip_frame_count(source_->itemData(index, kSecondsRole).toDouble(), s.fps);
     setFrameCount(std::max(frames, 1));
     updateEnabled();
@@ -244,12 +291,16 @@ void Timeline::edited() {
 void Timeline::updateEnabled() {
     const auto kind = AnimationSpec::Kind(source_->currentData(kKindRole).toInt());
     degrees_->setEnabled(kind == AnimationSpec::Kind::Turntable || kind == AnimationSpec::Kind::LightOrbit);
+    camera_->setEnabled(kind != AnimationSpec::Kind::Camera); // the moving camera looks
 }
 
 AnimationSpec Timeline::spec() const {
     AnimationSpec s;
     s.kind = AnimationSpec::Kind(source_->currentData(kKindRole).toInt());
-    if (s.kind == AnimationSpec::Kind::Clip) s.clip = source_->currentData(kClipRole).toString().toStdString();
+    if (s.kind == AnimationSpec::Kind::Clip || s.kind == AnimationSpec::Kind::Camera)
+        s.clip = source_->currentData(kClipRole).toString().toStdString();
+    s.camera = s.kind == AnimationSpec::Kind::Camera ? source_->currentData(kCameraRole).toString().toStdString()
+                                                     : camera_->currentData().toString().toStdString();
     if (s.kind == AnimationSpec::Kind::Sequence) {
         s.pattern = source_->currentData(kPatternRole).toString().toStdString();
         s.first_file = source_->currentData(kFirstRole).toInt();

@@ -1,6 +1,7 @@
 #pragma once
 // The timeline: what moves (turntable, orbiting light, nothing, one of the
-// mesh's own clips or a sequence of mesh files), how far per frame,
+// mesh's own clips, a sequence of mesh files or one of the file's cameras),
+// which camera looks (the view's or one of the file's), how far per frame,
 // how many frames at what rate, the current frame, play/pause and loop.
 
 #include <deque>
@@ -41,6 +42,9 @@ class Timeline : public QWidget {
     void setSequenceFiles(int count);
     /// The loaded mesh's own clips (name, seconds), offered as sources.
     void setClips(const std::vector<AnimationClipInfo>& clips);
+    /// The file's cameras: offered to look through (the camera box), and
+    /// those a clip moves also as sources ("Camera: NAME", the mesh still).
+    void setCameras(const std::vector<FileCamera>& cameras);
     int frame() const;
     /// The source's frame shown now: the in point plus the current frame.
     int sourceFrame() const;
@@ -80,6 +84,7 @@ class Timeline : public QWidget {
     void updateEnabled();
 
     QComboBox* source_;
+    QComboBox* camera_;
     QDoubleSpinBox* degrees_;
     QSpinBox* frames_;
     QSpinBox* start_;

@@ -147,6 +147,7 @@ int run_animate(const std::vector<std::string>& argv) {
     // The first frame's camera decides the default light, as a turntable's does.
     job.scene = complete_scene(scene, loaded.report, mesh_path, anim.start / anim.fps);
     job.svg = svg_options;
+    job.canvas_follows_camera = !scene.size_given;
     job.format = format;
     job.frames_dir = frames_dir;
     job.output = *output; // written as the frames are made, atomically

@@ -201,6 +201,9 @@ SceneSettings complete_scene(const SceneOptions& o, const MeshReport& report, co
         const CameraTrack track(mesh_path, *o.file_camera);
         camera = track.at(seconds);
         if (!o.size_given) style.height = canvas_height_for(track.info(), style.width, style.height);
+        // Lit from the camera's upper left where it starts, as the
+        // application and a project render light it.
+        overrides.light = job_light(style, track.info().first, overrides.light);
     } else if (!camera.orthographic()) {
         camera.target = o.target.value_or(report.centre());
         if (glm::length(camera.target - camera.eye) < 1e-12)

@@ -75,6 +75,10 @@ class FrameDriver {
     ~FrameDriver();
 
     bool mesh_moves() const;
+    /// The light at frame 0 (the spec's start), from which the frames' are turned.
+    void set_light(const Light& light) { light_ = light; }
+    /// The file's camera the spec names, or null.
+    const FileCamera* file_camera() const { return track_ ? &track_->info() : nullptr; }
     /// Whether a file's camera moves from frame to frame.
     bool camera_moves() const { return track_ && track_->info().animated(); }
     /// Frame @p k (0-based, counted from the spec's start); throws

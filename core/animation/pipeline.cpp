@@ -32,6 +32,7 @@ AnimationJob make_animation_job(const Style& style, const AnimationSpec& animati
     AnimationJob job;
     job.animation = animation;
     job.scene = make_still_job(style, camera, light).scene;
+    job.light_from_camera = !light && !style.light;
     return job;
 }
 
@@ -165,14 +166,23 @@ void finish_output(AnimationWriter& writer, AtomicFile* file, AnimationOutput& o
 
 } // namespace
 
-AnimationOutput run_animation(const LoadedMesh& loaded, const std::string& mesh_path, const AnimationJob& job) {
+AnimationOutput run_animation(const LoadedMesh& loaded, const std::string& mesh_path, const AnimationJob& asked) {
     AnimationOutput out;
+    AnimationJob job = asked;
     std::optional<LoadedMesh> split;
     const LoadedMesh& mesh = with_sharp_edges(loaded, job.scene.style.surface, split);
     MeshTopology rest = engine_topology(mesh.mesh, job.scene.refine); // the mesh as loaded
     attach_parabolic(rest, job);
     const glm::dvec3 mesh_centre = mesh.report.centre();
     FrameDriver driver(job.animation, mesh, rest, job.scene.camera, job.scene.light, mesh_centre, mesh_path);
+    if (const FileCamera* camera = driver.file_camera()) {
+        if (job.canvas_follows_camera)
+            job.scene.style.height = canvas_height_for(*camera, job.scene.style.width, job.scene.style.height);
+        if (job.light_from_camera) {
+            job.scene.light = default_light(camera->first);
+            driver.set_light(job.scene.light);
+        }
+    }
     const int frames = animation_frame_count(job.animation, mesh_path);
     out.frames = frames;
     const ImageFrame image = frame_image(driver, mesh, job, frames);

@@ -35,6 +35,12 @@ struct AnimationJob {
     AnimatedSvgOptions svg; ///< tolerances, for either format
     AnimationFormat format = AnimationFormat::Svg;
     std::string frames_dir; ///< when set, every frame is also written there as static SVG
+    /// With a file's camera (animation.camera): the canvas's height follows
+    /// its aspect (the style's width kept), unless the size was chosen.
+    bool canvas_follows_camera = true;
+    /// The light is the default one (no user's or style's light): with a
+    /// file's camera it is placed from that camera where it starts.
+    bool light_from_camera = false;
     /// When set, the animation is written to this file as it is made
     /// (atomically: the file appears, whole, when the run succeeds) and
     /// AnimationOutput::document stays empty; memory then does not grow

@@ -127,6 +127,56 @@ const aiScene* read_scene(Assimp::Importer& importer, const std::string& path) {
     return detail::read_assimp_scene(importer, path);
 }
 
+std::string listed(const std::vector<std::string>& names) {
+    std::string list;
+    for (const auto& n : names) list += (list.empty() ? "" : ", ") + n;
+    return list;
+}
+
+glm::dvec3 turned(const aiMatrix4x4& m, const aiVector3D& v, double w) {
+    glm::dvec3 q{};
+    for (unsigned r = 0; r < 3; ++r) q[r] = double(m[r][0]) * v.x + double(m[r][1]) * v.y + double(m[r][2]) * v.z + double(m[r][3]) * w;
+    return q;
+}
+
+/// The camera in its node's space: where it stands, where it looks and its
+/// up. A glTF camera is its node's origin looking down -Z with +Y up
+/// (Assimp 5.2 also copies the node's translation into the camera's
+/// position, which would count it twice).
+struct LocalCamera {
+    aiVector3D position, look, up;
+};
+
+LocalCamera local_camera(const aiCamera& c, bool gltf) {
+    if (gltf) return {aiVector3D(0.0f, 0.0f, 0.0f), aiVector3D(0.0f, 0.0f, -1.0f), aiVector3D(0.0f, 1.0f, 0.0f)};
+    return {c.mPosition, c.mLookAt, c.mUp};
+}
+
+/// Camera @p c of @p scene at @p ticks into @p anim (null: at rest).
+Camera pose_camera(const aiScene* scene, const aiCamera& c, const LocalCamera& local, const FileCamera& info,
+                   const aiAnimation* anim, double ticks) {
+    const auto global = detail::node_transforms_at(scene, anim, ticks);
+    const auto it = global.find(c.mName.C_Str());
+    const aiMatrix4x4 g = it != global.end() ? it->second : aiMatrix4x4();
+    Camera cam;
+    cam.own_frame = true;
+    cam.eye = turned(g, local.position, 1.0);
+    glm::dvec3 forward = turned(g, local.look, 0.0), up = turned(g, local.up, 0.0);
+    forward = glm::length(forward) > 0.0 ? glm::normalize(forward) : glm::dvec3(0.0, 0.0, -1.0);
+    up -= glm::dot(up, forward) * forward;
+    cam.up = glm::length(up) > 1e-12 ? glm::normalize(up) : glm::dvec3(0.0, 1.0, 0.0);
+    if (info.orthographic) {
+        cam.projection = Camera::Projection::Orthographic;
+        cam.view_dir = forward;
+        cam.ortho_height = info.ortho_height;
+    } else {
+        cam.projection = Camera::Projection::Perspective;
+        cam.target = cam.eye + forward;
+        cam.fov_deg = info.fov_deg;
+    }
+    return cam;
+}
+
 std::vector<FileCamera> cameras_of(const aiScene* scene, const std::string& path) {
     const nlohmann::json gltf = detail::gltf_json(path);
     pugi::xml_document dae;
@@ -139,28 +189,18 @@ std::vector<FileCamera> cameras_of(const aiScene* scene, const std::string& path
         FileCamera cam;
         cam.name = c.mName.C_Str();
         if (!gltf_framing(gltf, cam.name, cam) && !(collada && collada_ortho(dae, cam.name, cam))) assimp_framing(c, cam);
+        const aiAnimation* anim = nullptr;
         if (const aiNode* node = scene->mRootNode->FindNode(c.mName))
-            for (unsigned a = 0; a < scene->mNumAnimations && cam.clip.empty(); ++a)
+            for (unsigned a = 0; a < scene->mNumAnimations && !anim; ++a)
                 if (moves(scene->mAnimations[a], node)) {
+                    anim = scene->mAnimations[a];
                     cam.clip = clip_name(scene, a);
-                    cam.clip_seconds = std::max(scene->mAnimations[a]->mDuration, 0.0) /
-                                       detail::ticks_per_second(scene->mAnimations[a]);
+                    cam.clip_seconds = std::max(anim->mDuration, 0.0) / detail::ticks_per_second(anim);
                 }
+        cam.first = pose_camera(scene, c, local_camera(c, !gltf.is_null()), cam, anim, 0.0);
         out.push_back(std::move(cam));
     }
     return out;
-}
-
-std::string listed(const std::vector<std::string>& names) {
-    std::string list;
-    for (const auto& n : names) list += (list.empty() ? "" : ", ") + n;
-    return list;
-}
-
-glm::dvec3 turned(const aiMatrix4x4& m, const aiVector3D& v, double w) {
-    glm::dvec3 q{};
-    for (unsigned r = 0; r < 3; ++r) q[r] = double(m[r][0]) * v.x + double(m[r][1]) * v.y + double(m[r][2]) * v.z + double(m[r][3]) * w;
-    return q;
 }
 
 } // namespace
@@ -181,11 +221,7 @@ struct CameraTrack::Impl {
     Assimp::Importer importer;
     const aiScene* scene = nullptr;
     const aiCamera* camera = nullptr;
-    /// The camera in its node's space: where it stands, where it looks and
-    /// its up. A glTF camera is its node's origin looking down -Z with +Y
-    /// up (Assimp 5.2 also copies the node's translation into the camera's
-    /// position, which would count it twice).
-    aiVector3D position, look, up;
+    LocalCamera local;
     const aiAnimation* anim = nullptr;
     FileCamera info;
 };
@@ -204,15 +240,7 @@ CameraTrack::CameraTrack(const std::string& path, const std::string& name, const
         throw Error(path + (cameras.empty() ? ": has no cameras" : ": no camera '" + name + "' (it has: " + listed(names) + ")"));
     impl_->camera = scene->mCameras[chosen];
     impl_->info = cameras[chosen];
-    if (!detail::gltf_json(path).is_null()) {
-        impl_->position = aiVector3D(0.0f, 0.0f, 0.0f);
-        impl_->look = aiVector3D(0.0f, 0.0f, -1.0f);
-        impl_->up = aiVector3D(0.0f, 1.0f, 0.0f);
-    } else {
-        impl_->position = impl_->camera->mPosition;
-        impl_->look = impl_->camera->mLookAt;
-        impl_->up = impl_->camera->mUp;
-    }
+    impl_->local = local_camera(*impl_->camera, !detail::gltf_json(path).is_null());
     std::string moving = impl_->info.clip;
     if (!clip.empty()) {
         std::vector<std::string> clips;
@@ -241,28 +269,7 @@ Camera CameraTrack::at(double seconds) const {
     const aiAnimation* anim = impl_->anim;
     double ticks = 0.0;
     if (anim) ticks = std::clamp(seconds * detail::ticks_per_second(anim), 0.0, std::max(anim->mDuration, 0.0));
-    const auto global = detail::node_transforms_at(impl_->scene, anim, ticks);
-    const aiCamera& c = *impl_->camera;
-    const auto it = global.find(c.mName.C_Str());
-    const aiMatrix4x4 g = it != global.end() ? it->second : aiMatrix4x4();
-    Camera cam;
-    cam.own_frame = true;
-    cam.eye = turned(g, impl_->position, 1.0);
-    glm::dvec3 forward = turned(g, impl_->look, 0.0), up = turned(g, impl_->up, 0.0);
-    forward = glm::length(forward) > 0.0 ? glm::normalize(forward) : glm::dvec3(0.0, 0.0, -1.0);
-    up -= glm::dot(up, forward) * forward;
-    cam.up = glm::length(up) > 1e-12 ? glm::normalize(up) : glm::dvec3(0.0, 1.0, 0.0);
-    const FileCamera& info = impl_->info;
-    if (info.orthographic) {
-        cam.projection = Camera::Projection::Orthographic;
-        cam.view_dir = forward;
-        cam.ortho_height = info.ortho_height;
-    } else {
-        cam.projection = Camera::Projection::Perspective;
-        cam.target = cam.eye + forward;
-        cam.fov_deg = info.fov_deg;
-    }
-    return cam;
+    return pose_camera(impl_->scene, *impl_->camera, impl_->local, impl_->info, anim, ticks);
 }
 
 int canvas_height_for(const FileCamera& camera, int width, int height) {

@@ -22,6 +22,10 @@ struct FileCamera {
     double aspect = 0.0;       ///< width over height; 0 when the file does not say
     std::string clip;          ///< the first clip that moves it ("" when none does)
     double clip_seconds = 0.0; ///< that clip's length
+    /// Where it stands at the start of that clip (or at rest): what the
+    /// default light is placed from (the viewer's upper left), as a
+    /// turntable's is from its first frame.
+    Camera first;
 
     bool animated() const { return !clip.empty(); }
 };

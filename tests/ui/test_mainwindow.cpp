@@ -875,6 +875,86 @@ class TestMainWindow : public QObject {
         QCOMPARE(window.meshView()->orbit().up, glm::dvec3(0.0, 1.0, 0.0));
     }
 
+    // A file's cameras are offered in the timeline: looking through one
+    // frames the view and the SVG as the file does (its aspect too), a
+    // camera the file animates is a source of its own, and the export and
+    // snaxels-cli render of the saved project write the same bytes as
+    // snaxels-cli animate --camera.
+    void looksThroughTheFilesCameras() {
+        QTemporaryDir dir;
+        const QString scene = QString(SNAXELS_TEST_ASSETS) + "/cameras/blender-shot.gltf";
+        MainWindow window;
+        QVERIFY(showWithMesh(window, scene));
+        auto* cameras = window.timeline()->findChild<QComboBox*>("cameraChoice");
+        QVERIFY(cameras && cameras->isVisible());
+        QCOMPARE(cameras->count(), 3); // the view's, ShotCam, TopOrtho
+        QVERIFY(!window.meshView()->looksThroughFileCamera());
+        QComboBox* source = nullptr;
+        for (QComboBox* box : window.timeline()->findChildren<QComboBox*>())
+            if (box != cameras) source = box;
+        QVERIFY(source);
+        const int move = source->findText("Camera move: ShotCam");
+        QVERIFY(move >= 0);
+
+        QSignalSpy contours(&window, &MainWindow::contoursUpdated);
+        source->setCurrentIndex(move);
+        QVERIFY(contours.wait(30000));
+        QTest::qWait(200);
+        QCOMPARE(window.timeline()->spec().kind, snaxels::AnimationSpec::Kind::Camera);
+        QCOMPARE(window.timeline()->spec().camera, std::string("ShotCam"));
+        QCOMPARE(window.timeline()->spec().frames, 49); // 2 s of keys at 24 fps
+        QVERIFY(!cameras->isEnabled()); // the moving camera is the one that looks
+        QVERIFY(window.meshView()->looksThroughFileCamera());
+        QVERIFY2(window.currentSvg().contains("height=\"450\""), "the canvas does not follow the 16:9 camera");
+        // Orbiting leaves the file's camera as it is.
+        const snaxels::Camera through = window.meshView()->camera();
+        QTest::mousePress(window.meshView(), Qt::LeftButton, {}, QPoint(300, 300));
+        QTest::mouseMove(window.meshView(), QPoint(360, 320));
+        QTest::mouseRelease(window.meshView(), Qt::LeftButton, {}, QPoint(360, 320));
+        QVERIFY(window.meshView()->camera() == through);
+        QVERIFY(window.statusBar()->currentMessage().contains("camera"));
+        // Half way, the camera has moved.
+        contours.clear();
+        window.timeline()->setFrame(24);
+        QVERIFY(contours.wait(30000));
+        QTest::qWait(200);
+        QVERIFY(glm::length(window.meshView()->camera().eye - through.eye) > 1.0);
+
+        QSignalSpy finished(&window, &MainWindow::exportFinished);
+        window.exportAnimation(dir.filePath("app.svg"));
+        QVERIFY(finished.wait(180000));
+        const QByteArray app = readAll(dir.filePath("app.svg"));
+        QVERIFY(app.contains("height=\"450\""));
+        const QString project = dir.filePath("shot.snaxels");
+        QVERIFY(window.saveProject(project));
+        QVERIFY(readAll(project).contains("\"camera\": \"ShotCam\""));
+        auto cli = [&](const QStringList& args, const QString& out) {
+            QProcess p;
+            p.start(QCoreApplication::applicationDirPath() + "/snaxels-cli", args);
+            if (!p.waitForFinished(180000) || p.exitCode() != 0) qWarning() << p.readAllStandardError();
+            return readAll(out);
+        };
+        QVERIFY2(cli({"render", project, "-o", dir.filePath("render.svg")}, dir.filePath("render.svg")) == app,
+                 "snaxels-cli render of the project writes other bytes");
+        QFile style(dir.filePath("style.xml"));
+        QVERIFY(style.open(QIODevice::WriteOnly));
+        style.write(window.styleEditor()->text().toUtf8());
+        style.close();
+        QVERIFY2(cli({"animate", scene, "--camera", "ShotCam", "--style", style.fileName(), "-o", dir.filePath("animate.svg")},
+                     dir.filePath("animate.svg")) == app,
+                 "snaxels-cli animate --camera writes other bytes");
+
+        // Back to the view's camera: the orbit again, the style's square canvas.
+        const int turntable = source->findText("Turntable");
+        contours.clear();
+        source->setCurrentIndex(turntable);
+        cameras->setCurrentIndex(0);
+        QVERIFY(contours.wait(30000));
+        QTest::qWait(200);
+        QVERIFY(!window.meshView()->looksThroughFileCamera());
+        QVERIFY(window.currentSvg().contains("height=\"800\""));
+    }
+
     // A style given on the command line is where the session starts, not an
     // edit: opening the mesh asks nothing, and there is nothing to undo.
     void aStartingStyleIsNoEdit() {

@@ -85,6 +85,28 @@ TEST_F(ProjectFile, ClipAndSequenceSourcesRoundTrip) {
     p.animation.first_file = 3;
     p.animation.frames = 10;
     EXPECT_EQ(read_project(write("s.snaxels", project_text(p))), p);
+    // A file's camera: moving through its own clip, or looking at a turntable.
+    p.animation = {};
+    p.animation.kind = AnimationSpec::Kind::Camera;
+    p.animation.camera = "ShotCam";
+    p.animation.clip = "ShotCamAction";
+    p.animation.frames = 0;
+    EXPECT_EQ(read_project(write("cam.snaxels", project_text(p))), p);
+    p.animation.kind = AnimationSpec::Kind::Turntable;
+    p.animation.clip.clear();
+    p.animation.frames = 90;
+    EXPECT_EQ(read_project(write("cam-turn.snaxels", project_text(p))), p);
+    // A camera animation without its camera is refused, naming the field.
+    std::string text = project_text(p);
+    text.replace(text.find("\"turntable\""), 11, "\"camera\"");
+    text.replace(text.find("\"camera\": \"ShotCam\","), 21, "");
+    try {
+        read_project(write("cam-bad.snaxels", text));
+        FAIL() << text;
+    } catch (const Error& e) {
+        EXPECT_NE(std::string(e.what()).find("\"animation.camera\" must name one of the file's cameras"), std::string::npos)
+            << e.what();
+    }
 }
 
 TEST_F(ProjectFile, MeshPathsAreRelativeToTheProject) {
