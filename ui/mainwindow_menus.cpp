@@ -120,7 +120,7 @@ void MainWindow::createViewMenu() {
     QMenu* viewMenu = menuBar()->addMenu(tr("&View"));
     QAction* reset = viewMenu->addAction(tr("&Reset Camera"), view_, &MeshView::resetCamera);
     reset->setShortcut(Qt::Key_Home);
-    reset->setToolTip(tr("Look at the model's front from a little above"));
+    reset->setToolTip(tr("Look at the model's front from a little above and to the side"));
     // Named views in the model's frame (its up axis and front), keeping the
     // distance and pan: one undo step each.
     const std::pair<QString, ViewPreset> presets[] = {{tr("&Front"), ViewPreset::Front},
@@ -154,7 +154,7 @@ void MainWindow::createViewMenu() {
             if (!scene_ || v.up == axis) return;
             // The old yaw and pitch meant the old frame: look at the front again.
             v.up = axis;
-            v.yaw = 0.0;
+            v.yaw = kDefaultYaw;
             v.pitch = kDefaultPitch;
             document_->setView(v, tr("Up Axis %1").arg(QString::fromLatin1(name)));
         });

@@ -403,7 +403,7 @@ void MeshView::centreView() {
 }
 
 void MeshView::resetCamera() {
-    // The model's front from a little above, standing on its up axis.
+    // The model's front from a little above and to the side, standing on its up axis.
     const double turntable = orbit_.turntable;
     orbit_ = framing_view(centre_, radius_, orbit_.up);
     orbit_.turntable = turntable;

@@ -74,7 +74,7 @@ class MeshView : public QOpenGLWidget, protected QOpenGLFunctions_3_3_Core {
     /// frame) without moving the camera.
     void setPose(MeshGeometry geometry);
     void clearMesh();
-    /// Frames the whole mesh, its front seen from a little above.
+    /// Frames the whole mesh, its front seen from a little above and to the side.
     void resetCamera();
     /// Looks through @p camera (one of the file's cameras, posed for the
     /// frame) instead of the orbit; nullopt goes back to the orbit. Orbit,

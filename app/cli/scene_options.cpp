@@ -78,7 +78,7 @@ int parse_int(const std::string& option, const std::string& text, int lo, int hi
 std::vector<OptionSpec> scene_option_specs() {
     return {{"view-dir", "X,Y,Z",
              "orthographic view: the direction the camera looks (default: at the model's front, +Z for +Y up, from a "
-             "little above)"},
+             "little above and to the side)"},
             {"eye", "X,Y,Z", "perspective view from this point"},
             {"target", "X,Y,Z", "perspective: the point looked at (default: the mesh's centre)"},
             {"fov", "DEG", "perspective: vertical field of view in degrees (default 35)"},

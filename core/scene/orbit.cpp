@@ -15,7 +15,10 @@ glm::dvec3 model_front(const glm::dvec3& up_in) {
 
 glm::dvec3 default_view_dir(const glm::dvec3& up_in) {
     const glm::dvec3 up = glm::normalize(up_in);
-    const glm::dvec3 to_eye = std::cos(kDefaultPitch) * model_front(up) + std::sin(kDefaultPitch) * up;
+    const glm::dvec3 front = model_front(up), right = glm::cross(up, front);
+    // As the orbit places its eye at yaw kDefaultYaw: toward +right for a negative yaw.
+    const glm::dvec3 level = std::cos(kDefaultYaw) * front - std::sin(kDefaultYaw) * right;
+    const glm::dvec3 to_eye = std::cos(kDefaultPitch) * level + std::sin(kDefaultPitch) * up;
     return -glm::normalize(to_eye);
 }
 

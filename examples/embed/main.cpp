@@ -15,7 +15,7 @@ int main(int argc, char** argv) {
         const snaxels::LoadedMesh mesh = snaxels::load_mesh(argv[1]); // a file, or proc:torus and the like
         const snaxels::MeshTopology topology = snaxels::engine_topology(mesh.mesh);
         snaxels::StillJob job; // the visual contour, hidden lines dashed
-        // The model's front (+Z, for +Y up) from a little above, as snaxels-cli draws it.
+        // The model's front (+Z, for +Y up), three-quarter from a little above, as snaxels-cli draws it.
         job.scene.camera.view_dir = snaxels::default_view_dir(job.scene.camera.up);
         job.scene.light = snaxels::default_light(job.scene.camera);
         const snaxels::StillOutput still = snaxels::render_still(mesh, topology, nullptr, job);

@@ -819,9 +819,10 @@ class TestMainWindow : public QObject {
             const snaxels::Camera c = window.meshView()->camera();
             return glm::normalize(c.eye - window.meshView()->orbitCentre());
         };
-        // A new file stands on +Y and is seen from its front (+Z), a little above.
+        // A new file stands on +Y and is seen from its front (+Z), a little
+        // above and to the side (+X, a three-quarter view).
         QVERIFY(action("upPY")->isChecked());
-        QVERIFY(eyeFromCentre().z > 0.9 && eyeFromCentre().y > 0.1);
+        QVERIFY(eyeFromCentre().z > 0.8 && eyeFromCentre().y > 0.25 && eyeFromCentre().x > 0.4);
         const double lying = drawnAspect(window);
         QVERIFY2(lying < 1.0, qPrintable(QString("aspect %1 on +Y").arg(lying))); // seen end on, it is wide
 
@@ -834,7 +835,7 @@ class TestMainWindow : public QObject {
         QCOMPARE(window.meshView()->orbit().up, glm::dvec3(0.0, 0.0, 1.0));
         // Upright: the screen's up is the model's +Z, its front (-Y, Blender's) faces the viewer.
         QVERIFY(window.meshView()->camera().up.z > 0.9);
-        QVERIFY(eyeFromCentre().y < -0.9);
+        QVERIFY(eyeFromCentre().y < -0.8 && eyeFromCentre().x > 0.4);
         const double upright = drawnAspect(window);
         QVERIFY2(upright > 1.4, qPrintable(QString("aspect %1 on +Z").arg(upright)));
         QCOMPARE(window.undoStack()->count(), steps + 1);

@@ -139,6 +139,7 @@ TEST_F(ProjectFile, TheUpAxisRoundTripsAndOldProjectsStandOnY) {
 TEST_F(ProjectFile, BadFilesNameTheProblem) {
     Project p;
     p.mesh = "m.obj";
+    p.view.yaw = 3.8;
     const std::string good = project_text(p);
     EXPECT_NE(error_of(write("empty.snaxels", "")).find("not a snaxels project"), std::string::npos);
     EXPECT_NE(error_of(write("trunc.snaxels", good.substr(0, good.size() / 2))).find("parse error"), std::string::npos);
@@ -153,7 +154,7 @@ TEST_F(ProjectFile, BadFilesNameTheProblem) {
     };
     EXPECT_NE(edit("\"version\": 2", "\"version\": 9").find("newer snaxels"), std::string::npos);
     EXPECT_NE(edit("\"mesh\": \"m.obj\",", "").find("\"mesh\" is missing"), std::string::npos);
-    EXPECT_NE(edit("\"yaw\": 0.0", "\"yaw\": \"left\"").find("\"view.yaw\" must be a finite number"), std::string::npos);
+    EXPECT_NE(edit("\"yaw\": 3.8", "\"yaw\": \"left\"").find("\"view.yaw\" must be a finite number"), std::string::npos);
     EXPECT_NE(edit("\"source\": \"still\"", "\"source\": \"spin\"").find("\"animation.source\" must be one of"), std::string::npos);
     EXPECT_NE(edit("\"frames\": 1", "\"frames\": -4").find("\"animation.frames\""), std::string::npos);
     EXPECT_NE(edit("\"distance\": 3.0", "\"distance\": 0").find("\"view.distance\" must be positive"), std::string::npos);
