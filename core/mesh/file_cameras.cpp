@@ -241,23 +241,19 @@ CameraTrack::CameraTrack(const std::string& path, const std::string& name, const
     impl_->camera = scene->mCameras[chosen];
     impl_->info = cameras[chosen];
     impl_->local = local_camera(*impl_->camera, !detail::gltf_json(path).is_null());
-    std::string moving = impl_->info.clip;
-    if (!clip.empty()) {
-        std::vector<std::string> clips;
-        for (unsigned a = 0; a < scene->mNumAnimations; ++a) clips.push_back(clip_name(scene, a));
-        const auto it = std::find_if(clips.begin(), clips.end(), [&](const std::string& n) {
-            return n == clip || std::to_string(&n - clips.data()) == clip;
-        });
-        if (it == clips.end())
-            throw Error(path + (clips.empty() ? ": has no animation clips" : ": no animation clip '" + clip + "' (it has: " + listed(clips) + ")"));
-        moving = *it;
-        const aiAnimation* anim = scene->mAnimations[it - clips.begin()];
-        const aiNode* node = scene->mRootNode->FindNode(impl_->camera->mName);
-        impl_->info.clip = node && moves(anim, node) ? moving : "";
-        impl_->info.clip_seconds = impl_->info.clip.empty() ? 0.0 : std::max(anim->mDuration, 0.0) / detail::ticks_per_second(anim);
-    }
-    for (unsigned a = 0; a < scene->mNumAnimations; ++a)
-        if (!impl_->info.clip.empty() && clip_name(scene, a) == impl_->info.clip) impl_->anim = scene->mAnimations[a];
+    // The clip that moves it: the one asked for (a camera it does not move
+    // stands still), or the camera's own.
+    std::vector<std::string> clips;
+    for (unsigned a = 0; a < scene->mNumAnimations; ++a) clips.push_back(clip_name(scene, a));
+    std::size_t index = clips.size();
+    for (std::size_t a = 0; a < clips.size() && index == clips.size(); ++a)
+        if (clip.empty() ? clips[a] == impl_->info.clip : clips[a] == clip || std::to_string(a) == clip) index = a;
+    if (!clip.empty() && index == clips.size())
+        throw Error(path + (clips.empty() ? ": has no animation clips" : ": no animation clip '" + clip + "' (it has: " + listed(clips) + ")"));
+    const aiNode* node = scene->mRootNode->FindNode(impl_->camera->mName);
+    if (index < clips.size() && node && moves(scene->mAnimations[index], node)) impl_->anim = scene->mAnimations[index];
+    impl_->info.clip = impl_->anim ? clips[index] : "";
+    impl_->info.clip_seconds = impl_->anim ? std::max(impl_->anim->mDuration, 0.0) / detail::ticks_per_second(impl_->anim) : 0.0;
 }
 
 CameraTrack::~CameraTrack() = default;

@@ -84,7 +84,14 @@ TEST(FileCameras, UnknownNamesListWhatTheFileHas) {
     } catch (const Error& e) {
         EXPECT_NE(std::string(e.what()).find("has no cameras"), std::string::npos) << e.what();
     }
+    try {
+        CameraTrack(path, "ShotCam", "Nope");
+        FAIL() << "no error";
+    } catch (const Error& e) {
+        EXPECT_NE(std::string(e.what()).find("no animation clip 'Nope' (it has: ShotCamAction)"), std::string::npos) << e.what();
+    }
     EXPECT_EQ(CameraTrack(path, "1").info().name, "TopOrtho"); // by index
+    EXPECT_FALSE(CameraTrack(path, "TopOrtho", "0").info().animated()); // a clip that does not move it
     EXPECT_TRUE(file_cameras(asset("spot.obj")).empty());
     EXPECT_FALSE(may_hold_cameras(asset("spot.obj")));
     EXPECT_TRUE(may_hold_cameras(path));
