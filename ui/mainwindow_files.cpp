@@ -294,8 +294,13 @@ void MainWindow::applyProject(const Project& p, const QString& path, std::shared
     addRecentFile(QFileInfo(path).absoluteFilePath());
     if (!specAccepted_) {
         const QString file = QFileInfo(path).fileName();
-        const QString why = tr("%1: the mesh has no clip \"%2\"; the timeline shows a turntable")
-                                .arg(file, QString::fromStdString(p.animation.clip));
+        // A clip or a camera the file no longer has.
+        const bool camera = !p.animation.camera.empty() && timeline_->spec().camera != p.animation.camera;
+        const QString why =
+            camera ? tr("%1: the mesh file has no camera \"%2\"; the timeline shows the view's camera")
+                         .arg(file, QString::fromStdString(p.animation.camera))
+                   : tr("%1: the mesh has no clip \"%2\"; the timeline shows a turntable")
+                         .arg(file, QString::fromStdString(p.animation.clip));
         statusBar()->showMessage(why, 10000);
         document_->resetAnimation(timeline_->spec());
         document_->markModified(); // what the window shows is no longer what the file holds

@@ -945,6 +945,27 @@ class TestMainWindow : public QObject {
                      dir.filePath("animate.svg")) == app,
                  "snaxels-cli animate --camera writes other bytes");
 
+        // A project naming a camera the file lacks opens on the view's camera and says so.
+        QByteArray text = readAll(project);
+        text.replace("\"camera\": \"ShotCam\"", "\"camera\": \"Gone\"");
+        const QString gone = dir.filePath("gone.snaxels");
+        QFile goneFile(gone);
+        QVERIFY(goneFile.open(QIODevice::WriteOnly));
+        goneFile.write(text);
+        goneFile.close();
+        {
+            MainWindow other;
+            QVERIFY(showWindow(other, {1000, 700}));
+            QSignalSpy opened(&other, &MainWindow::projectOpened);
+            QSignalSpy loaded(&other, &MainWindow::meshLoaded);
+            other.openFile(gone);
+            QVERIFY(loaded.wait(60000));
+            QTest::qWait(200);
+            QVERIFY2(other.statusBar()->currentMessage().contains("no camera \"Gone\""),
+                     qPrintable(other.statusBar()->currentMessage()));
+            QVERIFY(other.timeline()->spec().camera.empty());
+        }
+
         // Back to the view's camera: the orbit again, the style's square canvas.
         const int turntable = source->findText("Turntable");
         contours.clear();
