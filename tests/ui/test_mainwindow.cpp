@@ -956,7 +956,6 @@ class TestMainWindow : public QObject {
         {
             MainWindow other;
             QVERIFY(showWindow(other, {1000, 700}));
-            QSignalSpy opened(&other, &MainWindow::projectOpened);
             QSignalSpy loaded(&other, &MainWindow::meshLoaded);
             other.openFile(gone);
             QVERIFY(loaded.wait(60000));
