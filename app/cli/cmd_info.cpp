@@ -24,6 +24,10 @@ int run_info(const std::vector<std::string>& argv) {
         return 0;
     }
     const LoadedMesh loaded = load_mesh(args.positional()[0]);
+    // Faces per object and per material (the engine's faces: after repair).
+    std::vector<std::size_t> object_faces(loaded.objects.size()), material_faces(loaded.materials.size());
+    for (const std::uint32_t o : loaded.face_object) ++object_faces[o];
+    for (const std::uint32_t m : loaded.face_material) ++material_faces[m];
     const std::vector<FileCamera> cameras =
         may_hold_cameras(args.positional()[0]) ? file_cameras(args.positional()[0]) : std::vector<FileCamera>{};
     // What the engine works on by default (--refine auto): docs/engine.md.
@@ -43,12 +47,33 @@ int run_info(const std::vector<std::string>& argv) {
             list.push_back(std::move(j));
         }
         doc["cameras"] = std::move(list);
+        nlohmann::json objects = nlohmann::json::array(), materials = nlohmann::json::array();
+        for (std::size_t i = 0; i < loaded.objects.size(); ++i)
+            objects.push_back({{"name", loaded.objects[i].name}, {"path", loaded.objects[i].path}, {"faces", object_faces[i]}});
+        for (std::size_t i = 0; i < loaded.materials.size(); ++i) {
+            const glm::dvec4& c = loaded.materials[i].colour;
+            materials.push_back({{"name", loaded.materials[i].name},
+                                 {"colour", {c.r, c.g, c.b}},
+                                 {"opacity", c.a},
+                                 {"faces", material_faces[i]}});
+        }
+        doc["objects"] = std::move(objects);
+        doc["materials"] = std::move(materials);
         std::cout << doc.dump(2) << '\n';
     } else {
         std::cout << to_text(loaded.report);
         if (levels > 0)
             std::cout << "refined for contours: " << levels << (levels == 1 ? " level, " : " levels, ") << engine_faces
                       << " faces\n";
+        for (std::size_t i = 0; i < loaded.objects.size(); ++i)
+            std::cout << "object \"" << loaded.objects[i].path << "\": " << object_faces[i] << " faces\n";
+        for (std::size_t i = 0; i < loaded.materials.size(); ++i) {
+            const glm::dvec4& c = loaded.materials[i].colour;
+            std::cout << "material \"" << loaded.materials[i].name << "\": " << material_faces[i] << " faces, colour "
+                      << c.r << ' ' << c.g << ' ' << c.b;
+            if (c.a < 1.0) std::cout << ", opacity " << c.a;
+            std::cout << '\n';
+        }
         for (const FileCamera& c : cameras) {
             std::cout << "camera \"" << c.name << "\": ";
             if (c.orthographic) std::cout << "orthographic, " << c.ortho_height << " units high";

@@ -446,6 +446,17 @@ LoadedMesh build_mesh(const TriangleSoup& soup, const std::string& source) {
     orient_components(mesh, report, face_source);
     compute_vertex_normals(mesh);
     if (!soup.normals.empty()) out.corner_normals = corner_normals(mesh, soup, face_source);
+    if (soup.triangle_object.size() == soup.triangles.size() && soup.triangle_material.size() == soup.triangles.size() &&
+        !soup.triangles.empty()) {
+        out.objects = soup.objects;
+        out.materials = soup.materials;
+        out.face_object.resize(mesh.n_faces());
+        out.face_material.resize(mesh.n_faces());
+        for (std::size_t f = 0; f < face_source.size(); ++f) {
+            out.face_object[f] = soup.triangle_object[face_source[f]];
+            out.face_material[f] = soup.triangle_material[face_source[f]];
+        }
+    }
 
     report.bbox_min = report.bbox_max = to_glm(mesh.point(Mesh::VertexHandle(0)));
     for (const auto vh : mesh.vertices()) {

@@ -31,6 +31,11 @@ struct LoadedMesh {
     /// one vertex disagree across an edge, the file shades the edge hard
     /// (split_sharp_edges).
     std::vector<std::array<glm::dvec3, 3>> corner_normals;
+    /// The scene's parts and materials, and per face the index of each
+    /// (empty for a mesh without parts).
+    std::vector<SceneObject> objects;
+    std::vector<SceneMaterial> materials;
+    std::vector<std::uint32_t> face_object, face_material;
 };
 
 /// Memory a mesh needs per face to be drawn, estimated from the peaks of

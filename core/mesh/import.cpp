@@ -11,11 +11,13 @@
 #include <fstream>
 #include <functional>
 #include <iterator>
+#include <map>
 #include <sstream>
 #include <string>
 #include <vector>
 
 #include <assimp/Importer.hpp>
+#include <assimp/material.h>
 #include <assimp/postprocess.h>
 #include <assimp/scene.h>
 #include <glm/glm.hpp>
@@ -545,17 +547,52 @@ void for_each_mesh_instance(const aiScene* scene,
 
 } // namespace detail
 
+namespace {
+
+/// The names from the scene's top node down to @p node, joined by '/' (the
+/// root's own name left out when it has a parent-less, mesh-less role).
+std::string node_path(const aiNode* node) {
+    std::vector<std::string> names;
+    for (const aiNode* n = node; n; n = n->mParent)
+        if (n->mParent || n == node) names.push_back(n->mName.length ? n->mName.C_Str() : "(unnamed)");
+    std::string path;
+    for (auto it = names.rbegin(); it != names.rend(); ++it) path += (path.empty() ? "" : "/") + *it;
+    return path;
+}
+
+SceneMaterial scene_material(const aiMaterial* m, unsigned index) {
+    SceneMaterial out;
+    aiString name;
+    out.name = m && m->Get(AI_MATKEY_NAME, name) == AI_SUCCESS && name.length ? name.C_Str() : "material" + std::to_string(index);
+    if (!m) return out;
+    aiColor4D c;
+    if (m->Get(AI_MATKEY_BASE_COLOR, c) == AI_SUCCESS || m->Get(AI_MATKEY_COLOR_DIFFUSE, c) == AI_SUCCESS)
+        out.colour = glm::dvec4(c.r, c.g, c.b, out.colour.a);
+    float opacity = 1.0f;
+    if (m->Get(AI_MATKEY_OPACITY, opacity) == AI_SUCCESS) out.colour.a = opacity;
+    for (int k = 0; k < 4; ++k)
+        if (!std::isfinite(out.colour[k])) out.colour[k] = k == 3 ? 1.0 : 0.8;
+    out.colour = glm::clamp(out.colour, 0.0, 1.0);
+    return out;
+}
+
+} // namespace
+
 TriangleSoup detail::read_triangle_soup_here(const std::string& path) {
     Assimp::Importer importer;
     const aiScene* scene = detail::read_assimp_scene(importer, path);
     TriangleSoup soup;
+    // The parts: each node that holds meshes, and each material a mesh uses,
+    // in the order the instances come.
+    std::map<const aiNode*, std::uint32_t> object_of;
+    std::map<unsigned, std::uint32_t> material_of;
     // Normals are kept only when every mesh of the scene has them (a file
     // whose parts disagree is read as having none: smooth by default).
     bool normals = true;
     detail::for_each_mesh_instance(scene, [&](const aiNode*, const aiMesh* mesh, const aiMatrix4x4&) {
         normals = normals && mesh->mNormals != nullptr;
     });
-    detail::for_each_mesh_instance(scene, [&](const aiNode*, const aiMesh* mesh, const aiMatrix4x4& xf) {
+    detail::for_each_mesh_instance(scene, [&](const aiNode* node, const aiMesh* mesh, const aiMatrix4x4& xf) {
         const auto base = static_cast<std::uint32_t>(soup.positions.size());
         glm::dmat3 linear{};
         for (int r = 0; r < 3; ++r)
@@ -579,11 +616,18 @@ TriangleSoup detail::read_triangle_soup_here(const std::string& path) {
             // A zero or broken normal says nothing: it matches any other.
             soup.normals.push_back(len > 0.0 && std::isfinite(len) ? turned / len : glm::dvec3(0.0));
         }
+        const auto object = object_of.try_emplace(node, std::uint32_t(soup.objects.size()));
+        if (object.second) soup.objects.push_back({node->mName.length ? node->mName.C_Str() : "(unnamed)", node_path(node)});
+        const unsigned m = mesh->mMaterialIndex;
+        const auto material = material_of.try_emplace(m, std::uint32_t(soup.materials.size()));
+        if (material.second) soup.materials.push_back(scene_material(m < scene->mNumMaterials ? scene->mMaterials[m] : nullptr, m));
         for (unsigned f = 0; f < mesh->mNumFaces; ++f) {
             const aiFace& face = mesh->mFaces[f];
             if (face.mNumIndices != 3) continue;
             soup.triangles.push_back(
                 {base + face.mIndices[0], base + face.mIndices[1], base + face.mIndices[2]});
+            soup.triangle_object.push_back(object.first->second);
+            soup.triangle_material.push_back(material.first->second);
         }
     });
     return soup;

@@ -297,6 +297,33 @@ TriangleSoup read_soup_isolated(const std::string& helper, const std::string& pa
     if (nn > in.left() / sizeof(glm::dvec3)) throw Error(path + ": the importer's reply is cut short");
     soup.normals.resize(nn);
     in.bytes(soup.normals.data(), nn * sizeof(glm::dvec3));
+    // The parts: objects (name, path), materials (name, RGBA), then per
+    // triangle an object and a material, or none.
+    const auto no = in.value<std::uint32_t>();
+    for (std::uint32_t i = 0; i < no && in.left() > 0; ++i) {
+        SceneObject o;
+        o.name = in.text();
+        o.path = in.text();
+        soup.objects.push_back(std::move(o));
+    }
+    const auto nm = in.value<std::uint32_t>();
+    for (std::uint32_t i = 0; i < nm && in.left() > 0; ++i) {
+        SceneMaterial m;
+        m.name = in.text();
+        for (int k = 0; k < 4; ++k) m.colour[k] = in.value<double>();
+        soup.materials.push_back(std::move(m));
+    }
+    const auto np = in.value<std::uint64_t>();
+    if (np != 0 && np != nt) throw Error(path + ": the importer's reply has parts for some triangles only");
+    if (soup.objects.size() != no || soup.materials.size() != nm || np > in.left() / (2 * sizeof(std::uint32_t)))
+        throw Error(path + ": the importer's reply is cut short");
+    soup.triangle_object.resize(np);
+    soup.triangle_material.resize(np);
+    in.bytes(soup.triangle_object.data(), np * sizeof(std::uint32_t));
+    in.bytes(soup.triangle_material.data(), np * sizeof(std::uint32_t));
+    for (std::size_t t = 0; t < np; ++t)
+        if (soup.triangle_object[t] >= no || soup.triangle_material[t] >= nm)
+            throw Error(path + ": the importer's reply names a part the file does not have");
     return soup;
 }
 
@@ -326,6 +353,19 @@ int serve_import(ImportRequest request, const std::string& path, int fd) {
             out.bytes(soup.triangles.data(), soup.triangles.size() * sizeof(soup.triangles[0]));
             out.value(std::uint64_t(soup.normals.size()));
             out.bytes(soup.normals.data(), soup.normals.size() * sizeof(glm::dvec3));
+            out.value(std::uint32_t(soup.objects.size()));
+            for (const SceneObject& o : soup.objects) {
+                out.text(o.name);
+                out.text(o.path);
+            }
+            out.value(std::uint32_t(soup.materials.size()));
+            for (const SceneMaterial& m : soup.materials) {
+                out.text(m.name);
+                for (int k = 0; k < 4; ++k) out.value(double(m.colour[k]));
+            }
+            out.value(std::uint64_t(soup.triangle_object.size()));
+            out.bytes(soup.triangle_object.data(), soup.triangle_object.size() * sizeof(std::uint32_t));
+            out.bytes(soup.triangle_material.data(), soup.triangle_material.size() * sizeof(std::uint32_t));
         } else {
             const auto clips = animation_clips_here(path);
             out.value(kOk);

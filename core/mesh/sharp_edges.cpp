@@ -116,6 +116,11 @@ std::optional<LoadedMesh> split_sharp_edges(const LoadedMesh& loaded, const Surf
     LoadedMesh out;
     out.report = loaded.report;
     out.vertex_source = std::move(source);
+    out.objects = loaded.objects;
+    out.materials = loaded.materials;
+    out.face_object = loaded.face_object;
+    out.face_material = loaded.face_material;
+    const bool parts = !loaded.face_object.empty();
     Mesh& m = out.mesh;
     m.reserve(points.size(), mesh.n_edges() + 3 * split.sharp_edges, mesh.n_faces() + 2 * split.sharp_edges);
     std::vector<Mesh::VertexHandle> handle;
@@ -134,8 +139,13 @@ std::optional<LoadedMesh> split_sharp_edges(const LoadedMesh& loaded, const Surf
     // bL -> bR) close the fan round a vertex where three or more wedges meet.
     // Per original vertex, the free edges of its copies.
     std::unordered_map<int, std::vector<std::pair<std::size_t, std::size_t>>> hole;
-    auto add_strip_face = [&](std::size_t a, std::size_t b, std::size_t c) {
-        if (m.add_face(handle[a], handle[b], handle[c]).is_valid()) ++split.strip_faces;
+    // A strip or fan face belongs to the part of a face beside it.
+    auto add_strip_face = [&](std::size_t a, std::size_t b, std::size_t c, Mesh::FaceHandle beside) {
+        if (!m.add_face(handle[a], handle[b], handle[c]).is_valid()) return;
+        ++split.strip_faces;
+        if (!parts) return;
+        out.face_object.push_back(beside.is_valid() ? loaded.face_object[slot(beside)] : 0);
+        out.face_material.push_back(beside.is_valid() ? loaded.face_material[slot(beside)] : 0);
     };
     for (const auto eh : mesh.edges()) {
         if (!sharp[slot(eh)]) continue;
@@ -143,11 +153,11 @@ std::optional<LoadedMesh> split_sharp_edges(const LoadedMesh& loaded, const Surf
         const std::size_t bL = corner_vertex[slot(h)], aL = corner_vertex[slot(mesh.prev_halfedge_handle(h))];
         const std::size_t aR = corner_vertex[slot(t)], bR = corner_vertex[slot(mesh.prev_halfedge_handle(t))];
         if (aL != aR) {
-            add_strip_face(bL, aL, aR);
+            add_strip_face(bL, aL, aR, mesh.face_handle(h));
             hole[mesh.from_vertex_handle(h).idx()].push_back({aR, aL});
         }
         if (bL != bR) {
-            add_strip_face(bL, aR, bR);
+            add_strip_face(bL, aR, bR, mesh.face_handle(h));
             hole[mesh.to_vertex_handle(h).idx()].push_back({bL, bR});
         }
     }
@@ -162,7 +172,9 @@ std::optional<LoadedMesh> split_sharp_edges(const LoadedMesh& loaded, const Surf
             cycle.push_back(it->second);
         }
         if (cycle.size() != edges.size()) continue; // not one loop round the vertex: left open
-        for (std::size_t i = 1; i + 1 < cycle.size(); ++i) add_strip_face(cycle[0], cycle[i], cycle[i + 1]);
+        Mesh::FaceHandle beside;
+        for (const auto fh : mesh.vf_range(Mesh::VertexHandle(v))) beside = fh;
+        for (std::size_t i = 1; i + 1 < cycle.size(); ++i) add_strip_face(cycle[0], cycle[i], cycle[i + 1], beside);
     }
     omerr().enable();
     compute_vertex_normals(m); // zero-area faces weigh nothing: each copy takes its wedge's normal

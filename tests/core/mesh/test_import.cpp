@@ -1,3 +1,8 @@
+#include <fstream>
+#include <functional>
+#include <map>
+#include <nlohmann/json.hpp>
+#include <algorithm>
 #include <gtest/gtest.h>
 
 #include "snaxels/error.h"
@@ -100,12 +105,62 @@ TEST(Import, HorseFacesAreTurnedOutward) {
     EXPECT_EQ(import_mesh(asset("spot.obj")).report.flipped_components, 0u);
 }
 
+// Each face knows its part of the scene and its material: the milk truck's
+// faces per node and per material are what its glTF 1.0 JSON says (read
+// here: each node's meshes' triangle lists, instances counted, down the
+// scene's node tree), its materials' colours its diffuse values.
+TEST(Import, KeepsTheScenesPartsAndMaterials) {
+    const std::string path = asset("hard/CesiumMilkTruck.gltf");
+    std::ifstream in(path);
+    const nlohmann::json doc = nlohmann::json::parse(in);
+    std::map<std::string, std::size_t> by_node, by_material;
+    std::function<void(const std::string&)> walk = [&](const std::string& id) {
+        const nlohmann::json& node = doc["nodes"][id];
+        for (const auto& mesh : node.value("meshes", nlohmann::json::array()))
+            for (const auto& prim : doc["meshes"][mesh.get<std::string>()]["primitives"]) {
+                const std::size_t triangles = doc["accessors"][prim["indices"].get<std::string>()]["count"].get<std::size_t>() / 3;
+                by_node[id] += triangles;
+                by_material[prim["material"].get<std::string>()] += triangles;
+            }
+        for (const auto& child : node.value("children", nlohmann::json::array())) walk(child.get<std::string>());
+    };
+    for (const auto& id : doc["scenes"][doc["scene"].get<std::string>()]["nodes"]) walk(id.get<std::string>());
+
+    const LoadedMesh m = import_mesh(path);
+    ASSERT_EQ(m.face_object.size(), m.mesh.n_faces());
+    ASSERT_EQ(m.face_material.size(), m.mesh.n_faces());
+    EXPECT_EQ(m.report.dropped_faces, 0u);
+    std::map<std::string, std::size_t> objects, materials;
+    for (const auto o : m.face_object) ++objects[m.objects[o].name];
+    for (const auto k : m.face_material) ++materials[m.materials[k].name];
+    EXPECT_EQ(objects, by_node);
+    EXPECT_EQ(materials, by_material);
+    for (const SceneObject& o : m.objects) EXPECT_FALSE(o.path.empty());
+    EXPECT_NE(std::find_if(m.objects.begin(), m.objects.end(),
+                           [](const SceneObject& o) { return o.path == "Geometry-mesh002Node/meshInst962Node"; }),
+              m.objects.end()); // a wheel instance under the body, by its path
+    for (const SceneMaterial& mat : m.materials) {
+        const nlohmann::json& diffuse = doc["materials"][mat.name]["values"]["diffuse"];
+        if (!diffuse.is_array()) continue; // a texture: the colour is Assimp's default
+        for (int k = 0; k < 3; ++k) EXPECT_NEAR(mat.colour[k], diffuse[k].get<double>(), 1e-6) << mat.name;
+    }
+    // A procedural mesh has no parts.
+    EXPECT_TRUE(load_mesh("proc:torus:2000").face_object.empty());
+}
+
 // The snaxels-import helper hands back exactly what this process reads, and
 // its errors read as the in-process ones do.
 TEST(IsolatedImport, HelperReadsWhatThisProcessReads) {
-    for (const std::string file : {"horse.ply", "instanced.gltf", "anim/skinned-bar.gltf", "suzanne.obj"}) {
-        const TriangleSoup here = read_triangle_soup(asset(file));
+    for (const std::string file : {"horse.ply", "instanced.gltf", "anim/skinned-bar.gltf", "suzanne.obj",
+                                   "hard/CesiumMilkTruck.gltf", "hard/regr01-house.dae"}) {
+        const TriangleSoup here = detail::read_triangle_soup_here(asset(file));
         const TriangleSoup there = detail::read_soup_isolated(SNAXELS_IMPORTER, asset(file));
+        EXPECT_EQ(there.normals, here.normals) << file;
+        EXPECT_EQ(there.objects, here.objects) << file;
+        EXPECT_EQ(there.materials, here.materials) << file;
+        EXPECT_EQ(there.triangle_object, here.triangle_object) << file;
+        EXPECT_EQ(there.triangle_material, here.triangle_material) << file;
+        EXPECT_FALSE(here.objects.empty()) << file;
         ASSERT_EQ(there.positions.size(), here.positions.size()) << file;
         ASSERT_EQ(there.triangles.size(), here.triangles.size()) << file;
         for (std::size_t i = 0; i < here.positions.size(); ++i) ASSERT_EQ(there.positions[i], here.positions[i]) << file;
