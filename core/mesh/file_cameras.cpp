@@ -177,8 +177,9 @@ Camera pose_camera(const aiScene* scene, const aiCamera& c, const LocalCamera& l
     return cam;
 }
 
-std::vector<FileCamera> cameras_of(const aiScene* scene, const std::string& path) {
-    const nlohmann::json gltf = detail::gltf_json(path);
+/// The cameras of @p scene read from @p path, whose glTF JSON (null for
+/// another format) is @p gltf.
+std::vector<FileCamera> cameras_of(const aiScene* scene, const std::string& path, const nlohmann::json& gltf) {
     pugi::xml_document dae;
     std::string ext = std::filesystem::path(path).extension().string();
     std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
@@ -214,7 +215,8 @@ bool may_hold_cameras(const std::string& path) {
 
 std::vector<FileCamera> file_cameras(const std::string& path) {
     Assimp::Importer importer;
-    return cameras_of(read_scene(importer, path), path);
+    const aiScene* scene = read_scene(importer, path);
+    return cameras_of(scene, path, detail::gltf_json(path));
 }
 
 struct CameraTrack::Impl {
@@ -230,7 +232,8 @@ CameraTrack::CameraTrack(const std::string& path, const std::string& name, const
     : impl_(std::make_unique<Impl>()) {
     impl_->scene = read_scene(impl_->importer, path);
     const aiScene* scene = impl_->scene;
-    const std::vector<FileCamera> cameras = cameras_of(scene, path);
+    const nlohmann::json gltf = detail::gltf_json(path); // read once: framing and the camera's local frame
+    const std::vector<FileCamera> cameras = cameras_of(scene, path, gltf);
     std::vector<std::string> names;
     for (const FileCamera& c : cameras) names.push_back(c.name);
     std::size_t chosen = cameras.size();
@@ -240,7 +243,7 @@ CameraTrack::CameraTrack(const std::string& path, const std::string& name, const
         throw Error(path + (cameras.empty() ? ": has no cameras" : ": no camera '" + name + "' (it has: " + listed(names) + ")"));
     impl_->camera = scene->mCameras[chosen];
     impl_->info = cameras[chosen];
-    impl_->local = local_camera(*impl_->camera, !detail::gltf_json(path).is_null());
+    impl_->local = local_camera(*impl_->camera, !gltf.is_null());
     // The clip that moves it: the one asked for (a camera it does not move
     // stands still), or the camera's own.
     std::vector<std::string> clips;
