@@ -28,9 +28,11 @@ nlohmann::json stats_json(const AnimationOutput& result) {
     nlohmann::json paths = nlohmann::json::array();
     std::size_t one_frame = 0;
     for (const PathStats& p : st.path_stats) {
-        paths.push_back({{"kind", p.kind}, {"label", p.label}, {"part", p.part}, {"first_frame", p.first},
-                         {"last_frame", p.last}, {"frames_shown", p.frames_shown}, {"vertices", p.vertices},
-                         {"keyframes", p.keyframes}, {"segments", p.segments}});
+        nlohmann::json path = {{"kind", p.kind}, {"label", p.label}, {"part", p.part}, {"first_frame", p.first},
+                               {"last_frame", p.last}, {"frames_shown", p.frames_shown}, {"vertices", p.vertices},
+                               {"keyframes", p.keyframes}, {"segments", p.segments}};
+        if (!p.object.empty()) path["object"] = p.object;
+        paths.push_back(std::move(path));
         one_frame += p.frames_shown == 1;
     }
     return {{"frames", result.frames},
@@ -145,6 +147,7 @@ int run_animate(const std::vector<std::string>& argv) {
                         "' is not moved by any clip; draw it with contours --camera, or animate it with --turntable");
     }
     // The first frame's camera decides the default light, as a turntable's does.
+    warn_about_parts(scene.style, loaded, scene.style_source);
     job.scene = complete_scene(scene, loaded.report, mesh_path, anim.start / anim.fps);
     job.svg = svg_options;
     job.canvas_follows_camera = !scene.size_given;

@@ -62,13 +62,14 @@ int run_contours(const std::vector<std::string>& argv) {
     // Everything about the command line is checked: now the expensive part.
     const LoadedMesh loaded = load_mesh(args.positional()[0]);
     const MeshReport& report = loaded.report;
+    warn_about_parts(scene.style, loaded, scene.style_source);
     const StillJob job{complete_scene(scene, report, args.positional()[0])};
     const Camera& camera = job.scene.camera;
     const Light& light = job.scene.light;
 
     std::optional<LoadedMesh> split;
-    const LoadedMesh& surface = with_sharp_edges(loaded, job.scene.style.surface, split);
-    MeshTopology topology = engine_topology(surface.mesh, job.scene.refine);
+    const LoadedMesh& surface = scene_surface(loaded, job.scene.style, split);
+    MeshTopology topology = engine_topology(surface, job.scene.refine);
     find_parabolic_with_progress(topology, job.scene.kinds);
     const StillOutput still = render_still(surface, topology, nullptr, job);
     const std::vector<ContourResult>& results = still.results;

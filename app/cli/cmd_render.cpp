@@ -51,6 +51,7 @@ int run_render(const std::vector<std::string>& argv) {
         std::cerr << "snaxels-cli: " << project_path << " (style):" << w.line << ":" << w.column
                   << ": warning: " << w.message << '\n';
     const LoadedMesh loaded = load_mesh(mesh_path);
+    warn_about_parts(style, loaded, project_path + " (style)");
     OrbitView view = project.view;
     view.centre = loaded.report.centre(); // as the application frames it
     AnimationSpec animation = project.animation;
@@ -68,8 +69,8 @@ int run_render(const std::vector<std::string>& argv) {
     }
     const int frame = args.value("frame") ? parse_int("frame", *args.value("frame"), 0, 100000) : project.frame;
     std::optional<LoadedMesh> split;
-    const LoadedMesh& surface = with_sharp_edges(loaded, job.scene.style.surface, split);
-    MeshTopology topology = engine_topology(surface.mesh, job.scene.refine);
+    const LoadedMesh& surface = scene_surface(loaded, job.scene.style, split);
+    MeshTopology topology = engine_topology(surface, job.scene.refine);
     find_parabolic_with_progress(topology, job.scene.kinds); // on the pose as loaded, as the animation does
     const glm::dvec3 centre = loaded.report.centre();
     FrameDriver driver(job.animation, surface, topology, job.scene.camera, job.scene.light, centre, mesh_path);

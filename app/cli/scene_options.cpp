@@ -128,6 +128,7 @@ SceneOptions parse_scene_options(const Args& args) {
     if (const auto path = args.value("style")) {
         std::vector<StyleDiagnostic> warnings;
         o.style = load_style(*path, &warnings);
+        o.style_source = *path;
         for (const StyleDiagnostic& w : warnings)
             std::cerr << "snaxels-cli: " << *path << ":" << w.line << ":" << w.column << ": warning: " << w.message << '\n';
     }
@@ -183,6 +184,12 @@ SceneOptions parse_scene_options(const Args& args) {
     o.overrides.visibility = !args.flag("no-visibility");
     if (args.flag("check")) o.overrides.check_invariants = true;
     return o;
+}
+
+void warn_about_parts(const Style& style, const LoadedMesh& mesh, const std::string& source) {
+    if (const auto parts = loaded_parts(mesh))
+        for (const StyleDiagnostic& w : check_parts(style, *parts))
+            std::cerr << "snaxels-cli: " << source << ":" << w.line << ":" << w.column << ": warning: " << w.message << '\n';
 }
 
 SceneSettings complete_scene(const SceneOptions& o, const MeshReport& report, const std::string& mesh_path,

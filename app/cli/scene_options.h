@@ -8,6 +8,7 @@
 
 #include "app/cli/args.h"
 #include "snaxels/animation/scene_settings.h"
+#include "snaxels/mesh/build.h"
 #include "snaxels/mesh/report.h"
 #include "snaxels/planarmap/planar_map.h"
 #include "snaxels/mesh/refine.h"
@@ -28,6 +29,7 @@ struct SceneOptions {
     SceneOverrides overrides;
     std::optional<std::string> file_camera; ///< --camera: one of the file's cameras
     bool size_given = false;                ///< --size (else a file camera's aspect sets the height)
+    std::string style_source;               ///< the style file, as messages name it
 };
 
 std::vector<OptionSpec> scene_option_specs();
@@ -40,6 +42,11 @@ SceneOptions parse_scene_options(const Args& args);
 /// (with a warning) where it would make too many faces.
 SceneSettings complete_scene(const SceneOptions& options, const MeshReport& report, const std::string& mesh_path,
                              double seconds = 0.0);
+
+/// Warns on standard error about each object= or material= pattern of
+/// @p style that matches none of @p mesh's parts, naming the pattern and
+/// what the scene has, at its place in @p source.
+void warn_about_parts(const Style& style, const LoadedMesh& mesh, const std::string& source);
 
 glm::dvec3 parse_vec3(const std::string& option, const std::string& text, bool direction);
 double parse_number(const std::string& option, const std::string& text, double lo, double hi);

@@ -169,9 +169,9 @@ void finish_output(AnimationWriter& writer, AtomicFile* file, AnimationOutput& o
 AnimationOutput run_animation(const LoadedMesh& loaded, const std::string& mesh_path, const AnimationJob& asked) {
     AnimationOutput out;
     AnimationJob job = asked;
-    std::optional<LoadedMesh> split;
-    const LoadedMesh& mesh = with_sharp_edges(loaded, job.scene.style.surface, split);
-    MeshTopology rest = engine_topology(mesh.mesh, job.scene.refine); // the mesh as loaded
+    std::optional<LoadedMesh> surface;
+    const LoadedMesh& mesh = scene_surface(loaded, job.scene.style, surface);
+    MeshTopology rest = engine_topology(mesh, job.scene.refine); // the mesh as loaded
     attach_parabolic(rest, job);
     const glm::dvec3 mesh_centre = mesh.report.centre();
     FrameDriver driver(job.animation, mesh, rest, job.scene.camera, job.scene.light, mesh_centre, mesh_path);
@@ -192,10 +192,20 @@ AnimationOutput run_animation(const LoadedMesh& loaded, const std::string& mesh_
         std::filesystem::create_directories(job.frames_dir, ec);
         if (ec) throw Error("cannot create " + job.frames_dir + ": " + ec.message());
     }
+    // One tracker per line: line sets of one line (other parts) share it.
     std::vector<ContourTracker> trackers;
+    std::vector<std::size_t> tracker_of; // per kind
     std::vector<std::unique_ptr<SurfaceDashPhase>> dash_phases; // per kind
-    for (const ContourSpec& spec : job.scene.kinds) {
-        trackers.emplace_back(rest, spec, job.scene.engine);
+    for (std::size_t c = 0; c < job.scene.kinds.size(); ++c) {
+        const ContourSpec& spec = job.scene.kinds[c];
+        std::size_t t = 0;
+        while (t < c && !job.scene.kinds[t].line().same_as(spec.line())) ++t;
+        if (t == c) {
+            tracker_of.push_back(trackers.size());
+            trackers.emplace_back(rest, spec.line(), job.scene.engine);
+        } else {
+            tracker_of.push_back(tracker_of[t]);
+        }
         dash_phases.push_back(surface_dash_phase(job, spec));
     }
     // Fills: the planar map's contours the drawn ones lack are tracked too.
@@ -204,7 +214,7 @@ AnimationOutput run_animation(const LoadedMesh& loaded, const std::string& mesh_
     std::vector<ContourTracker> fill_trackers;
     if (fills)
         for (const ContourSpec& spec : fill_specs)
-            if (std::none_of(job.scene.kinds.begin(), job.scene.kinds.end(), [&](const ContourSpec& k) { return k.same_as(spec); }))
+            if (std::none_of(job.scene.kinds.begin(), job.scene.kinds.end(), [&](const ContourSpec& k) { return k.line().same_as(spec); }))
                 fill_trackers.emplace_back(rest, spec, job.scene.engine);
     RegionTracker region_tracker;
     std::unique_ptr<RayScene> rays;
@@ -237,13 +247,14 @@ AnimationOutput run_animation(const LoadedMesh& loaded, const std::string& mesh_
             tracked[c] = c < trackers.size() ? &trackers[c].step(topology, camera, light)
                                              : &fill_trackers[c - trackers.size()].step(topology, camera, light);
         }, 1);
-        for (std::size_t c = 0; c < trackers.size(); ++c) {
-            const TrackedFrame& tf = *tracked[c];
-            ms += tf.contour.stats.ms;
+        for (std::size_t t = 0; t < trackers.size(); ++t) ms += tracked[t]->contour.stats.ms;
+        for (std::size_t c = 0; c < job.scene.kinds.size(); ++c) {
+            const TrackedFrame& tf = *tracked[tracker_of[c]];
             results.push_back(tf.contour);
+            results.back().spec = job.scene.kinds[c]; // the line set's parts
             frame.loops.push_back(animated_loops(tf));
             for (const VisualEvent& e : tf.events) out.events.push_back({c, e});
-            if (job.scene.visibility) visibility.push_back(VisibilitySampler(*rays, camera).classify(engine, tf.contour));
+            if (job.scene.visibility) visibility.push_back(VisibilitySampler(*rays, camera).classify(engine, results.back()));
         }
         out.tracking_ms.push_back(ms);
         const ImageProjection projection(camera, image.centre, image.radius, job.scene.style.width, job.scene.style.height, job.scene.style.margin);
@@ -253,14 +264,14 @@ AnimationOutput run_animation(const LoadedMesh& loaded, const std::string& mesh_
             for (const ContourSpec& spec : fill_specs) {
                 const ContourResult* r = nullptr;
                 for (std::size_t c = 0; c < tracked.size() && !r; ++c)
-                    if (tracked[c]->contour.spec.same_as(spec)) r = &tracked[c]->contour;
+                    if (tracked[c]->contour.spec.line().same_as(spec)) r = &tracked[c]->contour;
                 contours.push_back(r);
             }
             PlanarMap map = build_planar_map(job.scene.map_kind, engine, contours, rays.get(), projection, camera, light);
             frame.region_tracks = region_tracker.step(map);
             frame.regions = std::move(map.regions);
         }
-        for (std::size_t c = 0; c < trackers.size(); ++c)
+        for (std::size_t c = 0; c < results.size(); ++c)
             if (dash_phases[c]) fasten_dashes(*dash_phases[c], results[c].fronts, frame.drawing.contours[c], projection, topology);
         for (auto& contour : frame.drawing.contours)
             for (auto& loop : contour.loops) std::vector<glm::dvec3>().swap(loop.p); // not exported: memory freed

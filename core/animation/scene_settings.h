@@ -9,6 +9,7 @@
 #include <optional>
 #include <vector>
 
+#include "snaxels/mesh/build.h"
 #include "snaxels/mesh/refine.h"
 #include "snaxels/planarmap/planar_map.h"
 #include "snaxels/scene/camera.h"
@@ -48,5 +49,11 @@ Light job_light(const Style& style, const Camera& camera, const std::optional<Li
 
 /// The contours @p style draws (its <contour> kinds), or the visual contour.
 std::vector<ContourSpec> style_kinds(const Style& style);
+
+/// The surface the engine draws of @p loaded under @p style: without the
+/// objects the style hides (<object hide="true">: without_objects), split
+/// along its sharp edges (<surface>: split_sharp_edges); @p loaded itself
+/// when neither changes it. @p storage holds a changed mesh.
+const LoadedMesh& scene_surface(const LoadedMesh& loaded, const Style& style, std::optional<LoadedMesh>& storage);
 
 } // namespace snaxels

@@ -46,7 +46,7 @@ std::vector<ContourResult> StillTracking::compute(const MeshTopology& topology, 
     std::vector<ContourTracker*> tracker(specs.size(), nullptr);
     for (std::size_t i = 0; i < specs.size(); ++i) {
         if (specs[i].on_surface()) continue; // the mesh's own lines: found, not tracked
-        const std::string key = specs[i].label();
+        const std::string key = specs[i].line().label(); // line sets of one line share its tracker
         auto it = kept.find(key);
         if (it == kept.end()) {
             auto old = trackers_.find(key);
@@ -83,6 +83,7 @@ std::vector<ContourResult> StillTracking::compute(const MeshTopology& topology, 
         if (first_of[i] != i) results[i] = results[first_of[i]];
         else if (tracker[i]) (fresh[i] ? restarts_ : tracked_) += 1;
     }
+    for (std::size_t i = 0; i < specs.size(); ++i) results[i].spec = specs[i]; // each line set's parts
     return results;
 }
 
@@ -109,15 +110,26 @@ StillOutput render_still(const LoadedMesh& mesh, const MeshTopology& topology, c
         needed = scene.style.fill_contours();
         if (needed.empty()) needed = {ContourSpec{}, ContourSpec{ContourKind::Shadow, 0.0}};
         for (const ContourSpec& spec : needed)
-            if (std::none_of(specs.begin(), specs.end(), [&](const ContourSpec& s) { return s.same_as(spec); }))
+            if (std::none_of(specs.begin(), specs.end(), [&](const ContourSpec& s) { return s.line().same_as(spec); }))
                 specs.push_back(spec);
     }
     std::vector<ContourResult> all;
     if (tracking) {
         all = tracking->compute(topology, specs, scene.camera, scene.light, scene.engine, centre);
     } else {
+        // Line sets of one line (other parts) share its computation.
+        std::vector<std::size_t> first(specs.size());
+        for (std::size_t i = 0; i < specs.size(); ++i)
+            for (first[i] = 0; !specs[first[i]].line().same_as(specs[i].line());) ++first[i];
         all.resize(specs.size());
-        parallel_for(specs.size(), [&](std::size_t i) { all[i] = engine.compute(specs[i], scene.camera, scene.light, scene.engine); }, 1);
+        parallel_for(specs.size(), [&](std::size_t i) {
+            if (first[i] == i) all[i] = engine.compute(specs[i], scene.camera, scene.light, scene.engine);
+        }, 1);
+        for (std::size_t i = 0; i < specs.size(); ++i)
+            if (first[i] != i) {
+                all[i] = all[first[i]];
+                all[i].spec = specs[i];
+            }
     }
     out.results.assign(std::make_move_iterator(all.begin()), std::make_move_iterator(all.begin() + std::ptrdiff_t(scene.kinds.size())));
     const std::vector<ContourResult> fill_results(std::make_move_iterator(all.begin() + std::ptrdiff_t(scene.kinds.size())),
@@ -135,9 +147,9 @@ StillOutput render_still(const LoadedMesh& mesh, const MeshTopology& topology, c
     if (map) {
         auto result_of = [&](const ContourSpec& spec) -> const ContourResult* {
             for (const ContourResult& r : out.results)
-                if (r.spec.same_as(spec)) return &r;
+                if (r.spec.line().same_as(spec)) return &r;
             for (const ContourResult& r : fill_results)
-                if (r.spec.same_as(spec)) return &r;
+                if (r.spec.line().same_as(spec)) return &r;
             return nullptr;
         };
         std::vector<const ContourResult*> contours;

@@ -619,6 +619,7 @@ void stroke_paths(const std::vector<AnimationFrame>& frames, std::size_t c, cons
                 life.push_back(std::move(lf));
             }
             const int first = members[start].first;
+            const std::int32_t object = frames[members[start].first].drawing.contours[c].loops[members[start].second].object;
             start = end;
             if (empty) continue;
             if (chunk && life.size() == 1) {
@@ -649,6 +650,7 @@ void stroke_paths(const std::vector<AnimationFrame>& frames, std::size_t c, cons
                     path.last = first + int(b);
                     path.track = sequence;
                     path.run = run_id;
+                    path.object = object;
                     for (const Plan& plan : plans) path.segments.push_back(writer.emit(plan, stroke.smoothing));
                     if (run_id) dash_offsets(life, cls, run_id, first, stroke, options, path);
                     out.push_back(std::move(path));

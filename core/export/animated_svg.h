@@ -60,6 +60,7 @@ struct PathStats {
     std::size_t vertices = 0;     ///< the most any of its keyframes has
     std::size_t keyframes = 0;
     std::size_t segments = 0;     ///< stretches of one vertex set
+    std::string object; ///< strokes in a scene of several objects: the object's path (else empty)
 };
 
 struct AnimatedSvgStats {

@@ -21,6 +21,13 @@ nlohmann::json contours_to_json(const MeshReport& mesh, const Camera& camera, co
     doc["camera"] = to_json(camera);
     doc["light"] = to_json(light);
     doc["image"] = {{"width", drawing.width}, {"height", drawing.height}};
+    if (drawing.parts) {
+        nlohmann::json objects = nlohmann::json::array(), materials = nlohmann::json::array();
+        for (const SceneObject& o : drawing.parts->objects) objects.push_back({{"name", o.name}, {"path", o.path}});
+        for (const SceneMaterial& m : drawing.parts->materials)
+            materials.push_back({{"name", m.name}, {"colour", {m.colour.r, m.colour.g, m.colour.b}}, {"opacity", m.colour.a}});
+        doc["parts"] = {{"objects", std::move(objects)}, {"materials", std::move(materials)}};
+    }
     ContourStats total;
     nlohmann::json contours = nlohmann::json::array();
     for (std::size_t i = 0; i < drawing.contours.size(); ++i) {
@@ -35,16 +42,28 @@ nlohmann::json contours_to_json(const MeshReport& mesh, const Camera& camera, co
                 if (!loop.qi.empty()) s["qi"] = loop.qi[k];
                 snaxels.push_back(std::move(s));
             }
-            loops.push_back({{"closed", loop.closed}, {"snaxels", std::move(snaxels)}});
+            nlohmann::json l = {{"closed", loop.closed}, {"snaxels", std::move(snaxels)}};
+            if (drawing.parts) {
+                nlohmann::json objects = nlohmann::json::array(), materials = nlohmann::json::array();
+                for (const std::uint32_t o : loop.objects)
+                    objects.push_back(o < drawing.parts->objects.size() ? drawing.parts->objects[o].path : "");
+                for (const std::uint32_t m : loop.materials)
+                    materials.push_back(m < drawing.parts->materials.size() ? drawing.parts->materials[m].name : "");
+                l["objects"] = std::move(objects);
+                l["materials"] = std::move(materials);
+            }
+            loops.push_back(std::move(l));
         }
         std::size_t positive = 0;
         for (const Region& region : r.regions) positive += region.sign > 0;
-        contours.push_back({{"kind", c.spec.kind_name()},
-                            {"k", c.spec.k},
-                            {"loops", std::move(loops)},
-                            {"regions",
-                             {{"positive", positive}, {"negative", r.regions.size() - positive}}},
-                            {"stats", stats_json(r.stats)}});
+        nlohmann::json contour = {{"kind", c.spec.kind_name()},
+                                  {"k", c.spec.k},
+                                  {"loops", std::move(loops)},
+                                  {"regions", {{"positive", positive}, {"negative", r.regions.size() - positive}}},
+                                  {"stats", stats_json(r.stats)}};
+        if (!c.spec.parts.objects.empty()) contour["object"] = c.spec.parts.objects;
+        if (!c.spec.parts.materials.empty()) contour["material"] = c.spec.parts.materials;
+        contours.push_back(std::move(contour));
         total.seeds += r.stats.seeds;
         total.iterations += r.stats.iterations;
         total.fanouts += r.stats.fanouts;

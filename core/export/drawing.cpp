@@ -1,5 +1,9 @@
 #include "snaxels/export/drawing.h"
 
+#include <algorithm>
+
+#include "snaxels/snaxel/feature_edges.h"
+
 namespace snaxels {
 
 bool has_hidden_lines(const Drawing& drawing) {
@@ -18,10 +22,12 @@ Drawing make_drawing(const SnaxelEngine& engine, const std::vector<ContourResult
     drawing.width = projection.width();
     drawing.height = projection.height();
     drawing.hidden_lines = visibility != nullptr;
+    const MeshTopology& topo = engine.topology();
+    if (topo.parts() && topo.parts()->several()) drawing.parts = topo.connectivity()->parts;
     for (std::size_t c = 0; c < results.size(); ++c) {
         const ContourResult& r = results[c];
-        const ContourVisibility parts = visibility ? ContourVisibility{} : drawn_parts(engine, r);
-        const ContourVisibility* cut = visibility ? &(*visibility)[c] : parts.loops.empty() ? nullptr : &parts;
+        const ContourVisibility runs = visibility ? ContourVisibility{} : drawn_parts(engine, r);
+        const ContourVisibility* cut = visibility ? &(*visibility)[c] : runs.loops.empty() ? nullptr : &runs;
         DrawnContour contour;
         contour.spec = r.spec;
         for (std::size_t l = 0; l < r.fronts.loops.size(); ++l) {
@@ -46,6 +52,26 @@ Drawing make_drawing(const SnaxelEngine& engine, const std::vector<ContourResult
                     dr.q.reserve(run.points.size());
                     for (const glm::dvec3& p : run.points) dr.q.push_back(projection.project(p));
                     drawn.runs.push_back(std::move(dr));
+                }
+            }
+            if (drawing.parts) {
+                const FaceParts& parts = *drawing.parts;
+                const bool along_edges = r.spec.along_edges();
+                std::vector<std::uint32_t> count(parts.objects.size() + 1, 0);
+                r.fronts.for_each_in_loop(loop, [&](std::int32_t s) {
+                    const EdgeId e = r.fronts.snaxels[s].edge;
+                    for (const FaceId f : along_edges ? faces_beside(topo, e) : topo.edge_faces()[e])
+                        if (f.valid()) {
+                            drawn.objects.push_back(parts.object[f]);
+                            drawn.materials.push_back(parts.material[f]);
+                            ++count[std::min<std::size_t>(parts.object[f], parts.objects.size())];
+                        }
+                });
+                const auto most = std::max_element(count.begin(), count.end() - 1);
+                if (most != count.end() - 1 && *most > 0) drawn.object = std::int32_t(most - count.begin());
+                for (auto* list : {&drawn.objects, &drawn.materials}) {
+                    std::sort(list->begin(), list->end());
+                    list->erase(std::unique(list->begin(), list->end()), list->end());
                 }
             }
             contour.loops.push_back(std::move(drawn));

@@ -2,10 +2,13 @@
 /// Converged contours as a drawing: every loop's snaxels in 3-D and in
 /// image pixels, grouped by contour kind. What the exporters write.
 
+#include <cstdint>
+#include <memory>
 #include <vector>
 
 #include <glm/glm.hpp>
 
+#include "snaxels/mesh/parts.h"
 #include "snaxels/scene/camera.h"
 #include "snaxels/snaxel/snaxel_engine.h"
 #include "snaxels/visibility/visibility.h"
@@ -28,6 +31,12 @@ struct DrawnLoop {
     std::vector<DrawnRun> runs; ///< empty when visibility was not computed
     /// Phase (pixels into the dash pattern) at q[0] for surface-fastened dashes.
     double dash_phase = 0.0;
+    /// With Drawing::parts: the objects and materials (indices, ascending)
+    /// of the faces beside the loop's snaxels' edges: the parts it lies on.
+    std::vector<std::uint32_t> objects, materials;
+    /// With Drawing::parts: the object most of the loop's snaxels lie on
+    /// (the one exports group it under); -1 without parts.
+    std::int32_t object = -1;
 };
 
 struct DrawnContour {
@@ -42,7 +51,14 @@ struct Drawing {
     /// contours) have runs, of QI 0 and kNotDrawn; the others none.
     bool hidden_lines = false;
     std::vector<DrawnContour> contours;
+    /// The scene's parts, when it has several objects or materials
+    /// (FaceParts::several): loops then say which they lie on.
+    std::shared_ptr<const FaceParts> parts;
 };
+
+/// Whether @p drawing's strokes are grouped by object in exports: it has
+/// parts, and more than one object.
+inline bool groups_by_object(const Drawing& drawing) { return drawing.parts && drawing.parts->objects.size() > 1; }
 
 /// Whether @p drawing has hidden lines to draw: visibility was computed
 /// (hidden_lines), or a loop has a snaxel of QI above 0 (a drawing made by

@@ -125,6 +125,23 @@ std::string kind_group(const ContourSpec& spec, const StrokeStyle& stroke, const
     return out;
 }
 
+std::string xml_text(const std::string& text) {
+    std::string out;
+    for (const char c : text) {
+        if (c == '&') out += "&amp;";
+        else if (c == '<') out += "&lt;";
+        else if (c == '>') out += "&gt;";
+        else if (c == '"') out += "&quot;";
+        else out += c;
+    }
+    return out;
+}
+
+std::string object_group(const SceneObject& object) {
+    return "<g class=\"object\" data-object=\"" + xml_text(object.path) + "\" inkscape:groupmode=\"layer\" inkscape:label=\"" +
+           xml_text(object.name) + "\">\n";
+}
+
 void append_chain_data(std::string& out, const BezierChain& chain) {
     if (chain.knots.empty()) return;
     out += 'M';
@@ -216,7 +233,8 @@ double arc_to(const std::vector<glm::dvec2>& loop, bool closed, const glm::dvec2
 } // namespace
 
 std::string to_svg(const Drawing& drawing, const Style& style, const std::vector<MapRegion>* regions) {
-    std::string out = svg::document_start(drawing.width, drawing.height, style.background);
+    const bool by_object = groups_by_object(drawing);
+    std::string out = svg::document_start(drawing.width, drawing.height, style.background, by_object);
     if (regions && !style.regions.empty()) {
         // Region outlines run along mesh edges in straight stretches of many
         // points: only those that bend them stay. Each region is simplified
@@ -269,10 +287,10 @@ std::string to_svg(const Drawing& drawing, const Style& style, const std::vector
             const StrokeStyle& stroke = hidden ? cs.hidden : cs.visible;
             if (!stroke.draw) continue;
             out += svg::kind_group(c.spec, stroke);
-            for (const DrawnLoop& loop : c.loops) {
+            auto draw_loop = [&](const DrawnLoop& loop) {
                 if (loop.runs.empty()) { // no visibility: drawn whole, as visible
                     if (!hidden) append_path(out, loop.q, loop.closed, stroke, loop.dash_phase);
-                    continue;
+                    return;
                 }
                 for (const DrawnRun& run : loop.runs) {
                     if (run.qi == kNotDrawn || (run.qi > 0) != hidden || run.q.empty()) continue;
@@ -281,6 +299,21 @@ std::string to_svg(const Drawing& drawing, const Style& style, const std::vector
                                              : loop.dash_phase;
                     append_path(out, run.q, run.closed, stroke, phase);
                 }
+            };
+            if (!by_object) {
+                for (const DrawnLoop& loop : c.loops) draw_loop(loop);
+            } else {
+                // A sublayer per object inside the kind's group (docs/styles.md says why).
+                for (std::size_t o = 0; o < drawing.parts->objects.size(); ++o) {
+                    std::string body;
+                    std::swap(out, body);
+                    for (const DrawnLoop& loop : c.loops)
+                        if (loop.object == std::int32_t(o)) draw_loop(loop);
+                    std::swap(out, body);
+                    if (!body.empty()) out += svg::object_group(drawing.parts->objects[o]) + body + "</g>\n";
+                }
+                for (const DrawnLoop& loop : c.loops)
+                    if (loop.object < 0) draw_loop(loop);
             }
             out += "</g>\n";
         }

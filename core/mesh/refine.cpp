@@ -19,8 +19,12 @@ int refine_levels(std::size_t faces, int requested) {
     return levels;
 }
 
-MeshTopology engine_topology(const Mesh& mesh, int levels) {
-    const MeshTopology topology = build_topology(mesh);
+MeshTopology engine_topology(const LoadedMesh& mesh, int levels) {
+    return engine_topology(mesh.mesh, levels, loaded_parts(mesh));
+}
+
+MeshTopology engine_topology(const Mesh& mesh, int levels, std::shared_ptr<const FaceParts> parts) {
+    const MeshTopology topology = build_topology(mesh, nullptr, std::move(parts));
     // The levels go by the faces of the surface: a split sharp edge's
     // zero-area strips add faces but nothing to shade.
     std::size_t faces = topology.n_faces();
@@ -150,7 +154,19 @@ MeshTopology refine_topology(const MeshTopology& t, int levels) {
         if (!mesh.add_face(handles[f[0]], handles[f[1]], handles[f[2]]).is_valid())
             return t; // cannot happen on a manifold topology; the mesh is then used as it is
     }
-    MeshTopology out = build_topology(mesh, r); // faces keep the order they were added in
+    std::shared_ptr<FaceParts> parts;
+    if (const FaceParts* base = t.parts()) {
+        parts = std::make_shared<FaceParts>();
+        parts->objects = base->objects;
+        parts->materials = base->materials;
+        parts->object.values().reserve(r->face_origin.size());
+        parts->material.values().reserve(r->face_origin.size());
+        for (const FaceId origin : r->face_origin) {
+            parts->object.push_back(base->object[origin]);
+            parts->material.push_back(base->material[origin]);
+        }
+    }
+    MeshTopology out = build_topology(mesh, r, std::move(parts)); // faces keep the order they were added in
     if (out.n_faces() != faces.size()) return t;
     return out;
 }

@@ -16,6 +16,8 @@
 
 #include <glm/vec3.hpp>
 
+#include "snaxels/mesh/build.h"
+#include "snaxels/mesh/parts.h"
 #include "snaxels/mesh/topology.h"
 
 namespace snaxels {
@@ -55,7 +57,11 @@ constexpr int kAutoRefine = -1;
 int refine_levels(std::size_t faces, int requested);
 
 /// The topology the engine works on: @p mesh's, refined by @p levels
-/// (kAutoRefine: auto_refine_levels of its faces with an area).
-MeshTopology engine_topology(const Mesh& mesh, int levels = kAutoRefine);
+/// (kAutoRefine: auto_refine_levels of its faces with an area), with
+/// @p parts (the scene's parts of the mesh's faces) when given.
+MeshTopology engine_topology(const Mesh& mesh, int levels = kAutoRefine,
+                             std::shared_ptr<const FaceParts> parts = nullptr);
+/// engine_topology of a loaded mesh, with its parts (loaded_parts).
+MeshTopology engine_topology(const LoadedMesh& mesh, int levels = kAutoRefine);
 
 } // namespace snaxels

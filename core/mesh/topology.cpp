@@ -38,9 +38,11 @@ MeshTopology MeshTopology::posed(std::shared_ptr<const MeshPose> pose) const {
     return out;
 }
 
-MeshTopology build_topology(const Mesh& mesh, std::shared_ptr<const MeshRefinement> refinement) {
+MeshTopology build_topology(const Mesh& mesh, std::shared_ptr<const MeshRefinement> refinement,
+                            std::shared_ptr<const FaceParts> parts) {
     auto c = std::make_shared<MeshConnectivity>();
     c->refinement = std::move(refinement);
+    c->parts = std::move(parts);
     auto pose = std::make_shared<MeshPose>();
     MeshConnectivity& t = *c;
     const auto nv = mesh.n_vertices(), ne = mesh.n_edges(), nf = mesh.n_faces();

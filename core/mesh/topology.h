@@ -18,6 +18,7 @@
 namespace snaxels {
 
 struct MeshRefinement;  // core/mesh/refine.h
+struct FaceParts;       // core/mesh/parts.h
 struct ParabolicResult; // core/snaxel/parabolic.h
 struct CurvatureField;  // core/snaxel/curvature.h
 
@@ -44,6 +45,9 @@ struct MeshConnectivity {
     /// edges (core/mesh/sharp_edges.h), and with them flat faces whose
     /// corners share one normal.
     bool has_strips = false;
+    /// The scene's objects and materials, per face; null for a mesh
+    /// without parts. A refined mesh's face has its original face's parts.
+    std::shared_ptr<const FaceParts> parts;
     /// With strips: per vertex, the lowest-numbered vertex at the same point
     /// (the copies of one vertex of a sharp edge name one of them; joined
     /// through the strips' zero-length edges). Empty without strips.
@@ -162,6 +166,8 @@ class MeshTopology {
     const std::shared_ptr<const MeshRefinement>& refinement() const { return connectivity_->refinement; }
     /// Whether the mesh has split sharp edges (MeshConnectivity::has_strips).
     bool has_strips() const { return connectivity_->has_strips; }
+    /// The scene's parts per face, or nullptr (MeshConnectivity::parts).
+    const FaceParts* parts() const { return connectivity_->parts.get(); }
     /// Whether @p a and @p b are one point of the surface: the same vertex,
     /// or copies of it along a split sharp edge.
     bool same_point(VertexId a, VertexId b) const {
@@ -264,8 +270,10 @@ bool edge_in_strip(const MeshTopology& topology, EdgeId e);
 
 /// Builds the flat connectivity of @p mesh, in its pose (normals as stored
 /// on the mesh); @p refinement, when the mesh is a refined one, says how its
-/// added vertices follow the original ones.
-MeshTopology build_topology(const Mesh& mesh, std::shared_ptr<const MeshRefinement> refinement = nullptr);
+/// added vertices follow the original ones; @p parts, the scene's parts of
+/// its faces (in the mesh's face order), when it has them.
+MeshTopology build_topology(const Mesh& mesh, std::shared_ptr<const MeshRefinement> refinement = nullptr,
+                            std::shared_ptr<const FaceParts> parts = nullptr);
 
 /// Connected sets of vertices: one set grows from each vertex that
 /// @p seeds accepts and no set holds yet, over the edges (v, w) that

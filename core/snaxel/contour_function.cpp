@@ -21,23 +21,26 @@ std::string ContourSpec::kind_name() const {
     case ContourKind::Crease: return "crease";
     case ContourKind::Border: return "border";
     case ContourKind::Suggestive: return "suggestive";
+    case ContourKind::Material: return "material";
+    case ContourKind::Object: return "object";
     }
     return "visual";
 }
 
 std::string ContourSpec::label() const {
+    const std::string selector = parts.empty() ? "" : " " + parts.text();
     if (kind == ContourKind::Visual || kind == ContourKind::Shadow || kind == ContourKind::Parabolic ||
-        kind == ContourKind::Border)
-        return kind_name();
+        kind == ContourKind::Border || kind == ContourKind::Material || kind == ContourKind::Object)
+        return kind_name() + selector;
     char buf[96];
     if (kind == ContourKind::Suggestive) std::snprintf(buf, sizeof buf, "suggestive:%g:%g", k, min_angle);
     else std::snprintf(buf, sizeof buf, "%s:%g", kind_name().c_str(), k);
-    return buf;
+    return buf + selector;
 }
 
 bool ContourSpec::same_as(const ContourSpec& other) const {
     return kind == other.kind && std::abs(k - other.k) < 1e-9 && std::abs(min_length - other.min_length) < 1e-9 &&
-           std::abs(min_angle - other.min_angle) < 1e-9;
+           std::abs(min_angle - other.min_angle) < 1e-9 && parts == other.parts;
 }
 
 namespace {
@@ -54,13 +57,16 @@ ContourSpec ContourSpec::parse(const std::string& text) {
     const auto colon = text.find(':');
     const std::string name = text.substr(0, colon);
     ContourSpec spec;
-    if (name == "visual" || name == "shadow" || name == "parabolic" || name == "border") {
+    if (name == "visual" || name == "shadow" || name == "parabolic" || name == "border" || name == "material" ||
+        name == "object") {
         if (colon != std::string::npos)
             throw Error("contour kind '" + text + "': " + name + " takes no value");
-        spec.kind = name == "visual"   ? ContourKind::Visual
-                    : name == "shadow" ? ContourKind::Shadow
-                    : name == "border" ? ContourKind::Border
-                                       : ContourKind::Parabolic;
+        spec.kind = name == "visual"     ? ContourKind::Visual
+                    : name == "shadow"   ? ContourKind::Shadow
+                    : name == "border"   ? ContourKind::Border
+                    : name == "material" ? ContourKind::Material
+                    : name == "object"   ? ContourKind::Object
+                                         : ContourKind::Parabolic;
         return spec;
     }
     if (name == "crease") {
@@ -89,8 +95,8 @@ ContourSpec ContourSpec::parse(const std::string& text) {
     }
     if (name != "isophote" && name != "gleam")
         throw Error("unknown contour kind '" + text +
-                    "' (expected visual, shadow, isophote:K, gleam:K, parabolic, crease[:DEG], border or "
-                    "suggestive[:D[:DEG]])");
+                    "' (expected visual, shadow, isophote:K, gleam:K, parabolic, crease[:DEG], border, "
+                    "suggestive[:D[:DEG]], material or object)");
     spec.kind = name == "isophote" ? ContourKind::Isophote : ContourKind::Gleam;
     if (colon == std::string::npos)
         throw Error("contour kind '" + text + "' needs a value, for example " + name +
@@ -229,6 +235,8 @@ double ContourFunction::evaluate(const glm::dvec3& p, const glm::dvec3& n) const
     case ContourKind::Parabolic:
     case ContourKind::Crease:
     case ContourKind::Border:
+    case ContourKind::Material:
+    case ContourKind::Object:
     case ContourKind::Suggestive: return nv; // not a function of the point alone; see ContourKind
     case ContourKind::Shadow: return std::min(glm::dot(n, light_.to_light(p)), nv);
     case ContourKind::Isophote: return std::min(glm::dot(n, light_.to_light(p)) - spec_.k, nv);

@@ -9,11 +9,12 @@
 #include <glm/glm.hpp>
 
 #include "snaxels/scene/camera.h"
+#include "snaxels/mesh/parts.h"
 #include "snaxels/mesh/topology.h"
 
 namespace snaxels {
 
-enum class ContourKind { Visual, Shadow, Isophote, Gleam, Parabolic, Crease, Border, Suggestive };
+enum class ContourKind { Visual, Shadow, Isophote, Gleam, Parabolic, Crease, Border, Suggestive, Material, Object };
 
 /// On a mesh with split sharp edges, f within this of zero at a vertex is a
 /// face seen edge-on (some 0.0006 degrees: ten times the rounding of a
@@ -30,11 +31,13 @@ constexpr double kDefaultSuggestiveAngle = 15.0;
 
 /// Which contour: visual N.V; shadow min(N.L, N.V); diffuse isophote
 /// min(N.L - k, N.V); specular gleam min(V.R - k, N.V) with R = 2(N.L)N - L.
-/// Parabolic curves, creases and borders have no contour function: they
-/// are lines of the mesh, the same from any view (on_surface()). Parabolic
-/// curves are found from visual events over all views (core/parabolic);
-/// creases are the edges whose faces meet at more than k degrees, borders
-/// the edges with one face (core/snaxel/feature_edges.h). Suggestive
+/// Parabolic curves, creases, borders and part boundaries have no contour
+/// function: they are lines of the mesh, the same from any view
+/// (on_surface()). Parabolic curves are found from visual events over all
+/// views (core/parabolic); creases are the edges whose faces meet at more
+/// than k degrees, borders the edges with one face, material lines the
+/// edges between faces of two materials, object lines the edges between
+/// faces of two objects (core/snaxel/feature_edges.h). Suggestive
 /// contours are the zeros of the radial curvature kappa_r (a function of
 /// the vertices, from the pose's curvature: core/snaxel/curvature.h),
 /// linear along an edge; the drawing keeps the parts where kappa_r grows
@@ -52,22 +55,40 @@ struct ContourSpec {
     /// derivative of kappa_r along the view, times the squared bounding-box
     /// diagonal, that is drawn).
     double min_angle = 0.0;
+    /// The parts of the scene whose stretches of the line are drawn (a line
+    /// set of a style): the engine finds the whole line; the drawing leaves
+    /// out what lies on other parts (core/visibility/visibility.h).
+    PartSelector parts{};
 
     /// "visual", "shadow", "isophote", "gleam", "parabolic", "crease",
-    /// "border" or "suggestive".
+    /// "border", "suggestive", "material" or "object".
     std::string kind_name() const;
     /// "visual", "shadow", "isophote:0.5", "gleam:0.9", "parabolic",
-    /// "crease:30", "border", "suggestive:0.5:15": what parse() reads.
+    /// "crease:30", "border", "suggestive:0.5:15", "material", "object":
+    /// what parse() reads; followed by the part selector's text when it has
+    /// one ("visual object=wheel*").
     std::string label() const;
-    /// A line of the mesh itself (parabolic, crease, border), not the zero
-    /// set of a function of the view and light: fixed on the surface, the
-    /// same snaxels every frame, bounding no region.
-    bool on_surface() const {
-        return kind == ContourKind::Parabolic || kind == ContourKind::Crease || kind == ContourKind::Border;
+    /// The line itself, whatever parts it is drawn on: the spec without its
+    /// part selector (what the engine computes and trackers follow).
+    ContourSpec line() const {
+        ContourSpec out = *this;
+        out.parts = {};
+        return out;
+    }
+    /// A line of the mesh itself (parabolic, crease, border, material,
+    /// object), not the zero set of a function of the view and light: fixed
+    /// on the surface, the same snaxels every frame, bounding no region.
+    bool on_surface() const { return kind == ContourKind::Parabolic || along_edges(); }
+    /// A line made of whole mesh edges (crease, border, material, object):
+    /// feature_fronts finds it.
+    bool along_edges() const {
+        return kind == ContourKind::Crease || kind == ContourKind::Border || kind == ContourKind::Material ||
+               kind == ContourKind::Object;
     }
     /// Parses the CLI's --kind values; throws snaxels::Error when malformed.
     static ContourSpec parse(const std::string& text);
-    /// The same contour (kind, and k, min_length and min_angle within 1e-9).
+    /// The same contour (kind, and k, min_length and min_angle within 1e-9,
+    /// and the same parts).
     bool same_as(const ContourSpec& other) const;
 };
 

@@ -45,32 +45,67 @@ FaceId face_across_strip(const MeshTopology& topo, EdgeId e, FaceId near, FaceId
     return MeshTopology::kNone;
 }
 
+/// The two faces with an area that meet at edge @p e: its own, or where it
+/// is one side of a split sharp edge, the face beside it and the one across
+/// the strip (only the side whose face comes first has them, so the edge is
+/// taken once). False for a border, an edge inside a strip, or the second
+/// side of a split edge.
+bool faces_meeting(const MeshTopology& topo, EdgeId e, std::array<FaceId, 2>& faces) {
+    if (topo.is_boundary_edge(e)) return false;
+    faces = topo.edge_faces()[e];
+    const bool strips = topo.has_strips();
+    const bool has_area[2] = {!strips || face_has_area(topo, faces[0]), !strips || face_has_area(topo, faces[1])};
+    if (has_area[0] != has_area[1]) {
+        // One side of a split sharp edge: its faces meet across the strip.
+        // Both sides find each other; the side whose face comes first has them.
+        const FaceId near = has_area[0] ? faces[0] : faces[1];
+        const FaceId across = face_across_strip(topo, e, near, has_area[0] ? faces[1] : faces[0]);
+        if (across == MeshTopology::kNone || across < near) return false;
+        faces = {near, across};
+        return true;
+    }
+    return has_area[0]; // both without an area: inside a strip
+}
+
+/// The edges whose meeting faces (faces_meeting) pass @p differ, ascending.
+template <class Differ> std::vector<EdgeId> edges_between(const MeshTopology& topo, Differ&& differ) {
+    std::vector<EdgeId> out;
+    std::array<FaceId, 2> faces;
+    for (const EdgeId e : topo.edges())
+        if (faces_meeting(topo, e, faces) && differ(faces[0], faces[1])) out.push_back(e);
+    return out;
+}
+
 } // namespace
+
+std::array<FaceId, 2> faces_beside(const MeshTopology& topo, EdgeId e) {
+    std::array<FaceId, 2> faces = topo.edge_faces()[e];
+    if (!topo.has_strips() || topo.is_boundary_edge(e)) return faces;
+    const bool has_area[2] = {face_has_area(topo, faces[0]), face_has_area(topo, faces[1])};
+    if (has_area[0] == has_area[1]) return faces;
+    const FaceId near = has_area[0] ? faces[0] : faces[1];
+    const FaceId across = face_across_strip(topo, e, near, has_area[0] ? faces[1] : faces[0]);
+    return across == MeshTopology::kNone ? faces : std::array<FaceId, 2>{near, across};
+}
 
 std::vector<EdgeId> crease_edges(const MeshTopology& topo, double degrees) {
     const double limit = std::cos(glm::radians(std::clamp(degrees, 0.0, 180.0)));
-    std::vector<EdgeId> out;
-    for (const EdgeId e : topo.edges()) {
-        if (topo.is_boundary_edge(e)) continue;
-        std::array<FaceId, 2> faces = topo.edge_faces()[e];
-        const bool strips = topo.has_strips();
-        const bool has_area[2] = {!strips || face_has_area(topo, faces[0]), !strips || face_has_area(topo, faces[1])};
-        if (has_area[0] != has_area[1]) {
-            // One side of a split sharp edge: its faces meet across the
-            // strip. Both sides find each other; the side whose face comes
-            // first draws the crease.
-            const FaceId near = has_area[0] ? faces[0] : faces[1];
-            const FaceId across = face_across_strip(topo, e, near, has_area[0] ? faces[1] : faces[0]);
-            if (across == MeshTopology::kNone || across < near) continue;
-            faces = {near, across};
-        } else if (!has_area[0]) {
-            continue; // inside a strip
-        }
-        const glm::dvec3 a = face_normal(topo, faces[0]), b = face_normal(topo, faces[1]);
-        if (glm::dot(a, a) == 0.0 || glm::dot(b, b) == 0.0) continue;
-        if (glm::dot(a, b) < limit) out.push_back(e);
-    }
-    return out;
+    return edges_between(topo, [&](FaceId f, FaceId g) {
+        const glm::dvec3 a = face_normal(topo, f), b = face_normal(topo, g);
+        return glm::dot(a, a) != 0.0 && glm::dot(b, b) != 0.0 && glm::dot(a, b) < limit;
+    });
+}
+
+std::vector<EdgeId> material_edges(const MeshTopology& topo) {
+    const FaceParts* parts = topo.parts();
+    if (!parts) return {};
+    return edges_between(topo, [&](FaceId f, FaceId g) { return parts->material[f] != parts->material[g]; });
+}
+
+std::vector<EdgeId> object_edges(const MeshTopology& topo) {
+    const FaceParts* parts = topo.parts();
+    if (!parts) return {};
+    return edges_between(topo, [&](FaceId f, FaceId g) { return parts->object[f] != parts->object[g]; });
 }
 
 std::vector<EdgeId> border_edges(const MeshTopology& topo) {
@@ -168,7 +203,10 @@ Fronts chain_fronts(const MeshTopology& topo, const std::vector<EdgeChain>& chai
 }
 
 Fronts feature_fronts(const MeshTopology& topo, const ContourSpec& spec) {
-    const std::vector<EdgeId> edges = spec.kind == ContourKind::Crease ? crease_edges(topo, spec.k) : border_edges(topo);
+    const std::vector<EdgeId> edges = spec.kind == ContourKind::Crease     ? crease_edges(topo, spec.k)
+                                      : spec.kind == ContourKind::Material ? material_edges(topo)
+                                      : spec.kind == ContourKind::Object   ? object_edges(topo)
+                                                                           : border_edges(topo);
     const double min_length = spec.min_length > 0.0 ? spec.min_length * 2.0 * bounding_radius(topo) : 0.0;
     return chain_fronts(topo, chains_at_least(topo, chain_edges(topo, edges), min_length));
 }

@@ -1,10 +1,12 @@
 #pragma once
 /// Lines that lie on the mesh whatever the view: creases (edges where two
-/// faces meet at a sharp angle) and borders (edges with a face on one side
-/// only), chained into polylines along the mesh's edges. They move with the
+/// faces meet at a sharp angle), borders (edges with a face on one side
+/// only) and the boundaries between the scene's materials and objects,
+/// chained into polylines along the mesh's edges. They move with the
 /// surface: only their projection and visibility change from frame to
 /// frame.
 
+#include <array>
 #include <cstdint>
 #include <vector>
 
@@ -21,6 +23,19 @@ constexpr double kDefaultCreaseDegrees = 30.0;
 /// topology's pose) differ by more than @p degrees, ascending. A border
 /// edge is no crease; a face of no area makes none.
 std::vector<EdgeId> crease_edges(const MeshTopology& topology, double degrees);
+
+/// The edges between faces of two materials (of the topology's parts),
+/// ascending; none without parts. A split sharp edge counts once, as a
+/// crease does.
+std::vector<EdgeId> material_edges(const MeshTopology& topology);
+
+/// The edges between faces of two objects, ascending; none without parts.
+std::vector<EdgeId> object_edges(const MeshTopology& topology);
+
+/// The two faces on either side of edge @p e: its own, or where it is one
+/// side of a split sharp edge, the face beside it and the one across the
+/// strip (the faces the sharp edge parts). kNone on a border's open side.
+std::array<FaceId, 2> faces_beside(const MeshTopology& topology, EdgeId e);
 
 /// The edges with a face on one side only, ascending.
 std::vector<EdgeId> border_edges(const MeshTopology& topology);
@@ -51,8 +66,9 @@ std::vector<EdgeChain> chains_at_least(const MeshTopology& topology, std::vector
 /// No vertex set bounds them: edge_snaxel holds each edge's first snaxel.
 Fronts chain_fronts(const MeshTopology& topology, const std::vector<EdgeChain>& chains);
 
-/// The fronts of a crease or border @p spec on @p topology: its edges
-/// (crease_edges at spec.k degrees, or border_edges), chained, the chains
+/// The fronts of a crease, border, material or object @p spec on
+/// @p topology: its edges (crease_edges at spec.k degrees, border_edges,
+/// material_edges, object_edges), chained, the chains
 /// shorter than spec.min_length of the bounding-box diagonal left out.
 Fronts feature_fronts(const MeshTopology& topology, const ContourSpec& spec);
 

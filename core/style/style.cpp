@@ -46,13 +46,20 @@ const std::vector<StyleElement>& style_vocabulary() {
              {{"sharp-angle", {"file"}, "edges whose faces meet at more than this angle are sharp"}}},
             {"contour",
              "which contour to find and how to draw it",
-             {{"kind", {"visual", "shadow", "isophote", "gleam", "parabolic", "crease", "border", "suggestive"},
+             {{"kind", {"visual", "shadow", "isophote", "gleam", "parabolic", "crease", "border", "suggestive", "material", "object"},
                "the contour function"},
               {"k", {}, "the isophote level N.L = k, or the gleam threshold V.R = k"},
               {"angle", {}, "the crease angle"},
-              {"min-length", {}, "chains (runs of crease or border edges from end to end, or junction to junction) shorter than this are left out"},
+              {"min-length", {}, "chains (runs of crease, border, material or object edges from end to end, or junction to junction) shorter than this are left out"},
               {"min-derivative", {}, "the least derivative of kappa_r along the view that is drawn"},
-              {"min-angle", {}, "parts where the surface faces the viewer within this angle of its normal are left out"}}},
+              {"min-angle", {}, "parts where the surface faces the viewer within this angle of its normal are left out"},
+              {"object", {}, "draws the line only on the objects these patterns select"},
+              {"material", {}, "draws the line only on the materials these patterns select"}}},
+            {"object",
+             "how the scene's objects are drawn",
+             {{"name", {}, "the objects it sets: a pattern matched against their names and paths"},
+              {"draw", {"true", "false"}, "`false` keeps the objects as occluders: they hide what is behind them"},
+              {"hide", {"true", "false"}, "`true` leaves the objects out of the scene"}}},
             {"visible", "how the contour's visible parts are drawn", stroke},
             {"hidden", "how the contour's hidden parts are drawn", stroke},
             {"region",
@@ -207,6 +214,25 @@ struct Parser {
         return out;
     }
 
+    // The object= and material= patterns of a <contour> or <region>, noted
+    // in the style (with where they are) to be checked against a scene.
+    PartSelector selector(const pugi::xml_node& node, Style& style) const {
+        PartSelector out;
+        out.objects = split_patterns(node.attribute("object").value());
+        out.materials = split_patterns(node.attribute("material").value());
+        for (const char* attr : {"object", "material"})
+            if (node.attribute(attr) && split_patterns(node.attribute(attr).value()).empty())
+                fail(node, std::string(attr) + "=\"\" selects nothing: give a name or a pattern such as wheel*");
+        for (const auto* list : {&out.objects, &out.materials})
+            for (const std::string& p : *list)
+                if (p == "!") fail(node, "\"!\" must be followed by the pattern it excludes");
+        if (!out.empty()) {
+            const StyleDiagnostic at = where(node.offset_debug(), "");
+            style.part_patterns.push_back({out, at.line, at.column});
+        }
+        return out;
+    }
+
     StrokeStyle stroke(const pugi::xml_node& node, StrokeStyle s) const {
         check_attributes(node);
         s.draw = boolean(node, "draw", s.draw);
@@ -299,15 +325,14 @@ struct Parser {
                 for (const char* attr : {"min-derivative", "min-angle"})
                     if (kind != "suggestive" && child.attribute(attr))
                         fail(child, std::string("only a suggestive contour takes ") + attr);
-                if (kind != "crease" && kind != "border" && child.attribute("min-length"))
-                    fail(child, "only crease and border contours take a min-length");
+                if (kind != "crease" && kind != "border" && kind != "material" && kind != "object" &&
+                    child.attribute("min-length"))
+                    fail(child, "only crease, border, material and object contours take a min-length");
                 spec.min_length = number(child, "min-length", 0.0, 0.0, 1.0);
-                if (kind == "visual" || kind == "shadow" || kind == "parabolic" || kind == "border") {
+                if (kind == "visual" || kind == "shadow" || kind == "parabolic" || kind == "border" || kind == "material" ||
+                    kind == "object") {
                     if (child.attribute("k")) fail(child, "a " + kind + " contour takes no k");
-                    spec.kind = kind == "visual"   ? ContourKind::Visual
-                                : kind == "shadow" ? ContourKind::Shadow
-                                : kind == "border" ? ContourKind::Border
-                                                   : ContourKind::Parabolic;
+                    spec.kind = ContourSpec::parse(kind).kind;
                 } else if (kind == "crease") {
                     if (child.attribute("k")) fail(child, "a crease contour takes angle=\"DEGREES\", not k");
                     spec.kind = ContourKind::Crease;
@@ -329,6 +354,7 @@ struct Parser {
                         kinds += (i ? i + 1 == all.size() ? " or " : ", " : "") + all[i];
                     fail(child, "kind=\"" + kind + "\" must be " + kinds);
                 }
+                spec.parts = selector(child, style);
                 for (const ContourStyle& existing : style.contours)
                     if (existing.spec.label() == spec.label()) fail(child, "a second <contour> for " + spec.label());
                 ContourStyle cs = default_contour_style(spec);
@@ -358,10 +384,25 @@ struct Parser {
                 for (const RegionStyle& other : style.regions)
                     if (other.cls == rs.cls && std::abs(other.k - rs.k) < 1e-9) fail(child, "a second <region> for " + cls);
                 style.regions.push_back(rs);
+            } else if (name == "object") {
+                check_attributes(child);
+                const std::string pattern = child.attribute("name").value();
+                if (pattern.empty()) fail(child, "<object> needs name=\"PATTERN\" (an object's name, or a glob such as wheel*)");
+                if (pattern[0] == '!') fail(child, "<object name=\"" + pattern + "\">: name a pattern to set, without !");
+                const bool hide = boolean(child, "hide", false), draw = boolean(child, "draw", true);
+                if (hide) style.hidden_objects.push_back(pattern);
+                else if (!draw) style.occluders.push_back(pattern);
+                if (hide || !draw) {
+                    const StyleDiagnostic at = where(child.offset_debug(), "");
+                    style.part_patterns.push_back({{{pattern}, {}}, at.line, at.column});
+                }
             } else {
-                warn(child, "unknown element <" + name + "> (expected <canvas>, <light>, <surface>, <contour> or <region>)");
+                warn(child, "unknown element <" + name +
+                                "> (expected <canvas>, <light>, <surface>, <contour>, <region> or <object>)");
             }
         }
+        // Occluder-only objects are left out of every line set.
+        for (ContourStyle& cs : style.contours) cs.spec = style.drawn(cs.spec);
         if (2.0 * style.margin >= std::min(style.width, style.height))
             fail(root, "the canvas margin leaves no room for the drawing");
         return style;
@@ -380,6 +421,8 @@ const char* default_stroke(ContourKind kind) {
     case ContourKind::Crease: return "#333333";
     case ContourKind::Border: return "#111111";
     case ContourKind::Suggestive: return "#5a4632";
+    case ContourKind::Material: return "#333333";
+    case ContourKind::Object: return "#111111";
     }
     return "#111111";
 }
@@ -447,9 +490,33 @@ const RegionStyle* Style::region(RegionClass cls, double k) const {
 }
 
 ContourStyle Style::contour(const ContourSpec& spec) const {
+    // The line set of these parts, else the first of the kind.
     for (const ContourStyle& c : contours)
-        if (c.spec.kind == spec.kind && std::abs(c.spec.k - spec.k) < 1e-9) return c;
+        if (c.spec.kind == spec.kind && std::abs(c.spec.k - spec.k) < 1e-9 && c.spec.parts == spec.parts) return c;
+    for (const ContourStyle& c : contours)
+        if (c.spec.kind == spec.kind && std::abs(c.spec.k - spec.k) < 1e-9) {
+            ContourStyle out = c;
+            out.spec.parts = spec.parts;
+            return out;
+        }
     return default_contour_style(spec);
+}
+
+ContourSpec Style::drawn(ContourSpec spec) const {
+    for (const std::string& pattern : occluders) {
+        const std::string excluded = "!" + pattern;
+        if (std::find(spec.parts.objects.begin(), spec.parts.objects.end(), excluded) == spec.parts.objects.end())
+            spec.parts.objects.push_back(excluded);
+    }
+    return spec;
+}
+
+std::vector<StyleDiagnostic> check_parts(const Style& style, const FaceParts& parts) {
+    std::vector<StyleDiagnostic> out;
+    for (const Style::PartPatterns& site : style.part_patterns)
+        for (std::string& message : unmatched_patterns(site.selector, parts))
+            out.push_back({site.line, site.column, std::move(message)});
+    return out;
 }
 
 Style parse_style(const std::string& text, const std::string& source, std::vector<StyleDiagnostic>* warnings) {

@@ -53,6 +53,19 @@ struct Style {
     SurfaceOptions surface; ///< where the surface's edges are sharp
     std::vector<ContourStyle> contours;
     std::vector<RegionStyle> regions; ///< fills; empty: none
+    /// Object patterns of <object draw="false">: parts kept as occluders,
+    /// hiding what lies behind them, with none of their lines drawn.
+    std::vector<std::string> occluders;
+    /// Object patterns of <object hide="true">: parts left out of the
+    /// scene, neither drawn nor hiding anything (scene_surface).
+    std::vector<std::string> hidden_objects;
+    /// Every part selector of the document and where it is, to be checked
+    /// against a scene's parts (check_parts).
+    struct PartPatterns {
+        PartSelector selector;
+        int line = 0, column = 0;
+    };
+    std::vector<PartPatterns> part_patterns;
 
     /// The contours the fills need besides those drawn: the shadow contour
     /// for lit and shadow, an isophote per band, a gleam per highlight.
@@ -60,8 +73,11 @@ struct Style {
     /// The fill of a region class (nullptr: not filled).
     const RegionStyle* region(RegionClass cls, double k) const;
 
-    /// The style of @p spec: the matching <contour>, or the defaults for its kind.
+    /// The style of @p spec: the <contour> of its kind and parts, else the
+    /// first of its kind, else the defaults for its kind.
     ContourStyle contour(const ContourSpec& spec) const;
+    /// @p spec drawn without the occluder-only objects (occluders).
+    ContourSpec drawn(ContourSpec spec) const;
 };
 
 /// Default strokes of a kind: the colour of its kind, solid when visible,
@@ -124,6 +140,10 @@ const StyleElement* style_element(const std::string& name);
 /// attributes are added to @p warnings (named, with their position) and
 /// otherwise ignored. @p source names the document in messages.
 Style parse_style(const std::string& text, const std::string& source, std::vector<StyleDiagnostic>* warnings);
+
+/// The style's part patterns that match nothing in @p parts, as warnings
+/// at their elements, each naming the pattern and what the scene has.
+std::vector<StyleDiagnostic> check_parts(const Style& style, const FaceParts& parts);
 
 /// Reads and parses a style file; an unreadable file throws snaxels::Error.
 Style load_style(const std::string& path, std::vector<StyleDiagnostic>* warnings);

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 
+#include "snaxels/snaxel/feature_edges.h"
 #include "snaxels/util/detail/parallel.h"
 
 namespace snaxels {
@@ -25,6 +26,38 @@ FaceId common_face(const MeshTopology& topo, const Snaxel& a, const Snaxel& b) {
                 if (f != MeshTopology::kNone) return f;
     }
     return MeshTopology::kNone;
+}
+
+std::vector<std::uint8_t> selected_stretches(const MeshTopology& topo, const ContourResult& contour) {
+    const PartMatcher matcher(contour.spec.parts, topo.parts());
+    if (matcher.all()) return {};
+    const Fronts& fronts = contour.fronts;
+    std::vector<std::uint8_t> out(fronts.snaxels.size(), 1);
+    const bool along_edges = contour.spec.along_edges();
+    auto on_edge = [&](const Snaxel& s) {
+        const auto faces = along_edges ? faces_beside(topo, s.edge) : topo.edge_faces()[s.edge];
+        return matcher.face(faces[0]) || matcher.face(faces[1]);
+    };
+    std::vector<std::int32_t> order;
+    for (const FrontLoop& loop : fronts.loops) {
+        order.clear();
+        fronts.for_each_in_loop(loop, [&](std::int32_t s) { order.push_back(s); });
+        const std::size_t n = order.size();
+        for (std::size_t k = 0; k < n; ++k) {
+            const Snaxel& s = fronts.snaxels[order[k]];
+            if (along_edges || n == 1) {
+                // A chain's snaxel lies on the edge of its stretch (chain_fronts).
+                out[order[k]] = on_edge(s);
+                continue;
+            }
+            const bool last = k + 1 == n && !loop.closed;
+            const Snaxel& a = last ? fronts.snaxels[order[k - 1]] : s;
+            const Snaxel& b = last ? s : fronts.snaxels[order[(k + 1) % n]];
+            const FaceId face = common_face(topo, a, b);
+            out[order[k]] = face != MeshTopology::kNone ? matcher.face(face) : on_edge(s);
+        }
+    }
+    return out;
 }
 
 VisibilityRay VisibilitySampler::make_ray(const glm::dvec3& p, const glm::dvec3& n,
@@ -174,15 +207,19 @@ ContourVisibility VisibilitySampler::classify(const SnaxelEngine& engine,
     const Fronts& fronts = contour.fronts;
     const MeshTopology& topo = scene_.topology();
     const bool margins = !contour.snaxel_margin.empty();
+    const std::vector<std::uint8_t> selected = selected_stretches(topo, contour);
     std::vector<int> snaxel_qi(fronts.snaxels.size());
     parallel_for(fronts.snaxels.size(), [&](std::size_t i) {
         const Snaxel& s = fronts.snaxels[i];
-        snaxel_qi[i] = margins && contour.snaxel_margin[i] < 0.0 ? kNotDrawn
-                                                                 : qi(snaxel_ray(s, engine.position(s), engine.normal(s)));
+        snaxel_qi[i] = (margins && contour.snaxel_margin[i] < 0.0) || (!selected.empty() && !selected[i])
+                           ? kNotDrawn
+                           : qi(snaxel_ray(s, engine.position(s), engine.normal(s)));
     });
 
     // The point where QI stops being `from` between snaxels a and b.
     auto change_point = [&](std::int32_t ia, std::int32_t ib, int from) {
+        // From one part to another: at the snaxel on the edge between them.
+        if (!selected.empty() && selected[ia] != selected[ib]) return engine.position(fronts.snaxels[ib]);
         if (margins && (snaxel_qi[ia] == kNotDrawn || snaxel_qi[ib] == kNotDrawn)) return margin_zero(engine, contour, ia, ib);
         const Snaxel& a = fronts.snaxels[ia];
         const Snaxel& b = fronts.snaxels[ib];
@@ -203,11 +240,16 @@ ContourVisibility VisibilitySampler::classify(const SnaxelEngine& engine,
 }
 
 ContourVisibility drawn_parts(const SnaxelEngine& engine, const ContourResult& contour) {
-    if (contour.snaxel_margin.empty()) return {};
+    const std::vector<std::uint8_t> selected = selected_stretches(engine.topology(), contour);
+    const bool margins = !contour.snaxel_margin.empty();
+    if (!margins && selected.empty()) return {};
     std::vector<int> cls(contour.fronts.snaxels.size());
-    for (std::size_t i = 0; i < cls.size(); ++i) cls[i] = contour.snaxel_margin[i] < 0.0 ? kNotDrawn : 0;
-    return cut_runs(engine, contour, cls,
-                    [&](std::int32_t a, std::int32_t b, int) { return margin_zero(engine, contour, a, b); });
+    for (std::size_t i = 0; i < cls.size(); ++i)
+        cls[i] = (margins && contour.snaxel_margin[i] < 0.0) || (!selected.empty() && !selected[i]) ? kNotDrawn : 0;
+    return cut_runs(engine, contour, cls, [&](std::int32_t a, std::int32_t b, int) {
+        if (!selected.empty() && selected[a] != selected[b]) return engine.position(contour.fronts.snaxels[b]);
+        return margin_zero(engine, contour, a, b);
+    });
 }
 
 } // namespace snaxels

@@ -72,7 +72,9 @@ class VisibilitySampler {
 
     /// QI of every snaxel of @p contour and its loops cut into runs; the
     /// snaxels the contour leaves out (snaxel_margin) are kNotDrawn, cut
-    /// from the others where the margin interpolates to zero.
+    /// from the others where the margin interpolates to zero, and so are
+    /// the stretches on parts its selector does not take
+    /// (selected_stretches), cut where the part changes.
     ContourVisibility classify(const SnaxelEngine& engine, const ContourResult& contour) const;
 
   private:
@@ -84,9 +86,20 @@ class VisibilitySampler {
 };
 
 /// Without hidden lines: the loops of a contour that leaves parts out
-/// (snaxel_margin) cut into drawn runs (QI 0) and kNotDrawn ones, as
-/// classify() cuts them; empty (every loop drawn whole) for the others.
+/// (snaxel_margin, or a part selector) cut into drawn runs (QI 0) and
+/// kNotDrawn ones, as classify() cuts them; empty (every loop drawn whole)
+/// for the others.
 ContourVisibility drawn_parts(const SnaxelEngine& engine, const ContourResult& contour);
+
+/// Per snaxel of @p contour: whether the stretch of its loop from it to the
+/// next snaxel (an open loop's last snaxel: from the one before) lies on a
+/// part of the scene its spec's selector takes (ContourSpec::parts). A
+/// stretch across a face lies on that face's part; a stretch along an edge
+/// (creases, borders, material and object lines) on either face's. Empty
+/// when the selector takes every part: nothing is left out. Where a loop
+/// passes from one part to another the cut is at the snaxel on the edge
+/// between them, exactly.
+std::vector<std::uint8_t> selected_stretches(const MeshTopology& topology, const ContourResult& contour);
 
 /// The face two snaxels on edges of one face share (kNone if none).
 FaceId common_face(const MeshTopology& topology, const Snaxel& a, const Snaxel& b);

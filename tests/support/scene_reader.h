@@ -33,12 +33,17 @@ struct SceneMesh {
     std::vector<glm::dvec3> positions;               ///< welded by exact position
     std::vector<std::array<int, 3>> faces;           ///< counter-clockwise seen from outside
     std::vector<std::array<glm::dvec3, 3>> normals;  ///< per face, per corner (unit)
+    /// Per face: the name of its node (glTF: the node's name, else its id;
+    /// Collada: the node's name) and of its material (the material's name,
+    /// else its id).
+    std::vector<std::string> face_object, face_material;
 };
 
 namespace scene_detail {
 
 inline void add_triangle(SceneMesh& m, std::map<std::array<double, 3>, int>& index, const glm::dmat4& xf,
-                         const std::array<glm::dvec3, 3>& p, const std::array<glm::dvec3, 3>& n) {
+                         const std::array<glm::dvec3, 3>& p, const std::array<glm::dvec3, 3>& n,
+                         const std::string& object = "", const std::string& material = "") {
     const glm::dmat3 normal_xf = glm::transpose(glm::inverse(glm::dmat3(xf)));
     std::array<int, 3> f{};
     std::array<glm::dvec3, 3> fn{};
@@ -53,6 +58,8 @@ inline void add_triangle(SceneMesh& m, std::map<std::array<double, 3>, int>& ind
     if (f[0] == f[1] || f[1] == f[2] || f[0] == f[2]) return;
     m.faces.push_back(f);
     m.normals.push_back(fn);
+    m.face_object.push_back(object);
+    m.face_material.push_back(material);
 }
 
 inline std::string slurp(const std::string& path) {
@@ -120,9 +127,12 @@ inline SceneMesh read_gltf1(const std::string& path) {
             local = translation * rotation * scale;
         }
         const glm::dmat4 world = parent * local;
+        const std::string object = node.value("name", id);
         for (const auto& mesh_id : node.value("meshes", std::vector<std::string>{}))
             for (const json& prim : g.at("meshes").at(mesh_id).at("primitives")) {
                 if (prim.value("mode", 4) != 4) continue;
+                const std::string material_id = prim.value("material", std::string());
+                const std::string material = material_id.empty() ? "" : g.at("materials").at(material_id).value("name", material_id);
                 const auto pos = accessor(prim.at("attributes").at("POSITION"));
                 const auto nrm = accessor(prim.at("attributes").at("NORMAL"));
                 const auto idx = accessor(prim.at("indices"));
@@ -133,7 +143,7 @@ inline SceneMesh read_gltf1(const std::string& path) {
                         p[k] = {pos[3 * v], pos[3 * v + 1], pos[3 * v + 2]};
                         n[k] = {nrm[3 * v], nrm[3 * v + 1], nrm[3 * v + 2]};
                     }
-                    scene_detail::add_triangle(m, index, world, p, n);
+                    scene_detail::add_triangle(m, index, world, p, n, object, material);
                 }
             }
         for (const auto& child : node.value("children", std::vector<std::string>{})) visit(child, world);
@@ -188,10 +198,20 @@ inline SceneMesh read_collada(const std::string& path) {
             } else continue;
             local = local * step;
         }
+        const std::string object = n.attribute("name").value();
         for (const pugi::xml_node inst : n.children("instance_geometry")) {
             const pugi::xml_node geometry = by_id(root.child("library_geometries"), strip(inst.attribute("url").value()));
             const pugi::xml_node mesh = geometry.child("mesh");
             for (const pugi::xml_node tris : mesh.children("triangles")) {
+                // The triangles' material symbol, bound by the instance to a material.
+                std::string material = tris.attribute("material").value();
+                const pugi::xml_node bound = inst.find_node([&](const pugi::xml_node& b) {
+                    return std::string(b.name()) == "instance_material" && material == b.attribute("symbol").value();
+                });
+                if (bound) {
+                    const pugi::xml_node mat = by_id(root.child("library_materials"), strip(bound.attribute("target").value()));
+                    material = mat && mat.attribute("name") ? mat.attribute("name").value() : strip(bound.attribute("target").value());
+                }
                 int stride = 0, vertex_offset = 0, normal_offset = -1;
                 std::string vertex_source, normal_source;
                 for (const pugi::xml_node in : tris.children("input")) {
@@ -222,7 +242,7 @@ inline SceneMesh read_collada(const std::string& path) {
                             nn[k] = glm::dvec3(0.0);
                         }
                     }
-                    scene_detail::add_triangle(m, index, local, q, nn);
+                    scene_detail::add_triangle(m, index, local, q, nn, object, material);
                 }
             }
         }

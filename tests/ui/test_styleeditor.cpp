@@ -38,13 +38,13 @@ class TestStyleEditor : public QObject {
         const StyleCompletion element = at_end("<style version=\"1\">\n  <vis");
         QCOMPARE(element.kind, StyleCompletion::Kind::Element);
         QCOMPARE(element.prefix, QString("vis"));
-        for (const char* name : {"canvas", "light", "contour", "visible", "hidden", "region"})
+        for (const char* name : {"canvas", "light", "contour", "visible", "hidden", "region", "object"})
             QVERIFY2(element.candidates.contains(name), name);
 
         const StyleCompletion attribute = at_end("<contour ");
         QCOMPARE(attribute.kind, StyleCompletion::Kind::Attribute);
         QCOMPARE(attribute.prefix, QString());
-        QCOMPARE(attribute.candidates, (QStringList{"kind", "k", "angle", "min-length", "min-derivative", "min-angle"}));
+        QCOMPARE(attribute.candidates, (QStringList{"kind", "k", "angle", "min-length", "min-derivative", "min-angle", "object", "material"}));
         // Those already written are not offered again.
         const StyleCompletion rest = at_end("<contour kind=\"suggestive\" min-d");
         QCOMPARE(rest.kind, StyleCompletion::Kind::Attribute);
@@ -56,7 +56,7 @@ class TestStyleEditor : public QObject {
         QCOMPARE(value.kind, StyleCompletion::Kind::Value);
         QCOMPARE(value.prefix, QString("sug"));
         QCOMPARE(value.candidates, (QStringList{"visual", "shadow", "isophote", "gleam", "parabolic", "crease", "border",
-                                                "suggestive"}));
+                                                "suggestive", "material", "object"}));
         QCOMPARE(at_end("<hidden cap=\"").candidates, (QStringList{"butt", "round", "square"}));
         QCOMPARE(at_end("<region class=\"").candidates, (QStringList{"shadow", "lit", "band", "highlight"}));
 
@@ -82,6 +82,7 @@ class TestStyleEditor : public QObject {
                     QString attrs = QString("%1=\"%2\"").arg(QString::fromStdString(a.name), QString::fromStdString(word));
                     if (e.name == "region" && a.name == "class" && (word == "band" || word == "highlight")) attrs += " k=\"0.5\"";
                     if (e.name == "contour" && a.name == "kind" && (word == "isophote" || word == "gleam")) attrs += " k=\"0.5\"";
+                    if (e.name == "object" && a.name != "name") attrs += " name=\"Ground\"";
                     const QString inner = QString("<%1 %2/>").arg(QString::fromStdString(e.name), attrs);
                     const QString doc = e.name == "visible" || e.name == "hidden"
                                             ? QString("<style version=\"1\"><contour kind=\"visual\">%1</contour></style>").arg(inner)
@@ -125,7 +126,7 @@ class TestStyleEditor : public QObject {
         QTest::keyClicks(edit, " ");
         QTest::keyClick(edit, Qt::Key_Space, Qt::ControlModifier);
         QVERIFY(editor.completer()->popup()->isVisible());
-        QCOMPARE(editor.completer()->completionCount(), 4); // k, angle, min-length, min-angle
+        QCOMPARE(editor.completer()->completionCount(), 6); // k, angle, min-length, min-angle, object, material
         QTest::keyClick(editor.completer()->popup(), Qt::Key_Escape);
     }
 

@@ -34,6 +34,9 @@ struct AnimatedPathData {
     std::size_t contour = 0;
     int cls = 0;
     bool brief = false;
+    /// Strokes: the object the contour lies on where it starts (DrawnLoop::object),
+    /// -1 for none (no parts, or the path of brief contours).
+    std::int32_t object = -1;
     // Fills: the region class's name and its style.
     std::string region_class;
     const RegionStyle* region = nullptr;

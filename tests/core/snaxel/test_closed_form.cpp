@@ -64,7 +64,7 @@ TEST(ClosedForm, SphereContoursFollowThePapersFormulas) {
         Light light;
         light.dir = unit();
         const glm::dvec3 V = -glm::normalize(cam.view_dir), L = glm::normalize(light.dir);
-        for (const ContourSpec spec : {ContourSpec{ContourKind::Visual, 0.0}, ContourSpec{ContourKind::Shadow, 0.0},
+        for (const ContourSpec& spec : {ContourSpec{ContourKind::Visual, 0.0}, ContourSpec{ContourKind::Shadow, 0.0},
                                        ContourSpec{ContourKind::Isophote, 0.5}, ContourSpec{ContourKind::Isophote, -0.3},
                                        ContourSpec{ContourKind::Gleam, 0.9}, ContourSpec{ContourKind::Gleam, 0.6}}) {
             const test::OracleSetup setup = test::oracle_setup(spec, cam, light);

@@ -235,6 +235,6 @@ TEST(Engine, EyeOrLightAtAVertex) {
     Light light;
     light.point = true;
     light.pos = topo.positions()[VertexId(11)];
-    for (const ContourSpec kind : {ContourSpec{}, ContourSpec{ContourKind::Shadow, 0.0}, ContourSpec{ContourKind::Gleam, 0.8}})
+    for (const ContourSpec& kind : {ContourSpec{}, ContourSpec{ContourKind::Shadow, 0.0}, ContourSpec{ContourKind::Gleam, 0.8}})
         EXPECT_NO_THROW(engine.compute(kind, cam, light, options)) << kind.label();
 }

@@ -88,7 +88,7 @@ TEST(Style, ErrorsNameLineAndColumn) {
     EXPECT_NE(error_of("<style><contour kind=\"visual\" angle=\"30\"/></style>").message.find("only a crease"),
               std::string::npos);
     EXPECT_NE(error_of("<style><contour kind=\"crease\" angle=\"200\"/></style>").message.find("angle"), std::string::npos);
-    EXPECT_NE(error_of("<style><contour kind=\"visual\" min-length=\"0.1\"/></style>").message.find("only crease and border"),
+    EXPECT_NE(error_of("<style><contour kind=\"visual\" min-length=\"0.1\"/></style>").message.find("only crease, border, material and object"),
               std::string::npos);
     EXPECT_NE(error_of("<style><contour kind=\"border\" min-length=\"2\"/></style>").message.find("min-length"),
               std::string::npos);

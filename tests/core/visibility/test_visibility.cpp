@@ -118,7 +118,7 @@ TEST(Visibility, MatchesBruteForceIntersection) {
             light.dir = random_unit(rng);
             const VisibilitySampler sampler(rays, cam);
             const std::vector<glm::dvec3> normal = test::oracle_normals(topo.positions(), test::plain_faces(topo));
-            for (const ContourSpec kind : {ContourSpec{}, ContourSpec{ContourKind::Shadow, 0.0}}) {
+            for (const ContourSpec& kind : {ContourSpec{}, ContourSpec{ContourKind::Shadow, 0.0}}) {
                 const ContourResult r = engine.compute(kind, cam, light);
                 const ContourVisibility vis = sampler.classify(engine, r);
                 for (std::size_t l = 0; l < r.fronts.loops.size(); ++l) {
