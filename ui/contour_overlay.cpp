@@ -23,6 +23,8 @@ const char* view_colour(ContourKind kind) {
     case ContourKind::Crease: return "#f0f0f0";
     case ContourKind::Border: return "#ff7ac8";
     case ContourKind::Suggestive: return "#ff9a3c";
+    case ContourKind::Material: return "#7ad7ff";
+    case ContourKind::Object: return "#ffe45c";
     }
     return "#e8402a";
 }
@@ -63,11 +65,13 @@ RegionShading region_shading(const Style& style, const Light& light, bool enable
 
 namespace {
 
-// The scene's surface split as @p surface says, in its loaded pose.
-void build_surface(const LoadedMesh& mesh, ContourScene& scene, const SurfaceOptions& surface) {
-    scene.surface = surface;
-    scene.split = split_sharp_edges(mesh, surface);
-    scene.rest = engine_topology(scene.split ? scene.split->mesh : mesh.mesh);
+// The scene's surface as @p style draws it (hidden objects left out, split
+// along its sharp edges), in its loaded pose.
+void build_surface(const LoadedMesh& mesh, ContourScene& scene, const Style& style) {
+    scene.surface = style.surface;
+    scene.hidden = style.hidden_objects;
+    scene_surface(mesh, style, scene.split);
+    scene.rest = engine_topology(scene.split ? *scene.split : mesh);
     scene.topology = scene.rest;
     scene.rays = std::make_unique<RayScene>(scene.topology);
     scene.driver.reset();
@@ -80,7 +84,9 @@ void build_surface(const LoadedMesh& mesh, ContourScene& scene, const SurfaceOpt
 std::shared_ptr<ContourScene> make_contour_scene(const LoadedMesh& mesh, const std::string& path,
                                                  const SurfaceOptions& surface) {
     auto scene = std::make_shared<ContourScene>();
-    build_surface(mesh, *scene, surface);
+    Style style;
+    style.surface = surface;
+    build_surface(mesh, *scene, style);
     scene->mesh_path = path;
     // Only formats that carry animation are read a second time for clips.
     const QString suffix = QString::fromStdString(path).section('.', -1).toLower();
@@ -138,8 +144,8 @@ OverlayResult compute_overlay(const LoadedMesh& mesh, ContourScene& scene, const
         // A style that moves the sharp edges gives the surface new vertices:
         // its scene is built again, and drawn anew.
         bool changed = false;
-        if (!(style.surface == scene.surface)) {
-            build_surface(mesh, scene, style.surface);
+        if (!(style.surface == scene.surface) || style.hidden_objects != scene.hidden) {
+            build_surface(mesh, scene, style);
             changed = true;
         }
         changed = pose_scene(scene.split ? *scene.split : mesh, scene, pose) || changed;

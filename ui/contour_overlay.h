@@ -24,7 +24,10 @@ namespace snaxels::ui {
 /// connectivity frame by frame; one computation at a time may use it.
 struct ContourScene {
     SurfaceOptions surface;          ///< where the drawn surface is sharp (the style's <surface>)
-    std::optional<LoadedMesh> split; ///< the mesh split along its sharp edges, when it has any
+    std::vector<std::string> hidden; ///< the objects the style hides (<object hide="true">)
+    /// The mesh as drawn, when the style changes it: without the hidden
+    /// objects, split along its sharp edges (scene_surface).
+    std::optional<LoadedMesh> split;
     MeshTopology rest;              ///< the mesh as loaded (its topology for the engine)
     MeshTopology topology;          ///< the pose computed last: rest, or a clip frame
     std::unique_ptr<RayScene> rays; ///< the BVH of topology's pose

@@ -35,6 +35,10 @@ void Document::setStyleText(const QString& text) {
     edit(style_, text, tr("Edit Style"), kUndoStyle, &Document::assignStyle);
 }
 
+void Document::setStyleText(const QString& text, const QString& step) {
+    edit(style_, text, step, kUndoStyle, &Document::assignStyle, false);
+}
+
 void Document::setView(const OrbitView& view) {
     edit(view_, view, tr("Move Camera"), kUndoCamera, &Document::assignView);
 }

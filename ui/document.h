@@ -55,6 +55,9 @@ class Document : public QObject {
     // Edits: each is one undo step (quick successions of one kind merge into
     // one) and emits what changed; setting the value it has does nothing.
     void setStyleText(const QString& text);
+    /// The style's text set as one undo step named @p step, never merged
+    /// with the typing before or after it (a part hidden from the Objects panel).
+    void setStyleText(const QString& text, const QString& step);
     void setView(const OrbitView& view);
     /// A camera change that is a step of its own, named @p step in the
     /// Edit menu (a named view, an up axis): never merged with a drag.

@@ -28,6 +28,7 @@
 #include "ui/contour_scheduler.h"
 #include "ui/document.h"
 #include "ui/meshview.h"
+#include "ui/objects_panel.h"
 #include "ui/parabolic_search.h"
 #include "ui/styleeditor.h"
 #include "ui/svgpane.h"
@@ -37,7 +38,7 @@ namespace snaxels::ui {
 
 MainWindow::MainWindow(QWidget* parent)
     : QMainWindow(parent), view_(new MeshView(this)), svgPane_(new SvgPane(this)),
-      styleEditor_(new StyleEditor(this)), timeline_(new Timeline(this)), meshLabel_(new QLabel(this)),
+      styleEditor_(new StyleEditor(this)), timeline_(new Timeline(this)), objects_(new ObjectsPanel(this)), meshLabel_(new QLabel(this)),
       busy_(new QProgressBar(this)), contourLabel_(new QLabel(this)), loader_(new MeshLoader(this)),
       contours_(new ContourScheduler([this] { return contourWork(); }, this)), parabolic_(new ParabolicSearch(this)),
       export_(new AnimationExport(this)) {
@@ -86,6 +87,22 @@ void MainWindow::createDocks() {
     connect(view_, &MeshView::lightEdited, this, [this] {
         if (!restoring_) document_->setLight(light_);
     });
+    // The scene's parts, in a tab beside the style: a part's state is an
+    // edit of the style (one undo step); a part selected is tinted in the view.
+    auto* objectsDock = new QDockWidget(tr("Objects"), this);
+    objectsDock->setObjectName("objectsDock");
+    objects_->setObjectName("objectsPanel");
+    objectsDock->setWidget(objects_);
+    addDockWidget(Qt::RightDockWidgetArea, objectsDock);
+    tabifyDockWidget(dock, objectsDock);
+    dock->raise();
+    objects_->setStyleText(document_->styleText());
+    connect(objects_, &ObjectsPanel::styleEdited, this, [this](const QString& text, const QString& step) {
+        if (!restoring_) document_->setStyleText(text, step);
+    });
+    connect(objects_, &ObjectsPanel::highlightChanged, view_, &MeshView::setHighlight);
+    connect(objects_, &ObjectsPanel::notice, this, [this](const QString& m) { statusBar()->showMessage(m, 5000); });
+    connect(document_, &Document::meshChanged, this, [this] { objects_->setMesh(document_->mesh()); });
     // The timeline, docked below: scrubbing turns the view or the light.
     auto* timelineDock = new QDockWidget(tr("Timeline"), this);
     timelineDock->setObjectName("timelineDock");
@@ -349,6 +366,7 @@ void MainWindow::observeDocument() {
     // An undo, a redo or an opened project: the widgets follow. (Their own
     // edits come back here too, and change nothing.)
     connect(document_, &Document::styleTextChanged, this, [this](const QString& text) {
+        objects_->setStyleText(text);
         if (styleEditor_->text() == text) return;
         ++restoring_;
         styleEditor_->setText(text, "style");

@@ -35,6 +35,7 @@ class AnimationExport;
 class ContourScheduler;
 class Document;
 class MeshView;
+class ObjectsPanel;
 class ParabolicSearch;
 class StyleEditor;
 class SvgPane;
@@ -87,6 +88,7 @@ class MainWindow : public QMainWindow {
     SvgPane* svgPane() const { return svgPane_; }
     StyleEditor* styleEditor() const { return styleEditor_; }
     Timeline* timeline() const { return timeline_; }
+    ObjectsPanel* objectsPanel() const { return objects_; }
     /// View > Colour Regions.
     QAction* regionsAction() const { return regionsAction_; }
     /// View > Parabolic Curves.
@@ -196,6 +198,7 @@ class MainWindow : public QMainWindow {
     QByteArray svg_;
     StyleEditor* styleEditor_;
     Timeline* timeline_;
+    ObjectsPanel* objects_;
     QMenu* recentMenu_ = nullptr;
     QAction* regionsAction_ = nullptr;
     QAction* parabolicAction_ = nullptr;

@@ -426,6 +426,9 @@ void MeshView::initializeGL() {
     vbo_.create();
     lineVao_.create();
     lineVbo_.create();
+    highlightVao_.create();
+    highlightVbo_.create();
+    highlightDirty_ = true;
     glReady_ = true;
     dirty_ = true;
 }
@@ -488,6 +491,7 @@ void MeshView::paintGL() {
         glDrawArrays(GL_TRIANGLES, 0, vertexCount_);
     }
     program_.release();
+    drawHighlight(mvp);
 
     // Contours seen from this camera: their visibility is known, so no
     // depth test, hidden parts first. Contours of an earlier camera (an
@@ -496,6 +500,50 @@ void MeshView::paintGL() {
     // behind the mesh is hidden by it instead of crossing its face.
     if (linesDirty_) uploadContours();
     if (!lineRanges_.empty()) drawContours(mvp, contoursStale());
+}
+
+void MeshView::setHighlight(std::vector<glm::vec3> triangles) {
+    highlight_ = std::move(triangles);
+    highlightDirty_ = true;
+    update();
+}
+
+void MeshView::drawHighlight(const glm::mat4& mvp) {
+    if (highlightDirty_) {
+        // The line shader's layout (position, colour, hidden, arc): a hidden
+        // flag without dashes draws the tint translucent.
+        std::vector<float> data;
+        data.reserve(highlight_.size() * 8);
+        for (const glm::vec3& p : highlight_) data.insert(data.end(), {p.x, p.y, p.z, 1.0f, 0.55f, 0.1f, 1.0f, 0.0f});
+        QOpenGLVertexArrayObject::Binder bind(&highlightVao_);
+        highlightVbo_.bind();
+        highlightVbo_.allocate(data.data(), static_cast<int>(data.size() * sizeof(float)));
+        const int stride = 8 * sizeof(float);
+        for (int a = 0; a < 4; ++a) glEnableVertexAttribArray(GLuint(a));
+        glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, stride, nullptr);
+        glVertexAttribPointer(1, 3, GL_FLOAT, GL_FALSE, stride, reinterpret_cast<void*>(3 * sizeof(float)));
+        glVertexAttribPointer(2, 1, GL_FLOAT, GL_FALSE, stride, reinterpret_cast<void*>(6 * sizeof(float)));
+        glVertexAttribPointer(3, 1, GL_FLOAT, GL_FALSE, stride, reinterpret_cast<void*>(7 * sizeof(float)));
+        highlightVbo_.release();
+        highlightVertices_ = static_cast<int>(highlight_.size());
+        highlightDirty_ = false;
+    }
+    if (highlightVertices_ == 0) return;
+    glEnable(GL_DEPTH_TEST);
+    glDepthFunc(GL_LEQUAL);
+    glEnable(GL_BLEND);
+    glBlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ZERO, GL_ONE);
+    lineProgram_.bind();
+    glUniformMatrix4fv(lineProgram_.uniformLocation("mvp"), 1, GL_FALSE, glm::value_ptr(mvp));
+    lineProgram_.setUniformValue("dashLength", 1e30f);
+    lineProgram_.setUniformValue("depthBias", 2e-4f);
+    {
+        QOpenGLVertexArrayObject::Binder bind(&highlightVao_);
+        glDrawArrays(GL_TRIANGLES, 0, highlightVertices_);
+    }
+    lineProgram_.release();
+    glDisable(GL_BLEND);
+    glDepthFunc(GL_LESS);
 }
 
 bool MeshView::contoursStale() const { return !(contourCamera_ == camera()); }

@@ -108,6 +108,10 @@ class MeshView : public QOpenGLWidget, protected QOpenGLFunctions_3_3_Core {
     /// Moves the camera to @p orbit (its centre stays the mesh's, the
     /// turntable angle the timeline's).
     void setOrbit(const OrbitView& orbit);
+    /// Tints @p triangles (three corners each) over the surface: a part
+    /// selected in the Objects panel. Empty: no tint.
+    void setHighlight(std::vector<glm::vec3> triangles);
+    std::size_t highlightTriangles() const { return highlight_.size() / 3; }
 
   signals:
     /// The camera moved (orbit, pan, zoom, reset or a new mesh).
@@ -140,6 +144,7 @@ class MeshView : public QOpenGLWidget, protected QOpenGLFunctions_3_3_Core {
     void setRegionUniforms();
     void buildSurfaceProgram();
     void drawContours(const glm::mat4& mvp, bool stale);
+    void drawHighlight(const glm::mat4& mvp);
     void resizeEvent(QResizeEvent* event) override;
     void uploadContours();
     glm::dmat4 viewMatrix() const;
@@ -166,6 +171,11 @@ class MeshView : public QOpenGLWidget, protected QOpenGLFunctions_3_3_Core {
     QOpenGLShaderProgram lineProgram_;
     QOpenGLVertexArrayObject lineVao_;
     QOpenGLBuffer lineVbo_{QOpenGLBuffer::VertexBuffer};
+    std::vector<glm::vec3> highlight_; ///< triangles tinted over the surface
+    bool highlightDirty_ = false;
+    int highlightVertices_ = 0;
+    QOpenGLVertexArrayObject highlightVao_;
+    QOpenGLBuffer highlightVbo_{QOpenGLBuffer::VertexBuffer};
 
     QOpenGLShaderProgram program_;
     int bandCapacity_ = 8, highlightCapacity_ = 4; ///< levels the surface shader's arrays hold

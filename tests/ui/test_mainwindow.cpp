@@ -45,6 +45,7 @@
 #include <cmath>
 #include <QUndoStack>
 #include <QComboBox>
+#include <QTreeWidget>
 #include <QDoubleSpinBox>
 #include <QPlainTextEdit>
 #include <QProcess>
@@ -59,6 +60,7 @@
 #include "snaxels/project/project.h"
 #include "ui/mainwindow.h"
 #include "ui/meshview.h"
+#include "ui/objects_panel.h"
 #include "ui/resources.h"
 #include "ui/styleeditor.h"
 #include "ui/svgpane.h"
@@ -137,6 +139,15 @@ bool showWithMesh(MainWindow& window, const QString& mesh, QSize size = {1000, 7
     QSignalSpy contours(&window, &MainWindow::contoursUpdated);
     window.openMesh(mesh);
     return contours.wait(60000);
+}
+
+/// Saves @p window's document as the project @p path and opens it in
+/// @p reopened (shown, then waited for until the project has opened).
+bool saveAndReopen(MainWindow& window, const QString& path, MainWindow& reopened) {
+    if (!window.saveProject(path) || !showWindow(reopened, {1000, 700})) return false;
+    QSignalSpy opened(&reopened, &MainWindow::projectOpened);
+    reopened.openFile(path);
+    return opened.wait(60000);
 }
 
 /// The toon preset's text.
@@ -858,13 +869,8 @@ class TestMainWindow : public QObject {
         action("viewFront")->trigger();
         window.meshView()->resetCamera();
         QCOMPARE(window.meshView()->orbit().up, glm::dvec3(0.0, 0.0, 1.0));
-        const QString project = dir.filePath("tall.snaxels");
-        QVERIFY(window.saveProject(project));
         MainWindow reopened;
-        QVERIFY(showWindow(reopened, {1000, 700}));
-        QSignalSpy opened(&reopened, &MainWindow::projectOpened);
-        reopened.openFile(project);
-        QVERIFY(opened.wait(60000));
+        QVERIFY(saveAndReopen(window, dir.filePath("tall.snaxels"), reopened));
         QCOMPARE(reopened.meshView()->orbit().up, glm::dvec3(0.0, 0.0, 1.0));
         QVERIFY(reopened.findChild<QAction*>("upPZ")->isChecked());
         QVERIFY(reopened.meshView()->orbit() == window.meshView()->orbit());
@@ -974,6 +980,89 @@ class TestMainWindow : public QObject {
         QTest::qWait(200);
         QVERIFY(!window.meshView()->looksThroughFileCamera());
         QVERIFY(window.currentSvg().contains("height=\"800\""));
+    }
+
+    // The Objects panel lists the truck's parts; hiding one (chosen with the
+    // keyboard on its combo, as a user does) is one undo step that changes
+    // the SVG pane, Ctrl+Z brings the drawing back byte for byte, selecting
+    // a part tints it in the 3-D view, and a saved project reopens with the
+    // part hidden.
+    void objectsPanelHidesPartsAndSavesThem() {
+        QTemporaryDir dir;
+        const QString truck = QString(SNAXELS_TEST_ASSETS) + "/hard/CesiumMilkTruck.gltf";
+        MainWindow window;
+        QVERIFY(showWithMesh(window, truck));
+        QTest::qWait(300);
+        auto* dock = window.findChild<QDockWidget*>("objectsDock");
+        QVERIFY(dock);
+        dock->show();
+        dock->raise();
+        QTreeWidget* tree = window.objectsPanel()->tree();
+        QCOMPARE(tree->topLevelItemCount(), 2);
+        QTreeWidgetItem* objects = tree->topLevelItem(0);
+        QTreeWidgetItem* materials = tree->topLevelItem(1);
+        QCOMPARE(objects->childCount(), 3);
+        QCOMPARE(materials->childCount(), 4);
+        QStringList names;
+        int faces = 0;
+        for (int i = 0; i < objects->childCount(); ++i) {
+            names << objects->child(i)->text(0);
+            faces += objects->child(i)->text(2).toInt();
+        }
+        QVERIFY2(names.contains("Geometry-mesh001Node") && names.contains("meshInst962Node"), qPrintable(names.join(",")));
+        QCOMPARE(faces, int(window.mesh()->mesh.n_faces()));
+        QVERIFY2(objects->child(0)->text(3).startsWith("visual"), qPrintable(objects->child(0)->text(3))); // the style's line sets take every part
+
+        // Selecting the wheels tints their faces in the view.
+        tree->setCurrentItem(objects->child(1));
+        QVERIFY(window.meshView()->highlightTriangles() > 100);
+
+        // Hide the front wheels: Down twice on their combo (Drawn -> Occluder only -> Hidden).
+        auto* state = window.objectsPanel()->findChild<QComboBox*>("state:Geometry-mesh002Node/Geometry-mesh001Node");
+        QVERIFY(state);
+        const QByteArray before = window.currentSvg();
+        const int steps = window.undoStack()->count();
+        QSignalSpy contours(&window, &MainWindow::contoursUpdated);
+        state->setFocus();
+        QTest::keyClick(state, Qt::Key_Down);
+        QVERIFY(contours.wait(30000));
+        QTest::keyClick(state, Qt::Key_Down);
+        QVERIFY(contours.wait(30000));
+        QTest::qWait(300);
+        QCOMPARE(state->currentIndex(), 2);
+        QCOMPARE(window.undoStack()->count(), steps + 2);
+        QVERIFY(window.undoStack()->text(window.undoStack()->index() - 1).startsWith("Hide"));
+        QVERIFY(window.styleEditor()->text().contains("<object name=\"Geometry-mesh001Node\" hide=\"true\"/>"));
+        const QByteArray hidden = window.currentSvg();
+        QVERIFY(hidden != before);
+        QVERIFY2(hidden.size() < before.size(), "hiding the wheels drew more, not less");
+
+        // Ctrl+Z twice: the drawing as it was.
+        window.activateWindow();
+        QVERIFY(QTest::qWaitForWindowActive(&window));
+        window.meshView()->setFocus();
+        QTest::keyClick(window.meshView(), Qt::Key_Z, Qt::ControlModifier);
+        QVERIFY(contours.wait(30000));
+        QTest::keyClick(window.meshView(), Qt::Key_Z, Qt::ControlModifier);
+        QVERIFY(contours.wait(30000));
+        QTest::qWait(300);
+        QCOMPARE(state->currentIndex(), 0);
+        QCOMPARE(window.undoStack()->count(), steps + 2);
+        QCOMPARE(window.undoStack()->index(), steps);
+        QVERIFY2(window.currentSvg() == before, "undoing did not bring the drawing back");
+
+        // Redo, save, reopen: the wheels stay hidden.
+        window.undoStack()->redo();
+        window.undoStack()->redo();
+        QVERIFY(contours.wait(30000));
+        QTest::qWait(300);
+        MainWindow reopened;
+        QVERIFY(saveAndReopen(window, dir.filePath("truck.snaxels"), reopened));
+        QTest::qWait(300);
+        auto* again = reopened.objectsPanel()->findChild<QComboBox*>("state:Geometry-mesh002Node/Geometry-mesh001Node");
+        QVERIFY(again);
+        QCOMPARE(again->currentIndex(), 2);
+        QCOMPARE(reopened.objectsPanel()->tree()->topLevelItem(0)->child(1)->text(3), QString("none"));
     }
 
     // A style given on the command line is where the session starts, not an

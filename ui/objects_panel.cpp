@@ -1,0 +1,238 @@
+#include "ui/objects_panel.h"
+
+#include <algorithm>
+#include <cmath>
+#include <set>
+
+#include <QComboBox>
+#include <QHeaderView>
+#include <QPainter>
+#include <QPixmap>
+#include <QRegularExpression>
+#include <QTreeWidget>
+#include <QVBoxLayout>
+
+#include "snaxels/animation/scene_settings.h"
+#include "snaxels/mesh/parts.h"
+
+namespace snaxels::ui {
+
+namespace {
+
+constexpr int kPartRole = Qt::UserRole;      // the object's or material's index
+constexpr int kIsObjectRole = Qt::UserRole + 1;
+
+bool matches_any(const std::vector<std::string>& patterns, const std::string& name, const std::string& path) {
+    return std::any_of(patterns.begin(), patterns.end(),
+                       [&](const std::string& p) { return glob_match(p, name) || glob_match(p, path); });
+}
+
+QString xml_escaped(const QString& text) { return text.toHtmlEscaped(); }
+
+QIcon swatch(const glm::dvec4& colour) {
+    QPixmap pixmap(14, 14);
+    pixmap.fill(Qt::transparent);
+    QPainter painter(&pixmap);
+    // The file's colours are linear: shown as a screen shows them (sRGB).
+    auto channel = [](double c) {
+        c = std::clamp(c, 0.0, 1.0);
+        return int(std::lround(255.0 * (c <= 0.0031308 ? 12.92 * c : 1.055 * std::pow(c, 1.0 / 2.4) - 0.055)));
+    };
+    painter.setBrush(QColor(channel(colour.r), channel(colour.g), channel(colour.b)));
+    painter.setPen(QColor(90, 90, 90));
+    painter.drawRect(1, 1, 11, 11);
+    return QIcon(pixmap);
+}
+
+const QStringList& state_names() {
+    static const QStringList names{QObject::tr("Drawn"), QObject::tr("Occluder only"), QObject::tr("Hidden")};
+    return names;
+}
+
+} // namespace
+
+ObjectState object_state(const Style& style, const std::string& name, const std::string& path) {
+    if (matches_any(style.hidden_objects, name, path)) return ObjectState::Hidden;
+    if (matches_any(style.occluders, name, path)) return ObjectState::Occluder;
+    return ObjectState::Drawn;
+}
+
+QString with_object_state(const QString& text, const QString& name, ObjectState state) {
+    QString out = text;
+    // Elements naming exactly this object, and the line they stand on.
+    const QRegularExpression element("[ \\t]*<object\\s+name\\s*=\\s*\"" + QRegularExpression::escape(xml_escaped(name)) +
+                                     "\"[^>]*/>[ \\t]*\\n?");
+    out.remove(element);
+    if (state == ObjectState::Drawn) return out;
+    const QString line = "  <object name=\"" + xml_escaped(name) + "\" " +
+                         (state == ObjectState::Hidden ? "hide=\"true\"" : "draw=\"false\"") + "/>\n";
+    const qsizetype end = out.lastIndexOf("</style>");
+    if (end < 0) return "<style>\n  <contour kind=\"visual\"/>\n" + line + "</style>\n"; // the built-in style, and the part
+    // At the start of the closing tag's line, so the element gets a line of its own.
+    qsizetype at = end;
+    while (at > 0 && (out[at - 1] == ' ' || out[at - 1] == '\t')) --at;
+    if (at > 0 && out[at - 1] != '\n') return out.insert(end, "\n" + line);
+    return out.insert(at, line);
+}
+
+ObjectsPanel::ObjectsPanel(QWidget* parent) : QWidget(parent), tree_(new QTreeWidget(this)) {
+    auto* layout = new QVBoxLayout(this);
+    layout->setContentsMargins(0, 0, 0, 0);
+    layout->addWidget(tree_);
+    tree_->setObjectName("objectsTree");
+    tree_->setColumnCount(4);
+    // The name first, elided in a narrow dock; how it is drawn beside it.
+    tree_->setHeaderLabels({tr("Part"), tr("Drawn as"), tr("Faces"), tr("Line sets")});
+    tree_->header()->setSectionResizeMode(0, QHeaderView::Interactive);
+    tree_->header()->resizeSection(0, 160);
+    tree_->header()->setSectionResizeMode(1, QHeaderView::ResizeToContents);
+    tree_->header()->setSectionResizeMode(2, QHeaderView::ResizeToContents);
+    tree_->header()->setSectionResizeMode(3, QHeaderView::ResizeToContents);
+    tree_->setTextElideMode(Qt::ElideMiddle);
+    tree_->setRootIsDecorated(true);
+    tree_->setToolTip(tr("The scene's objects and materials. Choose how an object is drawn: its lines drawn, kept as "
+                         "an occluder that hides what is behind it, or hidden. Select a part to see it in the 3-D view."));
+    connect(tree_, &QTreeWidget::itemSelectionChanged, this, &ObjectsPanel::emitHighlight);
+    style_ = default_style();
+}
+
+void ObjectsPanel::setMesh(std::shared_ptr<const LoadedMesh> mesh) {
+    mesh_ = std::move(mesh);
+    rebuild();
+}
+
+void ObjectsPanel::setStyleText(const QString& text) {
+    text_ = text;
+    try {
+        style_ = text.trimmed().isEmpty() ? default_style() : parse_style(text.toStdString(), "style", nullptr);
+    } catch (const std::exception&) {
+        return; // the last style that parsed stays in force
+    }
+    refreshStyle();
+}
+
+void ObjectsPanel::rebuild() {
+    updating_ = true;
+    tree_->clear();
+    updating_ = false;
+    if (!mesh_ || mesh_->face_object.size() != mesh_->mesh.n_faces()) return;
+    std::vector<std::size_t> object_faces(mesh_->objects.size(), 0), material_faces(mesh_->materials.size(), 0);
+    for (const std::uint32_t o : mesh_->face_object)
+        if (o < object_faces.size()) ++object_faces[o];
+    for (const std::uint32_t m : mesh_->face_material)
+        if (m < material_faces.size()) ++material_faces[m];
+    auto* objects = new QTreeWidgetItem(tree_, {tr("Objects (%1)").arg(mesh_->objects.size())});
+    for (std::size_t o = 0; o < mesh_->objects.size(); ++o) {
+        const SceneObject& object = mesh_->objects[o];
+        auto* item = new QTreeWidgetItem(objects, {QString::fromStdString(object.name), QString(), QString::number(object_faces[o])});
+        item->setToolTip(0, QString::fromStdString(object.path));
+        item->setData(0, kPartRole, int(o));
+        item->setData(0, kIsObjectRole, true);
+        item->setTextAlignment(2, Qt::AlignRight | Qt::AlignVCenter);
+        auto* state = new QComboBox(tree_);
+        state->setObjectName("state:" + QString::fromStdString(object.path));
+        state->addItems(state_names());
+        state->setToolTip(tr("How the style draws %1: its lines, as an occluder only (hiding what is behind it), or "
+                             "not at all").arg(QString::fromStdString(object.name)));
+        tree_->setItemWidget(item, 1, state);
+        connect(state, &QComboBox::activated, this, [this, o, state](int index) {
+            if (updating_ || !mesh_) return;
+            const SceneObject& obj = mesh_->objects[o];
+            const auto wanted = ObjectState(index);
+            const QString name = QString::fromStdString(obj.name);
+            const QString text = with_object_state(text_, name, wanted);
+            const QString step = wanted == ObjectState::Drawn      ? tr("Draw %1").arg(name)
+                                 : wanted == ObjectState::Occluder ? tr("Make %1 an Occluder").arg(name)
+                                                                   : tr("Hide %1").arg(name);
+            emit styleEdited(text, step);
+            // A pattern of the style that names it among others may still decide.
+            if (object_state(style_, obj.name, obj.path) != wanted) {
+                emit notice(tr("%1 is still %2: a pattern in the style sets it")
+                                .arg(name, state_names()[int(object_state(style_, obj.name, obj.path))].toLower()));
+                refreshStyle();
+            }
+        });
+    }
+    auto* materials = new QTreeWidgetItem(tree_, {tr("Materials (%1)").arg(mesh_->materials.size())});
+    for (std::size_t m = 0; m < mesh_->materials.size(); ++m) {
+        const SceneMaterial& material = mesh_->materials[m];
+        auto* item = new QTreeWidgetItem(materials, {QString::fromStdString(material.name), QString(), QString::number(material_faces[m])});
+        item->setIcon(0, swatch(material.colour));
+        item->setData(0, kPartRole, int(m));
+        item->setData(0, kIsObjectRole, false);
+        item->setTextAlignment(2, Qt::AlignRight | Qt::AlignVCenter);
+        item->setToolTip(0, tr("%1: colour %2 %3 %4, opacity %5")
+                                .arg(QString::fromStdString(material.name))
+                                .arg(material.colour.r, 0, 'g', 3)
+                                .arg(material.colour.g, 0, 'g', 3)
+                                .arg(material.colour.b, 0, 'g', 3)
+                                .arg(material.colour.a, 0, 'g', 3));
+    }
+    tree_->expandAll();
+    refreshStyle();
+}
+
+void ObjectsPanel::refreshStyle() {
+    if (!mesh_ || tree_->topLevelItemCount() < 2) return;
+    const std::shared_ptr<const FaceParts> parts = loaded_parts(*mesh_);
+    if (!parts) return;
+    // Per line set, which objects and materials it takes.
+    std::vector<PartMatcher> sets;
+    std::vector<QString> labels;
+    const std::vector<ContourSpec> kinds = style_kinds(style_);
+    for (const ContourSpec& spec : kinds) {
+        sets.emplace_back(spec.parts, parts.get());
+        labels.push_back(QString::fromStdString(spec.label()));
+    }
+    // The materials each object has, and the objects each material is on.
+    std::vector<std::set<std::uint32_t>> object_materials(parts->objects.size()), material_objects(parts->materials.size());
+    for (const FaceId f : parts->object.ids()) {
+        const std::uint32_t o = parts->object[f], m = parts->material[f];
+        if (o < object_materials.size()) object_materials[o].insert(m);
+        if (m < material_objects.size()) material_objects[m].insert(o);
+    }
+    updating_ = true;
+    for (int top = 0; top < 2; ++top) {
+        QTreeWidgetItem* group = tree_->topLevelItem(top);
+        for (int i = 0; i < group->childCount(); ++i) {
+            QTreeWidgetItem* item = group->child(i);
+            const auto index = std::uint32_t(item->data(0, kPartRole).toInt());
+            const bool is_object = item->data(0, kIsObjectRole).toBool();
+            QStringList taking;
+            for (std::size_t s = 0; s < sets.size(); ++s) {
+                bool takes = false;
+                for (const std::uint32_t other : is_object ? object_materials[index] : material_objects[index])
+                    takes = takes || (is_object ? sets[s].object(index) && sets[s].material(other)
+                                                : sets[s].object(other) && sets[s].material(index));
+                if (takes) taking << labels[s];
+            }
+            if (is_object) {
+                const SceneObject& object = parts->objects[index];
+                const ObjectState state = object_state(style_, object.name, object.path);
+                if (auto* combo = qobject_cast<QComboBox*>(tree_->itemWidget(item, 1))) combo->setCurrentIndex(int(state));
+                if (state != ObjectState::Drawn) taking.clear();
+            }
+            item->setText(3, taking.isEmpty() ? tr("none") : taking.join(", "));
+        }
+    }
+    updating_ = false;
+}
+
+void ObjectsPanel::emitHighlight() {
+    std::vector<glm::vec3> triangles;
+    const QList<QTreeWidgetItem*> selected = tree_->selectedItems();
+    if (mesh_ && !selected.isEmpty() && selected.front()->parent()) {
+        const QTreeWidgetItem* item = selected.front();
+        const auto index = std::uint32_t(item->data(0, kPartRole).toInt());
+        const bool is_object = item->data(0, kIsObjectRole).toBool();
+        const std::vector<std::uint32_t>& of = is_object ? mesh_->face_object : mesh_->face_material;
+        const Mesh& mesh = mesh_->mesh;
+        for (const auto fh : mesh.faces()) {
+            if (slot(fh) >= of.size() || of[slot(fh)] != index) continue;
+            for (const auto vh : mesh.fv_range(fh)) triangles.push_back(glm::vec3(to_glm(mesh.point(vh))));
+        }
+    }
+    emit highlightChanged(triangles);
+}
+
+} // namespace snaxels::ui

@@ -1,0 +1,71 @@
+#pragma once
+// The Objects panel: the scene's objects and materials with their face
+// counts; for each object how the style draws it (drawn, occluder only,
+// hidden: its <object> elements) and which of the style's line sets take
+// it. Choosing a state edits the style text (one undo step, saved with the
+// project); selecting a row asks the 3-D view to highlight the part.
+
+#include <cstdint>
+#include <memory>
+#include <vector>
+
+#include <QString>
+#include <QWidget>
+#include <glm/glm.hpp>
+
+#include "snaxels/mesh/build.h"
+#include "snaxels/style/style.h"
+
+class QTreeWidget;
+class QTreeWidgetItem;
+
+namespace snaxels::ui {
+
+/// How the style draws an object.
+enum class ObjectState { Drawn, Occluder, Hidden };
+
+/// @p style's state for an object known by @p name and @p path: hidden
+/// when a hide="true" pattern matches it, else an occluder when a
+/// draw="false" pattern does, else drawn.
+ObjectState object_state(const Style& style, const std::string& name, const std::string& path);
+
+/// @p text with the <object> element of exactly @p name set to @p state:
+/// an element naming it exactly is replaced (or removed, for Drawn); a new
+/// one goes before </style>. Patterns that match it among others are left
+/// as they are.
+QString with_object_state(const QString& text, const QString& name, ObjectState state);
+
+class ObjectsPanel : public QWidget {
+    Q_OBJECT
+  public:
+    explicit ObjectsPanel(QWidget* parent = nullptr);
+
+    /// Lists @p mesh's objects and materials (none: the panel empties).
+    void setMesh(std::shared_ptr<const LoadedMesh> mesh);
+    /// The style in force: the states and line sets shown follow it. A
+    /// text that does not parse leaves them as they were.
+    void setStyleText(const QString& text);
+    QTreeWidget* tree() const { return tree_; }
+
+  signals:
+    /// The user chose a state: the style text that sets it.
+    void styleEdited(const QString& text, const QString& step);
+    /// Triangles (three corners each, in the loaded mesh's coordinates) of
+    /// the part selected, to highlight; empty when nothing is selected.
+    void highlightChanged(const std::vector<glm::vec3>& triangles);
+    /// Something worth a line in the status bar.
+    void notice(const QString& message);
+
+  private:
+    void rebuild();
+    void refreshStyle();
+    void emitHighlight();
+
+    QTreeWidget* tree_;
+    std::shared_ptr<const LoadedMesh> mesh_;
+    QString text_;
+    Style style_;
+    bool updating_ = false;
+};
+
+} // namespace snaxels::ui
