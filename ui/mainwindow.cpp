@@ -102,7 +102,12 @@ void MainWindow::createDocks() {
     });
     connect(objects_, &ObjectsPanel::highlightChanged, view_, &MeshView::setHighlight);
     connect(objects_, &ObjectsPanel::notice, this, [this](const QString& m) { statusBar()->showMessage(m, 5000); });
-    connect(document_, &Document::meshChanged, this, [this] { objects_->setMesh(document_->mesh()); });
+    connect(document_, &Document::meshChanged, this, [this] {
+        objects_->setMesh(document_->mesh());
+        ++restoring_; // the editor re-reads its text for the new scene's parts: no edit
+        styleEditor_->setSceneParts(document_->mesh() ? loaded_parts(*document_->mesh()) : nullptr);
+        --restoring_;
+    });
     // The timeline, docked below: scrubbing turns the view or the light.
     auto* timelineDock = new QDockWidget(tr("Timeline"), this);
     timelineDock->setObjectName("timelineDock");

@@ -315,6 +315,7 @@ StyleEditor::StyleEditor(QWidget* parent)
     edit_ = new CompletingEdit(
         this, completer_, [this](bool forced) { complete(forced); }, [this](int position) { return pickColour(position); });
     status_ = new QLabel(this);
+    status_->setObjectName("styleStatus");
     auto* layout = new QVBoxLayout(this);
     layout->setContentsMargins(0, 0, 0, 0);
     layout->addWidget(edit_);
@@ -450,6 +451,11 @@ void StyleEditor::setText(const QString& text, const QString& source) {
     apply();
 }
 
+void StyleEditor::setSceneParts(std::shared_ptr<const FaceParts> parts) {
+    parts_ = std::move(parts);
+    apply();
+}
+
 void StyleEditor::apply() {
     std::vector<StyleDiagnostic> warnings;
     QList<QTextEdit::ExtraSelection> marks;
@@ -463,7 +469,10 @@ void StyleEditor::apply() {
         marks.append(sel);
     };
     try {
-        (void)parse_style(edit_->toPlainText().toStdString(), source_.toStdString(), &warnings); // for its marks
+        const Style style = parse_style(edit_->toPlainText().toStdString(), source_.toStdString(), &warnings); // for its marks
+        // Patterns that name no part of the scene on screen.
+        if (parts_)
+            for (StyleDiagnostic& w : check_parts(style, *parts_)) warnings.push_back(std::move(w));
         problem_.clear();
         QStringList lines;
         for (const StyleDiagnostic& w : warnings) {

@@ -5,11 +5,13 @@
 
 #include <QPlainTextEdit>
 #include <QTimer>
+#include <memory>
 #include <optional>
 #include <utility>
 
 #include <QWidget>
 
+#include "snaxels/mesh/parts.h"
 #include "snaxels/style/style.h"
 
 class QCompleter;
@@ -60,6 +62,9 @@ class StyleEditor : public QWidget {
     /// sharp-angle, adding the element after the root's opening tag when
     /// the style has none (one edit, applied at once).
     void setSharpAngle(const QString& value);
+    /// The parts of the scene on screen (null: none): a style's object= or
+    /// material= pattern that matches none of them is listed as a warning.
+    void setSceneParts(std::shared_ptr<const FaceParts> parts);
 
   signals:
     /// The text was taken up (typing paused, or set): parsed or not. The
@@ -80,6 +85,7 @@ class StyleEditor : public QWidget {
     QTimer debounce_;
     QString source_ = "style";
     QString problem_;
+    std::shared_ptr<const FaceParts> parts_;
 };
 
 /// The colour value ("#rrggbb" or "#rgb", in quotes) around @p position

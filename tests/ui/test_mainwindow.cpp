@@ -1063,6 +1063,15 @@ class TestMainWindow : public QObject {
         QVERIFY(again);
         QCOMPARE(again->currentIndex(), 2);
         QCOMPARE(reopened.objectsPanel()->tree()->topLevelItem(0)->child(1)->text(3), QString("none"));
+
+        // A pattern that names no part of the truck is a warning in the
+        // style editor, naming it and the parts the scene has.
+        reopened.styleEditor()->setText("<style>\n<contour kind=\"visual\" object=\"Trailer*\"/>\n</style>\n", "test");
+        auto* status = reopened.styleEditor()->findChild<QLabel*>("styleStatus");
+        QVERIFY(status);
+        QVERIFY2(status->text().contains("2:1: warning: object \"Trailer*\" matches none") &&
+                     status->text().contains("meshInst962Node"),
+                 qPrintable(status->text()));
     }
 
     // A style given on the command line is where the session starts, not an
