@@ -222,7 +222,8 @@ struct Parser {
         out.materials = split_patterns(node.attribute("material").value());
         for (const char* attr : {"object", "material"})
             if (node.attribute(attr) && split_patterns(node.attribute(attr).value()).empty())
-                fail(node, std::string(attr) + "=\"\" selects nothing: give a name or a pattern such as wheel*");
+                fail(node, std::string(attr) + "=\"" + node.attribute(attr).value() +
+                               "\" selects nothing: give a name or a pattern such as wheel*");
         for (const auto* list : {&out.objects, &out.materials})
             for (const std::string& p : *list)
                 if (p == "!") fail(node, "\"!\" must be followed by the pattern it excludes");
