@@ -301,7 +301,8 @@ void fill_paths(const std::vector<AnimationFrame>& frames, const Style& style, c
     for (const std::uint64_t id : order) {
         const auto& track = tracks[id];
         const MapRegion& r0 = *track.front().second;
-        const RegionStyle* rs = style.region(r0.cls, r0.k);
+        const FaceParts* parts = frames[track.front().first].drawing.parts.get();
+        const RegionStyle* rs = style.region(r0, parts);
         if (!rs) continue;
         // The track's lives: runs of consecutive frames.
         for (std::size_t start = 0; start < track.size();) {
@@ -367,6 +368,7 @@ void fill_paths(const std::vector<AnimationFrame>& frames, const Style& style, c
             path.fill = true;
             path.region_class = region_class_name(r0.cls);
             path.region = rs;
+            path.fill_colour = region_fill_colour(*rs, r0, parts);
             path.first = first;
             path.last = last;
             path.track = id;

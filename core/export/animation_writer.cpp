@@ -359,7 +359,7 @@ struct AnimationWriter::Impl {
                      "fill-rule=\"nonzero\">\n");
             any_fill = true;
             std::string attributes = " class=\"region\" data-class=\"" + r->meta.region_class + "\" fill=\"" +
-                                     r->meta.region->fill + "\"";
+                                     r->meta.fill_colour + "\"";
             if (r->meta.region->opacity < 1.0) {
                 attributes += " fill-opacity=\"";
                 svg::append_number(attributes, r->meta.region->opacity);

@@ -21,7 +21,8 @@ nlohmann::json contours_to_json(const MeshReport& mesh, const Camera& camera, co
     doc["camera"] = to_json(camera);
     doc["light"] = to_json(light);
     doc["image"] = {{"width", drawing.width}, {"height", drawing.height}};
-    if (drawing.parts) {
+    const bool parts = names_parts(drawing);
+    if (parts) {
         nlohmann::json objects = nlohmann::json::array(), materials = nlohmann::json::array();
         for (const SceneObject& o : drawing.parts->objects) objects.push_back({{"name", o.name}, {"path", o.path}});
         for (const SceneMaterial& m : drawing.parts->materials)
@@ -43,7 +44,7 @@ nlohmann::json contours_to_json(const MeshReport& mesh, const Camera& camera, co
                 snaxels.push_back(std::move(s));
             }
             nlohmann::json l = {{"closed", loop.closed}, {"snaxels", std::move(snaxels)}};
-            if (drawing.parts) {
+            if (parts) {
                 nlohmann::json objects = nlohmann::json::array(), materials = nlohmann::json::array();
                 for (const std::uint32_t o : loop.objects)
                     objects.push_back(o < drawing.parts->objects.size() ? drawing.parts->objects[o].path : "");
@@ -81,12 +82,17 @@ nlohmann::json contours_to_json(const MeshReport& mesh, const Camera& camera, co
                 for (const glm::dvec2& p : poly) points.push_back({p.x, p.y});
                 polygons.push_back(std::move(points));
             }
-            list.push_back({{"class", region_class_name(r.cls)},
-                            {"k", r.k},
-                            {"depth", r.depth},
-                            {"visible", true},
-                            {"area", r.area},
-                            {"polygons", std::move(polygons)}});
+            nlohmann::json region = {{"class", region_class_name(r.cls)},
+                                     {"k", r.k},
+                                     {"depth", r.depth},
+                                     {"visible", true},
+                                     {"area", r.area},
+                                     {"polygons", std::move(polygons)}};
+            if (parts && r.object >= 0 && r.material >= 0) {
+                region["object"] = drawing.parts->objects[std::uint32_t(r.object)].path;
+                region["material"] = drawing.parts->materials[std::uint32_t(r.material)].name;
+            }
+            list.push_back(std::move(region));
         }
         doc["regions"] = std::move(list);
     }

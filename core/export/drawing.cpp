@@ -23,7 +23,8 @@ Drawing make_drawing(const SnaxelEngine& engine, const std::vector<ContourResult
     drawing.height = projection.height();
     drawing.hidden_lines = visibility != nullptr;
     const MeshTopology& topo = engine.topology();
-    if (topo.parts() && topo.parts()->several()) drawing.parts = topo.connectivity()->parts;
+    drawing.parts = topo.connectivity()->parts;
+    const bool several = drawing.parts && drawing.parts->several();
     for (std::size_t c = 0; c < results.size(); ++c) {
         const ContourResult& r = results[c];
         const ContourVisibility runs = visibility ? ContourVisibility{} : drawn_parts(engine, r);
@@ -54,7 +55,7 @@ Drawing make_drawing(const SnaxelEngine& engine, const std::vector<ContourResult
                     drawn.runs.push_back(std::move(dr));
                 }
             }
-            if (drawing.parts) {
+            if (several) {
                 const FaceParts& parts = *drawing.parts;
                 const bool along_edges = r.spec.along_edges();
                 std::vector<std::uint32_t> count(parts.objects.size() + 1, 0);

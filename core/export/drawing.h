@@ -51,14 +51,18 @@ struct Drawing {
     /// contours) have runs, of QI 0 and kNotDrawn; the others none.
     bool hidden_lines = false;
     std::vector<DrawnContour> contours;
-    /// The scene's parts, when it has several objects or materials
-    /// (FaceParts::several): loops then say which they lie on.
+    /// The scene's parts, when the mesh has them; with several objects or
+    /// materials (FaceParts::several) loops say which they lie on.
     std::shared_ptr<const FaceParts> parts;
 };
 
 /// Whether @p drawing's strokes are grouped by object in exports: it has
 /// parts, and more than one object.
 inline bool groups_by_object(const Drawing& drawing) { return drawing.parts && drawing.parts->objects.size() > 1; }
+
+/// Whether @p drawing's outputs name parts: the mesh has several objects
+/// or materials (a mesh of one of each writes what it did before parts).
+inline bool names_parts(const Drawing& drawing) { return drawing.parts && drawing.parts->several(); }
 
 /// Whether @p drawing has hidden lines to draw: visibility was computed
 /// (hidden_lines), or a loop has a snaxel of QI above 0 (a drawing made by

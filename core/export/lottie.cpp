@@ -170,9 +170,9 @@ std::string stroke_style(const StrokeStyle& stroke, const std::string& dash_offs
     return out + '}';
 }
 
-std::string fill_style(const RegionStyle& region) {
+std::string fill_style(const RegionStyle& region, const std::string& fill) {
     std::string out = "{\"ty\":\"fl\",\"c\":{\"a\":0,\"k\":";
-    colour(out, region.fill);
+    colour(out, fill);
     out += "},\"o\":{\"a\":0,\"k\":";
     value(out, 100.0 * region.opacity);
     return out + "},\"r\":1}";
@@ -234,7 +234,7 @@ std::string lottie_layer_body(const PathSegment& seg, double ip, double op, cons
     if (shapes.empty()) return {}; // nothing drawn in this stretch
     keys += k;
     shapes += ',';
-    shapes += path.fill ? fill_style(*path.region) : stroke_style(stroke, dash_offset(path, ip, op));
+    shapes += path.fill ? fill_style(*path.region, path.fill_colour) : stroke_style(stroke, dash_offset(path, ip, op));
     std::string layer = ",\"ip\":";
     time_value(layer, ip);
     layer += ",\"op\":";

@@ -245,7 +245,7 @@ std::string to_svg(const Drawing& drawing, const Style& style, const std::vector
         std::vector<MapRegion> eroded(regions->size());
         parallel_for(regions->size(), [&](std::size_t i) {
             const MapRegion& region = (*regions)[i];
-            const RegionStyle* rs = style.region(region.cls, region.k);
+            const RegionStyle* rs = style.region(region, drawing.parts.get());
             if (!rs) return;
             MapRegion& r = eroded[i];
             r = region;
@@ -260,9 +260,9 @@ std::string to_svg(const Drawing& drawing, const Style& style, const std::vector
         subtract_nearer_regions(drawn);
         out += "<g id=\"fills\" stroke=\"none\" fill-rule=\"nonzero\">\n";
         for (const MapRegion& region : drawn.regions) {
-            const RegionStyle* rs = style.region(region.cls, region.k);
+            const RegionStyle* rs = style.region(region, drawing.parts.get());
             out += "<path class=\"region\" data-class=\"" + std::string(region_class_name(region.cls)) + "\" fill=\"" +
-                   rs->fill + "\"";
+                   region_fill_colour(*rs, region, drawing.parts.get()) + "\"";
             if (rs->opacity < 1.0) {
                 out += " fill-opacity=\"";
                 svg::append_number(out, rs->opacity);

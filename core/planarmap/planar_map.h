@@ -32,6 +32,19 @@ PlanarMap build_planar_map(PlanarMapKind kind, const SnaxelEngine& engine, const
                            const RayScene* rays, const ImageProjection& projection, const Camera& camera,
                            const Light& light);
 
+/// On a mesh with parts, cuts @p map's regions where the parts meet in the
+/// image (the visible runs of the material and object lines, cut out as
+/// strips 1/64 px wide) and gives each piece the object and material seen
+/// through a point inside it (the nearest face on its ray); the pieces of
+/// a region that show one part stay one region, the strips' share goes to
+/// its largest piece, so the map stays a partition of the image and no
+/// region spans two materials. vertex_region follows (a vertex goes with
+/// the piece of its faces' material). A mesh of one object and one
+/// material keeps its regions as they are, object and material 0.
+/// build_planar_map calls it.
+void split_regions_by_part(PlanarMap& map, const SnaxelEngine& engine, const RayScene& rays,
+                           const ImageProjection& projection, const Camera& camera);
+
 /// Makes @p map a partition: each region loses what nearer ones (smaller
 /// depth; equal depth: smaller index) cover; regions left empty are
 /// removed (and vertex_region renumbered).

@@ -10,6 +10,7 @@
 /// numbered 0 shadow, 1 lit, then one per band (ascending level), then one
 /// per highlight level (ascending threshold).
 
+#include <cstdint>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -34,6 +35,10 @@ struct MapRegion {
     int depth = 0;   ///< depth order of its patch, 0 nearest
     std::vector<std::vector<glm::dvec2>> polygons; ///< image pixels; holes wind the other way (non-zero fill)
     double area = 0.0; ///< square pixels
+    /// On a mesh with parts: the object and the material the region shows
+    /// (indices into the mesh's FaceParts; a region never spans two);
+    /// -1 without parts.
+    std::int32_t object = -1, material = -1;
 };
 
 /// The numbered classes of one map, from its contours: whether it has a

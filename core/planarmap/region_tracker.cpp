@@ -14,10 +14,10 @@ std::vector<std::uint64_t> RegionTracker::step(const PlanarMap& map) {
         std::size_t n = 0;
         for (const auto& loop : r.polygons)
             for (const glm::dvec2& p : loop) c += p, ++n;
-        now.push_back({r.cls, r.k, r.polygons.size(), n ? c / double(n) : c, r.area});
+        now.push_back({r.cls, r.k, r.material, r.polygons.size(), n ? c / double(n) : c, r.area});
     }
     auto compatible = [&](std::size_t r, std::size_t p) {
-        return now[r].cls == prev_[p].cls && std::abs(now[r].k - prev_[p].k) < 1e-9;
+        return now[r].cls == prev_[p].cls && std::abs(now[r].k - prev_[p].k) < 1e-9 && now[r].material == prev_[p].material;
     };
     // Candidate continuations, best first: (score, region, previous region).
     std::vector<std::tuple<double, std::size_t, std::size_t>> candidates;

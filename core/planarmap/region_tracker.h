@@ -1,6 +1,6 @@
 #pragma once
 /// Region identities across frames, for animated fills: a region continues
-/// the previous frame's region of its class with which it shares the most
+/// the previous frame's region of its class (and material) with which it shares the most
 /// vertices (snaxel map) or, for the post-processed map, whose centre is
 /// nearest. Where regions merge the oldest track goes on. A region that
 /// continues none starts a new track; the animated SVG draws each track as
@@ -22,6 +22,7 @@ class RegionTracker {
     struct Summary {
         RegionClass cls;
         double k;
+        std::int32_t material;
         std::size_t loops;
         glm::dvec2 centre;
         double area;

@@ -66,7 +66,10 @@ const std::vector<StyleElement>& style_vocabulary() {
              "a fill of the planar map's regions of one class",
              {{"class", {"shadow", "lit", "band", "highlight"}, "`shadow`: N.L < 0"},
               {"k", {}, "the isophote level a band starts at"},
-              {"fill", {}, "fill colour"},
+              {"fill", {"material"}, "fill colour"},
+              {"shade", {}, "with fill=\"material\": the factor the material's colour is shaded by"},
+              {"object", {}, "fills only the regions of the objects these patterns select"},
+              {"material", {}, "fills only the regions of the materials these patterns select"},
               {"opacity", {}, "fill opacity"},
               {"erosion", {}, "shrinks the fill"}}},
         };
@@ -379,11 +382,17 @@ struct Parser {
                                     (rs.cls == RegionClass::Band ? "the isophote level it starts at" : "the gleam threshold") + ")");
                 if (!needs_k && child.attribute("k")) fail(child, "a " + cls + " region takes no k");
                 rs.k = number(child, "k", 0.0, -1.0, 1.0);
-                rs.fill = colour(child, "fill", rs.fill, false);
+                rs.fill_material = std::string(child.attribute("fill").value()) == "material";
+                if (!rs.fill_material) rs.fill = colour(child, "fill", rs.fill, false);
+                if (child.attribute("shade") && !rs.fill_material)
+                    fail(child, "shade goes with fill=\"material\" (it shades the material's colour)");
+                rs.shade = number(child, "shade", rs.shade, 0.0, 2.0);
                 rs.opacity = number(child, "opacity", rs.opacity, 0.0, 1.0);
                 rs.erosion = number(child, "erosion", rs.erosion, 0.0, 100.0);
+                rs.parts = selector(child, style);
                 for (const RegionStyle& other : style.regions)
-                    if (other.cls == rs.cls && std::abs(other.k - rs.k) < 1e-9) fail(child, "a second <region> for " + cls);
+                    if (other.cls == rs.cls && std::abs(other.k - rs.k) < 1e-9 && other.parts == rs.parts)
+                        fail(child, "a second <region> for " + cls + (rs.parts.empty() ? "" : " " + rs.parts.text()));
                 style.regions.push_back(rs);
             } else if (name == "object") {
                 check_attributes(child);
@@ -402,8 +411,10 @@ struct Parser {
                                 "> (expected <canvas>, <light>, <surface>, <contour>, <region> or <object>)");
             }
         }
-        // Occluder-only objects are left out of every line set.
+        // Occluder-only objects are left out of every line set and fill.
         for (ContourStyle& cs : style.contours) cs.spec = style.drawn(cs.spec);
+        for (RegionStyle& rs : style.regions)
+            for (const std::string& pattern : style.occluders) rs.parts.objects.push_back("!" + pattern);
         if (2.0 * style.margin >= std::min(style.width, style.height))
             fail(root, "the canvas margin leaves no room for the drawing");
         return style;
@@ -488,6 +499,45 @@ const RegionStyle* Style::region(RegionClass cls, double k) const {
     for (const RegionStyle& r : regions)
         if (r.cls == cls && (!region_class_has_level(cls) || std::abs(r.k - k) < 1e-9)) return &r;
     return nullptr;
+}
+
+const RegionStyle* Style::region(const MapRegion& r, const FaceParts* parts) const {
+    for (const RegionStyle& rs : regions) {
+        if (rs.cls != r.cls || (region_class_has_level(r.cls) && std::abs(rs.k - r.k) >= 1e-9)) continue;
+        if (rs.parts.empty() || r.object < 0) return &rs; // every part, or a mesh without parts
+        // A part the occluder-only patterns leave undrawn is not filled either.
+        const PartMatcher matcher(rs.parts, parts);
+        if (r.object >= 0 && r.material >= 0 && matcher.object(std::uint32_t(r.object)) &&
+            matcher.material(std::uint32_t(r.material)))
+            return &rs;
+    }
+    return nullptr;
+}
+
+double region_shade(RegionClass cls) {
+    switch (cls) {
+    case RegionClass::Shadow: return 0.55;
+    case RegionClass::Lit: return 1.0;
+    case RegionClass::Band: return 1.2;
+    case RegionClass::Highlight: return 1.7;
+    }
+    return 1.0;
+}
+
+std::string region_fill_colour(const RegionStyle& rs, const MapRegion& region, const FaceParts* parts) {
+    if (!rs.fill_material || !parts || region.material < 0 || region.material >= std::int32_t(parts->materials.size()))
+        return rs.fill;
+    const double shade = rs.shade >= 0.0 ? rs.shade : region_shade(region.cls);
+    const glm::dvec4& c = parts->materials[std::uint32_t(region.material)].colour;
+    char out[8];
+    auto channel = [&](double v) {
+        v = shade <= 1.0 ? v * shade : v + (1.0 - v) * (shade - 1.0);
+        v = std::clamp(v, 0.0, 1.0);
+        const double srgb = v <= 0.0031308 ? 12.92 * v : 1.055 * std::pow(v, 1.0 / 2.4) - 0.055;
+        return int(std::lround(255.0 * srgb));
+    };
+    std::snprintf(out, sizeof out, "#%02x%02x%02x", channel(c.r), channel(c.g), channel(c.b));
+    return out;
 }
 
 ContourStyle Style::contour(const ContourSpec& spec) const {

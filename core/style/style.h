@@ -43,6 +43,14 @@ struct RegionStyle {
     std::string fill = "#cccccc";
     double opacity = 1.0;
     double erosion = 0.0;  ///< pixels the fill is shrunk by, to part it from the strokes
+    /// fill="material": the region's material's colour, shaded by `shade`
+    /// (fill then holds the colour for a region without a material).
+    bool fill_material = false;
+    /// The factor a material's colour is shaded by: below 1 darker (times
+    /// the colour), above 1 lighter (that far toward white: 2 is white);
+    /// negative: the class's default (region_shade).
+    double shade = -1.0;
+    PartSelector parts{}; ///< the parts whose regions of the class it fills (<region object= material=>)
 };
 
 struct Style {
@@ -70,8 +78,12 @@ struct Style {
     /// The contours the fills need besides those drawn: the shadow contour
     /// for lit and shadow, an isophote per band, a gleam per highlight.
     std::vector<ContourSpec> fill_contours() const;
-    /// The fill of a region class (nullptr: not filled).
+    /// The fill of a region class (nullptr: not filled): the first
+    /// <region> of the class (whatever its parts).
     const RegionStyle* region(RegionClass cls, double k) const;
+    /// The fill of @p region: the first <region> of its class that takes its
+    /// part (its object and material, named in @p parts), or nullptr.
+    const RegionStyle* region(const MapRegion& region, const FaceParts* parts) const;
 
     /// The style of @p spec: the <contour> of its kind and parts, else the
     /// first of its kind, else the defaults for its kind.
@@ -83,6 +95,15 @@ struct Style {
 /// Default strokes of a kind: the colour of its kind, solid when visible,
 /// thinner, faded and dashed when hidden.
 ContourStyle default_contour_style(const ContourSpec& spec);
+
+/// A region class's default shade for fill="material": shadow 0.55, lit 1,
+/// a band 1.2, a highlight 1.7.
+double region_shade(RegionClass cls);
+
+/// The colour @p region is filled with by @p style: the style's colour, or
+/// with fill="material" its material's (from @p parts; linear RGB shaded,
+/// then written as sRGB #rrggbb).
+std::string region_fill_colour(const RegionStyle& style, const MapRegion& region, const FaceParts* parts);
 
 /// The 0xRRGGBB value of a colour the style language accepts (#rrggbb,
 /// #rgb, a CSS colour name; lower case as the parser stores it).

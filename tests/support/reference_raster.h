@@ -256,9 +256,11 @@ void for_each_pixel_in(const glm::dvec2& a, const glm::dvec2& b, const glm::dvec
 /// (ascending), -1 where no triangle covers the pixel centre. @p to_light:
 /// direction toward a directional light. With @p corner_normals (per face,
 /// per corner) the normal is interpolated from those: a hard-edged mesh.
+/// With @p nearest_face, each pixel's nearest face too (-1: none).
 inline std::vector<int> class_image(const Mesh& m, const View& view, const glm::dvec3& to_light,
                                     const std::vector<double>& bands,
-                                    const std::vector<std::array<glm::dvec3, 3>>* corner_normals = nullptr) {
+                                    const std::vector<std::array<glm::dvec3, 3>>* corner_normals = nullptr,
+                                    std::vector<int>* nearest_face = nullptr) {
     const glm::dvec3 fwd = glm::normalize(view.orthographic ? view.dir : view.target - view.eye);
     glm::dvec3 up = glm::normalize(view.up);
     if (std::abs(glm::dot(fwd, up)) > 0.999) up = std::abs(fwd.z) < 0.9 ? glm::dvec3(0, 0, 1) : glm::dvec3(1, 0, 0);
@@ -302,6 +304,7 @@ inline std::vector<int> class_image(const Mesh& m, const View& view, const glm::
                 depth[at] = z, face[at] = int(f), weight[at] = w;
             });
     }
+    if (nearest_face) *nearest_face = face; // per pixel: the nearest face, -1 for none
     const glm::dvec3 l = glm::normalize(to_light);
     std::vector<int> out(n, -1);
     for (std::size_t at = 0; at < n; ++at) {

@@ -34,8 +34,8 @@ struct SceneMesh {
     std::vector<std::array<int, 3>> faces;           ///< counter-clockwise seen from outside
     std::vector<std::array<glm::dvec3, 3>> normals;  ///< per face, per corner (unit)
     /// Per face: the name of its node (glTF: the node's name, else its id;
-    /// Collada: the node's name) and of its material (the material's name,
-    /// else its id).
+    /// Collada: the node's name) and of its material (glTF 1.0: its id;
+    /// Collada: the material's name, else its id).
     std::vector<std::string> face_object, face_material;
 };
 
@@ -132,7 +132,7 @@ inline SceneMesh read_gltf1(const std::string& path) {
             for (const json& prim : g.at("meshes").at(mesh_id).at("primitives")) {
                 if (prim.value("mode", 4) != 4) continue;
                 const std::string material_id = prim.value("material", std::string());
-                const std::string material = material_id.empty() ? "" : g.at("materials").at(material_id).value("name", material_id);
+                const std::string material = material_id; // the file's identifier (Assimp names glTF 1.0 materials by it)
                 const auto pos = accessor(prim.at("attributes").at("POSITION"));
                 const auto nrm = accessor(prim.at("attributes").at("NORMAL"));
                 const auto idx = accessor(prim.at("indices"));

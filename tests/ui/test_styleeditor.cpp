@@ -83,6 +83,7 @@ class TestStyleEditor : public QObject {
                     if (e.name == "region" && a.name == "class" && (word == "band" || word == "highlight")) attrs += " k=\"0.5\"";
                     if (e.name == "contour" && a.name == "kind" && (word == "isophote" || word == "gleam")) attrs += " k=\"0.5\"";
                     if (e.name == "object" && a.name != "name") attrs += " name=\"Ground\"";
+                    if (e.name == "region" && a.name != "class") attrs += " class=\"lit\"";
                     const QString inner = QString("<%1 %2/>").arg(QString::fromStdString(e.name), attrs);
                     const QString doc = e.name == "visible" || e.name == "hidden"
                                             ? QString("<style version=\"1\"><contour kind=\"visual\">%1</contour></style>").arg(inner)

@@ -40,6 +40,7 @@ struct AnimatedPathData {
     // Fills: the region class's name and its style.
     std::string region_class;
     const RegionStyle* region = nullptr;
+    std::string fill_colour; ///< the region's fill (its material's with fill="material")
     int first = 0, last = 0; ///< frames shown
     /// Strokes: the contour sequence; fills: the region track. With run (a
     /// surface-dashed stroke's run, else 0) what a path follows, so that a

@@ -1,0 +1,193 @@
+// A planar map's regions cut where the scene's parts meet (see
+// split_regions_by_part in planar_map.h).
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <map>
+#include <optional>
+
+#include "snaxels/planarmap/detail/clip.h"
+#include "snaxels/planarmap/planar_map.h"
+#include "snaxels/util/detail/parallel.h"
+#include "snaxels/visibility/visibility.h"
+
+namespace snaxels {
+
+namespace {
+
+/// Half the width of the strips the boundaries are cut with, in Clipper
+/// units (1/1024 px): the strips are 1/64 px wide.
+constexpr double kHalfStrip = 8.0;
+
+/// Points inside @p piece (an outline and its holes, non-zero), best
+/// first: the middles of the spans rows across it cover, widest first.
+std::vector<glm::dvec2> inside_points(const clip::Paths& piece) {
+    double lo = std::numeric_limits<double>::infinity(), hi = -lo;
+    for (const auto& path : piece)
+        for (const auto& p : path) lo = std::min(lo, double(p.Y)), hi = std::max(hi, double(p.Y));
+    std::vector<std::pair<double, glm::dvec2>> spans; // (width, middle)
+    if (!(hi > lo)) return {};
+    for (int row = 1; row <= 15; ++row) {
+        const double y = lo + (hi - lo) * row / 16.0;
+        // Crossings with their winding, in order along the row.
+        std::vector<std::pair<double, int>> crossings;
+        for (const auto& path : piece)
+            for (std::size_t i = 0; i < path.size(); ++i) {
+                const auto& a = path[i];
+                const auto& b = path[(i + 1) % path.size()];
+                if ((double(a.Y) <= y) == (double(b.Y) <= y)) continue;
+                const double t = (y - double(a.Y)) / double(b.Y - a.Y);
+                crossings.push_back({double(a.X) + t * double(b.X - a.X), b.Y > a.Y ? 1 : -1});
+            }
+        std::sort(crossings.begin(), crossings.end());
+        int winding = 0;
+        for (std::size_t i = 0; i + 1 < crossings.size(); ++i) {
+            winding += crossings[i].second;
+            const double width = crossings[i + 1].first - crossings[i].first;
+            if (winding != 0 && width > 0.0)
+                spans.push_back({width, glm::dvec2(0.5 * (crossings[i].first + crossings[i + 1].first), y) / clip::kScale});
+        }
+    }
+    std::stable_sort(spans.begin(), spans.end(), [](const auto& a, const auto& b) { return a.first > b.first; });
+    std::vector<glm::dvec2> out;
+    for (const auto& span : spans) out.push_back(span.second);
+    return out;
+}
+
+/// The pieces of a normalized polygon set: each outline with its holes.
+std::vector<clip::Paths> pieces_of(const ClipperLib::PolyTree& tree) {
+    std::vector<clip::Paths> out;
+    for (const ClipperLib::PolyNode* node = tree.GetFirst(); node; node = node->GetNext()) {
+        if (node->IsHole()) continue;
+        clip::Paths piece{node->Contour};
+        for (const ClipperLib::PolyNode* hole : node->Childs) piece.push_back(hole->Contour);
+        out.push_back(std::move(piece));
+    }
+    return out;
+}
+
+} // namespace
+
+void split_regions_by_part(PlanarMap& map, const SnaxelEngine& engine, const RayScene& rays,
+                           const ImageProjection& projection, const Camera& camera) {
+    const MeshTopology& topo = engine.topology();
+    const FaceParts* parts = topo.parts();
+    if (!parts || parts->objects.empty() || parts->materials.empty()) return;
+    if (!parts->several()) {
+        for (MapRegion& r : map.regions) r.object = 0, r.material = 0;
+        return;
+    }
+    // The boundaries between parts, seen or not: the material and object
+    // lines, in the image. A boundary that does not show cuts a region of
+    // one part into pieces that all see that part, and they join again.
+    clip::Paths cuts;
+    for (const ContourKind kind : {ContourKind::Material, ContourKind::Object}) {
+        ContourSpec spec;
+        spec.kind = kind;
+        const ContourResult lines = engine.compute(spec, camera, Light{}, EngineOptions{});
+        for (const FrontLoop& loop : lines.fronts.loops) {
+            ClipperLib::Path path;
+            lines.fronts.for_each_in_loop(loop, [&](std::int32_t sn) {
+                const glm::dvec2 q = projection.project(engine.position(lines.fronts.snaxels[sn]));
+                path.push_back({ClipperLib::cInt(std::llround(q.x * clip::kScale)), ClipperLib::cInt(std::llround(q.y * clip::kScale))});
+            });
+            if (loop.closed && !path.empty()) path.push_back(path.front());
+            if (path.size() >= 2) cuts.push_back(std::move(path));
+        }
+    }
+    clip::Paths strips;
+    if (!cuts.empty()) {
+        ClipperLib::ClipperOffset offset;
+        offset.AddPaths(cuts, ClipperLib::jtSquare, ClipperLib::etOpenButt);
+        offset.Execute(strips, kHalfStrip);
+    }
+    // The part seen through an image point: the nearest face on its ray.
+    const double back = 4.0 * bounding_radius(topo) + 1.0;
+    auto part_at = [&](const glm::dvec2& pixel) -> std::optional<std::pair<std::uint32_t, std::uint32_t>> {
+        VisibilityRay ray;
+        projection.pixel_ray(pixel, back, ray.origin, ray.dir);
+        ray.tfar = std::numeric_limits<double>::infinity();
+        const RayHit hit = rays.nearest(ray);
+        if (!hit.hit()) return std::nullopt;
+        return std::pair(parts->object[hit.face], parts->material[hit.face]);
+    };
+    // Each region cut by the strips; its pieces take the part seen inside
+    // them, those of one part joined, the strips' share going to the largest.
+    std::vector<std::vector<MapRegion>> split(map.regions.size());
+    parallel_for(map.regions.size(), [&](std::size_t i) {
+        const MapRegion& region = map.regions[i];
+        const clip::Paths whole = clip::to_paths(region.polygons);
+        ClipperLib::PolyTree tree;
+        {
+            ClipperLib::Clipper c;
+            c.AddPaths(whole, ClipperLib::ptSubject, true);
+            if (!strips.empty()) c.AddPaths(strips, ClipperLib::ptClip, true);
+            c.Execute(strips.empty() ? ClipperLib::ctUnion : ClipperLib::ctDifference, tree, ClipperLib::pftNonZero,
+                      ClipperLib::pftNonZero);
+        }
+        std::vector<clip::Paths> pieces = pieces_of(tree);
+        std::map<std::pair<std::uint32_t, std::uint32_t>, clip::Paths> by_part;
+        std::pair<std::uint32_t, std::uint32_t> largest_part{0, 0};
+        double largest = -1.0;
+        for (const clip::Paths& piece : pieces) {
+            // The part seen through the piece: the first of its inside
+            // points whose ray meets the surface (one may slip past a thin
+            // piece's edge).
+            std::optional<std::pair<std::uint32_t, std::uint32_t>> part;
+            const std::vector<glm::dvec2> points = inside_points(piece);
+            for (const glm::dvec2& point : points)
+                if ((part = part_at(point))) break;
+            // A speck whose rays all slip past the surface takes the part
+            // seen right beside it.
+            for (double reach = 0.5; !part && !points.empty() && reach <= 4.0; reach *= 2.0)
+                for (int a = 0; a < 8 && !part; ++a)
+                    part = part_at(points.front() + reach * glm::dvec2(std::cos(a * 0.785398), std::sin(a * 0.785398)));
+            const auto key = part.value_or(std::pair<std::uint32_t, std::uint32_t>(~0u, ~0u));
+            clip::Paths& into = by_part[key];
+            into.insert(into.end(), piece.begin(), piece.end());
+            const double a = clip::area(piece);
+            if (a > largest && part) largest = a, largest_part = key;
+        }
+        // Pieces no ray found a part for (slivers at the edge of the
+        // surface) join the largest piece, as do the strips' share.
+        if (const auto none = by_part.find({~0u, ~0u}); none != by_part.end()) {
+            if (largest >= 0.0) {
+                clip::Paths& into = by_part[largest_part];
+                into.insert(into.end(), none->second.begin(), none->second.end());
+                by_part.erase(none);
+            }
+        }
+        if (!strips.empty() && by_part.size() > 0) {
+            const clip::Paths share = clip::op(whole, strips, ClipperLib::ctIntersection);
+            clip::Paths& into = by_part.count(largest_part) ? by_part[largest_part] : by_part.begin()->second;
+            into = clip::op(into, share, ClipperLib::ctUnion);
+        }
+        for (auto& [part, paths] : by_part) {
+            MapRegion piece = region;
+            piece.polygons = clip::from_paths(paths);
+            piece.area = clip::area(paths);
+            if (part.first != ~0u) piece.object = std::int32_t(part.first), piece.material = std::int32_t(part.second);
+            if (piece.area > 0.0) split[i].push_back(std::move(piece));
+        }
+    }, 1);
+    // The regions in their order, each replaced by its pieces; each vertex
+    // goes with the piece of its faces' material.
+    std::vector<MapRegion> out;
+    std::vector<std::vector<std::int32_t>> index(split.size());
+    for (std::size_t i = 0; i < split.size(); ++i)
+        for (MapRegion& piece : split[i]) index[i].push_back(std::int32_t(out.size())), out.push_back(std::move(piece));
+    for (const VertexId v : map.vertex_region.ids()) {
+        std::int32_t& r = map.vertex_region[v];
+        if (r < 0) continue;
+        const auto& candidates = index[r];
+        std::int32_t chosen = candidates.empty() ? -1 : candidates.front();
+        for (const FaceCorner corner : topo.faces_around(v))
+            for (const std::int32_t c : candidates)
+                if (out[c].material == std::int32_t(parts->material[corner.face])) chosen = c;
+        r = chosen;
+    }
+    map.regions = std::move(out);
+}
+
+} // namespace snaxels
