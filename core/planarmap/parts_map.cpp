@@ -5,10 +5,13 @@
 #include <cmath>
 #include <limits>
 #include <map>
+#include <memory>
+#include <mutex>
 #include <optional>
 
 #include "snaxels/planarmap/detail/clip.h"
 #include "snaxels/planarmap/planar_map.h"
+#include "snaxels/snaxel/feature_edges.h"
 #include "snaxels/util/detail/parallel.h"
 #include "snaxels/visibility/visibility.h"
 
@@ -67,10 +70,34 @@ std::vector<clip::Paths> pieces_of(const ClipperLib::PolyTree& tree) {
     return out;
 }
 
+/// The material and object lines of @p engine's mesh: lines of the
+/// surface, the same in every pose of its connectivity, so found once per
+/// mesh (the last mesh's are kept; maps of other meshes find their own).
+std::shared_ptr<const std::vector<Fronts>> boundary_fronts(const SnaxelEngine& engine) {
+    static std::mutex mutex;
+    static std::weak_ptr<const MeshConnectivity> cached_for;
+    static std::shared_ptr<const std::vector<Fronts>> cached;
+    const std::shared_ptr<const MeshConnectivity>& connectivity = engine.topology().connectivity();
+    {
+        const std::lock_guard<std::mutex> lock(mutex);
+        if (cached && cached_for.lock() == connectivity) return cached;
+    }
+    auto fronts = std::make_shared<std::vector<Fronts>>();
+    for (const ContourKind kind : {ContourKind::Material, ContourKind::Object}) {
+        ContourSpec spec;
+        spec.kind = kind;
+        fronts->push_back(feature_fronts(engine.topology(), spec));
+    }
+    const std::lock_guard<std::mutex> lock(mutex);
+    cached_for = connectivity;
+    cached = fronts;
+    return cached;
+}
+
 } // namespace
 
 void split_regions_by_part(PlanarMap& map, const SnaxelEngine& engine, const RayScene& rays,
-                           const ImageProjection& projection, const Camera& camera) {
+                           const ImageProjection& projection) {
     const MeshTopology& topo = engine.topology();
     const FaceParts* parts = topo.parts();
     if (!parts || parts->objects.empty() || parts->materials.empty()) return;
@@ -82,20 +109,17 @@ void split_regions_by_part(PlanarMap& map, const SnaxelEngine& engine, const Ray
     // lines, in the image. A boundary that does not show cuts a region of
     // one part into pieces that all see that part, and they join again.
     clip::Paths cuts;
-    for (const ContourKind kind : {ContourKind::Material, ContourKind::Object}) {
-        ContourSpec spec;
-        spec.kind = kind;
-        const ContourResult lines = engine.compute(spec, camera, Light{}, EngineOptions{});
-        for (const FrontLoop& loop : lines.fronts.loops) {
+    const std::shared_ptr<const std::vector<Fronts>> lines = boundary_fronts(engine);
+    for (const Fronts& fronts : *lines)
+        for (const FrontLoop& loop : fronts.loops) {
             ClipperLib::Path path;
-            lines.fronts.for_each_in_loop(loop, [&](std::int32_t sn) {
-                const glm::dvec2 q = projection.project(engine.position(lines.fronts.snaxels[sn]));
+            fronts.for_each_in_loop(loop, [&](std::int32_t sn) {
+                const glm::dvec2 q = projection.project(engine.position(fronts.snaxels[sn]));
                 path.push_back({ClipperLib::cInt(std::llround(q.x * clip::kScale)), ClipperLib::cInt(std::llround(q.y * clip::kScale))});
             });
             if (loop.closed && !path.empty()) path.push_back(path.front());
             if (path.size() >= 2) cuts.push_back(std::move(path));
         }
-    }
     clip::Paths strips;
     if (!cuts.empty()) {
         ClipperLib::ClipperOffset offset;
@@ -114,16 +138,32 @@ void split_regions_by_part(PlanarMap& map, const SnaxelEngine& engine, const Ray
     };
     // Each region cut by the strips; its pieces take the part seen inside
     // them, those of one part joined, the strips' share going to the largest.
+    struct Box {
+        ClipperLib::cInt x0 = std::numeric_limits<ClipperLib::cInt>::max(), y0 = x0;
+        ClipperLib::cInt x1 = std::numeric_limits<ClipperLib::cInt>::min(), y1 = x1;
+        void add(const ClipperLib::Path& path) {
+            for (const auto& p : path) x0 = std::min(x0, p.X), y0 = std::min(y0, p.Y), x1 = std::max(x1, p.X), y1 = std::max(y1, p.Y);
+        }
+        bool meets(const Box& o) const { return x0 <= o.x1 && o.x0 <= x1 && y0 <= o.y1 && o.y0 <= y1; }
+    };
+    std::vector<Box> strip_box(strips.size());
+    for (std::size_t k = 0; k < strips.size(); ++k) strip_box[k].add(strips[k]);
     std::vector<std::vector<MapRegion>> split(map.regions.size());
     parallel_for(map.regions.size(), [&](std::size_t i) {
         const MapRegion& region = map.regions[i];
         const clip::Paths whole = clip::to_paths(region.polygons);
+        Box box;
+        for (const auto& path : whole) box.add(path);
+        // Only the strips over the region cut it.
+        clip::Paths near;
+        for (std::size_t k = 0; k < strips.size(); ++k)
+            if (strip_box[k].meets(box)) near.push_back(strips[k]);
         ClipperLib::PolyTree tree;
         {
             ClipperLib::Clipper c;
             c.AddPaths(whole, ClipperLib::ptSubject, true);
-            if (!strips.empty()) c.AddPaths(strips, ClipperLib::ptClip, true);
-            c.Execute(strips.empty() ? ClipperLib::ctUnion : ClipperLib::ctDifference, tree, ClipperLib::pftNonZero,
+            if (!near.empty()) c.AddPaths(near, ClipperLib::ptClip, true);
+            c.Execute(near.empty() ? ClipperLib::ctUnion : ClipperLib::ctDifference, tree, ClipperLib::pftNonZero,
                       ClipperLib::pftNonZero);
         }
         std::vector<clip::Paths> pieces = pieces_of(tree);
@@ -158,8 +198,8 @@ void split_regions_by_part(PlanarMap& map, const SnaxelEngine& engine, const Ray
                 by_part.erase(none);
             }
         }
-        if (!strips.empty() && by_part.size() > 0) {
-            const clip::Paths share = clip::op(whole, strips, ClipperLib::ctIntersection);
+        if (!near.empty() && by_part.size() > 0) {
+            const clip::Paths share = clip::op(whole, near, ClipperLib::ctIntersection);
             clip::Paths& into = by_part.count(largest_part) ? by_part[largest_part] : by_part.begin()->second;
             into = clip::op(into, share, ClipperLib::ctUnion);
         }

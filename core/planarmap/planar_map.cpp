@@ -39,7 +39,7 @@ PlanarMap build_planar_map(PlanarMapKind kind, const SnaxelEngine& engine, const
     if (kind == PlanarMapKind::Post) {
         map.regions = build_post_map(engine, {visual, shadow, isophotes, gleams}, *rays, projection, camera, light);
         subtract_nearer_regions(map);
-        split_regions_by_part(map, engine, *rays, projection, camera);
+        split_regions_by_part(map, engine, *rays, projection);
         return map;
     }
     SnaxelMapInput in;
@@ -51,7 +51,7 @@ PlanarMap build_planar_map(PlanarMapKind kind, const SnaxelEngine& engine, const
     map.regions = std::move(built.regions);
     map.vertex_region = std::move(built.vertex_region);
     subtract_nearer_regions(map);
-    split_regions_by_part(map, engine, *rays, projection, camera);
+    split_regions_by_part(map, engine, *rays, projection);
     return map;
 }
 

@@ -43,7 +43,7 @@ PlanarMap build_planar_map(PlanarMapKind kind, const SnaxelEngine& engine, const
 /// material keeps its regions as they are, object and material 0.
 /// build_planar_map calls it.
 void split_regions_by_part(PlanarMap& map, const SnaxelEngine& engine, const RayScene& rays,
-                           const ImageProjection& projection, const Camera& camera);
+                           const ImageProjection& projection);
 
 /// Makes @p map a partition: each region loses what nearer ones (smaller
 /// depth; equal depth: smaller index) cover; regions left empty are
