@@ -253,6 +253,47 @@ inline SceneMesh read_collada(const std::string& path) {
     return m;
 }
 
+/// A Wavefront OBJ file with its parts: `o` names the object of the faces
+/// after it, `usemtl` their material; `v`, `vn` and triangles `f v//vn` or
+/// `f v/vt/vn` (a face without normals gets zero corner normals; polygons
+/// are fanned). Indices count from 1, negative ones back from the end.
+inline SceneMesh read_obj_parts(const std::string& path) {
+    std::istringstream in(scene_detail::slurp(path));
+    std::vector<glm::dvec3> v, vn;
+    SceneMesh m;
+    std::map<std::array<double, 3>, int> index;
+    std::string object, material, line;
+    auto at = [](long i, std::size_t n) { return i > 0 ? std::size_t(i - 1) : std::size_t(long(n) + i); };
+    while (std::getline(in, line)) {
+        std::istringstream words(line);
+        std::string key;
+        words >> key;
+        if (key == "v" || key == "vn") {
+            glm::dvec3 p;
+            words >> p.x >> p.y >> p.z;
+            (key == "v" ? v : vn).push_back(p);
+        } else if (key == "o") {
+            std::getline(words >> std::ws, object);
+        } else if (key == "usemtl") {
+            std::getline(words >> std::ws, material);
+        } else if (key == "f") {
+            std::vector<std::pair<glm::dvec3, glm::dvec3>> corners;
+            for (std::string c; words >> c;) {
+                const auto slash = c.find('/'), last = c.rfind('/');
+                const glm::dvec3 p = v.at(at(std::stol(c.substr(0, slash)), v.size()));
+                const glm::dvec3 n = slash != std::string::npos && last + 1 < c.size()
+                                         ? vn.at(at(std::stol(c.substr(last + 1)), vn.size()))
+                                         : glm::dvec3(0.0);
+                corners.push_back({p, n});
+            }
+            for (std::size_t k = 1; k + 1 < corners.size(); ++k)
+                scene_detail::add_triangle(m, index, glm::dmat4(1.0), {corners[0].first, corners[k].first, corners[k + 1].first},
+                                           {corners[0].second, corners[k].second, corners[k + 1].second}, object, material);
+        }
+    }
+    return m;
+}
+
 /// Corner normals shaded with an auto-smooth angle: at each corner, the
 /// area-weighted normal of the faces around its vertex reached through
 /// edges whose faces meet at no more than @p degrees.

@@ -273,7 +273,9 @@ TEST(PlanarMaps, AgreeOnHardSurfaces) {
 namespace snaxels {
 namespace {
 
-// Objects and materials (#36, done-when 1): every region of both maps
+// Objects and materials (#36, done-when 1): on the milk truck (glTF 1.0),
+// and a Blender scene of four objects and five materials as Collada and as
+// a multi-material OBJ, every region of both maps
 // shows one material, and per pixel the region's material and shading
 // class (shadow, lit, a band at k = 0.75: what fill="material" colours in
 // the toon and clip-art presets) are the reference rasterizer's (its own
@@ -282,9 +284,11 @@ namespace {
 TEST(PlanarMaps, RegionsShowOneMaterialEach) {
     constexpr int kSize = 512;
     const double k = 0.75;
-    for (const std::string name : {"hard/CesiumMilkTruck.gltf", "parts/parts.dae"}) {
+    for (const std::string name : {"hard/CesiumMilkTruck.gltf", "parts/parts.dae", "parts/parts.obj"}) {
         const std::string file = test::asset(name);
-        const ref::SceneMesh scene = name.find(".dae") != std::string::npos ? ref::read_collada(file) : ref::read_gltf1(file);
+        const ref::SceneMesh scene = name.find(".dae") != std::string::npos   ? ref::read_collada(file)
+                                     : name.find(".obj") != std::string::npos ? ref::read_obj_parts(file)
+                                                                              : ref::read_gltf1(file);
         ref::Mesh reference;
         reference.positions = scene.positions;
         reference.faces = scene.faces;
