@@ -34,11 +34,7 @@ QIcon swatch(const glm::dvec4& colour) {
     pixmap.fill(Qt::transparent);
     QPainter painter(&pixmap);
     // The file's colours are linear: shown as a screen shows them (sRGB).
-    auto channel = [](double c) {
-        c = std::clamp(c, 0.0, 1.0);
-        return int(std::lround(255.0 * (c <= 0.0031308 ? 12.92 * c : 1.055 * std::pow(c, 1.0 / 2.4) - 0.055)));
-    };
-    painter.setBrush(QColor(channel(colour.r), channel(colour.g), channel(colour.b)));
+    painter.setBrush(QColor(srgb_byte(colour.r), srgb_byte(colour.g), srgb_byte(colour.b)));
     painter.setPen(QColor(90, 90, 90));
     painter.drawRect(1, 1, 11, 11);
     return QIcon(pixmap);
@@ -98,6 +94,7 @@ ObjectsPanel::ObjectsPanel(QWidget* parent) : QWidget(parent), tree_(new QTreeWi
 
 void ObjectsPanel::setMesh(std::shared_ptr<const LoadedMesh> mesh) {
     mesh_ = std::move(mesh);
+    parts_ = mesh_ ? loaded_parts(*mesh_) : nullptr; // once per mesh, not per style edit
     rebuild();
 }
 
@@ -173,9 +170,8 @@ void ObjectsPanel::rebuild() {
 }
 
 void ObjectsPanel::refreshStyle() {
-    if (!mesh_ || tree_->topLevelItemCount() < 2) return;
-    const std::shared_ptr<const FaceParts> parts = loaded_parts(*mesh_);
-    if (!parts) return;
+    if (!mesh_ || tree_->topLevelItemCount() < 2 || !parts_) return;
+    const std::shared_ptr<const FaceParts>& parts = parts_;
     // Per line set, which objects and materials it takes.
     std::vector<PartMatcher> sets;
     std::vector<QString> labels;

@@ -14,6 +14,7 @@
 #include <glm/glm.hpp>
 
 #include "snaxels/mesh/build.h"
+#include "snaxels/mesh/parts.h"
 #include "snaxels/style/style.h"
 
 class QTreeWidget;
@@ -63,6 +64,7 @@ class ObjectsPanel : public QWidget {
 
     QTreeWidget* tree_;
     std::shared_ptr<const LoadedMesh> mesh_;
+    std::shared_ptr<const FaceParts> parts_; ///< mesh_'s parts (loaded_parts)
     QString text_;
     Style style_;
     bool updating_ = false;

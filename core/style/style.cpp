@@ -514,6 +514,11 @@ const RegionStyle* Style::region(const MapRegion& r, const FaceParts* parts) con
     return nullptr;
 }
 
+int srgb_byte(double linear) {
+    const double v = std::clamp(linear, 0.0, 1.0);
+    return int(std::lround(255.0 * (v <= 0.0031308 ? 12.92 * v : 1.055 * std::pow(v, 1.0 / 2.4) - 0.055)));
+}
+
 double region_shade(RegionClass cls) {
     switch (cls) {
     case RegionClass::Shadow: return 0.55;
@@ -530,12 +535,7 @@ std::string region_fill_colour(const RegionStyle& rs, const MapRegion& region, c
     const double shade = rs.shade >= 0.0 ? rs.shade : region_shade(region.cls);
     const glm::dvec4& c = parts->materials[std::uint32_t(region.material)].colour;
     char out[8];
-    auto channel = [&](double v) {
-        v = shade <= 1.0 ? v * shade : v + (1.0 - v) * (shade - 1.0);
-        v = std::clamp(v, 0.0, 1.0);
-        const double srgb = v <= 0.0031308 ? 12.92 * v : 1.055 * std::pow(v, 1.0 / 2.4) - 0.055;
-        return int(std::lround(255.0 * srgb));
-    };
+    auto channel = [&](double v) { return srgb_byte(shade <= 1.0 ? v * shade : v + (1.0 - v) * (shade - 1.0)); };
     std::snprintf(out, sizeof out, "#%02x%02x%02x", channel(c.r), channel(c.g), channel(c.b));
     return out;
 }

@@ -96,6 +96,10 @@ struct Style {
 /// thinner, faded and dashed when hidden.
 ContourStyle default_contour_style(const ContourSpec& spec);
 
+/// A linear colour channel (0 to 1, clamped) as an sRGB byte, as screens
+/// and SVG colours take it.
+int srgb_byte(double linear);
+
 /// A region class's default shade for fill="material": shadow 0.55, lit 1,
 /// a band 1.2, a highlight 1.7.
 double region_shade(RegionClass cls);
