@@ -62,6 +62,42 @@ struct Corners {
     void unite(Halfedge a, Halfedge b) { parent[find(slot(a))] = find(slot(b)); }
 };
 
+/// A smooth mesh (no sharp edge) whose file's normals decide: @p loaded
+/// with each vertex taking the mean of the file's normals at its corners
+/// (an exporter's own weighting, or an artist's edited normals, shade it
+/// as they do in the program that made it). Nothing when the file has no
+/// normals, when they are the ones the mesh has already (within
+/// kSameNormalDegrees everywhere), or when more than one vertex in a
+/// hundred has a file normal turned away from its faces (a scanner's
+/// unoriented normals: the mesh's own shade it then).
+std::optional<LoadedMesh> with_file_normals(const LoadedMesh& loaded, const SurfaceOptions& options) {
+    if (options.sharp_angle >= 0.0 || loaded.corner_normals.empty()) return std::nullopt;
+    const Mesh& mesh = loaded.mesh;
+    std::vector<glm::dvec3> file(mesh.n_vertices(), glm::dvec3(0.0));
+    for (const auto fh : mesh.faces()) {
+        auto corner = loaded.corner_normals[slot(fh)].begin();
+        for (const auto vh : mesh.fv_range(fh)) file[slot(vh)] += *corner++;
+    }
+    const double same = std::cos(glm::radians(kSameNormalDegrees));
+    bool differ = false;
+    std::size_t turned = 0;
+    for (auto& n : file) {
+        if (const double len = glm::length(n); len > 0.0) n /= len;
+    }
+    for (const auto vh : mesh.vertices()) {
+        const glm::dvec3& n = file[slot(vh)];
+        if (glm::dot(n, n) == 0.0) continue;
+        const double agree = glm::dot(n, to_glm(mesh.normal(vh)));
+        differ = differ || agree < same;
+        turned += agree < 0.0;
+    }
+    if (!differ || 100 * turned > mesh.n_vertices()) return std::nullopt;
+    LoadedMesh out = loaded;
+    for (const auto vh : out.mesh.vertices())
+        if (const glm::dvec3& n = file[slot(vh)]; glm::dot(n, n) > 0.0) out.mesh.set_normal(vh, to_om(n));
+    return out;
+}
+
 } // namespace
 
 std::optional<LoadedMesh> split_sharp_edges(const LoadedMesh& loaded, const SurfaceOptions& options, SharpSplit* what) {
@@ -84,7 +120,7 @@ std::optional<LoadedMesh> split_sharp_edges(const LoadedMesh& loaded, const Surf
     }
     if (split.sharp_edges == 0) {
         if (what) *what = split;
-        return std::nullopt;
+        return with_file_normals(loaded, options);
     }
 
     // Each wedge at a vertex but the first gets a copy of the vertex.

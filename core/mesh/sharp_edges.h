@@ -51,8 +51,10 @@ struct SharpSplit {
 /// faces come last. Vertex normals: the mean of the file's normals at each
 /// vertex's corners when the file's normals decide, else area-weighted
 /// over each wedge (as make_pose computes them for a moved pose).
-/// Nothing (std::nullopt) when no vertex has two wedges: the mesh is then
-/// smooth everywhere and used as it is.
+/// When no vertex has two wedges the mesh is smooth everywhere: then it
+/// comes back unsplit with the file's normals (their mean at each vertex)
+/// where the file's normals decide and differ from the mesh's own, and
+/// nothing (std::nullopt) otherwise: the mesh is used as it is.
 std::optional<LoadedMesh> split_sharp_edges(const LoadedMesh& loaded, const SurfaceOptions& options,
                                             SharpSplit* what = nullptr);
 

@@ -11,9 +11,13 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <filesystem>
+#include <fstream>
 #include <limits>
 #include <map>
 #include <set>
+
+#include <unistd.h>
 
 #include <glm/gtx/rotate_vector.hpp>
 
@@ -335,4 +339,51 @@ TEST(SharpEdges, TurntableTrackingEqualsTheOracleAtEveryFrame) {
         EXPECT_GT(on_strips, 1000u) << model.file; // the contour did run along sharp edges
         EXPECT_GT(events, 10u) << model.file;
     }
+}
+
+namespace {
+
+/// A 5 x 5 grid in the plane z = 0 as an OBJ whose every vertex has the
+/// normal @p n (one per vertex: no edge is sharp by the file's normals).
+std::string grid_with_normal(const std::string& name, const glm::dvec3& n) {
+    const std::string path = (std::filesystem::temp_directory_path() / (name + "-" + std::to_string(::getpid()) + ".obj")).string();
+    std::ofstream out(path);
+    for (int y = 0; y < 5; ++y)
+        for (int x = 0; x < 5; ++x) out << "v " << x << ' ' << y << " 0\n";
+    out << "vn " << n.x << ' ' << n.y << ' ' << n.z << '\n';
+    for (int y = 0; y < 4; ++y)
+        for (int x = 0; x < 4; ++x) {
+            const int a = 1 + y * 5 + x, b = a + 1, c = a + 6, d = a + 5;
+            out << "f " << a << "//1 " << b << "//1 " << c << "//1\n" << "f " << a << "//1 " << c << "//1 " << d << "//1\n";
+        }
+    return path;
+}
+
+} // namespace
+
+// A smooth surface shades with the file's own normals (an exporter's
+// weighting, an artist's edited normals), unless the style asks for an
+// auto-smooth angle, or the file's normals turn away from the faces (a
+// scanner's unoriented normals): then with the mesh's own.
+TEST(SharpEdges, SmoothFilesShadeWithTheirOwnNormals) {
+    const glm::dvec3 tilted = glm::normalize(glm::dvec3(0.3, 0.0, 1.0));
+    const std::string file = grid_with_normal("tilted-normals", tilted);
+    const LoadedMesh loaded = import_mesh(file);
+    SharpSplit what;
+    const std::optional<LoadedMesh> shaded = split_sharp_edges(loaded, SurfaceOptions{}, &what);
+    EXPECT_EQ(what.sharp_edges, 0u);
+    ASSERT_TRUE(shaded.has_value());
+    EXPECT_EQ(shaded->mesh.n_vertices(), loaded.mesh.n_vertices());
+    for (const auto vh : shaded->mesh.vertices()) {
+        EXPECT_NEAR(glm::dot(to_glm(shaded->mesh.normal(vh)), tilted), 1.0, 1e-9);
+        EXPECT_NEAR(to_glm(loaded.mesh.normal(vh)).z, 1.0, 1e-9); // the mesh's own: the plane's
+    }
+    SurfaceOptions by_angle;
+    by_angle.sharp_angle = 30.0;
+    EXPECT_FALSE(split_sharp_edges(loaded, by_angle).has_value());
+    std::filesystem::remove(file);
+
+    const std::string away = grid_with_normal("turned-normals", glm::dvec3(0.0, 0.0, -1.0));
+    EXPECT_FALSE(split_sharp_edges(import_mesh(away), SurfaceOptions{}).has_value());
+    std::filesystem::remove(away);
 }
