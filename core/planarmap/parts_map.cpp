@@ -23,53 +23,6 @@ namespace {
 /// units (1/1024 px): the strips are 1/64 px wide.
 constexpr double kHalfStrip = 8.0;
 
-/// Points inside @p piece (an outline and its holes, non-zero), best
-/// first: the middles of the spans rows across it cover, widest first.
-std::vector<glm::dvec2> inside_points(const clip::Paths& piece) {
-    double lo = std::numeric_limits<double>::infinity(), hi = -lo;
-    for (const auto& path : piece)
-        for (const auto& p : path) lo = std::min(lo, double(p.Y)), hi = std::max(hi, double(p.Y));
-    std::vector<std::pair<double, glm::dvec2>> spans; // (width, middle)
-    if (!(hi > lo)) return {};
-    for (int row = 1; row <= 15; ++row) {
-        const double y = lo + (hi - lo) * row / 16.0;
-        // Crossings with their winding, in order along the row.
-        std::vector<std::pair<double, int>> crossings;
-        for (const auto& path : piece)
-            for (std::size_t i = 0; i < path.size(); ++i) {
-                const auto& a = path[i];
-                const auto& b = path[(i + 1) % path.size()];
-                if ((double(a.Y) <= y) == (double(b.Y) <= y)) continue;
-                const double t = (y - double(a.Y)) / double(b.Y - a.Y);
-                crossings.push_back({double(a.X) + t * double(b.X - a.X), b.Y > a.Y ? 1 : -1});
-            }
-        std::sort(crossings.begin(), crossings.end());
-        int winding = 0;
-        for (std::size_t i = 0; i + 1 < crossings.size(); ++i) {
-            winding += crossings[i].second;
-            const double width = crossings[i + 1].first - crossings[i].first;
-            if (winding != 0 && width > 0.0)
-                spans.push_back({width, glm::dvec2(0.5 * (crossings[i].first + crossings[i + 1].first), y) / clip::kScale});
-        }
-    }
-    std::stable_sort(spans.begin(), spans.end(), [](const auto& a, const auto& b) { return a.first > b.first; });
-    std::vector<glm::dvec2> out;
-    for (const auto& span : spans) out.push_back(span.second);
-    return out;
-}
-
-/// The pieces of a normalized polygon set: each outline with its holes.
-std::vector<clip::Paths> pieces_of(const ClipperLib::PolyTree& tree) {
-    std::vector<clip::Paths> out;
-    for (const ClipperLib::PolyNode* node = tree.GetFirst(); node; node = node->GetNext()) {
-        if (node->IsHole()) continue;
-        clip::Paths piece{node->Contour};
-        for (const ClipperLib::PolyNode* hole : node->Childs) piece.push_back(hole->Contour);
-        out.push_back(std::move(piece));
-    }
-    return out;
-}
-
 /// The material and object lines of @p engine's mesh: lines of the
 /// surface, the same in every pose of its connectivity, so found once per
 /// mesh (the last mesh's are kept; maps of other meshes find their own).
@@ -138,51 +91,43 @@ void split_regions_by_part(PlanarMap& map, const SnaxelEngine& engine, const Ray
     };
     // Each region cut by the strips; its pieces take the part seen inside
     // them, those of one part joined, the strips' share going to the largest.
-    struct Box {
-        ClipperLib::cInt x0 = std::numeric_limits<ClipperLib::cInt>::max(), y0 = x0;
-        ClipperLib::cInt x1 = std::numeric_limits<ClipperLib::cInt>::min(), y1 = x1;
-        void add(const ClipperLib::Path& path) {
-            for (const auto& p : path) x0 = std::min(x0, p.X), y0 = std::min(y0, p.Y), x1 = std::max(x1, p.X), y1 = std::max(y1, p.Y);
-        }
-        bool meets(const Box& o) const { return x0 <= o.x1 && o.x0 <= x1 && y0 <= o.y1 && o.y0 <= y1; }
-    };
-    std::vector<Box> strip_box(strips.size());
+    std::vector<clip::Box> strip_box(strips.size());
     for (std::size_t k = 0; k < strips.size(); ++k) strip_box[k].add(strips[k]);
     std::vector<std::vector<MapRegion>> split(map.regions.size());
     parallel_for(map.regions.size(), [&](std::size_t i) {
         const MapRegion& region = map.regions[i];
         const clip::Paths whole = clip::to_paths(region.polygons);
-        Box box;
+        clip::Box box;
         for (const auto& path : whole) box.add(path);
         // Only the strips over the region cut it.
         clip::Paths near;
         for (std::size_t k = 0; k < strips.size(); ++k)
             if (strip_box[k].meets(box)) near.push_back(strips[k]);
         ClipperLib::PolyTree tree;
-        {
-            ClipperLib::Clipper c;
-            c.AddPaths(whole, ClipperLib::ptSubject, true);
-            if (!near.empty()) c.AddPaths(near, ClipperLib::ptClip, true);
-            c.Execute(near.empty() ? ClipperLib::ctUnion : ClipperLib::ctDifference, tree, ClipperLib::pftNonZero,
-                      ClipperLib::pftNonZero);
-        }
-        std::vector<clip::Paths> pieces = pieces_of(tree);
+        clip::difference_tree(whole, near, tree);
+        std::vector<clip::Paths> pieces = clip::pieces_of(tree);
         std::map<std::pair<std::uint32_t, std::uint32_t>, clip::Paths> by_part;
         std::pair<std::uint32_t, std::uint32_t> largest_part{0, 0};
         double largest = -1.0;
         for (const clip::Paths& piece : pieces) {
-            // The part seen through the piece: the first of its inside
-            // points whose ray meets the surface (one may slip past a thin
-            // piece's edge).
+            // The part seen through the piece: the one the rays through its
+            // inside points meet over most of the spans' width (a ray may
+            // slip past a thin piece's edge, and a piece that reaches over
+            // another part's image, where a map's region strays past an
+            // outline, is still seen as the part most of it shows).
             std::optional<std::pair<std::uint32_t, std::uint32_t>> part;
-            const std::vector<glm::dvec2> points = inside_points(piece);
-            for (const glm::dvec2& point : points)
-                if ((part = part_at(point))) break;
+            const std::vector<clip::InsidePoint> points = clip::inside_points(piece);
+            std::map<std::pair<std::uint32_t, std::uint32_t>, double> votes;
+            for (const clip::InsidePoint& point : points)
+                if (const auto seen = part_at(point.at)) votes[*seen] += point.width;
+            double most = 0.0;
+            for (const auto& [seen, width] : votes)
+                if (width > most) most = width, part = seen;
             // A speck whose rays all slip past the surface takes the part
             // seen right beside it.
             for (double reach = 0.5; !part && !points.empty() && reach <= 4.0; reach *= 2.0)
                 for (int a = 0; a < 8 && !part; ++a)
-                    part = part_at(points.front() + reach * glm::dvec2(std::cos(a * 0.785398), std::sin(a * 0.785398)));
+                    part = part_at(points.front().at + reach * glm::dvec2(std::cos(a * 0.785398), std::sin(a * 0.785398)));
             const auto key = part.value_or(std::pair<std::uint32_t, std::uint32_t>(~0u, ~0u));
             clip::Paths& into = by_part[key];
             into.insert(into.end(), piece.begin(), piece.end());

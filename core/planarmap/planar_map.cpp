@@ -51,6 +51,7 @@ PlanarMap build_planar_map(PlanarMapKind kind, const SnaxelEngine& engine, const
     map.regions = std::move(built.regions);
     map.vertex_region = std::move(built.vertex_region);
     subtract_nearer_regions(map);
+    fill_snaxel_map_gaps(map, engine, in, *rays, projection, camera, light);
     split_regions_by_part(map, engine, *rays, projection);
     return map;
 }

@@ -32,6 +32,18 @@ PlanarMap build_planar_map(PlanarMapKind kind, const SnaxelEngine& engine, const
                            const RayScene* rays, const ImageProjection& projection, const Camera& camera,
                            const Light& light);
 
+/// The snaxel-defined @p map (a partition) completed where its regions
+/// leave part of a large face (16 px2 or more) uncovered: where a corner is
+/// hidden, a region's front stops on the face's edges and cuts straight
+/// across between the stops, not along the outline of what hides the rest
+/// (a floor of a few faces round the objects standing on it). Each
+/// uncovered piece wider than half a pixel takes the class the rays
+/// through it see over most of its width (the shading at the hit) and
+/// joins the region of that class at one of the hit face's corners, or
+/// becomes a region of its own behind the others. build_planar_map calls it.
+void fill_snaxel_map_gaps(PlanarMap& map, const SnaxelEngine& engine, const SnaxelMapInput& input, const RayScene& rays,
+                          const ImageProjection& projection, const Camera& camera, const Light& light);
+
 /// On a mesh with parts, cuts @p map's regions where the parts meet in the
 /// image (the visible runs of the material and object lines, cut out as
 /// strips 1/64 px wide) and gives each piece the object and material seen

@@ -113,6 +113,7 @@ class PostMapBuilder {
         clip_patches();
         fill_uncovered_shown();
         fill_silhouette_band();
+        fill_partly_hidden();
         return std::move(regions_);
     }
 
@@ -244,36 +245,7 @@ class PostMapBuilder {
     /// nearer sheet).
     void cut_shown_faces() {
         shading_values();
-        std::unordered_map<std::int64_t, glm::dvec3> point;
-        const auto K = std::int64_t(value_.size());
-        std::int64_t inner = edge_point_of(EdgeId(topo_.n_edges()), 0); // ids of cut points inside faces
-        std::vector<Outline> steps(static_cast<std::size_t>(2 * count_));
-        auto add_piece = [&](int cls, const std::vector<Corner>& piece) {
-            for (std::size_t k = 0; k < piece.size(); ++k) {
-                point.emplace(piece[k].id, piece[k].p);
-                steps[cls].walk(piece[k].id, piece[(k + 1) % piece.size()].id);
-            }
-        };
-        for (const FaceId i : topo_.faces()) {
-            if (shows_[i] == kBackShown) {
-                auto f = topo_.face_vertices()[i];
-                std::swap(f[1], f[2]); // seen from behind: walked the way it winds in the image
-                std::vector<Corner> piece;
-                for (const VertexId v : f) piece.push_back({point_of(v), -1, topo_.positions()[v], {}});
-                add_piece(count_ + face_class_[i], piece);
-                continue;
-            }
-            if (shows_[i] != kShown) continue;
-            for (const auto& part : cut_face(i, inner)) {
-                std::vector<double> mid(std::size_t(K), 0.0);
-                for (const Corner& c : part)
-                    for (std::int64_t m = 0; m < K; ++m) mid[m] += c.f[m] / double(part.size());
-                add_piece(class_at(mid), part);
-            }
-        }
-        std::vector<Paths> outlines(steps.size());
-        for (std::size_t cls = 0; cls < steps.size(); ++cls)
-            outlines[cls] = steps[cls].paths([&](std::int64_t id) { return projection_.project(point.at(id)); });
+        const std::vector<Paths> outlines = class_parts([&](FaceId i) { return shows_[i] == kShown || shows_[i] == kBackShown; });
         for (int cls = 0; cls < count_; ++cls)
             front_.insert(front_.end(), outlines[cls].begin(), outlines[cls].end());
         front_ = clip::op(front_, {}, ClipperLib::ctUnion);
@@ -285,6 +257,43 @@ class PostMapBuilder {
                                : clip::op(outlines[cls], clip::op(behind, front_, ClipperLib::ctDifference),
                                           ClipperLib::ctUnion);
         }
+    }
+
+    /// The parts of each class of the faces @p take accepts, as outlines:
+    /// [cls] of faces turned to the viewer, cut where the functions cross
+    /// zero, [classes + cls] of faces seen from behind (kBackShown), whole.
+    template <class Take> std::vector<Paths> class_parts(Take&& take) const {
+        std::unordered_map<std::int64_t, glm::dvec3> point;
+        const auto K = std::int64_t(value_.size());
+        std::int64_t inner = edge_point_of(EdgeId(topo_.n_edges()), 0); // ids of cut points inside faces
+        std::vector<Outline> steps(static_cast<std::size_t>(2 * count_));
+        auto add_piece = [&](int cls, const std::vector<Corner>& piece) {
+            for (std::size_t k = 0; k < piece.size(); ++k) {
+                point.emplace(piece[k].id, piece[k].p);
+                steps[cls].walk(piece[k].id, piece[(k + 1) % piece.size()].id);
+            }
+        };
+        for (const FaceId i : topo_.faces()) {
+            if (!take(i)) continue;
+            if (shows_[i] == kBackShown) {
+                auto f = topo_.face_vertices()[i];
+                std::swap(f[1], f[2]); // seen from behind: walked the way it winds in the image
+                std::vector<Corner> piece;
+                for (const VertexId v : f) piece.push_back({point_of(v), -1, topo_.positions()[v], {}});
+                add_piece(count_ + face_class_[i], piece);
+                continue;
+            }
+            for (const auto& part : cut_face(i, inner)) {
+                std::vector<double> mid(std::size_t(K), 0.0);
+                for (const Corner& c : part)
+                    for (std::int64_t m = 0; m < K; ++m) mid[m] += c.f[m] / double(part.size());
+                add_piece(class_at(mid), part);
+            }
+        }
+        std::vector<Paths> outlines(steps.size());
+        for (std::size_t cls = 0; cls < steps.size(); ++cls)
+            outlines[cls] = steps[cls].paths([&](std::int64_t id) { return projection_.project(point.at(id)); });
+        return outlines;
     }
 
     /// Face @p i cut where each function crosses zero; @p inner numbers the
@@ -510,6 +519,30 @@ class PostMapBuilder {
             if (united.empty()) continue;
             const Paths rest = clip::op(united, covered_, ClipperLib::ctDifference);
             covered_ = clip::op(covered_, united, ClipperLib::ctUnion);
+            add_region(cls, rest, depth_);
+        }
+    }
+
+    /// Faces turned to the viewer but hidden at their centre, beside a shown
+    /// face, can still show in part: a large face (a floor of a few faces)
+    /// whose middle an object in front of it hides. What of them nothing
+    /// else covers joins the map, cut into classes as the shown faces are.
+    void fill_partly_hidden() {
+        VertexData<char> by_shown(topo_.n_vertices(), 0);
+        for (const FaceId i : topo_.faces())
+            if (shows_[i] == kShown)
+                for (const VertexId v : topo_.face_vertices()[i]) by_shown[v] = 1;
+        auto take = [&](FaceId i) {
+            if (shows_[i] != kHidden && shows_[i] != kUnder) return false;
+            const auto& f = topo_.face_vertices()[i];
+            if (!(by_shown[f[0]] || by_shown[f[1]] || by_shown[f[2]]) || !facing(f)) return false;
+            return !topo_.has_strips() || face_has_area(topo_, i);
+        };
+        const std::vector<Paths> parts = class_parts(take);
+        for (int cls = count_ - 1; cls >= 0; --cls) {
+            if (parts[cls].empty()) continue;
+            const Paths rest = clip::op(parts[cls], covered_, ClipperLib::ctDifference);
+            covered_ = clip::op(covered_, parts[cls], ClipperLib::ctUnion);
             add_region(cls, rest, depth_);
         }
     }

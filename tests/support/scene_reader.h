@@ -161,9 +161,13 @@ inline SceneMesh read_collada(const std::string& path) {
     pugi::xml_document doc;
     if (!doc.load_file(path.c_str())) throw std::runtime_error("cannot parse " + path);
     const pugi::xml_node root = doc.child("COLLADA");
+    // Numbers as exporters write them, some (3ds Max's in some locales)
+    // with a decimal comma: the format separates numbers by white space.
     auto numbers = [](const char* text) {
         std::vector<double> v;
-        std::istringstream s(text);
+        std::string dotted(text);
+        std::replace(dotted.begin(), dotted.end(), ',', '.');
+        std::istringstream s(dotted);
         double x;
         while (s >> x) v.push_back(x);
         return v;
@@ -178,7 +182,7 @@ inline SceneMesh read_collada(const std::string& path) {
     }
     // Lengths in metres, as the format's <unit meter="..."> says.
     if (const pugi::xml_attribute unit = root.child("asset").child("unit").attribute("meter"))
-        up = up * glm::dmat4(glm::dmat3(unit.as_double(1.0)));
+        if (const auto metres = numbers(unit.value()); metres.size() == 1) up = up * glm::dmat4(glm::dmat3(metres[0]));
     SceneMesh m;
     std::map<std::array<double, 3>, int> index;
     std::function<void(const pugi::xml_node&, const glm::dmat4&)> visit = [&](const pugi::xml_node& n, const glm::dmat4& parent) {
@@ -202,7 +206,9 @@ inline SceneMesh read_collada(const std::string& path) {
         for (const pugi::xml_node inst : n.children("instance_geometry")) {
             const pugi::xml_node geometry = by_id(root.child("library_geometries"), strip(inst.attribute("url").value()));
             const pugi::xml_node mesh = geometry.child("mesh");
-            for (const pugi::xml_node tris : mesh.children("triangles")) {
+            for (const pugi::xml_node tris : mesh.children()) {
+                const std::string element = tris.name();
+                if (element != "triangles" && element != "polygons" && element != "polylist") continue;
                 // The triangles' material symbol, bound by the instance to a material.
                 std::string material = tris.attribute("material").value();
                 const pugi::xml_node bound = inst.find_node([&](const pugi::xml_node& b) {
@@ -228,21 +234,46 @@ inline SceneMesh read_collada(const std::string& path) {
                 const auto pos = numbers(by_id(mesh, position_source).child("float_array").child_value());
                 const auto nrm = normal_offset >= 0 ? numbers(by_id(mesh, normal_source).child("float_array").child_value())
                                                     : std::vector<double>{};
-                const auto p = numbers(tris.child_value("p"));
                 const std::size_t corner = std::size_t(stride);
-                for (std::size_t i = 0; i + 3 * corner <= p.size(); i += 3 * corner) {
-                    std::array<glm::dvec3, 3> q, nn;
-                    for (std::size_t k = 0; k < 3; ++k) {
-                        const auto v = std::size_t(p[i + k * corner + std::size_t(vertex_offset)]);
-                        q[k] = {pos[3 * v], pos[3 * v + 1], pos[3 * v + 2]};
-                        if (normal_offset >= 0) {
-                            const auto w = std::size_t(p[i + k * corner + std::size_t(normal_offset)]);
-                            nn[k] = {nrm[3 * w], nrm[3 * w + 1], nrm[3 * w + 2]};
-                        } else {
-                            nn[k] = glm::dvec3(0.0);
-                        }
+                // The polygons as corner counts and index lists: <triangles>
+                // one <p> of triangles, <polylist> one <p> with a <vcount>,
+                // <polygons> a <p> per polygon. Each polygon is fanned.
+                std::vector<std::pair<std::vector<double>, std::vector<double>>> lists;
+                if (element == "polygons") {
+                    for (const pugi::xml_node p : tris.children("p")) {
+                        const auto indices = numbers(p.child_value());
+                        lists.push_back({{double(indices.size() / corner)}, indices});
                     }
-                    scene_detail::add_triangle(m, index, local, q, nn, object, material);
+                } else {
+                    const auto indices = numbers(tris.child_value("p"));
+                    lists.push_back({element == "polylist" ? numbers(tris.child_value("vcount"))
+                                                           : std::vector<double>(indices.size() / (3 * corner), 3.0),
+                                     indices});
+                }
+                for (const auto& [counts, p] : lists) {
+                    std::size_t first = 0;
+                    for (const double count : counts) {
+                        const auto corners = std::size_t(count);
+                        if ((first + corners) * corner > p.size()) break;
+                        auto corner_at = [&](std::size_t c, glm::dvec3& q, glm::dvec3& nn) {
+                            const std::size_t at = (first + c) * corner;
+                            const auto v = std::size_t(p[at + std::size_t(vertex_offset)]);
+                            q = {pos[3 * v], pos[3 * v + 1], pos[3 * v + 2]};
+                            nn = glm::dvec3(0.0);
+                            if (normal_offset >= 0) {
+                                const auto w = std::size_t(p[at + std::size_t(normal_offset)]);
+                                nn = {nrm[3 * w], nrm[3 * w + 1], nrm[3 * w + 2]};
+                            }
+                        };
+                        for (std::size_t c = 1; c + 1 < corners; ++c) {
+                            std::array<glm::dvec3, 3> q, nn;
+                            corner_at(0, q[0], nn[0]);
+                            corner_at(c, q[1], nn[1]);
+                            corner_at(c + 1, q[2], nn[2]);
+                            scene_detail::add_triangle(m, index, local, q, nn, object, material);
+                        }
+                        first += corners;
+                    }
                 }
             }
         }

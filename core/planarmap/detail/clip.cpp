@@ -1,6 +1,8 @@
 #include "snaxels/planarmap/detail/clip.h"
 
+#include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace snaxels::clip {
 
@@ -38,6 +40,55 @@ double area(const Paths& paths) {
     double a = 0.0;
     for (const auto& p : paths) a += ClipperLib::Area(p);
     return std::abs(a) / (kScale * kScale);
+}
+
+void difference_tree(const Paths& a, const Paths& b, ClipperLib::PolyTree& out) {
+    ClipperLib::Clipper c;
+    c.AddPaths(a, ClipperLib::ptSubject, true);
+    if (!b.empty()) c.AddPaths(b, ClipperLib::ptClip, true);
+    c.Execute(b.empty() ? ClipperLib::ctUnion : ClipperLib::ctDifference, out, ClipperLib::pftNonZero, ClipperLib::pftNonZero);
+}
+
+std::vector<InsidePoint> inside_points(const Paths& piece) {
+    double lo = std::numeric_limits<double>::infinity(), hi = -lo;
+    for (const auto& path : piece)
+        for (const auto& p : path) lo = std::min(lo, double(p.Y)), hi = std::max(hi, double(p.Y));
+    std::vector<InsidePoint> spans;
+    if (!(hi > lo)) return {};
+    for (int row = 1; row <= 15; ++row) {
+        const double y = lo + (hi - lo) * row / 16.0;
+        // Crossings with their winding, in order along the row.
+        std::vector<std::pair<double, int>> crossings;
+        for (const auto& path : piece)
+            for (std::size_t i = 0; i < path.size(); ++i) {
+                const auto& a = path[i];
+                const auto& b = path[(i + 1) % path.size()];
+                if ((double(a.Y) <= y) == (double(b.Y) <= y)) continue;
+                const double t = (y - double(a.Y)) / double(b.Y - a.Y);
+                crossings.push_back({double(a.X) + t * double(b.X - a.X), b.Y > a.Y ? 1 : -1});
+            }
+        std::sort(crossings.begin(), crossings.end());
+        int winding = 0;
+        for (std::size_t i = 0; i + 1 < crossings.size(); ++i) {
+            winding += crossings[i].second;
+            const double width = crossings[i + 1].first - crossings[i].first;
+            if (winding != 0 && width > 0.0)
+                spans.push_back({width / kScale, glm::dvec2(0.5 * (crossings[i].first + crossings[i + 1].first), y) / kScale});
+        }
+    }
+    std::stable_sort(spans.begin(), spans.end(), [](const auto& a, const auto& b) { return a.width > b.width; });
+    return spans;
+}
+
+std::vector<Paths> pieces_of(const ClipperLib::PolyTree& tree) {
+    std::vector<Paths> out;
+    for (const ClipperLib::PolyNode* node = tree.GetFirst(); node; node = node->GetNext()) {
+        if (node->IsHole()) continue;
+        Paths piece{node->Contour};
+        for (const ClipperLib::PolyNode* hole : node->Childs) piece.push_back(hole->Contour);
+        out.push_back(std::move(piece));
+    }
+    return out;
 }
 
 } // namespace snaxels::clip

@@ -2,6 +2,8 @@
 /// Polygon clipping for the planar maps, on Clipper's integer grid
 /// (1/1024 pixel): conversions, boolean operations and areas.
 
+#include <algorithm>
+#include <limits>
 #include <vector>
 
 #include <glm/glm.hpp>
@@ -19,5 +21,33 @@ std::vector<std::vector<glm::dvec2>> from_paths(const Paths& paths);
 Paths op(const Paths& a, const Paths& b, ClipperLib::ClipType type);
 /// Square pixels covered (signed areas add up: holes wind the other way).
 double area(const Paths& paths);
+
+/// A bounding box on Clipper's grid, for skipping paths that cannot meet.
+struct Box {
+    ClipperLib::cInt x0 = std::numeric_limits<ClipperLib::cInt>::max(), y0 = x0;
+    ClipperLib::cInt x1 = std::numeric_limits<ClipperLib::cInt>::min(), y1 = x1;
+    void add(const ClipperLib::Path& path) {
+        for (const auto& p : path) x0 = std::min(x0, p.X), y0 = std::min(y0, p.Y), x1 = std::max(x1, p.X), y1 = std::max(y1, p.Y);
+    }
+    bool meets(const Box& o) const { return x0 <= o.x1 && o.x0 <= x1 && y0 <= o.y1 && o.y0 <= y1; }
+};
+
+/// A point inside a polygon set and the width of the span it is the
+/// middle of.
+struct InsidePoint {
+    double width; ///< pixels
+    glm::dvec2 at; ///< pixels
+};
+
+/// Points inside @p piece (an outline and its holes, non-zero), best
+/// first: the middles of the spans 15 rows across it cover, widest first.
+std::vector<InsidePoint> inside_points(const Paths& piece);
+
+/// @p a minus @p b (both non-zero; @p a alone, normalized, when @p b is
+/// empty) as a tree of outlines and holes.
+void difference_tree(const Paths& a, const Paths& b, ClipperLib::PolyTree& out);
+
+/// The pieces of a normalized polygon set: each outline with its holes.
+std::vector<Paths> pieces_of(const ClipperLib::PolyTree& tree);
 
 } // namespace snaxels::clip

@@ -1,0 +1,136 @@
+// What the snaxel-defined map leaves uncovered of large faces that are
+// partly hidden (see fill_snaxel_map_gaps in planar_map.h).
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <map>
+
+#include "snaxels/planarmap/detail/clip.h"
+#include "snaxels/planarmap/planar_map.h"
+#include "snaxels/visibility/visibility.h"
+
+namespace snaxels {
+
+namespace {
+
+/// Faces smaller than this in the image (square pixels) leave no gap worth
+/// filling: a dense mesh's occlusion fronts cut them within a pixel.
+constexpr double kGapFacePixels = 16.0;
+/// Pieces of the gap thinner than this (pixels, across) are the seams
+/// between a region's outline and a face's edge, not surface left out.
+constexpr double kGapWidth = 0.5;
+
+} // namespace
+
+void fill_snaxel_map_gaps(PlanarMap& map, const SnaxelEngine& engine, const SnaxelMapInput& input, const RayScene& rays,
+                          const ImageProjection& projection, const Camera& camera, const Light& light) {
+    const MeshTopology& topo = engine.topology();
+    if (map.vertex_region.size() != topo.n_vertices()) return;
+    // The faces that can show where no region reaches: turned to the
+    // viewer and large in the image (where something hides part of one,
+    // a region's front stops on the face's edges, and between those stops
+    // it cuts straight across the face, not along the outline of what
+    // hides the rest).
+    ClipperLib::Paths faces;
+    clip::Box reach;
+    for (const FaceId f : topo.faces()) {
+        const auto& fv = topo.face_vertices()[f];
+        const glm::dvec3 &a = topo.positions()[fv[0]], &b = topo.positions()[fv[1]], &c = topo.positions()[fv[2]];
+        if (glm::dot(glm::cross(b - a, c - a), camera.to_viewer((a + b + c) / 3.0)) <= 0.0) continue;
+        if (topo.has_strips() && !face_has_area(topo, f)) continue;
+        const glm::dvec2 pa = projection.project(a), pb = projection.project(b), pc = projection.project(c);
+        const double pixels = 0.5 * std::abs((pb.x - pa.x) * (pc.y - pa.y) - (pc.x - pa.x) * (pb.y - pa.y));
+        if (pixels < kGapFacePixels) continue;
+        ClipperLib::Path tri;
+        for (const glm::dvec2& q : {pa, pb, pc})
+            tri.push_back({ClipperLib::cInt(std::llround(q.x * clip::kScale)), ClipperLib::cInt(std::llround(q.y * clip::kScale))});
+        reach.add(tri);
+        faces.push_back(std::move(tri));
+    }
+    if (faces.empty()) return;
+    // What of them no region covers.
+    ClipperLib::Paths covered;
+    for (const MapRegion& region : map.regions) {
+        for (ClipperLib::Path& path : clip::to_paths(region.polygons)) {
+            clip::Box box;
+            box.add(path);
+            if (box.meets(reach)) covered.push_back(std::move(path));
+        }
+    }
+    ClipperLib::PolyTree tree;
+    clip::difference_tree(faces, covered, tree);
+    // Each piece is the surface seen through it: the class the rays through
+    // its inside points find over most of the spans' width, by the shading
+    // at the hit (the normalized interpolated normal, as the contours
+    // follow it). It joins the region of that class one of the hit face's
+    // corners is in, or becomes a region of its own.
+    const ShadingClasses classes = shading_classes(input);
+    std::vector<double> bands, highlights;
+    for (const ContourResult* iso : input.isophotes) bands.push_back(iso->spec.k);
+    for (const ContourResult* gleam : input.gleams) highlights.push_back(gleam->spec.k);
+    const double back = 4.0 * bounding_radius(topo) + 1.0;
+    int deepest = 0;
+    for (const MapRegion& region : map.regions) deepest = std::max(deepest, region.depth);
+    for (const ClipperLib::Paths& piece : clip::pieces_of(tree)) {
+        // Seams between a region's outline and a face's edge are left out:
+        // pieces under a pixel, or thinner than kGapWidth (twice the area
+        // over the perimeter is a strip's width).
+        const double pixels = clip::area(piece);
+        double perimeter = 0.0;
+        for (const ClipperLib::Path& path : piece)
+            for (std::size_t i = 0; i < path.size(); ++i) {
+                const auto& p = path[i];
+                const auto& q = path[(i + 1) % path.size()];
+                perimeter += std::hypot(double(q.X - p.X), double(q.Y - p.Y)) / clip::kScale;
+            }
+        if (pixels < 1.0 || 2.0 * pixels < kGapWidth * perimeter) continue;
+        std::map<int, std::pair<double, FaceId>> votes; // class: width, a face seen
+        for (const clip::InsidePoint& point : clip::inside_points(piece)) {
+            VisibilityRay ray;
+            projection.pixel_ray(point.at, back, ray.origin, ray.dir);
+            ray.tfar = std::numeric_limits<double>::infinity();
+            const RayHit hit = rays.nearest(ray);
+            if (!hit.hit()) continue;
+            const auto& fv = topo.face_vertices()[hit.face];
+            const double w0 = 1.0 - hit.u - hit.v;
+            const glm::dvec3 p = w0 * topo.positions()[fv[0]] + hit.u * topo.positions()[fv[1]] + hit.v * topo.positions()[fv[2]];
+            glm::dvec3 n = w0 * topo.normals()[fv[0]] + hit.u * topo.normals()[fv[1]] + hit.v * topo.normals()[fv[2]];
+            if (const double len = glm::length(n); len > 0.0) n /= len;
+            const glm::dvec3 l = light.to_light(p);
+            const double nl = glm::dot(n, l);
+            const double rv = glm::dot(camera.to_viewer(p), 2.0 * nl * n - l);
+            const int cls = classes.classify(nl < 0.0, [&](int b) { return nl >= bands[std::size_t(b)]; },
+                                             [&](int h) { return rv >= highlights[std::size_t(h)]; });
+            auto& vote = votes.try_emplace(cls, 0.0, hit.face).first->second;
+            vote.first += point.width;
+        }
+        if (votes.empty()) continue;
+        const auto best = std::max_element(votes.begin(), votes.end(),
+                                           [](const auto& a, const auto& b) { return a.second.first < b.second.first; });
+        const int cls = best->first;
+        const RegionClass region_class = classes.region_class(cls);
+        const double level = classes.level(cls);
+        std::int32_t into = -1;
+        for (const VertexId v : topo.face_vertices()[best->second.second]) {
+            const std::int32_t r = map.vertex_region[v];
+            if (r >= 0 && map.regions[std::size_t(r)].cls == region_class && map.regions[std::size_t(r)].k == level) into = r;
+        }
+        if (into >= 0) {
+            MapRegion& region = map.regions[std::size_t(into)];
+            const ClipperLib::Paths joined = clip::op(clip::to_paths(region.polygons), piece, ClipperLib::ctUnion);
+            region.polygons = clip::from_paths(joined);
+            region.area = clip::area(joined);
+        } else {
+            MapRegion region;
+            region.cls = region_class;
+            region.k = level;
+            region.depth = deepest + 1;
+            region.polygons = clip::from_paths(piece);
+            region.area = clip::area(piece);
+            map.regions.push_back(std::move(region));
+        }
+    }
+}
+
+} // namespace snaxels
