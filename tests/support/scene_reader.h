@@ -250,7 +250,9 @@ inline SceneMesh read_collada(const std::string& path) {
                                                            : std::vector<double>(indices.size() / (3 * corner), 3.0),
                                      indices});
                 }
-                for (const auto& [counts, p] : lists) {
+                for (const auto& list : lists) {
+                    const std::vector<double>& counts = list.first;
+                    const std::vector<double>& p = list.second; // (a lambda below reads it: no structured binding)
                     std::size_t first = 0;
                     for (const double count : counts) {
                         const auto corners = std::size_t(count);
