@@ -64,6 +64,7 @@ nlohmann::json contours_to_json(const MeshReport& mesh, const Camera& camera, co
                                   {"stats", stats_json(r.stats)}};
         if (!c.spec.parts.objects.empty()) contour["object"] = c.spec.parts.objects;
         if (!c.spec.parts.materials.empty()) contour["material"] = c.spec.parts.materials;
+        if (c.spec.parts.over_objects) contour["over"] = "objects";
         contours.push_back(std::move(contour));
         total.seeds += r.stats.seeds;
         total.iterations += r.stats.iterations;

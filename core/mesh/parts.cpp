@@ -54,6 +54,7 @@ std::string PartSelector::text() const {
     std::string out;
     if (!objects.empty()) out += "object=" + joined(objects);
     if (!materials.empty()) out += std::string(out.empty() ? "" : " ") + "material=" + joined(materials);
+    if (over_objects) out += std::string(out.empty() ? "" : " ") + "over=objects";
     return out;
 }
 

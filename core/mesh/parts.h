@@ -42,9 +42,14 @@ std::shared_ptr<const FaceParts> loaded_parts(const LoadedMesh& mesh);
 /// Empty lists select every face.
 struct PartSelector {
     std::vector<std::string> objects, materials;
+    /// A visual contour's stretches where it lies over another object in
+    /// the image (what lies just past its silhouette is another object):
+    /// the outline of each object against the others, not against the
+    /// background or itself.
+    bool over_objects = false;
 
-    bool empty() const { return objects.empty() && materials.empty(); }
-    /// "object=A,B material=!C" (the lists that are not empty), or "".
+    bool empty() const { return objects.empty() && materials.empty() && !over_objects; }
+    /// "object=A,B material=!C over=objects" (what is set), or "".
     std::string text() const;
     bool operator==(const PartSelector&) const = default;
 };

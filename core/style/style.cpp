@@ -54,7 +54,8 @@ const std::vector<StyleElement>& style_vocabulary() {
               {"min-derivative", {}, "the least derivative of kappa_r along the view that is drawn"},
               {"min-angle", {}, "parts where the surface faces the viewer within this angle of its normal are left out"},
               {"object", {}, "draws the line only on the objects these patterns select"},
-              {"material", {}, "draws the line only on the materials these patterns select"}}},
+              {"material", {}, "draws the line only on the materials these patterns select"},
+              {"over", {"objects"}, "draws a visual contour only where it lies over another object in the image"}}},
             {"object",
              "how the scene's objects are drawn",
              {{"name", {}, "the objects it sets: a pattern matched against their names and paths"},
@@ -359,6 +360,10 @@ struct Parser {
                     fail(child, "kind=\"" + kind + "\" must be " + kinds);
                 }
                 spec.parts = selector(child, style);
+                if (child.attribute("over")) {
+                    if (kind != "visual") fail(child, "only a visual contour takes over=\"objects\"");
+                    spec.parts.over_objects = choice(child, "over", "objects") == "objects";
+                }
                 for (const ContourStyle& existing : style.contours)
                     if (existing.spec.label() == spec.label()) fail(child, "a second <contour> for " + spec.label());
                 ContourStyle cs = default_contour_style(spec);

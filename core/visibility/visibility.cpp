@@ -202,12 +202,51 @@ glm::dvec3 margin_zero(const SnaxelEngine& engine, const ContourResult& contour,
 
 } // namespace
 
+std::vector<std::uint8_t> VisibilitySampler::over_other_objects(const SnaxelEngine& engine,
+                                                                const ContourResult& contour) const {
+    const Fronts& fronts = contour.fronts;
+    const MeshTopology& topo = scene_.topology();
+    std::vector<std::uint8_t> out(fronts.snaxels.size(), 0);
+    const FaceParts* parts = topo.parts();
+    if (!parts || parts->objects.size() < 2 || parts->object.size() != topo.n_faces()) return out;
+    const double radius = bounding_radius(topo), step = kOverObjectsStep * radius, reach = 4.0 * radius + 1.0;
+    parallel_for(fronts.snaxels.size(), [&](std::size_t i) {
+        const Snaxel& s = fronts.snaxels[i];
+        FaceId own = MeshTopology::kNone;
+        for (const FaceId f : topo.edge_faces()[s.edge])
+            if (f.valid()) own = f;
+        if (!own.valid()) return;
+        const glm::dvec3 p = engine.position(s);
+        const glm::dvec3 v = camera_.to_viewer(p);
+        // Across the contour in the image plane, away from the surface.
+        glm::dvec3 across = engine.normal(s) - glm::dot(engine.normal(s), v) * v;
+        const double len = glm::length(across);
+        if (!(len > 0.0)) return;
+        // The ray through that image point from in front of everything: a
+        // surface just past the outline may lie nearer than the contour
+        // (the floor in front of a box's bottom edge).
+        const glm::dvec3 q = p + step * across / len;
+        VisibilityRay ray;
+        ray.origin = camera_.orthographic() ? q + reach * camera_.to_viewer(q) : camera_.eye;
+        ray.dir = -camera_.to_viewer(q);
+        ray.tfar = std::numeric_limits<double>::infinity();
+        const RayHit hit = scene_.nearest(ray);
+        out[i] = hit.hit() && parts->object[hit.face] != parts->object[own];
+    }, 256);
+    return out;
+}
+
 ContourVisibility VisibilitySampler::classify(const SnaxelEngine& engine,
                                               const ContourResult& contour) const {
     const Fronts& fronts = contour.fronts;
     const MeshTopology& topo = scene_.topology();
     const bool margins = !contour.snaxel_margin.empty();
-    const std::vector<std::uint8_t> selected = selected_stretches(topo, contour);
+    std::vector<std::uint8_t> selected = selected_stretches(topo, contour);
+    if (contour.spec.parts.over_objects) {
+        const std::vector<std::uint8_t> over = over_other_objects(engine, contour);
+        if (selected.empty()) selected.assign(over.size(), 1);
+        for (std::size_t i = 0; i < over.size(); ++i) selected[i] = selected[i] && over[i];
+    }
     std::vector<int> snaxel_qi(fronts.snaxels.size());
     parallel_for(fronts.snaxels.size(), [&](std::size_t i) {
         const Snaxel& s = fronts.snaxels[i];
@@ -240,7 +279,8 @@ ContourVisibility VisibilitySampler::classify(const SnaxelEngine& engine,
 }
 
 ContourVisibility drawn_parts(const SnaxelEngine& engine, const ContourResult& contour) {
-    const std::vector<std::uint8_t> selected = selected_stretches(engine.topology(), contour);
+    std::vector<std::uint8_t> selected = selected_stretches(engine.topology(), contour);
+    if (contour.spec.parts.over_objects) selected.assign(contour.fronts.snaxels.size(), 0); // needs the rays
     const bool margins = !contour.snaxel_margin.empty();
     if (!margins && selected.empty()) return {};
     std::vector<int> cls(contour.fronts.snaxels.size());

@@ -77,6 +77,14 @@ class VisibilitySampler {
     /// (selected_stretches), cut where the part changes.
     ContourVisibility classify(const SnaxelEngine& engine, const ContourResult& contour) const;
 
+    /// Per snaxel of a visual contour: whether it lies over another object
+    /// in the image (PartSelector::over_objects): the surface seen just
+    /// outside it (the nearest on the viewer's ray through a point
+    /// kOverObjectsStep of the mesh's bounding radius across the contour in
+    /// the image plane) belongs to an object other than its own. All false
+    /// on a mesh of one object.
+    std::vector<std::uint8_t> over_other_objects(const SnaxelEngine& engine, const ContourResult& contour) const;
+
   private:
     VisibilityRay make_ray(const glm::dvec3& p, const glm::dvec3& n, double scale) const;
 
@@ -85,10 +93,16 @@ class VisibilitySampler {
     VisibilityOptions options_;
 };
 
+/// How far past a silhouette over_other_objects looks, as a fraction of
+/// the mesh's bounding radius (about a pixel and a half when the mesh
+/// fills an 800-pixel canvas).
+inline constexpr double kOverObjectsStep = 0.004;
+
 /// Without hidden lines: the loops of a contour that leaves parts out
 /// (snaxel_margin, or a part selector) cut into drawn runs (QI 0) and
 /// kNotDrawn ones, as classify() cuts them; empty (every loop drawn whole)
-/// for the others.
+/// for the others. A contour drawn only over other objects needs the rays
+/// classify() casts: without them none of it is drawn.
 ContourVisibility drawn_parts(const SnaxelEngine& engine, const ContourResult& contour);
 
 /// Per snaxel of @p contour: whether the stretch of its loop from it to the

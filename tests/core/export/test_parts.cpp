@@ -21,6 +21,7 @@
 #include <map>
 #include <optional>
 #include <random>
+#include <set>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -433,6 +434,123 @@ TEST(Parts, MaterialLinesLieOnTheMaterialBoundaries) {
         EXPECT_EQ(off, 0u) << name;
         EXPECT_GT(seen, 50u) << name;
         EXPECT_LE(double(missed), 0.01 * double(seen)) << name;
+    }
+}
+
+/// The oracle's own z-buffer of which object each pixel shows (-1: none).
+std::vector<int> object_image(const OracleScene& s, const OracleView& v) {
+    std::map<std::string, int> ids;
+    std::vector<int> object(std::size_t(kSize) * kSize, -1);
+    std::vector<double> depth(object.size(), std::numeric_limits<double>::infinity());
+    for (std::size_t f = 0; f < s.mesh.faces.size(); ++f) {
+        const int id = ids.emplace(s.mesh.face_object[f], int(ids.size())).first->second;
+        const auto& t = s.mesh.faces[f];
+        const glm::dvec3 &a = s.mesh.positions[std::size_t(t[0])], &b = s.mesh.positions[std::size_t(t[1])],
+                         &c = s.mesh.positions[std::size_t(t[2])];
+        const double da = glm::dot(a, v.fwd), db = glm::dot(b, v.fwd), dc = glm::dot(c, v.fwd);
+        ref::for_each_pixel_in(v.project(a), v.project(b), v.project(c), kSize, kSize,
+                               [&](int x, int y, double wa, double wb, double wc) {
+                                   const std::size_t at = std::size_t(y) * kSize + std::size_t(x);
+                                   const double d = wa * da + wb * db + wc * dc;
+                                   if (d < depth[at]) depth[at] = d, object[at] = id;
+                               });
+    }
+    return object;
+}
+
+// The outline of each object against the others (over="objects"): every
+// visible stroke point lies where two objects meet in the oracle's image
+// (pixels of two objects within 3 px), so nothing is drawn against the
+// background or an object's own body; and where two objects meet in the
+// image (a pixel of one beside a pixel of another) and the visual contour
+// passes (within 2.5 px), the selected stretches pass too.
+TEST(Parts, ObjectOutlinesLieWhereObjectsMeetInTheImage) {
+    for (const std::string name : {"parts/parts.dae", "hard/CesiumMilkTruck.gltf"}) {
+        const std::string file = asset(name);
+        const OracleScene scene = read_scene(file);
+        std::size_t points = 0, alone = 0, meeting = 0, missed = 0, views = 0;
+        for (const glm::dvec3& dir : view_dirs()) {
+            // From above, as a scene is seen (from under the parts scene's
+            // floor its edge, a border, is the outline over the objects:
+            // kind="border" draws it).
+            if (dir.y >= 0.0) continue;
+            ++views;
+            const OracleView view(dir, scene);
+            const std::vector<int> object = object_image(scene, view);
+            const StillOutput out =
+                product_still(file, "<style><contour kind=\"visual\" over=\"objects\"><hidden draw=\"false\"/></contour></style>", dir);
+            // Where the whole visual contour passes (the line the selector
+            // takes its stretches from).
+            const StillOutput whole = product_still(file, "<style><contour kind=\"visual\"/></style>", dir);
+            std::vector<std::uint8_t> near_stroke(object.size(), 0), near_contour(object.size(), 0);
+            auto mark = [&](std::vector<std::uint8_t>& mask, const glm::dvec2& q) {
+                const int x = int(std::floor(q.x)), y = int(std::floor(q.y));
+                for (int dy = -3; dy <= 3; ++dy)
+                    for (int dx = -3; dx <= 3; ++dx)
+                        if (x + dx >= 0 && y + dy >= 0 && x + dx < kSize && y + dy < kSize &&
+                            glm::length(glm::dvec2(x + dx + 0.5, y + dy + 0.5) - q) <= 2.5)
+                            mask[std::size_t(y + dy) * kSize + std::size_t(x + dx)] = 1;
+            };
+            for (const DrawnContour& contour : whole.drawing.contours)
+                for (const DrawnLoop& loop : contour.loops)
+                    for (const DrawnRun& run : loop.runs)
+                        if (run.qi != kNotDrawn)
+                            for (const glm::dvec2& q : dense(run.q, run.closed)) mark(near_contour, q);
+            auto at = [&](int x, int y) { return x >= 0 && y >= 0 && x < kSize && y < kSize ? object[std::size_t(y) * kSize + std::size_t(x)] : -1; };
+            for (const DrawnContour& contour : out.drawing.contours)
+                for (const DrawnLoop& loop : contour.loops)
+                    for (const DrawnRun& run : loop.runs) {
+                        if (run.qi == kNotDrawn) continue;
+                        for (const glm::dvec2& q : dense(run.q, run.closed)) {
+                            // Hidden stretches count where two objects meet
+                            // (an outline resting on a floor, in contact with
+                            // it, is judged hidden by it); only visible ones
+                            // must lie where two objects meet.
+                            const int x = int(std::floor(q.x)), y = int(std::floor(q.y));
+                            if (run.qi == 0) {
+                                ++points;
+                                std::set<int> seen;
+                                for (int dy = -3; dy <= 3; ++dy)
+                                    for (int dx = -3; dx <= 3; ++dx)
+                                        if (const int o = at(x + dx, y + dy); o >= 0) seen.insert(o);
+                                alone += seen.size() < 2;
+                            }
+                            mark(near_stroke, q);
+                        }
+                    }
+            std::vector<unsigned char> debug(object.size() * 3, 0);
+            for (std::size_t i = 0; i < object.size(); ++i)
+                if (object[i] >= 0) debug[3 * i] = debug[3 * i + 1] = debug[3 * i + 2] = (unsigned char)(60 + 40 * object[i]);
+            for (int y = 1; y + 1 < kSize; ++y)
+                for (int x = 1; x + 1 < kSize; ++x) {
+                    const int o = at(x, y);
+                    if (o < 0) continue;
+                    bool meets = false;
+                    for (const auto& [dx, dy] : {std::pair{1, 0}, std::pair{-1, 0}, std::pair{0, 1}, std::pair{0, -1}})
+                        meets = meets || (at(x + dx, y + dy) >= 0 && at(x + dx, y + dy) != o);
+                    if (!meets || !near_contour[std::size_t(y) * kSize + std::size_t(x)]) continue;
+                    ++meeting;
+                    const bool miss = !near_stroke[std::size_t(y) * kSize + std::size_t(x)];
+                    missed += miss;
+                    unsigned char* px = &debug[3 * (std::size_t(y) * kSize + std::size_t(x))];
+                    px[0] = miss ? 255 : 0, px[1] = miss ? 0 : 255, px[2] = 0;
+                }
+            if (const char* dir_out = getenv("SNAXELS_DEBUG_PARTS_DIR")) {
+                static int n = 0;
+                FILE* f = std::fopen((std::string(dir_out) + "/over-" + std::to_string(n++) + ".ppm").c_str(), "wb");
+                std::fprintf(f, "P6 %d %d 255\n", kSize, kSize);
+                std::fwrite(debug.data(), 1, debug.size(), f);
+                std::fclose(f);
+            }
+        }
+        std::printf("%s, %zu views: %zu visible stroke points, %zu without two objects within 3 px; %zu pixels where two "
+                    "objects meet by the visual contour, %zu without a stroke of the line set within 2.5 px\n",
+                    name.c_str(), views, points, alone, meeting, missed);
+        EXPECT_GE(views, 3u) << name;
+        EXPECT_GT(points, 500u) << name;
+        EXPECT_LE(double(alone), 0.01 * double(points)) << name;
+        EXPECT_GT(meeting, 500u) << name;
+        EXPECT_LE(double(missed), 0.03 * double(meeting)) << name;
     }
 }
 

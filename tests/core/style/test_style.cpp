@@ -92,6 +92,10 @@ TEST(Style, ErrorsNameLineAndColumn) {
               std::string::npos);
     EXPECT_NE(error_of("<style><contour kind=\"border\" min-length=\"2\"/></style>").message.find("min-length"),
               std::string::npos);
+    EXPECT_NE(error_of("<style><contour kind=\"shadow\" over=\"objects\"/></style>").message.find("only a visual contour takes over"),
+              std::string::npos);
+    EXPECT_NE(error_of("<style><contour kind=\"visual\" over=\"things\"/></style>").message.find("over=\"things\""),
+              std::string::npos);
     EXPECT_NE(error_of("<styles/>").message.find("root element must be <style>"), std::string::npos);
     EXPECT_NE(error_of("<style><canvas margin=\"500\"/></style>").message.find("no room"), std::string::npos);
     d = error_of("<style>\n<canvas");
