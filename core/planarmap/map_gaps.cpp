@@ -66,9 +66,6 @@ void fill_snaxel_map_gaps(PlanarMap& map, const SnaxelEngine& engine, const Snax
     // follow it). It joins the region of that class one of the hit face's
     // corners is in, or becomes a region of its own.
     const ShadingClasses classes = shading_classes(input);
-    std::vector<double> bands, highlights;
-    for (const ContourResult* iso : input.isophotes) bands.push_back(iso->spec.k);
-    for (const ContourResult* gleam : input.gleams) highlights.push_back(gleam->spec.k);
     const double back = 4.0 * bounding_radius(topo) + 1.0;
     int deepest = 0;
     for (const MapRegion& region : map.regions) deepest = std::max(deepest, region.depth);
@@ -100,8 +97,8 @@ void fill_snaxel_map_gaps(PlanarMap& map, const SnaxelEngine& engine, const Snax
             const glm::dvec3 l = light.to_light(p);
             const double nl = glm::dot(n, l);
             const double rv = glm::dot(camera.to_viewer(p), 2.0 * nl * n - l);
-            const int cls = classes.classify(nl < 0.0, [&](int b) { return nl >= bands[std::size_t(b)]; },
-                                             [&](int h) { return rv >= highlights[std::size_t(h)]; });
+            const int cls = classes.classify(nl < 0.0, [&](int b) { return nl >= classes.level(2 + b); },
+                                             [&](int h) { return rv >= classes.level(classes.first_highlight() + h); });
             auto& vote = votes.try_emplace(cls, 0.0, hit.face).first->second;
             vote.first += point.width;
         }
@@ -114,10 +111,10 @@ void fill_snaxel_map_gaps(PlanarMap& map, const SnaxelEngine& engine, const Snax
         std::int32_t into = -1;
         for (const VertexId v : topo.face_vertices()[best->second.second]) {
             const std::int32_t r = map.vertex_region[v];
-            if (r >= 0 && map.regions[std::size_t(r)].cls == region_class && map.regions[std::size_t(r)].k == level) into = r;
+            if (r >= 0 && map.regions[r].cls == region_class && map.regions[r].k == level) into = r;
         }
         if (into >= 0) {
-            MapRegion& region = map.regions[std::size_t(into)];
+            MapRegion& region = map.regions[into];
             const ClipperLib::Paths joined = clip::op(clip::to_paths(region.polygons), piece, ClipperLib::ctUnion);
             region.polygons = clip::from_paths(joined);
             region.area = clip::area(joined);

@@ -249,7 +249,7 @@ class PostMapBuilder {
         for (int cls = 0; cls < count_; ++cls)
             front_.insert(front_.end(), outlines[cls].begin(), outlines[cls].end());
         front_ = clip::op(front_, {}, ClipperLib::ctUnion);
-        shown_class_.resize(std::size_t(count_));
+        shown_class_.resize(outlines.size() / 2);
         for (int cls = 0; cls < count_; ++cls) {
             const Paths& behind = outlines[count_ + cls];
             shown_class_[cls] =

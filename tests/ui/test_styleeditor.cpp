@@ -44,7 +44,7 @@ class TestStyleEditor : public QObject {
         const StyleCompletion attribute = at_end("<contour ");
         QCOMPARE(attribute.kind, StyleCompletion::Kind::Attribute);
         QCOMPARE(attribute.prefix, QString());
-        QCOMPARE(attribute.candidates, (QStringList{"kind", "k", "angle", "min-length", "min-derivative", "min-angle", "object", "material"}));
+        QCOMPARE(attribute.candidates, (QStringList{"kind", "k", "angle", "min-length", "min-derivative", "min-angle", "object", "material", "over"}));
         // Those already written are not offered again.
         const StyleCompletion rest = at_end("<contour kind=\"suggestive\" min-d");
         QCOMPARE(rest.kind, StyleCompletion::Kind::Attribute);
@@ -82,6 +82,7 @@ class TestStyleEditor : public QObject {
                     QString attrs = QString("%1=\"%2\"").arg(QString::fromStdString(a.name), QString::fromStdString(word));
                     if (e.name == "region" && a.name == "class" && (word == "band" || word == "highlight")) attrs += " k=\"0.5\"";
                     if (e.name == "contour" && a.name == "kind" && (word == "isophote" || word == "gleam")) attrs += " k=\"0.5\"";
+                    if (e.name == "contour" && a.name == "over") attrs += " kind=\"visual\"";
                     if (e.name == "object" && a.name != "name") attrs += " name=\"Ground\"";
                     if (e.name == "region" && a.name != "class") attrs += " class=\"lit\"";
                     const QString inner = QString("<%1 %2/>").arg(QString::fromStdString(e.name), attrs);
@@ -127,7 +128,7 @@ class TestStyleEditor : public QObject {
         QTest::keyClicks(edit, " ");
         QTest::keyClick(edit, Qt::Key_Space, Qt::ControlModifier);
         QVERIFY(editor.completer()->popup()->isVisible());
-        QCOMPARE(editor.completer()->completionCount(), 6); // k, angle, min-length, min-angle, object, material
+        QCOMPARE(editor.completer()->completionCount(), 7); // k, angle, min-length, min-angle, object, material, over
         QTest::keyClick(editor.completer()->popup(), Qt::Key_Escape);
     }
 
