@@ -108,10 +108,27 @@ void fill_snaxel_map_gaps(PlanarMap& map, const SnaxelEngine& engine, const Snax
         const int cls = best->first;
         const RegionClass region_class = classes.region_class(cls);
         const double level = classes.level(cls);
+        // The region of that class nearest on the mesh: at the hit face's
+        // corners, else within two rings of them (a piece beside an
+        // occluder can lie in a face whose corners are all hidden). Joined
+        // to it, the piece keeps the region's identity through animation.
         std::int32_t into = -1;
-        for (const VertexId v : topo.face_vertices()[best->second.second]) {
-            const std::int32_t r = map.vertex_region[v];
-            if (r >= 0 && map.regions[r].cls == region_class && map.regions[r].k == level) into = r;
+        std::vector<VertexId> ring(topo.face_vertices()[best->second.second].begin(),
+                                   topo.face_vertices()[best->second.second].end());
+        std::vector<VertexId> seen = ring;
+        for (int rings = 0; rings <= 2 && into < 0; ++rings) {
+            for (const VertexId v : ring) {
+                const std::int32_t r = map.vertex_region[v];
+                if (r >= 0 && map.regions[r].cls == region_class && map.regions[r].k == level) {
+                    into = r;
+                    break;
+                }
+            }
+            std::vector<VertexId> next;
+            for (const VertexId v : ring)
+                for (const VertexId w : topo.neighbours(v))
+                    if (std::find(seen.begin(), seen.end(), w) == seen.end()) seen.push_back(w), next.push_back(w);
+            ring = std::move(next);
         }
         if (into >= 0) {
             MapRegion& region = map.regions[into];
@@ -125,6 +142,11 @@ void fill_snaxel_map_gaps(PlanarMap& map, const SnaxelEngine& engine, const Snax
             region.depth = deepest + 1;
             region.polygons = clip::from_paths(piece);
             region.area = clip::area(piece);
+            // The hit face's corners no region holds go with it, so that the
+            // region tracker (which follows regions by their vertices) finds
+            // it again in the next frame.
+            for (const VertexId v : topo.face_vertices()[best->second.second])
+                if (map.vertex_region[v] < 0) map.vertex_region[v] = std::int32_t(map.regions.size());
             map.regions.push_back(std::move(region));
         }
     }
