@@ -236,6 +236,31 @@ std::vector<std::uint8_t> VisibilitySampler::over_other_objects(const SnaxelEngi
     return out;
 }
 
+int VisibilitySampler::contact_qi(const VisibilityRay& ray, const glm::dvec3& p, std::int64_t object) const {
+    const int q = qi(ray);
+    if (q == 0 || object < 0) return q;
+    const MeshTopology& topo = scene_.topology();
+    const RayHit hit = scene_.nearest(ray);
+    const double offset = glm::length(ray.origin - p);
+    if (!hit.hit() || !(offset > 0.0) || std::int64_t(topo.parts()->object[hit.face]) == object) return q;
+    const auto& fv = topo.face_vertices()[hit.face];
+    const glm::dvec3 a = topo.positions()[fv[0]];
+    glm::dvec3 normal = glm::cross(topo.positions()[fv[1]] - a, topo.positions()[fv[2]] - a);
+    const double len = glm::length(normal);
+    if (!(len > 0.0)) return q;
+    normal /= len;
+    const glm::dvec3 at = ray.origin + hit.t * ray.dir;
+    // The crossing's surface passes through p, near p: a contact.
+    if (std::abs(glm::dot(p - a, normal)) > 0.05 * offset || glm::length(at - p) > 10.0 * offset) return q;
+    VisibilityRay lifted = ray;
+    lifted.origin = p + offset * camera_.to_viewer(p);
+    if (!camera_.orthographic()) {
+        lifted.tfar = glm::length(camera_.eye - lifted.origin);
+        lifted.dir = lifted.tfar > 0.0 ? (camera_.eye - lifted.origin) / lifted.tfar : ray.dir;
+    }
+    return qi(lifted);
+}
+
 ContourVisibility VisibilitySampler::classify(const SnaxelEngine& engine,
                                               const ContourResult& contour) const {
     const Fronts& fronts = contour.fronts;
@@ -247,12 +272,24 @@ ContourVisibility VisibilitySampler::classify(const SnaxelEngine& engine,
         if (selected.empty()) selected.assign(over.size(), 1);
         for (std::size_t i = 0; i < over.size(); ++i) selected[i] = selected[i] && over[i];
     }
+    // On a scene of several objects, the object each snaxel lies on (a
+    // contact with another object is told apart: contact_qi).
+    const FaceParts* parts = topo.parts();
+    const bool objects = parts && parts->objects.size() > 1 && parts->object.size() == topo.n_faces();
+    auto object_of = [&](FaceId f) { return objects && f.valid() ? std::int64_t(parts->object[f]) : std::int64_t(-1); };
+    auto snaxel_object = [&](const Snaxel& s) {
+        std::int64_t o = -1;
+        for (const FaceId f : topo.edge_faces()[s.edge])
+            if (f.valid()) o = object_of(f);
+        return o;
+    };
     std::vector<int> snaxel_qi(fronts.snaxels.size());
     parallel_for(fronts.snaxels.size(), [&](std::size_t i) {
         const Snaxel& s = fronts.snaxels[i];
+        const glm::dvec3 p = engine.position(s);
         snaxel_qi[i] = (margins && contour.snaxel_margin[i] < 0.0) || (!selected.empty() && !selected[i])
                            ? kNotDrawn
-                           : qi(snaxel_ray(s, engine.position(s), engine.normal(s)));
+                           : contact_qi(snaxel_ray(s, p, engine.normal(s)), p, snaxel_object(s));
     });
 
     // The point where QI stops being `from` between snaxels a and b.
@@ -269,7 +306,8 @@ ContourVisibility VisibilitySampler::classify(const SnaxelEngine& engine,
         for (int step = 0; step < options_.bisection_steps && face != MeshTopology::kNone; ++step) {
             const double mid = 0.5 * (lo + hi);
             const glm::dvec3 n = glm::normalize((1.0 - mid) * na + mid * nb);
-            if (qi(face_ray(face, (1.0 - mid) * pa + mid * pb, n)) == from) lo = mid;
+            const glm::dvec3 p = (1.0 - mid) * pa + mid * pb;
+            if (contact_qi(face_ray(face, p, n), p, object_of(face)) == from) lo = mid;
             else hi = mid;
         }
         const double u = 0.5 * (lo + hi);

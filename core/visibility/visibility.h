@@ -87,6 +87,13 @@ class VisibilitySampler {
 
   private:
     VisibilityRay make_ray(const glm::dvec3& p, const glm::dvec3& n, double scale) const;
+    /// QI along @p ray, cast for point @p p of a face of @p object (-1: a
+    /// mesh of one object). Where the ray's start, off the surface, went
+    /// through another object's surface that passes through p itself (a
+    /// box's bottom edge resting on a floor: its outline runs along the
+    /// floor, and the offset dips under it), that surface does not hide p:
+    /// QI from as far off toward the viewer instead.
+    int contact_qi(const VisibilityRay& ray, const glm::dvec3& p, std::int64_t object) const;
 
     const RayScene& scene_;
     Camera camera_;
