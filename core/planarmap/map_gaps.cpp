@@ -8,6 +8,7 @@
 
 #include "snaxels/planarmap/detail/clip.h"
 #include "snaxels/planarmap/planar_map.h"
+#include "snaxels/util/detail/parallel.h"
 #include "snaxels/visibility/visibility.h"
 
 namespace snaxels {
@@ -32,23 +33,29 @@ void fill_snaxel_map_gaps(PlanarMap& map, const SnaxelEngine& engine, const Snax
     // a region's front stops on the face's edges, and between those stops
     // it cuts straight across the face, not along the outline of what
     // hides the rest).
-    ClipperLib::Paths faces;
-    clip::Box reach;
+    // Each vertex projected once; the size test comes first (on a dense
+    // mesh no face passes it).
+    VertexData<glm::dvec2> image(topo.n_vertices());
+    parallel_for(topo.vertices(), [&](VertexId v) { image[v] = projection.project(topo.positions()[v]); }, 4096);
+    // Their union as an outline (faces turned to the viewer all wind one
+    // way in the image: the edges two of them share cancel).
+    clip::Outline outline;
+    bool any = false;
     for (const FaceId f : topo.faces()) {
         const auto& fv = topo.face_vertices()[f];
+        const glm::dvec2 pa = image[fv[0]], pb = image[fv[1]], pc = image[fv[2]];
+        const double pixels = 0.5 * std::abs((pb.x - pa.x) * (pc.y - pa.y) - (pc.x - pa.x) * (pb.y - pa.y));
+        if (pixels < kGapFacePixels) continue;
         const glm::dvec3 &a = topo.positions()[fv[0]], &b = topo.positions()[fv[1]], &c = topo.positions()[fv[2]];
         if (glm::dot(glm::cross(b - a, c - a), camera.to_viewer((a + b + c) / 3.0)) <= 0.0) continue;
         if (topo.has_strips() && !face_has_area(topo, f)) continue;
-        const glm::dvec2 pa = projection.project(a), pb = projection.project(b), pc = projection.project(c);
-        const double pixels = 0.5 * std::abs((pb.x - pa.x) * (pc.y - pa.y) - (pc.x - pa.x) * (pb.y - pa.y));
-        if (pixels < kGapFacePixels) continue;
-        ClipperLib::Path tri;
-        for (const glm::dvec2& q : {pa, pb, pc})
-            tri.push_back({ClipperLib::cInt(std::llround(q.x * clip::kScale)), ClipperLib::cInt(std::llround(q.y * clip::kScale))});
-        reach.add(tri);
-        faces.push_back(std::move(tri));
+        for (std::size_t k = 0; k < 3; ++k) outline.walk(fv[k].index(), fv[(k + 1) % 3].index());
+        any = true;
     }
-    if (faces.empty()) return;
+    if (!any) return;
+    const ClipperLib::Paths faces = outline.paths([&](std::int64_t v) { return image[VertexId(std::int32_t(v))]; });
+    clip::Box reach;
+    for (const ClipperLib::Path& path : faces) reach.add(path);
     // What of them no region covers.
     ClipperLib::Paths covered;
     for (const MapRegion& region : map.regions) {

@@ -47,49 +47,6 @@ std::map<std::int32_t, Paths> regions_by_patch(const SnaxelEngine& engine, const
     return out;
 }
 
-/// The outline of a set of polygons that all wind one way in the image,
-/// walked step by step between point ids: a step walked back along one
-/// already taken cancels it (an edge two pieces of the set share), so what
-/// remains fills (non-zero) as the pieces do, at a fraction of the
-/// clipping cost.
-class Outline {
-  public:
-    void walk(std::int64_t from, std::int64_t to) {
-        const auto back = steps_.find({to, from});
-        if (back != steps_.end()) {
-            if (--back->second == 0) steps_.erase(back);
-        } else {
-            ++steps_[{from, to}];
-        }
-    }
-    /// Chained into closed loops (any pairing where several steps meet
-    /// gives the same winding numbers), each point placed by @p at.
-    template <class At> Paths paths(At&& at) const {
-        std::multimap<std::int64_t, std::int64_t> next;
-        for (const auto& [step, count] : steps_)
-            for (int c = 0; c < count; ++c) next.emplace(step.first, step.second);
-        std::vector<std::vector<glm::dvec2>> loops;
-        while (!next.empty()) {
-            auto it = next.begin();
-            const std::int64_t start = it->first;
-            std::vector<glm::dvec2> loop;
-            std::int64_t v = start;
-            while (it != next.end()) {
-                loop.push_back(at(v));
-                v = it->second;
-                next.erase(it);
-                if (v == start) break;
-                it = next.find(v);
-            }
-            loops.push_back(std::move(loop));
-        }
-        return clip::op(to_paths(loops), {}, ClipperLib::ctUnion);
-    }
-
-  private:
-    std::map<std::pair<std::int64_t, std::int64_t>, int> steps_;
-};
-
 } // namespace
 
 namespace {
@@ -187,7 +144,7 @@ class PostMapBuilder {
     /// The image of a set of faces (those seen from behind walked the way
     /// they wind in the image), as its outline.
     template <class Take> Paths outline_of(Take&& take) const {
-        Outline outline;
+        clip::Outline outline;
         for (const FaceId i : topo_.faces()) {
             if (!take(i)) continue;
             auto f = topo_.face_vertices()[i];
@@ -266,7 +223,7 @@ class PostMapBuilder {
         std::unordered_map<std::int64_t, glm::dvec3> point;
         const auto K = std::int64_t(value_.size());
         std::int64_t inner = edge_point_of(EdgeId(topo_.n_edges()), 0); // ids of cut points inside faces
-        std::vector<Outline> steps(static_cast<std::size_t>(2 * count_));
+        std::vector<clip::Outline> steps(static_cast<std::size_t>(2 * count_));
         auto add_piece = [&](int cls, const std::vector<Corner>& piece) {
             for (std::size_t k = 0; k < piece.size(); ++k) {
                 point.emplace(piece[k].id, piece[k].p);

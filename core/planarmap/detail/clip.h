@@ -3,7 +3,9 @@
 /// (1/1024 pixel): conversions, boolean operations and areas.
 
 #include <algorithm>
+#include <cstdint>
 #include <limits>
+#include <map>
 #include <vector>
 
 #include <glm/glm.hpp>
@@ -49,5 +51,49 @@ void difference_tree(const Paths& a, const Paths& b, ClipperLib::PolyTree& out);
 
 /// The pieces of a normalized polygon set: each outline with its holes.
 std::vector<Paths> pieces_of(const ClipperLib::PolyTree& tree);
+
+/// The outline of a set of polygons that all wind one way in the image,
+/// walked step by step between point ids: a step walked back along one
+/// already taken cancels it (an edge two pieces of the set share), so what
+/// remains fills (non-zero) as the pieces do, at a fraction of the
+/// clipping cost.
+class Outline {
+  public:
+    void walk(std::int64_t from, std::int64_t to) {
+        const auto back = steps_.find({to, from});
+        if (back != steps_.end()) {
+            if (--back->second == 0) steps_.erase(back);
+        } else {
+            ++steps_[{from, to}];
+        }
+    }
+    /// Chained into closed loops (any pairing where several steps meet
+    /// gives the same winding numbers), each point placed by @p at.
+    template <class At> Paths paths(At&& at) const {
+        std::multimap<std::int64_t, std::int64_t> next;
+        for (const auto& [step, count] : steps_)
+            for (int c = 0; c < count; ++c) next.emplace(step.first, step.second);
+        std::vector<std::vector<glm::dvec2>> loops;
+        while (!next.empty()) {
+            auto it = next.begin();
+            const std::int64_t start = it->first;
+            std::vector<glm::dvec2> loop;
+            std::int64_t v = start;
+            while (it != next.end()) {
+                loop.push_back(at(v));
+                v = it->second;
+                next.erase(it);
+                if (v == start) break;
+                it = next.find(v);
+            }
+            loops.push_back(std::move(loop));
+        }
+        return op(to_paths(loops), {}, ClipperLib::ctUnion);
+    }
+
+  private:
+    std::map<std::pair<std::int64_t, std::int64_t>, int> steps_;
+};
+
 
 } // namespace snaxels::clip
