@@ -316,8 +316,9 @@ void MainWindow::askSharpEdges() {
         static const QRegularExpression degrees(QStringLiteral("^\\s*([0-9]+(\\.[0-9]*)?)\\s*°?"));
         // A number first (the choices say what it is after it), 0 to 180.
         const QRegularExpressionMatch m = degrees.match(chosen);
-        const double angle = m.captured(1).toDouble();
-        if (!m.hasMatch() || angle < 0.0 || angle > 180.0) {
+        bool number = false;
+        const double angle = m.hasMatch() ? m.captured(1).toDouble(&number) : -1.0;
+        if (!number || angle < 0.0 || angle > 180.0) {
             QMessageBox::warning(this, tr("Sharp Edges"), tr("'%1' is not an angle from 0 to 180 degrees.").arg(chosen));
             return;
         }

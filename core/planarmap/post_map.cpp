@@ -79,6 +79,15 @@ class PostMapBuilder {
         const double a = area(paths);
         if (a > 0.0) regions_.push_back({classes_.region_class(cls), classes_.level(cls), depth, from_paths(paths), a});
     }
+    /// What of @p paths nothing covers yet joins the map as class @p cls
+    /// (the last stages: shown faces, the silhouette band, partly hidden
+    /// faces), and is covered from then on.
+    void add_uncovered(int cls, const Paths& paths) {
+        if (paths.empty()) return;
+        const Paths rest = clip::op(paths, covered_, ClipperLib::ctDifference);
+        covered_ = clip::op(covered_, paths, ClipperLib::ctUnion);
+        add_region(cls, rest, depth_);
+    }
     bool facing(const std::array<VertexId, 3>& f) const {
         const glm::dvec3 &a = topo_.positions()[f[0]], &b = topo_.positions()[f[1]], &c = topo_.positions()[f[2]];
         return glm::dot(glm::cross(b - a, c - a), camera_.to_viewer((a + b + c) / 3.0)) > 0.0;
@@ -206,14 +215,11 @@ class PostMapBuilder {
         for (int cls = 0; cls < count_; ++cls)
             front_.insert(front_.end(), outlines[cls].begin(), outlines[cls].end());
         front_ = clip::op(front_, {}, ClipperLib::ctUnion);
-        shown_class_.resize(outlines.size() / 2);
-        for (int cls = 0; cls < count_; ++cls) {
-            const Paths& behind = outlines[count_ + cls];
-            shown_class_[cls] =
-                behind.empty() ? outlines[cls]
-                               : clip::op(outlines[cls], clip::op(behind, front_, ClipperLib::ctDifference),
-                                          ClipperLib::ctUnion);
-        }
+        shown_class_.assign(outlines.begin(), outlines.begin() + count_);
+        for (int cls = 0; cls < count_; ++cls)
+            if (const Paths& behind = outlines[count_ + cls]; !behind.empty())
+                shown_class_[cls] = clip::op(shown_class_[cls], clip::op(behind, front_, ClipperLib::ctDifference),
+                                             ClipperLib::ctUnion);
     }
 
     /// The parts of each class of the faces @p take accepts, as outlines:
@@ -433,13 +439,7 @@ class PostMapBuilder {
     /// of interpolated normals and the mesh's own outline) fill with the
     /// classes of their parts.
     void fill_uncovered_shown() {
-        for (int cls = count_ - 1; cls >= 0; --cls) {
-            const Paths& faces = shown_class_[cls];
-            if (faces.empty()) continue;
-            const Paths rest = clip::op(faces, covered_, ClipperLib::ctDifference);
-            covered_ = clip::op(covered_, faces, ClipperLib::ctUnion);
-            add_region(cls, rest, depth_);
-        }
+        for (int cls = count_ - 1; cls >= 0; --cls) add_uncovered(cls, shown_class_[cls]);
     }
 
     // ---- the silhouette band ------------------------------------------------
@@ -471,13 +471,8 @@ class PostMapBuilder {
             }
             nl_class[i] = cls;
         }
-        for (int cls = shading - 1; cls >= 0; --cls) { // brighter classes first
-            const Paths united = outline_of([&](FaceId i) { return nl_class[i] == cls; });
-            if (united.empty()) continue;
-            const Paths rest = clip::op(united, covered_, ClipperLib::ctDifference);
-            covered_ = clip::op(covered_, united, ClipperLib::ctUnion);
-            add_region(cls, rest, depth_);
-        }
+        for (int cls = shading - 1; cls >= 0; --cls) // brighter classes first
+            add_uncovered(cls, outline_of([&](FaceId i) { return nl_class[i] == cls; }));
     }
 
     /// Faces turned to the viewer but hidden at their centre, beside a shown
@@ -496,12 +491,7 @@ class PostMapBuilder {
             return !topo_.has_strips() || face_has_area(topo_, i);
         };
         const std::vector<Paths> parts = class_parts(take);
-        for (int cls = count_ - 1; cls >= 0; --cls) {
-            if (parts[cls].empty()) continue;
-            const Paths rest = clip::op(parts[cls], covered_, ClipperLib::ctDifference);
-            covered_ = clip::op(covered_, parts[cls], ClipperLib::ctUnion);
-            add_region(cls, rest, depth_);
-        }
+        for (int cls = count_ - 1; cls >= 0; --cls) add_uncovered(cls, parts[cls]);
     }
 
     /// Per vertex: within two rings of the contour or of a fold. Seeds: both

@@ -200,6 +200,21 @@ glm::dvec3 margin_zero(const SnaxelEngine& engine, const ContourResult& contour,
     return (1.0 - u) * engine.position(contour.fronts.snaxels[a]) + u * engine.position(contour.fronts.snaxels[b]);
 }
 
+/// The object of face @p f on a scene of several objects, else -1.
+std::int64_t object_of(const MeshTopology& topo, FaceId f) {
+    const FaceParts* parts = topo.parts();
+    if (!parts || parts->objects.size() < 2 || parts->object.size() != topo.n_faces() || !f.valid()) return -1;
+    return std::int64_t(parts->object[f]);
+}
+
+/// The object of the faces beside snaxel @p s's edge (-1 as object_of).
+std::int64_t snaxel_object(const MeshTopology& topo, const Snaxel& s) {
+    std::int64_t o = -1;
+    for (const FaceId f : topo.edge_faces()[s.edge])
+        if (f.valid()) o = object_of(topo, f);
+    return o;
+}
+
 } // namespace
 
 std::vector<std::uint8_t> VisibilitySampler::over_other_objects(const SnaxelEngine& engine,
@@ -207,15 +222,11 @@ std::vector<std::uint8_t> VisibilitySampler::over_other_objects(const SnaxelEngi
     const Fronts& fronts = contour.fronts;
     const MeshTopology& topo = scene_.topology();
     std::vector<std::uint8_t> out(fronts.snaxels.size(), 0);
-    const FaceParts* parts = topo.parts();
-    if (!parts || parts->objects.size() < 2 || parts->object.size() != topo.n_faces()) return out;
     const double radius = bounding_radius(topo), step = kOverObjectsStep * radius, reach = 4.0 * radius + 1.0;
     parallel_for(fronts.snaxels.size(), [&](std::size_t i) {
         const Snaxel& s = fronts.snaxels[i];
-        FaceId own = MeshTopology::kNone;
-        for (const FaceId f : topo.edge_faces()[s.edge])
-            if (f.valid()) own = f;
-        if (!own.valid()) return;
+        const std::int64_t own = snaxel_object(topo, s);
+        if (own < 0) return; // one object, or no face beside the snaxel
         const glm::dvec3 p = engine.position(s);
         const glm::dvec3 v = camera_.to_viewer(p);
         // Across the contour in the image plane, away from the surface.
@@ -231,7 +242,7 @@ std::vector<std::uint8_t> VisibilitySampler::over_other_objects(const SnaxelEngi
         ray.dir = -camera_.to_viewer(q);
         ray.tfar = std::numeric_limits<double>::infinity();
         const RayHit hit = scene_.nearest(ray);
-        out[i] = hit.hit() && parts->object[hit.face] != parts->object[own];
+        out[i] = hit.hit() && object_of(topo, hit.face) != own;
     }, 256);
     return out;
 }
@@ -242,7 +253,7 @@ int VisibilitySampler::contact_qi(const VisibilityRay& ray, const glm::dvec3& p,
     const MeshTopology& topo = scene_.topology();
     const RayHit hit = scene_.nearest(ray);
     const double offset = glm::length(ray.origin - p);
-    if (!hit.hit() || !(offset > 0.0) || std::int64_t(topo.parts()->object[hit.face]) == object) return q;
+    if (!hit.hit() || !(offset > 0.0) || object_of(topo, hit.face) == object) return q;
     const auto& fv = topo.face_vertices()[hit.face];
     const glm::dvec3 a = topo.positions()[fv[0]];
     glm::dvec3 normal = glm::cross(topo.positions()[fv[1]] - a, topo.positions()[fv[2]] - a);
@@ -272,24 +283,13 @@ ContourVisibility VisibilitySampler::classify(const SnaxelEngine& engine,
         if (selected.empty()) selected.assign(over.size(), 1);
         for (std::size_t i = 0; i < over.size(); ++i) selected[i] = selected[i] && over[i];
     }
-    // On a scene of several objects, the object each snaxel lies on (a
-    // contact with another object is told apart: contact_qi).
-    const FaceParts* parts = topo.parts();
-    const bool objects = parts && parts->objects.size() > 1 && parts->object.size() == topo.n_faces();
-    auto object_of = [&](FaceId f) { return objects && f.valid() ? std::int64_t(parts->object[f]) : std::int64_t(-1); };
-    auto snaxel_object = [&](const Snaxel& s) {
-        std::int64_t o = -1;
-        for (const FaceId f : topo.edge_faces()[s.edge])
-            if (f.valid()) o = object_of(f);
-        return o;
-    };
     std::vector<int> snaxel_qi(fronts.snaxels.size());
     parallel_for(fronts.snaxels.size(), [&](std::size_t i) {
         const Snaxel& s = fronts.snaxels[i];
         const glm::dvec3 p = engine.position(s);
         snaxel_qi[i] = (margins && contour.snaxel_margin[i] < 0.0) || (!selected.empty() && !selected[i])
                            ? kNotDrawn
-                           : contact_qi(snaxel_ray(s, p, engine.normal(s)), p, snaxel_object(s));
+                           : contact_qi(snaxel_ray(s, p, engine.normal(s)), p, snaxel_object(topo, s));
     });
 
     // The point where QI stops being `from` between snaxels a and b.
@@ -307,7 +307,7 @@ ContourVisibility VisibilitySampler::classify(const SnaxelEngine& engine,
             const double mid = 0.5 * (lo + hi);
             const glm::dvec3 n = glm::normalize((1.0 - mid) * na + mid * nb);
             const glm::dvec3 p = (1.0 - mid) * pa + mid * pb;
-            if (contact_qi(face_ray(face, p, n), p, object_of(face)) == from) lo = mid;
+            if (contact_qi(face_ray(face, p, n), p, object_of(topo, face)) == from) lo = mid;
             else hi = mid;
         }
         const double u = 0.5 * (lo + hi);
