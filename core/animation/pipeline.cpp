@@ -10,6 +10,7 @@
 #include "snaxels/error.h"
 #include "snaxels/animation/still.h"
 #include "snaxels/export/dash_phase.h"
+#include "snaxels/export/stroke_weight.h"
 #include "snaxels/export/lottie.h"
 #include "snaxels/export/svg.h"
 #include "snaxels/snaxel/parabolic.h"
@@ -196,6 +197,7 @@ AnimationOutput run_animation(const LoadedMesh& loaded, const std::string& mesh_
     std::vector<ContourTracker> trackers;
     std::vector<std::size_t> tracker_of; // per kind
     std::vector<std::unique_ptr<SurfaceDashPhase>> dash_phases; // per kind
+    std::vector<std::unique_ptr<StrokeParameter>> stroke_parameters; // per kind, where its strokes read one
     for (std::size_t c = 0; c < job.scene.kinds.size(); ++c) {
         const ContourSpec& spec = job.scene.kinds[c];
         std::size_t t = 0;
@@ -207,6 +209,10 @@ AnimationOutput run_animation(const LoadedMesh& loaded, const std::string& mesh_
             tracker_of.push_back(tracker_of[t]);
         }
         dash_phases.push_back(surface_dash_phase(job, spec));
+        const ContourStyle cs = job.scene.style.contour(spec);
+        stroke_parameters.push_back((cs.visible.draw && cs.visible.needs_parameter()) || (cs.hidden.draw && cs.hidden.needs_parameter())
+                                        ? std::make_unique<StrokeParameter>()
+                                        : nullptr);
     }
     // Fills: the planar map's contours the drawn ones lack are tracked too.
     const bool fills = !job.scene.style.regions.empty();
@@ -259,6 +265,10 @@ AnimationOutput run_animation(const LoadedMesh& loaded, const std::string& mesh_
         out.tracking_ms.push_back(ms);
         const ImageProjection projection(camera, image.centre, image.radius, job.scene.style.width, job.scene.style.height, job.scene.style.margin);
         frame.drawing = make_drawing(engine, results, projection, job.scene.visibility ? &visibility : nullptr);
+        frame.drawing.seconds = double(k) / job.animation.fps;
+        weigh_strokes(frame.drawing, job.scene.style, engine, results, camera, light, image.centre, image.radius);
+        for (std::size_t c = 0; c < results.size(); ++c)
+            if (stroke_parameters[c]) stroke_parameters[c]->step(frame.drawing.contours[c], frame.loops[c]);
         if (fills) {
             std::vector<const ContourResult*> contours;
             for (const ContourSpec& spec : fill_specs) {

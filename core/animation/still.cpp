@@ -1,4 +1,5 @@
 #include "snaxels/animation/still.h"
+#include "snaxels/export/stroke_weight.h"
 
 #include <algorithm>
 #include <cmath>
@@ -143,6 +144,7 @@ StillOutput render_still(const LoadedMesh& mesh, const MeshTopology& topology, c
     }
     const ImageProjection projection(scene.camera, centre, radius, scene.style.width, scene.style.height, scene.style.margin);
     out.drawing = make_drawing(engine, out.results, projection, scene.visibility ? &out.visibility : nullptr);
+    weigh_strokes(out.drawing, scene.style, engine, out.results, scene.camera, scene.light, centre, radius);
 
     if (map) {
         auto result_of = [&](const ContourSpec& spec) -> const ContourResult* {

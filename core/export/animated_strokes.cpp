@@ -3,11 +3,13 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <memory>
 #include <unordered_map>
 
 #include "snaxels/export/detail/animated_paths.h"
 #include "snaxels/export/detail/path_keys.h"
 #include "snaxels/export/detail/polyline.h"
+#include "snaxels/export/stroke_weight.h"
 #include "snaxels/visibility/visibility.h"
 
 namespace snaxels {
@@ -87,6 +89,11 @@ struct ParamLoop {
     double spacing = 1.0;    ///< mean distance between its points
     std::vector<std::uint64_t> ids;
     std::vector<ClassSpan> spans;
+    /// With line weight: the drawn loop's stroke parameter and weights,
+    /// and the frame's time (the wobble's boil).
+    std::shared_ptr<const LoopAttributes> attributes;
+    double u_period = 0.0;
+    double seconds = 0.0;
 
     double arc_of_u(double u) const {
         return closed ? std::fmod(anchor + wrap01(u) * length, length) : std::clamp(u, 0.0, 1.0) * length;
@@ -107,10 +114,39 @@ struct ParamLoop {
         return (1.0 - t) * pts[i] + t * pts[j];
     }
     glm::dvec2 at(double u) const { return at_arc(arc_of_u(u)); }
+    /// The stroke point at @p u (its position that of at(u)).
+    StrokePoint stroke_at(double u) const {
+        StrokePoint p = attributes ? attributes->at(arc_of_u(u)) : StrokePoint{};
+        p.q = at(u);
+        return p;
+    }
 };
 
-ParamLoop parameterize(const DrawnLoop& dl, const AnimatedLoop& al) {
+/// The line @p centre as @p stroke draws it with line weight (the frame's
+/// time @p seconds, the loop's parameter period @p period when closed):
+/// wobbled, and as filled outlines where its width varies.
+void weigh(const StrokeStyle& stroke, std::vector<StrokePoint> centre, bool closed, double period, double seconds,
+           anim::Shape& out) {
+    wobble(stroke, centre, closed, closed ? period : 0.0, seconds);
+    if (!stroke.variable_width()) {
+        anim::Subpath sp;
+        sp.closed = closed;
+        for (const StrokePoint& p : centre) sp.pts.push_back(p.q);
+        out.push_back(std::move(sp));
+        return;
+    }
+    std::vector<std::vector<glm::dvec2>> outline;
+    stroke_outline(stroke, centre, closed, outline);
+    for (auto& poly : outline) out.push_back({std::move(poly), true});
+}
+
+ParamLoop parameterize(const DrawnLoop& dl, const AnimatedLoop& al, const Drawing& drawing, bool weighted) {
     ParamLoop p;
+    if (weighted) {
+        p.attributes = std::make_shared<const LoopAttributes>(dl);
+        p.u_period = dl.u_period;
+        p.seconds = drawing.seconds;
+    }
     p.closed = dl.closed;
     p.dash_phase = dl.dash_phase;
     p.pts = dl.q;
@@ -252,6 +288,11 @@ void track_runs(std::vector<LifeFrame>& life, int cls, int& next_id) {
     }
 }
 
+/// Whether two frames have the same runs (by id; both sorted by id).
+bool same_runs(const std::vector<Run>& a, const std::vector<Run>& b) {
+    return std::equal(a.begin(), a.end(), b.begin(), b.end(), [](const Run& x, const Run& y) { return x.id == y.id; });
+}
+
 /// A key of a path: the shape at time `time` (frames), between life frame
 /// `i` and the next at fraction `s`, each subpath drawing `spans[j]`.
 struct Key {
@@ -308,7 +349,12 @@ class StrokeWriter {
                 reset(i + 1);
                 continue;
             }
-            if (runs[i - a].empty() != next.empty()) {
+            // Where a run appears or vanishes, the segment ends and a
+            // transition grows or shrinks it between the two frames: within
+            // a segment it would be a point at the frames it does not
+            // exist in, drawn as a dot by round caps where the static frame
+            // has nothing.
+            if (!same_runs(runs[i - a], next)) {
                 ranges.push_back({i + 1, i + 1, time_of(i + 1)}); // a transition plan goes between
                 reset(i + 1);
                 continue;
@@ -392,7 +438,10 @@ class StrokeWriter {
 
     /// The segment of @p plan: geometry at every key, vertices and keys
     /// reduced; the kept keys.
-    PathSegment emit(const Plan& plan, double smoothing) const {
+    PathSegment emit(const Plan& plan, const StrokeStyle& stroke) const {
+        // Outlines of lines of varying width are polygons, not smoothed.
+        const double smoothing = stroke.variable_width() ? 0.0 : stroke.smoothing;
+        const bool weighted = stroke.needs_parameter();
         // Each subpath's vertices: a grid fixed in u over the plan, at the
         // loops' own sampling density; grid points outside a key's span fold
         // onto its ends.
@@ -405,6 +454,10 @@ class StrokeWriter {
             spacing = std::min(spacing, std::max(p.spacing, 0.5));
             longest = std::max({longest, p.length, life_[k.i].loop->length});
         }
+        // Line weight varies along a line between its points: the grid is
+        // at least as fine as the stroke outline's (kMaxStrokeStepPx), as
+        // the static frame's lines are subdivided.
+        if (weighted) spacing = std::min(spacing, kMaxStrokeStepPx);
         const double steps = std::clamp(std::ceil(longest / spacing), 3.0, 200000.0);
         for (std::size_t j = 0; j < n; ++j) {
             if (plan.ids[j] < 0) continue;
@@ -440,7 +493,35 @@ class StrokeWriter {
                 for (const double u : grid[j]) sp.pts.push_back(curve(std::clamp(u, s.u0, s.u1)));
                 sp.pts.push_back(curve(s.u1));
             }
-            return shape;
+            if (!weighted) return shape;
+            // Line weight: each subpath's stroke points from the loop the
+            // key draws (its parameter, weight and time), wobbled, and
+            // outlined where the width varies.
+            const ParamLoop& w = k.s < 0.5 ? a : b;
+            anim::Shape weighed;
+            for (std::size_t j = 0; j < n; ++j) {
+                if (plan.ids[j] < 0) {
+                    weighed.push_back(shape[j]);
+                    continue;
+                }
+                std::vector<StrokePoint> centre;
+                centre.reserve(shape[j].pts.size());
+                auto add = [&](double u, const glm::dvec2& q) {
+                    StrokePoint p = w.stroke_at(u);
+                    p.q = q;
+                    centre.push_back(p);
+                };
+                const ClassSpan& s = k.spans[j];
+                if (ring[j]) {
+                    for (std::size_t g = 0; g < grid[j].size(); ++g) add(grid[j][g], shape[j].pts[g]);
+                } else {
+                    add(s.u0, shape[j].pts.front());
+                    for (std::size_t g = 0; g < grid[j].size(); ++g) add(std::clamp(grid[j][g], s.u0, s.u1), shape[j].pts[g + 1]);
+                    add(s.u1, shape[j].pts.back());
+                }
+                weigh(stroke, std::move(centre), ring[j], w.u_period, w.seconds, weighed);
+            }
+            return weighed;
         };
         anim::Segment seg;
         for (std::size_t k = 0; k < plan.keys.size(); ++k) {
@@ -562,20 +643,41 @@ void dash_offsets(const std::vector<LifeFrame>& life, int cls, int id, int first
 }
 
 /// A run of one frame's loop as a polyline at the loop's own density,
-/// simplified within the tolerance.
-anim::Subpath run_polyline(const ParamLoop& p, const ClassSpan& span, const AnimatedSvgOptions& options) {
+/// simplified within the tolerance (appended to @p out; with line weight,
+/// as the stroke draws it).
+void run_polyline(const ParamLoop& p, const ClassSpan& span, const StrokeStyle& stroke, const AnimatedSvgOptions& options,
+                  anim::Shape& out) {
+    if (stroke.needs_parameter()) {
+        anim::Shape drawn;
+        std::vector<StrokePoint> centre;
+        const double step = p.length > 0.0 ? std::min(p.spacing, kMaxStrokeStepPx) / p.length : 1.0;
+        if (span.whole) {
+            for (double u = 0.0; u < 1.0; u += step) centre.push_back(p.stroke_at(u));
+        } else {
+            centre.push_back(p.stroke_at(span.u0));
+            for (double u = (std::floor(span.u0 / step) + 1.0) * step; u < span.u1; u += step) centre.push_back(p.stroke_at(u));
+            centre.push_back(p.stroke_at(span.u1));
+        }
+        weigh(stroke, std::move(centre), span.whole && p.closed, p.u_period, p.seconds, drawn);
+        for (anim::Subpath& sp : drawn) {
+            sp.pts = simplify_polyline(sp.pts, sp.closed, options.tolerance_px);
+            out.push_back(std::move(sp));
+        }
+        return;
+    }
     anim::Subpath sp;
     if (span.whole) {
         sp.pts = simplify_polyline(p.pts, p.closed, options.tolerance_px);
         sp.closed = p.closed;
-        return sp;
+        out.push_back(std::move(sp));
+        return;
     }
     const double step = p.length > 0.0 ? p.spacing / p.length : 1.0;
     sp.pts.push_back(p.at(span.u0));
     for (double u = (std::floor(span.u0 / step) + 1.0) * step; u < span.u1; u += step) sp.pts.push_back(p.at(u));
     sp.pts.push_back(p.at(span.u1));
     sp.pts = simplify_polyline(sp.pts, false, options.tolerance_px);
-    return sp;
+    out.push_back(std::move(sp));
 }
 
 } // namespace
@@ -585,6 +687,22 @@ void stroke_paths(const std::vector<AnimationFrame>& frames, std::size_t c, cons
     const DrawnContour& contour0 = frames[0].drawing.contours[c];
     const ContourStyle cs = style.contour(contour0.spec);
     const StrokeStyle* strokes[2] = {&cs.visible, &cs.hidden};
+    // Strokes with line weight read each loop's stroke parameter (a still's
+    // where the frames were made without one, by hand).
+    const bool weighted = (cs.visible.draw && cs.visible.needs_parameter()) || (cs.hidden.draw && cs.hidden.needs_parameter());
+    std::vector<DrawnContour> stills;
+    if (weighted)
+        for (const AnimationFrame& frame : frames)
+            if (std::any_of(frame.drawing.contours[c].loops.begin(), frame.drawing.contours[c].loops.end(),
+                            [](const DrawnLoop& l) { return l.u.empty() && !l.q.empty(); })) {
+                stills.resize(frames.size());
+                break;
+            }
+    if (!stills.empty())
+        for (std::size_t f = 0; f < frames.size(); ++f) {
+            stills[f] = frames[f].drawing.contours[c];
+            parameterize_still(stills[f]);
+        }
     std::map<std::uint64_t, std::vector<std::pair<int, std::size_t>>> by_sequence;
     for (std::size_t f = 0; f < frames.size(); ++f)
         for (std::size_t l = 0; l < frames[f].loops[c].size(); ++l)
@@ -604,8 +722,8 @@ void stroke_paths(const std::vector<AnimationFrame>& frames, std::size_t c, cons
             bool empty = false;
             for (std::size_t m = start; m < end; ++m) {
                 const auto [f, l] = members[m];
-                const DrawnLoop& dl = frames[f].drawing.contours[c].loops[l];
-                ParamLoop p = parameterize(dl, frames[f].loops[c][l]);
+                const DrawnLoop& dl = stills.empty() ? frames[f].drawing.contours[c].loops[l] : stills[f].loops[l];
+                ParamLoop p = parameterize(dl, frames[f].loops[c][l], frames[f].drawing, weighted);
                 if (p.pts.empty()) {
                     empty = true;
                     break;
@@ -651,7 +769,7 @@ void stroke_paths(const std::vector<AnimationFrame>& frames, std::size_t c, cons
                     path.track = sequence;
                     path.run = run_id;
                     path.object = object;
-                    for (const Plan& plan : plans) path.segments.push_back(writer.emit(plan, stroke.smoothing));
+                    for (const Plan& plan : plans) path.segments.push_back(writer.emit(plan, stroke));
                     if (run_id) dash_offsets(life, cls, run_id, first, stroke, options, path);
                     out.push_back(std::move(path));
                 };
@@ -670,7 +788,7 @@ void stroke_paths(const std::vector<AnimationFrame>& frames, std::size_t c, cons
                 } else if (life.size() == 1) {
                     // A contour of one frame (mostly specks of a pixel or two):
                     // drawn by the kind's path of brief contours.
-                    for (const Run& r : life[0].runs[cls]) brief[cls][first].push_back(run_polyline(loops[0], r.span, options));
+                    for (const Run& r : life[0].runs[cls]) run_polyline(loops[0], r.span, stroke, options, brief[cls][first]);
                 } else {
                     write(0, life.size() - 1, writer.plan(cls, 0, life.size() - 1, [](int) { return true; }), 0);
                 }

@@ -31,6 +31,16 @@ struct DrawnLoop {
     std::vector<DrawnRun> runs; ///< empty when visibility was not computed
     /// Phase (pixels into the dash pattern) at q[0] for surface-fastened dashes.
     double dash_phase = 0.0;
+    /// The stroke parameter (core/export/stroke_weight.h) per snaxel, for
+    /// styles whose strokes read it (taper, width-by, calligraphy, wobble):
+    /// arc length in pixels from a seam, carried by the surface through an
+    /// animation; empty when nothing reads it. On a closed loop it runs
+    /// from 0 to u_period (the seam's value at both ends).
+    std::vector<double> u;
+    double u_period = 0.0;
+    /// Per snaxel, what width-by follows (0: width-min, 1: width-max);
+    /// empty without width-by.
+    std::vector<float> weight;
     /// With Drawing::parts: the objects and materials (indices, ascending)
     /// of the faces beside the loop's snaxels' edges: the parts it lies on.
     std::vector<std::uint32_t> objects, materials;
@@ -46,6 +56,9 @@ struct DrawnContour {
 
 struct Drawing {
     int width = 800, height = 800;
+    /// The frame's time in seconds (an animation's frame over its rate):
+    /// what the wobble's boil reads.
+    double seconds = 0.0;
     /// Visibility was computed: loops carry their QI and runs, hidden runs
     /// included. Without it, only contours that leave parts out (suggestive
     /// contours) have runs, of QI 0 and kNotDrawn; the others none.

@@ -178,6 +178,15 @@ std::string fill_style(const RegionStyle& region, const std::string& fill) {
     return out + "},\"r\":1}";
 }
 
+/// The fill of a line of varying width's outline: the stroke's colour, nonzero.
+std::string outline_fill(const StrokeStyle& stroke) {
+    std::string out = "{\"ty\":\"fl\",\"c\":{\"a\":0,\"k\":";
+    colour(out, stroke.colour);
+    out += "},\"o\":{\"a\":0,\"k\":";
+    value(out, 100.0 * stroke.opacity);
+    return out + "},\"r\":1}";
+}
+
 /// The `sh` items of one segment: a shape per subpath, keyframed when it
 /// moves; subpaths of a single point (a lone move) draw nothing and are
 /// left out. Returns the keyframes written.
@@ -234,7 +243,9 @@ std::string lottie_layer_body(const PathSegment& seg, double ip, double op, cons
     if (shapes.empty()) return {}; // nothing drawn in this stretch
     keys += k;
     shapes += ',';
-    shapes += path.fill ? fill_style(*path.region, path.fill_colour) : stroke_style(stroke, dash_offset(path, ip, op));
+    if (path.fill) shapes += fill_style(*path.region, path.fill_colour);
+    else if (stroke.variable_width()) shapes += outline_fill(stroke); // lines of varying width are filled outlines
+    else shapes += stroke_style(stroke, dash_offset(path, ip, op));
     std::string layer = ",\"ip\":";
     time_value(layer, ip);
     layer += ",\"op\":";

@@ -7,6 +7,7 @@
 
 #include "snaxels/export/detail/polyline.h"
 #include "snaxels/export/detail/svg_writer.h"
+#include "snaxels/export/stroke_weight.h"
 #include "snaxels/planarmap/planar_map.h"
 
 namespace snaxels {
@@ -104,8 +105,20 @@ std::string document_start(int width, int height, const std::string& background,
 }
 
 std::string kind_group(const ContourSpec& spec, const StrokeStyle& stroke, const std::string& attributes) {
-    std::string out = "<g" + attributes + " class=\"contour\" data-kind=\"" + spec.kind_name() + "\" data-label=\"" + spec.label() +
-                      "\" fill=\"none\" stroke=\"" + stroke.colour + "\" stroke-width=\"";
+    std::string out = "<g" + attributes + " class=\"contour\" data-kind=\"" + spec.kind_name() + "\" data-label=\"" + spec.label();
+    if (stroke.variable_width()) {
+        // Lines of varying width are filled outlines (nonzero: where a
+        // line's outline folds over itself at a sharp turn it stays filled).
+        out += "\" data-width-by=\"" + std::string(width_by_name(stroke.width_by)) + "\" fill=\"" + stroke.colour +
+               "\" fill-rule=\"nonzero\" stroke=\"none\"";
+        if (stroke.opacity < 1.0) {
+            out += " fill-opacity=\"";
+            append_number(out, stroke.opacity);
+            out += "\"";
+        }
+        return out + ">\n";
+    }
+    out += "\" fill=\"none\" stroke=\"" + stroke.colour + "\" stroke-width=\"";
     append_number(out, stroke.width);
     out += "\"";
     if (stroke.opacity < 1.0) {
@@ -230,6 +243,48 @@ double arc_to(const std::vector<glm::dvec2>& loop, bool closed, const glm::dvec2
     return at;
 }
 
+// A loop's runs of one visibility drawn with line weight: wobbled by the
+// stroke parameter, and as filled outlines where the width varies.
+void draw_weighted(std::string& out, const DrawnLoop& given, bool hidden, const StrokeStyle& stroke, double seconds) {
+    if (given.q.size() < 2) return;
+    const DrawnLoop* loop = &given;
+    DrawnLoop still;
+    if (given.u.empty()) { // a still: arc length from the first snaxel
+        DrawnContour one;
+        one.loops.push_back(given);
+        parameterize_still(one);
+        still = std::move(one.loops[0]);
+        loop = &still;
+    }
+    const LoopAttributes attributes(*loop);
+    auto draw = [&](std::vector<StrokePoint> centre, bool closed) {
+        if (centre.size() < 2) return;
+        wobble(stroke, centre, closed, closed ? loop->u_period : 0.0, seconds);
+        if (!stroke.variable_width()) {
+            std::vector<glm::dvec2> q;
+            for (const StrokePoint& p : centre) q.push_back(p.q);
+            append_path(out, q, closed, stroke, loop->dash_phase);
+            return;
+        }
+        std::vector<std::vector<glm::dvec2>> outline;
+        stroke_outline(stroke, centre, closed, outline);
+        out += "<path d=\"";
+        for (std::size_t i = 0; i < outline.size(); ++i) {
+            if (i) out += ' ';
+            svg::append_path_data(out, outline[i], true);
+        }
+        out += "\"/>\n";
+    };
+    if (loop->runs.empty()) { // no visibility: drawn whole, as visible
+        if (hidden) return;
+        DrawnRun whole{0, loop->closed, loop->q};
+        draw(attributes.run(whole), loop->closed);
+        return;
+    }
+    for (const DrawnRun& run : loop->runs)
+        if (run.qi != kNotDrawn && (run.qi > 0) == hidden && !run.q.empty()) draw(attributes.run(run), run.closed);
+}
+
 } // namespace
 
 std::string to_svg(const Drawing& drawing, const Style& style, const std::vector<MapRegion>* regions) {
@@ -288,6 +343,10 @@ std::string to_svg(const Drawing& drawing, const Style& style, const std::vector
             if (!stroke.draw) continue;
             out += svg::kind_group(c.spec, stroke);
             auto draw_loop = [&](const DrawnLoop& loop) {
+                if (stroke.needs_parameter()) {
+                    draw_weighted(out, loop, hidden, stroke, drawing.seconds);
+                    return;
+                }
                 if (loop.runs.empty()) { // no visibility: drawn whole, as visible
                     if (!hidden) append_path(out, loop.q, loop.closed, stroke, loop.dash_phase);
                     return;

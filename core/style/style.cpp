@@ -17,6 +17,38 @@
 #include "snaxels/snaxel/feature_edges.h"
 
 namespace snaxels {
+namespace {
+// The words of an attribute's value, split at spaces and commas.
+std::vector<std::string> split_words(std::string v) {
+    std::replace(v.begin(), v.end(), ',', ' ');
+    std::istringstream in(v);
+    std::vector<std::string> out;
+    for (std::string w; in >> w;) out.push_back(w);
+    return out;
+}
+// Whether @p word is one finite number and nothing else (into @p x).
+bool whole_number(const std::string& word, double& x) {
+    std::size_t used = 0;
+    try {
+        x = std::stod(word, &used);
+    } catch (const std::exception&) {
+        return false;
+    }
+    return !word.empty() && used == word.size() && std::isfinite(x);
+}
+} // namespace
+
+const char* width_by_name(StrokeStyle::WidthBy by) {
+    switch (by) {
+    case StrokeStyle::WidthBy::Depth: return "depth";
+    case StrokeStyle::WidthBy::Light: return "light";
+    case StrokeStyle::WidthBy::Curvature: return "curvature";
+    case StrokeStyle::WidthBy::Qi: return "qi";
+    case StrokeStyle::WidthBy::None: break;
+    }
+    return "none";
+}
+
 const std::vector<StyleElement>& style_vocabulary() {
     static const std::vector<StyleElement> vocabulary = [] {
         const std::vector<StyleAttribute> stroke = {
@@ -28,7 +60,14 @@ const std::vector<StyleElement>& style_vocabulary() {
             {"dash-space", {"screen", "surface"}, "`surface` fastens the dashes to the surface"},
             {"cap", {"butt", "round", "square"}, "line ends"},
             {"join", {"miter", "round", "bevel"}, "line joins"},
-            {"smoothing", {}, "when above 0, lines are drawn as chains of cubic Béziers"}};
+            {"smoothing", {}, "when above 0, lines are drawn as chains of cubic Béziers"},
+            {"taper", {}, "the line's width grows from 0 over its first length and falls to 0 over its last"},
+            {"width-by", {"none", "depth", "light", "curvature", "qi"}, "what the line's width follows between width-min and width-max"},
+            {"width-min", {}, "the thinnest width-by draws"},
+            {"width-max", {}, "the thickest width-by draws"},
+            {"calligraphy", {}, "a flat nib: an angle and how thin a line along it is against one across it"},
+            {"wobble", {}, "the line displaced across itself by a smooth noise fastened to the surface"},
+            {"boil", {}, "the wobble drawn afresh this many times a second"}};
         return std::vector<StyleElement>{
             {"style", "the root: a canvas, a light, contours and regions", {{"version", {"1"}, "the language version"}}},
             {"canvas",
@@ -246,19 +285,9 @@ struct Parser {
         s.opacity = number(node, "opacity", s.opacity, 0.0, 1.0);
         if (const pugi::xml_attribute a = node.attribute("dash")) {
             s.dash.clear();
-            std::string v = a.value();
-            std::replace(v.begin(), v.end(), ',', ' ');
-            std::istringstream in(v);
-            std::string word;
-            while (in >> word) {
-                std::size_t used = 0;
+            for (const std::string& word : split_words(a.value())) {
                 double x = -1.0;
-                try {
-                    x = std::stod(word, &used);
-                } catch (const std::exception&) {
-                    used = 0;
-                }
-                if (used != word.size() || !(x >= 0.0) || !std::isfinite(x))
+                if (!whole_number(word, x) || !(x >= 0.0))
                     fail(node, "dash=\"" + std::string(a.value()) + "\" must be lengths in pixels, like \"4 3\"");
                 s.dash.push_back(x);
             }
@@ -273,6 +302,44 @@ struct Parser {
         s.cap = choice(node, "cap", s.cap);
         s.join = choice(node, "join", s.join);
         s.smoothing = number(node, "smoothing", s.smoothing, 0.0, 100.0);
+        if (const pugi::xml_attribute a = node.attribute("taper")) {
+            const std::vector<std::string> w = split_words(a.value());
+            if (w.empty() || w.size() > 2)
+                fail(node, "taper=\"" + std::string(a.value()) + "\" must be one or two lengths, like \"12 20\" (pixels) or \"10% 30%\"");
+            auto length = [&](const std::string& word, bool& fraction) {
+                fraction = !word.empty() && word.back() == '%';
+                double x = -1.0;
+                if (!whole_number(fraction ? word.substr(0, word.size() - 1) : word, x) || !(x >= 0.0) ||
+                    x > (fraction ? 100.0 : 100000.0))
+                    fail(node, "taper=\"" + std::string(a.value()) + "\": \"" + word +
+                                   "\" is not a length (pixels, or a percentage of the line up to 100%)");
+                return fraction ? x / 100.0 : x;
+            };
+            s.taper_start = length(w[0], s.taper_start_fraction);
+            s.taper_end = length(w.size() > 1 ? w[1] : w[0], s.taper_end_fraction);
+        }
+        const std::string by = choice(node, "width-by", width_by_name(s.width_by));
+        for (const auto b : {StrokeStyle::WidthBy::None, StrokeStyle::WidthBy::Depth, StrokeStyle::WidthBy::Light,
+                             StrokeStyle::WidthBy::Curvature, StrokeStyle::WidthBy::Qi})
+            if (by == width_by_name(b)) s.width_by = b;
+        s.width_min = number(node, "width-min", s.width_min, 0.0, 1000.0);
+        s.width_max = number(node, "width-max", s.width_max, 0.0, 1000.0);
+        if (s.width_min >= 0.0 && s.width_max >= 0.0 && s.width_min > s.width_max)
+            fail(node, "width-min is larger than width-max");
+        auto pair = [&](const char* name, double& x, double& y, double lo_x, double hi_x, double lo_y, double hi_y,
+                        const char* example) {
+            const pugi::xml_attribute a = node.attribute(name);
+            if (!a) return;
+            const std::vector<std::string> w = split_words(a.value());
+            double v[2] = {0.0, 0.0};
+            bool ok = w.size() == 2 && whole_number(w[0], v[0]) && whole_number(w[1], v[1]);
+            ok = ok && v[0] >= lo_x && v[0] <= hi_x && v[1] >= lo_y && v[1] <= hi_y;
+            if (!ok) fail(node, std::string(name) + "=\"" + a.value() + "\" must be two numbers, like \"" + example + "\"");
+            x = v[0], y = v[1];
+        };
+        pair("calligraphy", s.calligraphy_angle, s.calligraphy_ratio, -360.0, 360.0, 0.01, 1.0, "30 0.3 (degrees, and a ratio from 0.01 to 1)");
+        pair("wobble", s.wobble_amplitude, s.wobble_wavelength, 0.0, 100.0, 1.0, 10000.0, "1.5 40 (pixels: amplitude, wavelength from 1)");
+        s.boil_rate = number(node, "boil", s.boil_rate, 0.0, 120.0);
         return s;
     }
 

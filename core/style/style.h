@@ -29,7 +29,42 @@ struct StrokeStyle {
     std::string cap = "round";          ///< butt | round | square
     std::string join = "round";         ///< miter | round | bevel
     double smoothing = 0.0;             ///< Bézier fit tolerance in pixels; 0: polyline
+
+    // Line weight (docs/styles.md, "Line weight"). Width at a point of a run:
+    // the base width (width, or width-min to width-max by width_by), times
+    // the taper toward the run's ends, times the calligraphic nib's factor.
+    /// taper="START END": lengths over which the width grows from 0 at a
+    /// run's start and falls to 0 at its end; pixels, or fractions of the
+    /// run's length where the flag says so. 0: no taper at that end.
+    double taper_start = 0.0, taper_end = 0.0;
+    bool taper_start_fraction = false, taper_end_fraction = false;
+    /// width-by: what the width follows between width_min and width_max.
+    enum class WidthBy { None, Depth, Light, Curvature, Qi };
+    WidthBy width_by = WidthBy::None;
+    double width_min = -1.0, width_max = -1.0; ///< negative: half and one and a half times width
+    /// calligraphy="ANGLE RATIO": a flat nib at ANGLE degrees (from the
+    /// image's x axis, counter-clockwise as seen); a line drawn along the nib
+    /// is RATIO times as wide as one drawn across it. 1: none.
+    double calligraphy_angle = 0.0, calligraphy_ratio = 1.0;
+    /// wobble="AMPLITUDE WAVELENGTH": the line displaced across itself by
+    /// a smooth noise along the stroke parameter (pixels); 0: none.
+    double wobble_amplitude = 0.0, wobble_wavelength = 20.0;
+    /// boil="RATE": the wobble's noise drawn afresh RATE times a second.
+    double boil_rate = 0.0;
+
+    /// The width varies along the line: drawn as a filled outline.
+    bool variable_width() const {
+        return taper_start > 0.0 || taper_end > 0.0 || width_by != WidthBy::None || calligraphy_ratio < 1.0;
+    }
+    /// The line reads the stroke parameter carried on the surface
+    /// (DrawnLoop::u): it is variable-width or wobbles.
+    bool needs_parameter() const { return variable_width() || wobble_amplitude > 0.0; }
+    double min_width() const { return width_min >= 0.0 ? width_min : 0.5 * width; }
+    double max_width() const { return width_max >= 0.0 ? width_max : 1.5 * width; }
 };
+
+/// The name width-by gives @p by ("none", "depth", ...).
+const char* width_by_name(StrokeStyle::WidthBy by);
 
 struct ContourStyle {
     ContourSpec spec;

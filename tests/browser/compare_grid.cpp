@@ -11,7 +11,13 @@
 // Between two frames: a render half way between the frames of B and C must
 // keep each fill colour within what B or C cover, and cover what both do.
 //   compare_grid --between A.png B.png C.png COLS ROWS CELL TOL MIN #RRGGBB...
+// Ink that one image has and the other lacks: the connected components
+// (8-neighbours) of A's ink pixels with no ink of B within TOL pixels,
+// counted where larger than AREA pixels; fails when there is one (a dot or
+// a dash mark an animation draws where its static frame has nothing).
+//   compare_grid --extra-ink A.png B.png COLS ROWS CELL [TOL=1] [AREA=2]
 
+#include <algorithm>
 #include <cstdio>
 #include <cstdlib>
 #include <string>
@@ -106,6 +112,71 @@ int between(int argc, char** argv, long fill_slack) {
     return failures ? 1 : 0;
 }
 
+int extra_ink(int argc, char** argv) {
+    if (argc < 7) {
+        std::fprintf(stderr, "usage: compare_grid --extra-ink A.png B.png COLS ROWS CELL [TOL] [AREA]\n");
+        return 2;
+    }
+    const QImage a = QImage(argv[2]).convertToFormat(QImage::Format_RGB32);
+    const QImage b = QImage(argv[3]).convertToFormat(QImage::Format_RGB32);
+    const int cols = std::atoi(argv[4]), rows = std::atoi(argv[5]), cell = std::atoi(argv[6]);
+    const int tol = argc > 7 ? std::atoi(argv[7]) : 1;
+    const long area = argc > 8 ? std::atol(argv[8]) : 2;
+    for (const QImage* img : {&a, &b})
+        if (img->isNull() || img->width() < cols * cell || img->height() < rows * cell) {
+            std::fprintf(stderr, "FAIL: screenshots missing or too small\n");
+            return 1;
+        }
+    long total = 0;
+    for (int r = 0; r < rows; ++r)
+        for (int c = 0; c < cols; ++c) {
+            const auto sa = strokes(a, c * cell, r * cell, cell), sb = strokes(b, c * cell, r * cell, cell);
+            std::vector<std::uint8_t> extra(sa.size(), 0);
+            for (int y = 0; y < cell; ++y)
+                for (int x = 0; x < cell; ++x) {
+                    if (!sa[std::size_t(y) * cell + x]) continue;
+                    bool near = false;
+                    for (int dy = -tol; dy <= tol && !near; ++dy)
+                        for (int dx = -tol; dx <= tol && !near; ++dx) {
+                            const int u = x + dx, v = y + dy;
+                            near = u >= 0 && v >= 0 && u < cell && v < cell && sb[std::size_t(v) * cell + u];
+                        }
+                    extra[std::size_t(y) * cell + x] = !near;
+                }
+            long components = 0, largest = 0;
+            std::vector<int> stack;
+            for (int start = 0; start < cell * cell; ++start) {
+                if (extra[std::size_t(start)] != 1) continue;
+                long size = 0;
+                int cx = 0, cy = 0;
+                stack.assign(1, start);
+                extra[std::size_t(start)] = 2;
+                while (!stack.empty()) {
+                    const int p = stack.back();
+                    stack.pop_back();
+                    ++size;
+                    cx = p % cell, cy = p / cell;
+                    for (int dy = -1; dy <= 1; ++dy)
+                        for (int dx = -1; dx <= 1; ++dx) {
+                            const int u = cx + dx, v = cy + dy;
+                            if (u < 0 || v < 0 || u >= cell || v >= cell || extra[std::size_t(v) * cell + u] != 1) continue;
+                            extra[std::size_t(v) * cell + u] = 2;
+                            stack.push_back(v * cell + u);
+                        }
+                }
+                if (size > area) {
+                    ++components;
+                    std::printf("cell %d: %ld pixels of ink at (%d, %d) the other image lacks\n", r * cols + c, size, cx, cy);
+                }
+                largest = std::max(largest, size);
+            }
+            std::printf("cell %d: %ld components of extra ink above %ld px (largest %ld)%s\n", r * cols + c, components,
+                        area, largest, components ? "  FAIL" : "");
+            total += components;
+        }
+    return total ? 1 : 0;
+}
+
 int main(int argc, char** argv) {
     long fill_slack = 0;
     if (argc > 2 && std::string(argv[1]) == "--fill-slack") {
@@ -113,6 +184,10 @@ int main(int argc, char** argv) {
         argv[2] = argv[0];
         argv += 2;
         argc -= 2;
+    }
+    if (argc > 1 && std::string(argv[1]) == "--extra-ink") {
+        QGuiApplication app(argc, argv);
+        return extra_ink(argc, argv);
     }
     if (argc > 1 && std::string(argv[1]) == "--between") {
         QGuiApplication app(argc, argv);

@@ -16,6 +16,8 @@
 //                                canvas (within 5% of its size) and spans at least MIN_SPAN
 //                                of it across or down
 // Fill paths are those inside <g id="fills">; stroke paths every other path.
+// Strokes drawn as filled outlines (lines of varying width: a group with
+// stroke="none" and a fill) are measured by their area, as fills are.
 
 #include <algorithm>
 #include <cctype>
@@ -195,7 +197,7 @@ std::vector<double> numbers(const std::string& s) {
     return out;
 }
 
-PathInfo measure(pugi::xml_node path, bool fill, int frames) {
+PathInfo measure(pugi::xml_node path, bool fill, bool outline, int frames) {
     PathInfo info;
     info.fill = fill;
     const std::string display = path.attribute("display").value();
@@ -233,7 +235,7 @@ PathInfo measure(pugi::xml_node path, bool fill, int frames) {
             shape = tokenize(path.attribute("d").value());
         }
         const auto subs = flatten(shape);
-        const double m = fill ? area_of(subs) : length_of(subs);
+        const double m = fill || outline ? area_of(subs) : length_of(subs);
         info.measure += m;
         if (m > 0)
             for (const auto& sp : subs)
@@ -244,11 +246,14 @@ PathInfo measure(pugi::xml_node path, bool fill, int frames) {
     return info;
 }
 
-void collect(pugi::xml_node node, bool in_fills, int frames, std::vector<PathInfo>& out) {
+void collect(pugi::xml_node node, bool in_fills, bool outline, int frames, std::vector<PathInfo>& out) {
     for (pugi::xml_node c : node.children()) {
-        if (std::strcmp(c.name(), "path") == 0) out.push_back(measure(c, in_fills, frames));
+        if (std::strcmp(c.name(), "path") == 0) out.push_back(measure(c, in_fills, outline, frames));
         else if (std::strcmp(c.name(), "g") == 0)
-            collect(c, in_fills || std::strcmp(c.attribute("id").value(), "fills") == 0, frames, out);
+            collect(c, in_fills || std::strcmp(c.attribute("id").value(), "fills") == 0,
+                    outline || (std::strcmp(c.attribute("stroke").value(), "none") == 0 && c.attribute("fill") &&
+                                std::strcmp(c.attribute("fill").value(), "none") != 0),
+                    frames, out);
     }
 }
 
@@ -267,7 +272,7 @@ int main(int argc, char** argv) {
     }
     const int frames = std::atoi(argv[2]);
     std::vector<PathInfo> paths;
-    collect(doc.child("svg"), false, frames, paths);
+    collect(doc.child("svg"), false, false, frames, paths);
 
     int failures = 0;
     auto share_of = [&](bool fill, int min_frames, double& total, std::size_t& count, std::size_t& long_count) {
