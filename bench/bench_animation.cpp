@@ -17,6 +17,7 @@
 #include "snaxels/mesh/refine.h"
 #include "snaxels/mesh/sharp_edges.h"
 #include "snaxels/snaxel/tracker.h"
+#include "snaxels/style/style.h"
 #include "snaxels/util/detail/parallel.h"
 #include "bench/brute_force_contour.h"
 
@@ -124,11 +125,9 @@ static void BM_BruteForceHorseTurntable360(benchmark::State& state) {
 }
 BENCHMARK(BM_BruteForceHorseTurntable360)->Unit(benchmark::kMillisecond)->Iterations(1);
 
-// The whole 360-frame export as `snaxels-cli animate` does it, against
-// brute-force marching triangles of the visual contour alone on the same
-// frames in the same run: `ratio` is the export's time per frame over the
-// brute force's (issue 18 asks for at most 1).
-static void BM_ExportHorseTurntable360(benchmark::State& state) {
+// The horse turned through 360 frames at a degree each, as `snaxels-cli
+// animate --turntable 1` exports it with the default style.
+static AnimationJob horse_turntable_job() {
     AnimationJob job;
     job.animation.kind = AnimationSpec::Kind::Turntable;
     job.animation.degrees_per_frame = 1.0;
@@ -136,6 +135,15 @@ static void BM_ExportHorseTurntable360(benchmark::State& state) {
     job.scene.camera = horse_camera(0);
     job.scene.light = default_light(job.scene.camera);
     job.scene.engine.check_invariants = false;
+    return job;
+}
+
+// The whole 360-frame export as `snaxels-cli animate` does it, against
+// brute-force marching triangles of the visual contour alone on the same
+// frames in the same run: `ratio` is the export's time per frame over the
+// brute force's (issue 18 asks for at most 1).
+static void BM_ExportHorseTurntable360(benchmark::State& state) {
+    AnimationJob job = horse_turntable_job();
     job.scene.visibility = state.range(0) != 0;
     std::size_t bytes = 0;
     double export_ms = 0.0;
@@ -160,6 +168,43 @@ static void BM_ExportHorseTurntable360(benchmark::State& state) {
     state.counters["ratio"] = export_ms / brute_ms;
 }
 BENCHMARK(BM_ExportHorseTurntable360)->Arg(1)->Arg(0)->ArgName("visibility")->Unit(benchmark::kMillisecond)->Iterations(1);
+
+// Line weight (issue 37): the same 360-frame turntable export with constant
+// strokes (the default style) and with lines of varying width (tapered,
+// heavier nearer the camera, a calligraphic nib; hidden lines dashed as by
+// default), in one run: `ratio` is the second's time over the first's
+// (the issue asks for at most 1.5).
+static void BM_ExportLineWeight360(benchmark::State& state) {
+    // Arg 0: the horse; 1: spot (its default view, turning about +Y).
+    static const LoadedMesh spot = import_mesh(std::string(SNAXELS_TEST_ASSETS) + "/spot.obj");
+    const LoadedMesh& mesh = state.range(0) == 0 ? horse_mesh() : spot;
+    AnimationJob job = horse_turntable_job();
+    if (state.range(0) != 0) {
+        job.scene.camera = Camera{};
+        job.scene.light = default_light(job.scene.camera);
+    }
+    AnimationJob weighted = job;
+    weighted.scene.style = parse_style(
+        "<style version=\"1\"><contour kind=\"visual\"><visible stroke=\"#111111\" taper=\"20% 20%\" width-by=\"depth\" "
+        "width-min=\"1\" width-max=\"3.5\" calligraphy=\"30 0.6\"/></contour></style>",
+        "line weight", nullptr);
+    double plain_ms = 0.0, weighted_ms = 0.0;
+    std::size_t plain_bytes = 0, weighted_bytes = 0;
+    for (auto _ : state) {
+        auto t0 = std::chrono::steady_clock::now();
+        plain_bytes = run_animation(mesh, "", job).document.size();
+        plain_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+        t0 = std::chrono::steady_clock::now();
+        weighted_bytes = run_animation(mesh, "", weighted).document.size();
+        weighted_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+    }
+    state.counters["plain_frame_ms"] = plain_ms / 360.0;
+    state.counters["weighted_frame_ms"] = weighted_ms / 360.0;
+    state.counters["ratio"] = weighted_ms / plain_ms;
+    state.counters["plain_bytes"] = double(plain_bytes);
+    state.counters["weighted_bytes"] = double(weighted_bytes);
+}
+BENCHMARK(BM_ExportLineWeight360)->Arg(0)->Arg(1)->ArgName("spot")->Unit(benchmark::kMillisecond)->Iterations(1);
 
 // Several kinds tracked together, each on its own thread as the export
 // does (visual, shadow, an isophote and a gleam on the horse), and the

@@ -9,7 +9,6 @@
 
 #include "snaxels/error.h"
 #include "snaxels/animation/still.h"
-#include "snaxels/export/dash_phase.h"
 #include "snaxels/export/stroke_weight.h"
 #include "snaxels/export/lottie.h"
 #include "snaxels/export/svg.h"
@@ -100,19 +99,6 @@ ImageFrame frame_image(FrameDriver& driver, const LoadedMesh& mesh, const Animat
     return out;
 }
 
-/// Surface-fastened dashes: a phase carried by the surface for @p spec's
-/// strokes, if its style fastens them; else none.
-std::unique_ptr<SurfaceDashPhase> surface_dash_phase(const AnimationJob& job, const ContourSpec& spec) {
-    const ContourStyle cs = job.scene.style.contour(spec);
-    const StrokeStyle* surface = cs.visible.dash_on_surface && !cs.visible.dash.empty() ? &cs.visible
-                                 : cs.hidden.dash_on_surface && !cs.hidden.dash.empty() ? &cs.hidden
-                                                                                         : nullptr;
-    double period = 0.0;
-    if (surface)
-        for (const double d : surface->dash) period += d;
-    return period > 0.0 ? std::make_unique<SurfaceDashPhase>(period) : nullptr;
-}
-
 /// A tracked frame's loops as the animation writer takes them: snaxel ids.
 std::vector<AnimatedLoop> animated_loops(const TrackedFrame& tf) {
     std::vector<AnimatedLoop> loops;
@@ -125,24 +111,15 @@ std::vector<AnimatedLoop> animated_loops(const TrackedFrame& tf) {
     return loops;
 }
 
-/// The dash phase of each of @p drawn's loops, carried along the surface.
-void fasten_dashes(SurfaceDashPhase& phase, const Fronts& fronts, DrawnContour& drawn, const ImageProjection& projection,
-                   const MeshTopology& topology) {
-    std::vector<PhaseLoop> loops;
-    for (std::size_t l = 0; l < fronts.loops.size(); ++l) {
-        PhaseLoop pl;
-        pl.q = drawn.loops[l].q;
-        pl.closed = fronts.loops[l].closed;
+/// The surface point of every snaxel of every loop of @p fronts.
+std::vector<std::vector<SurfacePoint>> surface_points(const Fronts& fronts) {
+    std::vector<std::vector<SurfacePoint>> out(fronts.loops.size());
+    for (std::size_t l = 0; l < fronts.loops.size(); ++l)
         fronts.for_each_in_loop(fronts.loops[l], [&](std::int32_t s) {
             const Snaxel& sn = fronts.snaxels[s];
-            pl.surface.push_back({sn.inside, sn.outside, sn.t});
+            out[l].push_back({sn.inside, sn.outside, sn.t});
         });
-        loops.push_back(std::move(pl));
-    }
-    const std::vector<double> phases = phase.step(loops, [&](const SurfacePoint& sp) {
-        return projection.project((1.0 - sp.t) * topology.positions()[sp.a] + sp.t * topology.positions()[sp.b]);
-    });
-    for (std::size_t l = 0; l < phases.size(); ++l) drawn.loops[l].dash_phase = phases[l];
+    return out;
 }
 
 /// The finished document: into @p file in blocks of about a megabyte, or
@@ -196,7 +173,6 @@ AnimationOutput run_animation(const LoadedMesh& loaded, const std::string& mesh_
     // One tracker per line: line sets of one line (other parts) share it.
     std::vector<ContourTracker> trackers;
     std::vector<std::size_t> tracker_of; // per kind
-    std::vector<std::unique_ptr<SurfaceDashPhase>> dash_phases; // per kind
     std::vector<std::unique_ptr<StrokeParameter>> stroke_parameters; // per kind, where its strokes read one
     for (std::size_t c = 0; c < job.scene.kinds.size(); ++c) {
         const ContourSpec& spec = job.scene.kinds[c];
@@ -208,7 +184,6 @@ AnimationOutput run_animation(const LoadedMesh& loaded, const std::string& mesh_
         } else {
             tracker_of.push_back(tracker_of[t]);
         }
-        dash_phases.push_back(surface_dash_phase(job, spec));
         const ContourStyle cs = job.scene.style.contour(spec);
         stroke_parameters.push_back((cs.visible.draw && cs.visible.needs_parameter()) || (cs.hidden.draw && cs.hidden.needs_parameter())
                                         ? std::make_unique<StrokeParameter>()
@@ -268,7 +243,12 @@ AnimationOutput run_animation(const LoadedMesh& loaded, const std::string& mesh_
         frame.drawing.seconds = double(k) / job.animation.fps;
         weigh_strokes(frame.drawing, job.scene.style, engine, results, camera, light, image.centre, image.radius);
         for (std::size_t c = 0; c < results.size(); ++c)
-            if (stroke_parameters[c]) stroke_parameters[c]->step(frame.drawing.contours[c], frame.loops[c]);
+            if (stroke_parameters[c]) {
+                const std::vector<std::vector<SurfacePoint>> points = surface_points(results[c].fronts);
+                stroke_parameters[c]->step(frame.drawing.contours[c], frame.loops[c], &points, [&](const SurfacePoint& sp) {
+                    return projection.project((1.0 - sp.t) * topology.positions()[sp.a] + sp.t * topology.positions()[sp.b]);
+                });
+            }
         if (fills) {
             std::vector<const ContourResult*> contours;
             for (const ContourSpec& spec : fill_specs) {
@@ -281,8 +261,6 @@ AnimationOutput run_animation(const LoadedMesh& loaded, const std::string& mesh_
             frame.region_tracks = region_tracker.step(map);
             frame.regions = std::move(map.regions);
         }
-        for (std::size_t c = 0; c < results.size(); ++c)
-            if (dash_phases[c]) fasten_dashes(*dash_phases[c], results[c].fronts, frame.drawing.contours[c], projection, topology);
         for (auto& contour : frame.drawing.contours)
             for (auto& loop : contour.loops) std::vector<glm::dvec3>().swap(loop.p); // not exported: memory freed
         if (!job.frames_dir.empty()) {

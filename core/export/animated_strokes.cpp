@@ -85,10 +85,11 @@ struct ParamLoop {
     std::vector<double> cum; ///< arc length at each point from point 0
     double length = 0.0;
     double anchor = 0.0;     ///< arc length where u = 0 (closed loops)
-    double dash_phase = 0.0; ///< surface-fastened dash phase at point 0
     double spacing = 1.0;    ///< mean distance between its points
     std::vector<std::uint64_t> ids;
     std::vector<ClassSpan> spans;
+    /// Screen dashes: arc lengths where the QI changes (restarts_of).
+    std::vector<double> restarts;
     /// With line weight: the drawn loop's stroke parameter and weights,
     /// and the frame's time (the wobble's boil).
     std::shared_ptr<const LoopAttributes> attributes;
@@ -122,6 +123,54 @@ struct ParamLoop {
     }
 };
 
+/// Arc lengths along loop @p w from @p a0 to @p a1 (past the end of a closed
+/// loop it comes round again): the ends and the loop's points between, and
+/// the dash measure at each: arc length from a0 (screen dashes, as a dash
+/// array measures a subpath), or the stroke parameter (@p surface).
+void dash_measure(const ParamLoop& w, double a0, double a1, bool surface, std::vector<double>& arcs,
+                  std::vector<double>& along) {
+    // The run's ends and the loop's points between them: the parameter is
+    // linear in arc length between points, so these give it exactly.
+    arcs.push_back(a0);
+    const std::size_t n = w.cum.size();
+    if (n > 0 && w.length > 0.0) {
+        const double turn = w.closed ? w.length : 0.0;
+        for (double base = w.closed ? std::floor(a0 / w.length) * w.length : 0.0; base < a1; base += turn) {
+            for (std::size_t k = 0; k < n; ++k) {
+                const double a = base + w.cum[k];
+                if (a > a0 && a < a1) arcs.push_back(a);
+            }
+            if (!w.closed) break;
+        }
+    }
+    arcs.push_back(a1);
+    for (const double a : arcs) along.push_back(surface ? (w.attributes ? w.attributes->at(a).u : a) : a - a0);
+}
+
+/// The stretches of [a0, a1] between the loop's QI changes; round a
+/// whole ring, from its first point, or between its changes if it has
+/// any.
+std::vector<std::pair<double, double>> screen_pieces(const ParamLoop& w, double a0, double a1, bool ring) {
+    std::vector<double> cuts;
+    for (const double r : w.restarts)
+        for (const double shift : {0.0, w.length})
+            if (r + shift > a0 + 1e-9 && r + shift < a1 - 1e-9) cuts.push_back(r + shift);
+    std::sort(cuts.begin(), cuts.end());
+    std::vector<std::pair<double, double>> out;
+    if (ring && !w.restarts.empty()) { // from change to change round the ring
+        for (std::size_t i = 0; i < w.restarts.size(); ++i) {
+            const double from = w.restarts[i];
+            const double to = i + 1 < w.restarts.size() ? w.restarts[i + 1] : w.restarts[0] + w.length;
+            out.push_back({from, to});
+        }
+        return out;
+    }
+    double from = a0;
+    for (const double c : cuts) out.push_back({from, c}), from = c;
+    out.push_back({from, a1});
+    return out;
+}
+
 /// The line @p centre as @p stroke draws it with line weight (the frame's
 /// time @p seconds, the loop's parameter period @p period when closed):
 /// wobbled, and as filled outlines where its width varies.
@@ -148,7 +197,6 @@ ParamLoop parameterize(const DrawnLoop& dl, const AnimatedLoop& al, const Drawin
         p.seconds = drawing.seconds;
     }
     p.closed = dl.closed;
-    p.dash_phase = dl.dash_phase;
     p.pts = dl.q;
     p.ids = al.ids;
     const std::size_t n = p.pts.size();
@@ -164,6 +212,27 @@ ParamLoop parameterize(const DrawnLoop& dl, const AnimatedLoop& al, const Drawin
 // out: kNotDrawn, which is never drawn) changes,
 // in u, once the anchor is known: on the segment before each snaxel whose
 // class differs from its predecessor's, at the change point.
+// Arc length along @p p where the QI changes before snaxel @p k (the change point on the segment before it).
+double change_arc(const ParamLoop& p, const DrawnLoop& dl, std::size_t k) {
+    const std::size_t n = p.pts.size(), prev = (k + n - 1) % n;
+    const glm::dvec2 a = p.pts[prev], b = p.pts[k], c = dl.change_before[k];
+    const double seg = glm::length(b - a);
+    const double t = seg > 0.0 ? std::clamp(glm::dot(c - a, b - a) / (seg * seg), 0.0, 1.0) : 0.0;
+    return (k == 0 ? p.length - seg : p.cum[prev]) + t * seg;
+}
+
+// Arc lengths where the loop's QI changes (sorted): where the static
+// frame's visibility runs, each a path of its own, restart a dash array.
+std::vector<double> restarts_of(const ParamLoop& p, const DrawnLoop& dl) {
+    std::vector<double> out;
+    if (dl.qi.empty()) return out;
+    const std::size_t n = p.pts.size();
+    for (std::size_t k = p.closed ? 0 : 1; k < n; ++k)
+        if (dl.qi[(k + n - 1) % n] != dl.qi[k]) out.push_back(change_arc(p, dl, k));
+    std::sort(out.begin(), out.end());
+    return out;
+}
+
 std::vector<ClassSpan> spans_of(const ParamLoop& p, const DrawnLoop& dl, double min_run_px) {
     if (dl.qi.empty()) return {{0, p.closed, 0.0, 1.0}};
     const std::size_t n = p.pts.size();
@@ -173,11 +242,7 @@ std::vector<ClassSpan> spans_of(const ParamLoop& p, const DrawnLoop& dl, double 
         if (!p.closed && k == 0) continue;
         const std::size_t prev = (k + n - 1) % n;
         if (cls(prev) == cls(k)) continue;
-        const glm::dvec2 a = p.pts[prev], b = p.pts[k], c = dl.change_before[k];
-        const double seg = glm::length(b - a);
-        const double t = seg > 0.0 ? std::clamp(glm::dot(c - a, b - a) / (seg * seg), 0.0, 1.0) : 0.0;
-        const double arc = (k == 0 ? p.length - seg : p.cum[prev]) + t * seg;
-        changes.push_back({p.u_of_arc(arc), cls(k)});
+        changes.push_back({p.u_of_arc(change_arc(p, dl, k)), cls(k)});
     }
     std::sort(changes.begin(), changes.end());
     // The class at u = 0: after the last change before it (cyclically).
@@ -440,7 +505,8 @@ class StrokeWriter {
     /// reduced; the kept keys.
     PathSegment emit(const Plan& plan, const StrokeStyle& stroke) const {
         // Outlines of lines of varying width are polygons, not smoothed.
-        const double smoothing = stroke.variable_width() ? 0.0 : stroke.smoothing;
+        const bool dashed = dashes_as_geometry(stroke, options_.screen_dash_array);
+        const double smoothing = stroke.variable_width() || dashed ? 0.0 : stroke.smoothing;
         const bool weighted = stroke.needs_parameter();
         // Each subpath's vertices: a grid fixed in u over the plan, at the
         // loops' own sampling density; grid points outside a key's span fold
@@ -472,6 +538,15 @@ class StrokeWriter {
                 grid[j].push_back(double(g) / steps);
         }
         const glm::dvec2 lone_move = life_[plan.keys.front().i].loop->at(0.0);
+        // Dashes drawn as pieces of the line: each subpath's dash ids over
+        // the plan (the union of every key's), so that every key has the
+        // same subpaths.
+        std::vector<std::map<std::int64_t, std::size_t>> dash_ids(dashed ? n : 0);
+        if (dashed)
+            for (const Key& k : plan.keys)
+                for (std::size_t j = 0; j < n; ++j)
+                    if (plan.ids[j] >= 0)
+                        for (const KeyDash& d : key_dashes(k, j, ring[j], stroke)) dash_ids[j].emplace(d.id, d.points);
         auto shape_at = [&](const Key& k) {
             const ParamLoop& a = *life_[k.i].loop;
             const ParamLoop& b = *life_[std::min(k.i + 1, life_.size() - 1)].loop;
@@ -493,6 +568,7 @@ class StrokeWriter {
                 for (const double u : grid[j]) sp.pts.push_back(curve(std::clamp(u, s.u0, s.u1)));
                 sp.pts.push_back(curve(s.u1));
             }
+            if (dashed) return dash_shape(plan, k, shape, dash_ids, stroke);
             if (!weighted) return shape;
             // Line weight: each subpath's stroke points from the loop the
             // key draws (its parameter, weight and time), wobbled, and
@@ -543,6 +619,95 @@ class StrokeWriter {
     }
 
   private:
+    /// A dash of a key's run: its id, the loop's arc length at its ends,
+    /// and how many points draw it (the same for an id in every key).
+    struct KeyDash {
+        std::int64_t id = 0;
+        double from = 0.0, to = 0.0;
+        std::size_t points = 2;
+    };
+
+    /// The dashes of subpath @p j at key @p k, in arc length along the
+    /// loop the key draws: screen dashes measured from the run's start
+    /// (from the loop's first point round a whole ring), as the static
+    /// frame's dash array is; surface dashes by the stroke parameter.
+    std::vector<KeyDash> key_dashes(const Key& k, std::size_t j, bool ring, const StrokeStyle& stroke) const {
+        const ParamLoop& w = *life_[std::min(k.i + (k.s >= 0.5 ? 1 : 0), life_.size() - 1)].loop;
+        double a0 = 0.0, a1 = w.length;
+        if (!ring) {
+            a0 = w.arc_of_u(k.spans[j].u0);
+            a1 = w.arc_of_u(k.spans[j].u1);
+            if (w.closed && (a1 < a0 || (a1 == a0 && k.spans[j].u1 > k.spans[j].u0))) a1 += w.length;
+        }
+        std::vector<KeyDash> out;
+        // Screen dashes restart where the static frame's runs do.
+        const auto pieces = stroke.dash_on_surface ? std::vector<std::pair<double, double>>{{a0, a1}} : screen_pieces(w, a0, a1, ring);
+        for (std::size_t i = 0; i < pieces.size(); ++i) // ids count from each piece's start
+            for (const KeyDash& d : key_dashes_over(w, pieces[i].first, pieces[i].second, stroke))
+                out.push_back({d.id + (std::int64_t(i) << 32), d.from, d.to, d.points});
+        return out;
+    }
+
+    /// The dashes over arcs [a0, a1] of loop @p w (one stretch whose dash
+    /// measure starts at a0, or the stroke parameter).
+    std::vector<KeyDash> key_dashes_over(const ParamLoop& w, double a0, double a1, const StrokeStyle& stroke) const {
+        std::vector<double> arcs, along;
+        dash_measure(w, a0, a1, stroke.dash_on_surface, arcs, along);
+        std::vector<KeyDash> out;
+        for (const Dash& d : dash_spans(arcs, along, stroke.dash, stroke.dash_on_surface ? w.u_period : 0.0)) {
+            // About a point per pixel of the dash (at most 64): joint vertex
+            // reduction leaves those that a bend needs.
+            std::size_t points = 2;
+            while (points < 64 && double(points - 1) * std::max(w.spacing, 0.5) < d.length) ++points;
+            out.push_back({d.id, d.from, d.to, points});
+        }
+        return out;
+    }
+
+    /// Key @p k's shape with its runs' subpaths replaced by their dashes,
+    /// one subpath per id of @p ids (an id the key lacks is a point at the
+    /// end of the dash before it, or the start of the one after).
+    anim::Shape dash_shape(const Plan& plan, const Key& k, const anim::Shape& shape,
+                           const std::vector<std::map<std::int64_t, std::size_t>>& ids, const StrokeStyle& stroke) const {
+        const ParamLoop& w = *life_[std::min(k.i + (k.s >= 0.5 ? 1 : 0), life_.size() - 1)].loop;
+        // Arc length round a closed loop past its end comes round again.
+        auto at = [&](double arc) { return w.at_arc(w.closed && w.length > 0.0 ? std::fmod(arc, w.length) : arc); };
+        // A dash this key lacks is a point where a dash it has ends (its cap
+        // covers it): the one before it, in this run or a run before, else
+        // the first dash of the key.
+        std::vector<std::map<std::int64_t, KeyDash>> present(plan.ids.size());
+        glm::dvec2 rest(0.0);
+        bool any = false;
+        for (std::size_t j = 0; j < plan.ids.size(); ++j) {
+            if (plan.ids[j] < 0) continue;
+            for (const KeyDash& d : key_dashes(k, j, shape[j].closed, stroke)) present[j].emplace(d.id, d);
+            if (!any && !present[j].empty()) rest = at(present[j].begin()->second.from), any = true;
+        }
+        anim::Shape out;
+        for (std::size_t j = 0; j < plan.ids.size(); ++j) {
+            if (plan.ids[j] < 0) {
+                out.push_back(shape[j]);
+                continue;
+            }
+            const std::map<std::int64_t, KeyDash>& here = present[j];
+            if (!any) rest = shape[j].pts.front();
+            for (const auto& [id, points] : ids[j]) {
+                anim::Subpath sp;
+                const auto it = here.find(id);
+                if (it == here.end()) {
+                    sp.pts.assign(points, rest);
+                } else {
+                    const KeyDash& d = it->second;
+                    for (std::size_t i = 0; i < points; ++i)
+                        sp.pts.push_back(at(d.from + (d.to - d.from) * double(i) / double(points - 1)));
+                    rest = sp.pts.back();
+                }
+                out.push_back(std::move(sp));
+            }
+        }
+        return out;
+    }
+
     /// Whether the runs of frame @p i interpolate to those of the next:
     /// every run end (a run that appears or vanishes at the middle of its
     /// span) moves along a stretch of the loop that is straight within
@@ -617,36 +782,30 @@ class StrokeWriter {
     const AnimatedSvgOptions& options_;
 };
 
-/// Surface-fastened dashes: the dash phase where run @p id starts, per
-/// frame (unwrapped so it interpolates), keys reduced, into @p path.
-void dash_offsets(const std::vector<LifeFrame>& life, int cls, int id, int first_frame, const StrokeStyle& stroke,
-                  const AnimatedSvgOptions& options, AnimatedPathData& path) {
-    double period = 0.0;
-    for (const double d : stroke.dash) period += d;
-    if (period <= 0.0) return;
-    anim::Segment offsets; // 1-D values as one-point shapes, for reduce_keys
-    double previous = 0.0;
-    for (std::size_t i = 0; i < life.size(); ++i)
-        for (const Run& r : life[i].runs[cls]) {
-            if (r.id != id) continue;
-            const ParamLoop& p = *life[i].loop;
-            double o = std::fmod(p.dash_phase + p.arc_of_u(r.span.whole ? 0.0 : r.span.u0), period);
-            if (!offsets.times.empty()) o += period * std::round((previous - o) / period);
-            previous = o;
-            offsets.times.push_back(double(first_frame + int(i)));
-            offsets.shapes.push_back({anim::Subpath{{glm::dvec2(o, 0.0)}, false}});
-        }
-    if (offsets.times.empty()) return;
-    const std::vector<std::uint8_t> keep = anim::reduce_keys(offsets, options.tolerance_px);
-    for (std::size_t k = 0; k < keep.size(); ++k)
-        if (keep[k]) path.dash_times.push_back(offsets.times[k]), path.dash_values.push_back(offsets.shapes[k][0].pts[0].x);
-}
-
 /// A run of one frame's loop as a polyline at the loop's own density,
 /// simplified within the tolerance (appended to @p out; with line weight,
 /// as the stroke draws it).
 void run_polyline(const ParamLoop& p, const ClassSpan& span, const StrokeStyle& stroke, const AnimatedSvgOptions& options,
                   anim::Shape& out) {
+    if (dashes_as_geometry(stroke, options.screen_dash_array)) { // the pieces where the dash pattern is on
+        double a0 = 0.0, a1 = p.length;
+        if (!span.whole) {
+            a0 = p.arc_of_u(span.u0);
+            a1 = p.arc_of_u(span.u1);
+            if (p.closed && a1 < a0) a1 += p.length;
+        }
+        const auto stretches = stroke.dash_on_surface ? std::vector<std::pair<double, double>>{{a0, a1}}
+                                                      : screen_pieces(p, a0, a1, span.whole);
+        for (const auto& [sa, sb] : stretches) {
+            std::vector<double> arcs, along;
+            dash_measure(p, sa, sb, stroke.dash_on_surface, arcs, along);
+            std::vector<glm::dvec2> q;
+            for (const double a : arcs) q.push_back(p.at_arc(p.closed && p.length > 0.0 ? std::fmod(a, p.length) : a));
+            const auto spans = dash_spans(arcs, along, stroke.dash, stroke.dash_on_surface ? p.u_period : 0.0);
+            for (auto& piece : dash_pieces(q, arcs, spans)) out.push_back({simplify_polyline(piece, false, options.tolerance_px), false});
+        }
+        return;
+    }
     if (stroke.needs_parameter()) {
         anim::Shape drawn;
         std::vector<StrokePoint> centre;
@@ -690,6 +849,14 @@ void stroke_paths(const std::vector<AnimationFrame>& frames, std::size_t c, cons
     // Strokes with line weight read each loop's stroke parameter (a still's
     // where the frames were made without one, by hand).
     const bool weighted = (cs.visible.draw && cs.visible.needs_parameter()) || (cs.hidden.draw && cs.hidden.needs_parameter());
+    // Visibility flicker takes its neighbour's class only where both classes
+    // are drawn: else it would draw ink where the static frame has none, or
+    // leave out ink it has.
+    const double flicker_px = cs.visible.draw && cs.hidden.draw ? options.min_run_px : 0.0;
+    auto screen = [&](const StrokeStyle& st) {
+        return st.draw && dashes_as_geometry(st, options.screen_dash_array) && !st.dash_on_surface;
+    };
+    const bool screen_dashes = screen(cs.visible) || screen(cs.hidden);
     std::vector<DrawnContour> stills;
     if (weighted)
         for (const AnimationFrame& frame : frames)
@@ -730,7 +897,8 @@ void stroke_paths(const std::vector<AnimationFrame>& frames, std::size_t c, cons
                 }
                 const bool jump = !loops.empty() && abrupt(loops.back(), p);
                 if (!loops.empty() && p.closed && p.length > 0.0) p.anchor = follow_anchor(loops.back(), p);
-                p.spans = spans_of(p, dl, options.min_run_px);
+                p.spans = spans_of(p, dl, flicker_px);
+                if (screen_dashes) p.restarts = restarts_of(p, dl);
                 loops.push_back(std::move(p));
                 LifeFrame lf;
                 lf.jump = jump;
@@ -758,40 +926,22 @@ void stroke_paths(const std::vector<AnimationFrame>& frames, std::size_t c, cons
                 if (!stroke.draw || !any) continue;
                 track_runs(life, cls, next_run);
                 const StrokeWriter writer(life, first, options);
-                double period = 0.0;
-                for (const double d : stroke.dash) period += d;
-                auto write = [&](std::size_t a, std::size_t b, const std::vector<Plan>& plans, int run_id) {
-                    AnimatedPathData path;
-                    path.contour = c;
-                    path.cls = cls;
-                    path.first = first + int(a);
-                    path.last = first + int(b);
-                    path.track = sequence;
-                    path.run = run_id;
-                    path.object = object;
-                    for (const Plan& plan : plans) path.segments.push_back(writer.emit(plan, stroke));
-                    if (run_id) dash_offsets(life, cls, run_id, first, stroke, options, path);
-                    out.push_back(std::move(path));
-                };
-                if (stroke.dash_on_surface && period > 0.0) {
-                    // A path has one dash offset and SVG restarts dashes at
-                    // every subpath: with surface-fastened dashes each run
-                    // is a path of its own, for as long as it lasts.
-                    std::map<int, std::pair<std::size_t, std::size_t>> spans;
-                    for (std::size_t i = 0; i < life.size(); ++i)
-                        for (const Run& r : life[i].runs[cls]) spans.try_emplace(r.id, i, i).first->second.second = i;
-                    for (const auto& [id, range] : spans) {
-                        const int run = id;
-                        write(range.first, range.second,
-                              writer.plan(cls, range.first, range.second, [run](int r) { return r == run; }), run);
-                    }
-                } else if (life.size() == 1) {
+                if (life.size() == 1) {
                     // A contour of one frame (mostly specks of a pixel or two):
                     // drawn by the kind's path of brief contours.
                     for (const Run& r : life[0].runs[cls]) run_polyline(loops[0], r.span, stroke, options, brief[cls][first]);
-                } else {
-                    write(0, life.size() - 1, writer.plan(cls, 0, life.size() - 1, [](int) { return true; }), 0);
+                    continue;
                 }
+                AnimatedPathData path;
+                path.contour = c;
+                path.cls = cls;
+                path.first = first;
+                path.last = first + int(life.size()) - 1;
+                path.track = sequence;
+                path.object = object;
+                for (const Plan& plan : writer.plan(cls, 0, life.size() - 1, [](int) { return true; }))
+                    path.segments.push_back(writer.emit(plan, stroke));
+                out.push_back(std::move(path));
             }
         }
     }

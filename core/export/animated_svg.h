@@ -48,6 +48,9 @@ struct AnimatedSvgOptions {
     /// the bend: the path holds its shape until the next frame and switches
     /// then instead.
     double max_sweep_px = 1.0;
+    /// Screen dashes stay a dash array instead of pieces of the line
+    /// (dashes_as_geometry): Lottie's choice.
+    bool screen_dash_array = false;
 };
 
 /// One path of the animated SVG, for --stats.

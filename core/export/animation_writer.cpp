@@ -1,4 +1,5 @@
 #include "snaxels/export/animation_writer.h"
+#include "snaxels/export/stroke_weight.h"
 
 #include <algorithm>
 #include <array>
@@ -75,11 +76,10 @@ struct SpilledText {
 
 /// One path of the document, written as its pieces come.
 struct Record {
-    AnimatedPathData meta; ///< identity, first and last frame, dash keys; no segments
+    AnimatedPathData meta; ///< identity, first and last frame; no segments
     std::array<std::int64_t, 4> order{};
     std::size_t segments = 0, vertices = 0;
     bool open = true;
-    anim::Shape last_shape; ///< at the last key: where a surface-dashed run is picked up
     // SVG: the d animation's keyTimes and values.
     std::optional<smil::KeyTimePrinter> printer;
     SpilledText times, values;
@@ -95,23 +95,6 @@ struct Record {
     std::vector<std::pair<Fragment, std::size_t>> layers; ///< body, segment number
     std::size_t lottie_keys = 0;
 };
-
-double dash_period(const StrokeStyle& stroke) {
-    double period = 0.0;
-    for (const double d : stroke.dash) period += d;
-    return period;
-}
-
-/// Whether two subpath lists draw the same line ends (a run seen by two chunks at their shared frame).
-bool same_run(const anim::Shape& a, const anim::Shape& b) {
-    if (a.size() != b.size() || a.empty()) return false;
-    for (std::size_t s = 0; s < a.size(); ++s) {
-        if (a[s].pts.empty() || b[s].pts.empty()) return false;
-        if (glm::length(a[s].pts.front() - b[s].pts.front()) > 0.5 || glm::length(a[s].pts.back() - b[s].pts.back()) > 0.5)
-            return false;
-    }
-    return true;
-}
 
 } // namespace
 
@@ -136,19 +119,24 @@ struct AnimationWriter::Impl {
     std::vector<Record*> open; ///< the records that may still go on (a chunk scans these, not all)
 
     Impl(AnimationFormat f, std::size_t n, double rate, const AnimatedSvgOptions& o, const Style& s)
-        : format(f), frames_total(std::max<std::size_t>(n, 1)), fps(rate), options(o), style(s), clock{frames_total, rate} {}
+        : format(f), frames_total(std::max<std::size_t>(n, 1)), fps(rate), options(o), style(s), clock{frames_total, rate} {
+        // Lottie keeps screen dashes a dash array: a shape per dash, each
+        // keyframed, would make the file four times the SVG's.
+        if (format == AnimationFormat::Lottie) options.screen_dash_array = true;
+    }
 
-    const StrokeStyle& stroke_of(const AnimatedPathData& p) const {
-        static thread_local ContourStyle cs;
-        cs = style.contour(specs[p.contour]);
-        return p.cls ? cs.hidden : cs.visible;
+    /// The stroke path @p p is drawn with: its style's, without the dash
+    /// array where the dashes are pieces of the line.
+    StrokeStyle stroke_of(const AnimatedPathData& p) const { return drawn(p.cls ? style.contour(specs[p.contour]).hidden : style.contour(specs[p.contour]).visible); }
+    StrokeStyle drawn(StrokeStyle stroke) const {
+        if (dashes_as_geometry(stroke, options.screen_dash_array)) stroke.dash.clear();
+        return stroke;
     }
 
     // --- one segment onto a record --------------------------------------
     void add_segment(Record& r, PathSegment seg) {
         ++r.segments;
         r.vertices = std::max(r.vertices, seg.vertices());
-        if (!seg.shapes.empty()) r.last_shape = seg.shapes.back();
         if (format == AnimationFormat::Svg) {
             for (std::size_t k = 0; k < seg.times.size(); ++k) {
                 if (seg.times[k] <= r.last_time) continue; // never two keys at one time
@@ -201,7 +189,6 @@ struct AnimationWriter::Impl {
         std::string().swap(r.values.pending);
         std::string().swap(r.first_value);
         std::string().swap(r.last_value);
-        anim::Shape().swap(r.last_shape);
     }
 
     // --- a chunk ----------------------------------------------------------
@@ -222,28 +209,11 @@ struct AnimationWriter::Impl {
             p.last += s;
             for (PathSegment& seg : p.segments)
                 for (double& t : seg.times) t += s;
-            for (double& t : p.dash_times) t += s;
             Record* q = shared && p.first == s && !p.brief ? continuation(p, continued) : nullptr;
             if (q) {
                 continued.push_back(q);
                 join(*q, std::move(p));
                 continue;
-            }
-            if (shared && p.first == s && p.run != 0) {
-                // A dash run the chunk before drew at the shared frame but
-                // that could not be picked up: from the next frame.
-                p.first = s + 1;
-                if (p.first > p.last) continue;
-                while (!p.segments.empty()) {
-                    PathSegment& seg = p.segments.front();
-                    std::size_t k = 0;
-                    while (k < seg.times.size() && seg.times[k] < double(p.first) - 1e-9) ++k;
-                    seg.times.erase(seg.times.begin(), seg.times.begin() + std::ptrdiff_t(k));
-                    seg.shapes.erase(seg.shapes.begin(), seg.shapes.begin() + std::ptrdiff_t(k));
-                    if (!seg.times.empty()) break;
-                    p.segments.erase(p.segments.begin());
-                }
-                if (p.segments.empty()) continue;
             }
             auto r = std::make_unique<Record>();
             if (p.fill) {
@@ -252,7 +222,7 @@ struct AnimationWriter::Impl {
             } else if (p.brief) {
                 r->order = {2, chunk_index, 0, 0};
             } else {
-                r->order = {1, std::int64_t(p.track), p.first, std::int64_t(chunk_index) * 1000000 + p.run};
+                r->order = {1, std::int64_t(p.track), p.first, std::int64_t(chunk_index)};
             }
             std::vector<PathSegment> segments = std::move(p.segments);
             p.segments.clear();
@@ -275,11 +245,7 @@ struct AnimationWriter::Impl {
             const AnimatedPathData& m = r->meta;
             if (m.last != p.first || m.fill != p.fill || m.brief) continue;
             if (std::find(taken.begin(), taken.end(), r) != taken.end()) continue;
-            if (m.fill ? m.track == p.track
-                       : m.contour == p.contour && m.cls == p.cls && m.track == p.track && (m.run == 0) == (p.run == 0) &&
-                             (p.run == 0 || (!p.segments.empty() && !p.segments.front().shapes.empty() &&
-                                             same_run(r->last_shape, p.segments.front().shapes.front()))))
-                return r;
+            if (m.fill ? m.track == p.track : m.contour == p.contour && m.cls == p.cls && m.track == p.track) return r;
         }
         return nullptr;
     }
@@ -290,17 +256,6 @@ struct AnimationWriter::Impl {
         if (!p.segments.empty() && !p.segments.front().times.empty() && p.segments.front().times.front() <= double(p.first))
             p.segments.front().times.front() = double(p.first) + anim::kSwitch;
         q.meta.last = p.last;
-        if (!p.dash_times.empty()) {
-            const double period = dash_period(stroke_of(q.meta));
-            const double shift = q.meta.dash_values.empty() || period <= 0.0
-                                     ? 0.0
-                                     : period * std::round((q.meta.dash_values.back() - p.dash_values.front()) / period);
-            for (std::size_t k = 0; k < p.dash_times.size(); ++k) {
-                if (!q.meta.dash_times.empty() && p.dash_times[k] <= q.meta.dash_times.back()) continue;
-                q.meta.dash_times.push_back(p.dash_times[k]);
-                q.meta.dash_values.push_back(p.dash_values[k] + shift);
-            }
-        }
         for (PathSegment& seg : p.segments) add_segment(q, std::move(seg));
     }
 
@@ -377,18 +332,14 @@ struct AnimationWriter::Impl {
                 const StrokeStyle& stroke = is_hidden ? cs.hidden : cs.visible;
                 if (!stroke.draw) continue;
                 const std::string label = specs[c].label();
-                sink(svg::kind_group(specs[c], stroke,
+                sink(svg::kind_group(specs[c], drawn(stroke),
                                      " id=\"" + part + "-" + label + "\" inkscape:groupmode=\"layer\" inkscape:label=\"" +
                                          label + " (" + part + ")\""));
                 auto write_paths = [&](std::int32_t object) {
                     for (const Record* r : order) {
                         if (r->meta.fill || r->meta.contour != c || r->meta.cls != int(is_hidden)) continue;
                         if (parts && r->meta.object != object) continue;
-                        const std::string children =
-                            r->meta.dash_times.empty()
-                                ? std::string()
-                                : smil::number_animation("stroke-dashoffset", r->meta.dash_times, r->meta.dash_values, clock);
-                        path(*r, r->meta.brief ? " class=\"brief\"" : "", label, children);
+                        path(*r, r->meta.brief ? " class=\"brief\"" : "", label, {});
                     }
                 };
                 if (parts) {

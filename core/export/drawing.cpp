@@ -49,7 +49,7 @@ Drawing make_drawing(const SnaxelEngine& engine, const std::vector<ContourResult
                 for (const glm::dvec3& point : lv.change_before)
                     drawn.change_before.push_back(projection.project(point));
                 for (const VisibilityRun& run : lv.runs) {
-                    DrawnRun dr{run.qi, run.closed, {}};
+                    DrawnRun dr{run.qi, run.closed, {}, run.first, run.from_change};
                     dr.q.reserve(run.points.size());
                     for (const glm::dvec3& p : run.points) dr.q.push_back(projection.project(p));
                     drawn.runs.push_back(std::move(dr));

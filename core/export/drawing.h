@@ -20,6 +20,10 @@ struct DrawnRun {
     int qi = 0;
     bool closed = false;
     std::vector<glm::dvec2> q;
+    /// The loop index of the first snaxel among q; q[0] is the change point
+    /// on the segment before it when from_change (VisibilityRun).
+    std::size_t first = 0;
+    bool from_change = false;
 };
 
 struct DrawnLoop {
@@ -29,10 +33,9 @@ struct DrawnLoop {
     std::vector<int> qi;       ///< per snaxel; empty when visibility was not computed
     std::vector<glm::dvec2> change_before; ///< per snaxel, where qi changes before it (see LoopVisibility)
     std::vector<DrawnRun> runs; ///< empty when visibility was not computed
-    /// Phase (pixels into the dash pattern) at q[0] for surface-fastened dashes.
-    double dash_phase = 0.0;
     /// The stroke parameter (core/export/stroke_weight.h) per snaxel, for
-    /// styles whose strokes read it (taper, width-by, calligraphy, wobble):
+    /// styles whose strokes read it (wobble, lines of varying width, dashes
+    /// fastened to the surface):
     /// arc length in pixels from a seam, carried by the surface through an
     /// animation; empty when nothing reads it. On a closed loop it runs
     /// from 0 to u_period (the seam's value at both ends).

@@ -119,29 +119,9 @@ std::string bezier_value(const Bez& b) {
 /// Linear easing between a keyframe and the next.
 constexpr const char* kLinear = ",\"i\":{\"x\":1,\"y\":1},\"o\":{\"x\":0,\"y\":0}";
 
-/// A scalar property: static, or linear keyframes.
-std::string scalar(const std::vector<double>& times, const std::vector<double>& values) {
-    std::string out;
-    if (times.size() < 2) {
-        out = "{\"a\":0,\"k\":";
-        value(out, values.empty() ? 0.0 : values.front());
-        return out + '}';
-    }
-    out = "{\"a\":1,\"k\":[";
-    for (std::size_t k = 0; k < times.size(); ++k) {
-        if (k) out += ',';
-        out += "{\"t\":";
-        time_value(out, times[k]);
-        out += ",\"s\":[";
-        value(out, values[k]);
-        out += ']';
-        if (k + 1 < times.size()) out += kLinear;
-        out += '}';
-    }
-    return out + "]}";
-}
-
-std::string stroke_style(const StrokeStyle& stroke, const std::string& dash_offset) {
+// Screen dashes keep a dash array in Lottie (AnimatedSvgOptions::
+// screen_dash_array); dashes fastened to the surface are pieces of the line.
+std::string stroke_style(const StrokeStyle& stroke) {
     std::string out = "{\"ty\":\"st\",\"c\":{\"a\":0,\"k\":";
     colour(out, stroke.colour);
     out += "},\"o\":{\"a\":0,\"k\":";
@@ -165,7 +145,7 @@ std::string stroke_style(const StrokeStyle& stroke, const std::string& dash_offs
             value(out, dash[k]);
             out += "}},";
         }
-        out += "{\"n\":\"o\",\"nm\":\"offset\",\"v\":" + (dash_offset.empty() ? std::string("{\"a\":0,\"k\":0}") : dash_offset) + "}]";
+        out += "{\"n\":\"o\",\"nm\":\"offset\",\"v\":{\"a\":0,\"k\":0}}]";
     }
     return out + '}';
 }
@@ -222,18 +202,6 @@ std::size_t segment_shapes(const PathSegment& seg, std::string& out) {
     return keys;
 }
 
-/// The dash offset keys of @p path that matter in [ip, op]: from the last
-/// key at or before ip to the first at or after op.
-std::string dash_offset(const AnimatedPathData& path, double ip, double op) {
-    if (path.dash_times.empty()) return {};
-    std::size_t a = 0, b = path.dash_times.size() - 1;
-    while (a + 1 < path.dash_times.size() && path.dash_times[a + 1] <= ip) ++a;
-    while (b > a && path.dash_times[b - 1] >= op) --b;
-    const std::vector<double> t(path.dash_times.begin() + std::ptrdiff_t(a), path.dash_times.begin() + std::ptrdiff_t(b) + 1);
-    const std::vector<double> v(path.dash_values.begin() + std::ptrdiff_t(a), path.dash_values.begin() + std::ptrdiff_t(b) + 1);
-    return scalar(t, v);
-}
-
 } // namespace
 
 std::string lottie_layer_body(const PathSegment& seg, double ip, double op, const AnimatedPathData& path,
@@ -245,7 +213,7 @@ std::string lottie_layer_body(const PathSegment& seg, double ip, double op, cons
     shapes += ',';
     if (path.fill) shapes += fill_style(*path.region, path.fill_colour);
     else if (stroke.variable_width()) shapes += outline_fill(stroke); // lines of varying width are filled outlines
-    else shapes += stroke_style(stroke, dash_offset(path, ip, op));
+    else shapes += stroke_style(stroke);
     std::string layer = ",\"ip\":";
     time_value(layer, ip);
     layer += ",\"op\":";

@@ -102,21 +102,4 @@ std::size_t append_path(std::string& out, const std::string& attributes, const A
     return keys;
 }
 
-std::string number_animation(const std::string& attribute, const std::vector<double>& times,
-                             const std::vector<double>& values, const Clock& clock) {
-    std::vector<double> t;
-    std::string v;
-    auto add = [&](double time, double value) {
-        if (!v.empty()) v += ';';
-        svg::append_number(v, value);
-        t.push_back(time);
-    };
-    if (times.front() > 0.0) add(0.0, values.front());
-    for (std::size_t k = 0; k < times.size(); ++k) add(times[k], values[k]);
-    if (times.back() < double(clock.frames)) add(double(clock.frames), values.back());
-    return "<animate attributeName=\"" + attribute + "\" dur=\"" + clock.dur() +
-           "\" repeatCount=\"indefinite\" calcMode=\"linear\" keyTimes=\"" + key_times(t, clock) + "\" values=\"" + v +
-           "\"/>";
-}
-
 } // namespace snaxels::smil

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
 
 #include "snaxels/export/detail/polyline.h"
 #include "snaxels/visibility/visibility.h"
@@ -23,6 +24,11 @@ double median(std::vector<double> v) {
     const std::size_t m = v.size() / 2;
     std::nth_element(v.begin(), v.begin() + std::ptrdiff_t(m), v.end());
     return v[m];
+}
+
+// The index of the first of @p v's values (nondecreasing) above @p x.
+std::size_t upper_index(const std::vector<double>& v, double x, std::size_t end) {
+    return std::size_t(std::upper_bound(v.begin(), v.begin() + std::ptrdiff_t(end), x) - v.begin());
 }
 
 // Arc length at each point of a polyline from its first (closed: the
@@ -115,7 +121,7 @@ std::vector<glm::dvec2> directions(const std::vector<StrokePoint>& c, bool close
     // The point at arc length a (wrapped on a closed line, clamped on an open one).
     auto at = [&](double a) {
         a = closed ? wrap(a, total) : std::clamp(a, 0.0, total);
-        std::size_t k = std::size_t(std::upper_bound(cum.begin(), cum.begin() + std::ptrdiff_t(closed ? n + 1 : n), a) - cum.begin());
+        std::size_t k = upper_index(cum, a, closed ? n + 1 : n);
         k = std::clamp<std::size_t>(k, 1, closed ? n : n - 1);
         const std::size_t i = k - 1, j = k % n;
         const double seg = cum[k] - cum[i];
@@ -151,31 +157,83 @@ std::vector<double> arc_mean(const std::vector<double>& v, const std::vector<dou
                              double reach) {
     const std::size_t n = v.size();
     std::vector<double> out(n, 0.0);
+    if (n == 0) return out;
     auto joined = [&](std::size_t a, std::size_t b) { return std::abs(v[a] - v[b]) <= kJoinPx; };
+    // Points laid out thrice round a ring (arc - length, arc, arc + length),
+    // so that windows need not wrap; prefix sums of the values, so that a
+    // window is one subtraction.
+    const std::size_t m = ring ? 3 * n : n;
+    std::vector<double> arc(m), prefix(m + 1, 0.0);
+    // The stretch between joins each point is in: [first[i], last[i]].
+    std::vector<std::size_t> first(m), last(m);
+    for (std::size_t i = 0; i < m; ++i) {
+        const std::size_t k = i % n;
+        arc[i] = s[k] + (ring ? (double(i / n) - 1.0) * length : 0.0);
+        prefix[i + 1] = prefix[i] + v[k];
+        first[i] = i > 0 && joined((i - 1) % n, k) ? first[i - 1] : i;
+    }
+    for (std::size_t i = m; i-- > 0;) last[i] = i + 1 < m && joined(i % n, (i + 1) % n) ? last[i + 1] : i;
+    std::size_t lo = 0, hi = 0;
     for (std::size_t k = 0; k < n; ++k) {
-        double sum = v[k];
-        std::size_t count = 1;
-        for (const int dir : {-1, 1}) {
-            std::size_t at = k;
-            for (std::size_t steps = 1; steps < n; ++steps) {
-                std::size_t next;
-                double gap;
-                if (dir < 0) {
-                    if (!ring && at == 0) break;
-                    next = (at + n - 1) % n;
-                    gap = s[k] - s[next] + (next > k ? length : 0.0);
-                } else {
-                    if (!ring && at + 1 == n) break;
-                    next = (at + 1) % n;
-                    gap = s[next] - s[k] + (next < k ? length : 0.0);
-                }
-                if (gap > reach || !joined(at, next)) break;
-                sum += v[next], ++count, at = next;
-            }
-        }
-        out[k] = sum / double(count);
+        const std::size_t i = ring ? k + n : k;
+        while (lo < i && arc[lo] < arc[i] - reach) ++lo;
+        while (hi < m && arc[hi] <= arc[i] + reach) ++hi;
+        const std::size_t a = std::max(lo, first[i]), b = std::min(hi, last[i] + 1);
+        out[k] = (prefix[b] - prefix[a]) / double(b - a);
     }
     return out;
+}
+
+/// Departures @p e known at the snaxels @p has marks, spread to those
+/// between by arc length @p s (round a ring of @p length); between kept
+/// snaxels whose departures do not meet (an event put new line between
+/// them) the new line goes on uniformly from the one before and the
+/// parameter jumps at the one after, rather than squeezing it between them.
+void spread(std::vector<double>& e, const std::vector<char>& has, const std::vector<double>& s, double length, bool ring) {
+    const std::size_t n = e.size();
+    std::vector<std::size_t> at; // the kept snaxels in loop order
+    for (std::size_t k = 0; k < n; ++k)
+        if (has[k]) at.push_back(k);
+    for (std::size_t i = 0; i < at.size(); ++i) {
+        const bool last = i + 1 == at.size();
+        if (last && !ring) break;
+        const std::size_t p = at[i], q = last ? at[0] : at[i + 1];
+        const double sp = s[p], sq = last ? s[q] + length : s[q];
+        // Between kept snaxels whose departures do not meet (an
+        // event put new line between them), the new line goes on
+        // uniformly from the one before and the parameter jumps at
+        // the one after, rather than squeezing it between them.
+        const bool join = std::abs(e[q] - e[p]) > kJoinPx;
+        for (std::size_t k = (p + 1) % n; k != q; k = (k + 1) % n) {
+            const double sk = k > p ? s[k] : s[k] + length;
+            const double f = join ? 0.0 : sq > sp ? std::clamp((sk - sp) / (sq - sp), 0.0, 1.0) : 0.0;
+            e[k] = (1.0 - f) * e[p] + f * e[q];
+        }
+    }
+    if (!ring) { // before the first kept snaxel and after the last: theirs
+        for (std::size_t k = 0; k < at.front(); ++k) e[k] = e[at.front()];
+        for (std::size_t k = at.back() + 1; k < n; ++k) e[k] = e[at.back()];
+    }
+}
+
+/// The arc length from snaxel @p k of @p loop to where @p landed (a surface
+/// point it stood on last frame, seen now) falls on the segments beside
+/// it; 0 where it falls farther than 2 px from them.
+double landed_offset(const DrawnLoop& loop, std::size_t k, const glm::dvec2& landed) {
+    const std::size_t n = loop.q.size(), reach = 2;
+    if (n < 2) return 0.0;
+    double best = 1e300, along = 0.0;
+    for (std::size_t d = 0; d < 2 * reach; ++d) {
+        if (!loop.closed && (k + d < reach || k + d - reach + 1 >= n)) continue;
+        const std::size_t i = (k + n + d - reach) % n, j = (i + 1) % n;
+        const glm::dvec2 a = loop.q[i], b = loop.q[j], ab = b - a;
+        const double l2 = glm::dot(ab, ab);
+        const double f = l2 > 0.0 ? std::clamp(glm::dot(landed - a, ab) / l2, 0.0, 1.0) : 0.0;
+        const double dist = glm::length(landed - (a + f * ab));
+        // Signed: a segment before snaxel k gives a negative offset.
+        if (dist < best) best = dist, along = (d < reach ? -1.0 : 1.0) * glm::length(a + f * ab - loop.q[k]);
+    }
+    return best <= 2.0 ? along : 0.0;
 }
 
 } // namespace
@@ -188,8 +246,11 @@ void parameterize_still(DrawnContour& contour) {
     }
 }
 
-void StrokeParameter::step(DrawnContour& contour, const std::vector<AnimatedLoop>& loops) {
+void StrokeParameter::step(DrawnContour& contour, const std::vector<AnimatedLoop>& loops,
+                           const std::vector<std::vector<SurfacePoint>>* surface,
+                           const std::function<glm::dvec2(const SurfacePoint&)>& project) {
     std::unordered_map<std::uint64_t, Carried> next;
+    next.reserve(previous_.size() + previous_.size() / 4);
     std::vector<double> periods(contour.loops.size(), 0.0), stretches(contour.loops.size(), 1.0);
     for (std::size_t l = 0; l < contour.loops.size(); ++l) {
         DrawnLoop& loop = contour.loops[l];
@@ -199,11 +260,15 @@ void StrokeParameter::step(DrawnContour& contour, const std::vector<AnimatedLoop
         const double length = n ? s.back() + (loop.closed ? glm::length(loop.q.front() - loop.q.back()) : 0.0) : 0.0;
         // The snaxels that go on, and the previous loop most of them come from.
         std::vector<std::pair<std::size_t, double>> kept; // (snaxel, its u last frame)
+        std::vector<std::uint32_t> kept_from;              // the loop it was on
         std::unordered_map<std::uint32_t, std::size_t> from;
         for (std::size_t k = 0; k < n && k < ids.size(); ++k) {
             const auto it = previous_.find(ids[k]);
             if (it == previous_.end()) continue;
-            kept.push_back({k, it->second.u});
+            double u = it->second.u;
+            if (surface && project) u -= landed_offset(loop, k, project(it->second.where));
+            kept.push_back({k, u});
+            kept_from.push_back(it->second.loop);
             ++from[it->second.loop];
         }
         std::uint32_t source = 0;
@@ -214,8 +279,8 @@ void StrokeParameter::step(DrawnContour& contour, const std::vector<AnimatedLoop
         // the other side's are taken as new.
         std::vector<std::pair<std::size_t, double>> own;
         own.reserve(kept.size());
-        for (const auto& [k, u] : kept)
-            if (previous_.at(ids[k]).loop == source) own.push_back({k, u});
+        for (std::size_t i = 0; i < kept.size(); ++i)
+            if (kept_from[i] == source) own.push_back(kept[i]);
         kept = std::move(own);
         const bool ring = loop.closed && !kept.empty() && previous_period_[source] > 0.0;
         loop.u = s; // a new line: arc length from its first snaxel
@@ -257,13 +322,18 @@ void StrokeParameter::step(DrawnContour& contour, const std::vector<AnimatedLoop
                 // The most common value on the circle (where an event joined
                 // stretches whose u do not meet, the mean would fall between
                 // them): the fullest 16-px bin, refined by the mean round it.
-                const std::size_t bins = std::max<std::size_t>(1, std::size_t(old_period / 16.0));
-                std::vector<std::size_t> count(bins, 0);
-                for (const double x : d) ++count[std::min(bins - 1, std::size_t(wrap(x, old_period) / old_period * double(bins)))];
-                std::size_t best = 0, fullest = 0;
-                for (std::size_t i = 0; i < bins; ++i) {
-                    const std::size_t around = count[(i + bins - 1) % bins] + count[i] + count[(i + 1) % bins];
-                    if (around > fullest) fullest = around, best = i;
+                const long bins = std::max(1L, std::lround(std::floor(old_period / 16.0)));
+                std::map<long, std::size_t> count;
+                for (const double x : d) ++count[std::min(bins - 1, std::lround(std::floor(wrap(x, old_period) / old_period * double(bins))))];
+                long best = 0;
+                std::size_t fullest = 0;
+                const auto in_bin = [&](long bin) {
+                    const auto it = count.find((bin + bins) % bins);
+                    return it == count.end() ? 0 : it->second;
+                };
+                for (const auto& entry : count) {
+                    const std::size_t around = in_bin(entry.first - 1) + entry.second + in_bin(entry.first + 1);
+                    if (around > fullest) fullest = around, best = entry.first;
                 }
                 const double centre = (double(best) + 0.5) / double(bins) * old_period;
                 double sum = 0.0;
@@ -285,29 +355,7 @@ void StrokeParameter::step(DrawnContour& contour, const std::vector<AnimatedLoop
             std::vector<double> e(n, 0.0);
             std::vector<char> has(n, 0);
             for (std::size_t i = 0; i < kept.size(); ++i) e[kept[i].first] = nearest(d[i] - c), has[kept[i].first] = 1;
-            std::vector<std::size_t> at; // the kept snaxels in loop order
-            for (std::size_t k = 0; k < n; ++k)
-                if (has[k]) at.push_back(k);
-            for (std::size_t i = 0; i < at.size(); ++i) {
-                const bool last = i + 1 == at.size();
-                if (last && !ring) break;
-                const std::size_t p = at[i], q = last ? at[0] : at[i + 1];
-                const double sp = s[p], sq = last ? s[q] + length : s[q];
-                // Between kept snaxels whose departures do not meet (an
-                // event put new line between them), the new line goes on
-                // uniformly from the one before and the parameter jumps at
-                // the one after, rather than squeezing it between them.
-                const bool join = std::abs(e[q] - e[p]) > kJoinPx;
-                for (std::size_t k = (p + 1) % n; k != q; k = (k + 1) % n) {
-                    const double sk = k > p ? s[k] : s[k] + length;
-                    const double f = join ? 0.0 : sq > sp ? std::clamp((sk - sp) / (sq - sp), 0.0, 1.0) : 0.0;
-                    e[k] = (1.0 - f) * e[p] + f * e[q];
-                }
-            }
-            if (!ring) { // before the first kept snaxel and after the last: theirs
-                for (std::size_t k = 0; k < at.front(); ++k) e[k] = e[at.front()];
-                for (std::size_t k = at.back() + 1; k < n; ++k) e[k] = e[at.back()];
-            }
+            spread(e, has, s, length, ring);
             // The departures are kept but for their ripple: each frame they
             // move kRelaxToUniform of the way to their mean over
             // kUniformReach px of the line either side, so the parameter's
@@ -326,7 +374,8 @@ void StrokeParameter::step(DrawnContour& contour, const std::vector<AnimatedLoop
             stretches[l] = b;
         }
         periods[l] = loop.u_period;
-        for (std::size_t k = 0; k < n && k < ids.size(); ++k) next[ids[k]] = {loop.u[k], std::uint32_t(l)};
+        for (std::size_t k = 0; k < n && k < ids.size(); ++k)
+            next[ids[k]] = {loop.u[k], std::uint32_t(l), surface && l < surface->size() && k < (*surface)[l].size() ? (*surface)[l][k] : SurfacePoint{}};
     }
     previous_ = std::move(next);
     previous_period_ = std::move(periods);
@@ -409,7 +458,7 @@ StrokePoint LoopAttributes::at(double arc) const {
     if (loop_.closed) arc = wrap(arc, length_);
     else arc = std::clamp(arc, 0.0, length_);
     const std::size_t segs = loop_.closed ? n : n - 1;
-    std::size_t k = std::size_t(std::upper_bound(cum_.begin(), cum_.end(), arc) - cum_.begin());
+    std::size_t k = upper_index(cum_, arc, cum_.size());
     k = std::clamp<std::size_t>(k, 1, segs);
     const std::size_t i = k - 1, j = k % n;
     const double seg = (k < n ? cum_[k] : length_) - cum_[i];
@@ -439,7 +488,19 @@ std::vector<StrokePoint> LoopAttributes::run(const DrawnRun& run) const {
     std::vector<StrokePoint> out;
     if (run.q.empty()) return out;
     out.reserve(run.q.size());
-    double arc = arc_of(run.q.front());
+    // Where the run starts along the loop: at its first snaxel, or the
+    // change point on the segment before it (not the nearest point of the
+    // loop, which near a cusp may lie on another branch).
+    double arc = 0.0;
+    if (run.first < loop_.q.size()) {
+        arc = cum_[run.first];
+        if (run.from_change) {
+            arc -= glm::length(loop_.q[run.first] - run.q.front());
+            if (arc < 0.0 && loop_.closed) arc += length_;
+        }
+    } else {
+        arc = arc_of(run.q.front());
+    }
     const std::size_t n = run.q.size(), segments = run.closed ? n : n - 1;
     for (std::size_t k = 0; k < n; ++k) {
         StrokePoint p = at(arc);
@@ -456,6 +517,94 @@ std::vector<StrokePoint> LoopAttributes::run(const DrawnRun& run) const {
             out.push_back(m);
         }
         arc += seg;
+    }
+    return out;
+}
+
+std::vector<Dash> dash_spans(const std::vector<double>& arcs, const std::vector<double>& m,
+                             const std::vector<double>& pattern, double period) {
+    std::vector<Dash> out;
+    double cycle = 0.0;
+    for (const double d : pattern) cycle += d;
+    if (!(cycle > 0.0) || arcs.size() < 2) return out;
+    const std::int64_t count = std::int64_t(pattern.size() + 1) / 2;
+    // The dash at measure x: its id (-1 in a gap) and its length.
+    double length = 0.0;
+    auto dash_at = [&](double x) -> std::int64_t {
+        const double k = std::floor(x / cycle);
+        double at = x - k * cycle;
+        for (std::size_t i = 0; i < pattern.size(); i += 2) {
+            if (at < pattern[i]) {
+                length = pattern[i];
+                return std::int64_t(k) * count + std::int64_t(i / 2);
+            }
+            at -= pattern[i] + (i + 1 < pattern.size() ? pattern[i + 1] : 0.0);
+        }
+        return -1;
+    };
+    // The pattern's boundaries strictly between two measures.
+    auto boundaries = [&](double lo, double hi, std::vector<double>& into) {
+        for (double base = std::floor(lo / cycle) * cycle; base <= hi; base += cycle) {
+            double at = base;
+            for (std::size_t i = 0; i < pattern.size(); ++i) {
+                if (at > lo && at < hi) into.push_back(at);
+                at += pattern[i];
+            }
+        }
+    };
+    std::map<std::int64_t, int> seen;
+    std::int64_t open = -1;
+    double open_from = 0.0, open_length = 0.0;
+    auto close = [&](double to) {
+        if (open < 0) return;
+        const int again = seen[open]++;
+        out.push_back({open + (std::int64_t(again) << 40), open_from, to, open_length});
+        open = -1;
+    };
+    std::vector<double> cuts;
+    for (std::size_t i = 0; i + 1 < arcs.size(); ++i) {
+        const double a0 = arcs[i], a1 = arcs[i + 1];
+        double m0 = m[i], m1 = m[i + 1];
+        if (period > 0.0 && std::abs(m1 - m0) > 0.5 * period) m1 -= period * std::round((m1 - m0) / period); // the seam
+        cuts.clear();
+        boundaries(std::min(m0, m1), std::max(m0, m1), cuts);
+        if (m1 < m0) std::reverse(cuts.begin(), cuts.end());
+        double from_arc = a0, from_m = m0;
+        auto piece = [&](double to_arc, double to_m) {
+            const std::int64_t id = dash_at(0.5 * (from_m + to_m));
+            if (id != open) {
+                close(from_arc);
+                if (id >= 0) open = id, open_from = from_arc, open_length = length;
+            }
+            from_arc = to_arc, from_m = to_m;
+        };
+        for (const double c : cuts) {
+            const double f = m1 != m0 ? (c - m0) / (m1 - m0) : 0.0;
+            piece(a0 + f * (a1 - a0), c);
+        }
+        piece(a1, m1);
+    }
+    close(arcs.back());
+    return out;
+}
+
+std::vector<std::vector<glm::dvec2>> dash_pieces(const std::vector<glm::dvec2>& q, const std::vector<double>& arcs,
+                                                 const std::vector<Dash>& spans) {
+    std::vector<std::vector<glm::dvec2>> out;
+    auto at = [&](double x) {
+        std::size_t k = upper_index(arcs, x, arcs.size());
+        if (k == 0) return q.front();
+        if (k >= q.size()) return q.back();
+        const double span = arcs[k] - arcs[k - 1];
+        const double f = span > 0.0 ? (x - arcs[k - 1]) / span : 0.0;
+        return (1.0 - f) * q[k - 1] + f * q[k];
+    };
+    for (const Dash& d : spans) {
+        std::vector<glm::dvec2> piece{at(d.from)};
+        for (std::size_t k = 0; k < q.size(); ++k)
+            if (arcs[k] > d.from && arcs[k] < d.to) piece.push_back(q[k]);
+        piece.push_back(at(d.to));
+        out.push_back(std::move(piece));
     }
     return out;
 }
@@ -499,13 +648,15 @@ void stroke_outline(const StrokeStyle& style, const std::vector<StrokePoint>& ce
         return x * (2.0 - x);
     };
     const double lo = style.min_width(), hi = style.max_width();
-    const double nib = style.calligraphy_angle * kPi / 180.0;
+    const double nib = style.calligraphy_angle * kPi / 180.0, nib_cos = std::cos(nib), nib_sin = std::sin(nib);
     std::vector<double> half(n);
     for (std::size_t k = 0; k < n; ++k) {
         double w = style.width_by == StrokeStyle::WidthBy::None ? style.width : lo + (hi - lo) * std::clamp(centre[k].weight, 0.0, 1.0);
         if (style.calligraphy_ratio < 1.0) {
-            const double along = std::atan2(-t[k].y, t[k].x); // as seen: y up
-            w *= style.calligraphy_ratio + (1.0 - style.calligraphy_ratio) * std::abs(std::sin(along - nib));
+            // |sin(theta - nib)| with theta the direction as seen (y up):
+            // cos theta = t.x, sin theta = -t.y.
+            const double across = std::abs(-t[k].y * nib_cos - t[k].x * nib_sin);
+            w *= style.calligraphy_ratio + (1.0 - style.calligraphy_ratio) * across;
         }
         if (!closed) {
             w *= ease(cum[k], ts) * ease(length - cum[k], te);

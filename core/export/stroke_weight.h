@@ -13,12 +13,14 @@
 /// draws what the static frame draws.
 
 #include <cstdint>
+#include <functional>
 #include <unordered_map>
 #include <vector>
 
 #include <glm/glm.hpp>
 
 #include "snaxels/export/animated_svg.h"
+#include "snaxels/mesh/elements.h"
 #include "snaxels/export/drawing.h"
 #include "snaxels/style/style.h"
 
@@ -40,16 +42,30 @@ void parameterize_still(DrawnContour& contour);
 
 /// The stroke parameter of one contour kind carried from frame to frame
 /// through the snaxels' identities.
+/// A point of the surface: parameter t on the edge from vertex a to vertex b.
+struct SurfacePoint {
+    VertexId a, b;
+    double t = 0.0;
+};
+
 class StrokeParameter {
   public:
     /// Fills u and u_period of each loop of @p contour (this frame), whose
     /// snaxel identities are @p loops (parallel to contour.loops).
-    void step(DrawnContour& contour, const std::vector<AnimatedLoop>& loops);
+    /// With @p surface (per loop, the surface point of each snaxel) and
+    /// @p project (a surface point in this frame's image), a snaxel that
+    /// goes on hands its u to where the surface point it stood on last
+    /// frame now shows on the line, not to itself: a snaxel slides along
+    /// its edge as the contour moves over the surface, the surface does not.
+    void step(DrawnContour& contour, const std::vector<AnimatedLoop>& loops,
+              const std::vector<std::vector<SurfacePoint>>* surface = nullptr,
+              const std::function<glm::dvec2(const SurfacePoint&)>& project = {});
 
   private:
     struct Carried {
         double u;
         std::uint32_t loop;
+        SurfacePoint where;
     };
     std::unordered_map<std::uint64_t, Carried> previous_;
     std::vector<double> previous_period_; ///< per loop of the last frame; 0: open
@@ -72,7 +88,7 @@ constexpr double kCurvatureRadiusPx = 6.0;
 /// The longest step (pixels) between the points a line of varying width or
 /// a wobble is drawn through: longer segments (the straight edges of hard
 /// surfaces) are subdivided, so that taper, width and noise vary along them.
-constexpr double kMaxStrokeStepPx = 2.0;
+constexpr double kMaxStrokeStepPx = 3.0;
 
 /// A point of a line's centre: where, its stroke parameter and its weight.
 struct StrokePoint {
@@ -100,6 +116,42 @@ class LoopAttributes {
     std::vector<double> cum_;
     double length_ = 0.0;
 };
+
+/// One dash of a line: the pattern's dash @p id (k times its number of
+/// dashes plus the dash's place in it, k the pattern's repeat) over
+/// [from, to] of a measure along the line.
+struct Dash {
+    std::int64_t id = 0;
+    double from = 0.0, to = 0.0;
+    double length = 0.0; ///< the pattern's length for this dash
+};
+
+/// The stretches of a line where @p pattern is on, the pattern laid along
+/// a measure m given at arc lengths @p arcs (@p m linear between them): the
+/// stroke parameter for dashes fastened to the surface, arc length from a
+/// run's start for screen dashes. m may run backwards (a dash is where m is
+/// on, whichever way the line goes); round a loop's seam, where m falls by
+/// about @p period, it comes round again. Returns [from, to] in arc length
+/// with the dash's id; where m passes one dash twice, the second piece's id
+/// is offset by 2^40 (ids stay unique).
+std::vector<Dash> dash_spans(const std::vector<double>& arcs, const std::vector<double>& m,
+                             const std::vector<double>& pattern, double period);
+
+/// The pieces of polyline @p q (arc length @p arcs at its points) over
+/// @p spans: each a polyline from its start through the points inside it
+/// to its end.
+std::vector<std::vector<glm::dvec2>> dash_pieces(const std::vector<glm::dvec2>& q, const std::vector<double>& arcs,
+                                                 const std::vector<Dash>& spans);
+
+/// Whether @p stroke's dashes are drawn as pieces of the line (geometry)
+/// in animations: a dashed line of constant width, unless its dashes are
+/// screen dashes and @p screen_dash_array keeps them a dash array (Lottie,
+/// where a shape per dash would multiply the file). A path with a dash
+/// array restarts it at every subpath, which differs from the static
+/// frame's wherever the subpaths differ.
+inline bool dashes_as_geometry(const StrokeStyle& stroke, bool screen_dash_array = false) {
+    return !stroke.dash.empty() && !stroke.variable_width() && (stroke.dash_on_surface || !screen_dash_array);
+}
 
 /// The centre line @p centre (open, or a closed ring) displaced across
 /// itself by the style's wobble at @p seconds (boil). @p period: the

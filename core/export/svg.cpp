@@ -126,7 +126,7 @@ std::string kind_group(const ContourSpec& spec, const StrokeStyle& stroke, const
         append_number(out, stroke.opacity);
         out += "\"";
     }
-    if (!stroke.dash.empty()) {
+    if (!stroke.dash.empty() && !stroke.dash_on_surface) { // surface dashes are pieces of the line
         out += " stroke-dasharray=\"";
         for (std::size_t i = 0; i < stroke.dash.size(); ++i) {
             if (i) out += ' ';
@@ -204,43 +204,12 @@ namespace {
 /// How far a static fill's outline may move when points are left out (px).
 constexpr double kFillTolerancePx = 0.01;
 
-double dash_period(const StrokeStyle& stroke) {
-    double period = 0.0;
-    for (const double d : stroke.dash) period += d;
-    return period;
-}
-
-// @p phase: where in the dash pattern the path starts, for surface-fastened
-// dashes (ignored otherwise).
-void append_path(std::string& out, const std::vector<glm::dvec2>& q, bool closed, const StrokeStyle& stroke,
-                 double phase) {
+void append_path(std::string& out, const std::vector<glm::dvec2>& q, bool closed, const StrokeStyle& stroke) {
     if (q.size() < 2) return;
     out += "<path d=\"";
     if (stroke.smoothing > 0.0) svg::append_chain_data(out, smooth_polyline(q, closed, stroke.smoothing));
     else svg::append_path_data(out, q, closed);
-    out += "\"";
-    const double period = dash_period(stroke);
-    if (stroke.dash_on_surface && period > 0.0) {
-        out += " stroke-dashoffset=\"";
-        svg::append_number(out, std::fmod(phase, period));
-        out += "\"";
-    }
-    out += "/>\n";
-}
-
-// Arc length along the loop from its first point to the point nearest @p p.
-double arc_to(const std::vector<glm::dvec2>& loop, bool closed, const glm::dvec2& p) {
-    double best = 1e300, at = 0.0, arc = 0.0;
-    const std::size_t n = loop.size(), segments = closed ? n : n - 1;
-    for (std::size_t s = 0; s < segments; ++s) {
-        const glm::dvec2 a = loop[s], b = loop[(s + 1) % n], ab = b - a;
-        const double l2 = glm::dot(ab, ab);
-        const double t = l2 > 0.0 ? std::clamp(glm::dot(p - a, ab) / l2, 0.0, 1.0) : 0.0;
-        const double d = glm::length(p - (a + t * ab));
-        if (d < best) best = d, at = arc + t * std::sqrt(l2);
-        arc += std::sqrt(l2);
-    }
-    return at;
+    out += "\"/>\n";
 }
 
 // A loop's runs of one visibility drawn with line weight: wobbled by the
@@ -263,7 +232,26 @@ void draw_weighted(std::string& out, const DrawnLoop& given, bool hidden, const 
         if (!stroke.variable_width()) {
             std::vector<glm::dvec2> q;
             for (const StrokePoint& p : centre) q.push_back(p.q);
-            append_path(out, q, closed, stroke, loop->dash_phase);
+            if (stroke.dash_on_surface && !stroke.dash.empty()) {
+                // Dashes fastened to the surface: the pieces of the line
+                // where the pattern, laid along its stroke parameter, is on.
+                if (closed) q.push_back(q.front()), centre.push_back(centre.front());
+                std::vector<double> arcs(q.size(), 0.0), u(q.size(), 0.0);
+                for (std::size_t i = 0; i < q.size(); ++i) {
+                    if (i) arcs[i] = arcs[i - 1] + glm::length(q[i] - q[i - 1]);
+                    u[i] = centre[i].u;
+                }
+                const auto pieces = dash_pieces(q, arcs, dash_spans(arcs, u, stroke.dash, loop->u_period));
+                if (pieces.empty()) return;
+                out += "<path d=\"";
+                for (std::size_t i = 0; i < pieces.size(); ++i) {
+                    if (i) out += ' ';
+                    svg::append_path_data(out, pieces[i], false);
+                }
+                out += "\"/>\n";
+                return;
+            }
+            append_path(out, q, closed, stroke);
             return;
         }
         std::vector<std::vector<glm::dvec2>> outline;
@@ -348,15 +336,12 @@ std::string to_svg(const Drawing& drawing, const Style& style, const std::vector
                     return;
                 }
                 if (loop.runs.empty()) { // no visibility: drawn whole, as visible
-                    if (!hidden) append_path(out, loop.q, loop.closed, stroke, loop.dash_phase);
+                    if (!hidden) append_path(out, loop.q, loop.closed, stroke);
                     return;
                 }
                 for (const DrawnRun& run : loop.runs) {
                     if (run.qi == kNotDrawn || (run.qi > 0) != hidden || run.q.empty()) continue;
-                    const double phase = stroke.dash_on_surface && !run.closed
-                                             ? loop.dash_phase + arc_to(loop.q, loop.closed, run.q.front())
-                                             : loop.dash_phase;
-                    append_path(out, run.q, run.closed, stroke, phase);
+                    append_path(out, run.q, run.closed, stroke);
                 }
             };
             if (!by_object) {

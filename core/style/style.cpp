@@ -340,6 +340,15 @@ struct Parser {
         pair("calligraphy", s.calligraphy_angle, s.calligraphy_ratio, -360.0, 360.0, 0.01, 1.0, "30 0.3 (degrees, and a ratio from 0.01 to 1)");
         pair("wobble", s.wobble_amplitude, s.wobble_wavelength, 0.0, 100.0, 1.0, 10000.0, "1.5 40 (pixels: amplitude, wavelength from 1)");
         s.boil_rate = number(node, "boil", s.boil_rate, 0.0, 120.0);
+        // A line of varying width is a filled outline, and a wobbling line
+        // has no dash pattern either: a dash the element gives is an error,
+        // one it inherits (hidden lines are dashed by default) is dropped.
+        if (!s.dash.empty() && (s.variable_width() || s.wobble_amplitude > 0.0)) {
+            if (node.attribute("dash"))
+                fail(node, std::string("dash cannot be combined with ") +
+                               (s.wobble_amplitude > 0.0 ? "wobble" : "taper, width-by or calligraphy (a line of varying width is a filled outline)"));
+            s.dash.clear();
+        }
         return s;
     }
 

@@ -57,8 +57,11 @@ struct StrokeStyle {
         return taper_start > 0.0 || taper_end > 0.0 || width_by != WidthBy::None || calligraphy_ratio < 1.0;
     }
     /// The line reads the stroke parameter carried on the surface
-    /// (DrawnLoop::u): it is variable-width or wobbles.
-    bool needs_parameter() const { return variable_width() || wobble_amplitude > 0.0; }
+    /// (DrawnLoop::u): it is variable-width, wobbles, or has dashes
+    /// fastened to the surface.
+    bool needs_parameter() const {
+        return variable_width() || wobble_amplitude > 0.0 || (dash_on_surface && !dash.empty());
+    }
     double min_width() const { return width_min >= 0.0 ? width_min : 0.5 * width; }
     double max_width() const { return width_max >= 0.0 ? width_max : 1.5 * width; }
 };

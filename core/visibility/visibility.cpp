@@ -164,7 +164,7 @@ ContourVisibility cut_runs(const SnaxelEngine& engine, const ContourResult& cont
         // Walk the loop once from the first change (closed) or its start (open).
         const std::size_t first = loop.closed ? start : 0;
         const std::size_t steps = loop.closed ? n : n - 1;
-        VisibilityRun run{lv.snaxel_qi[first], false, {}};
+        VisibilityRun run{lv.snaxel_qi[first], false, {}, first, loop.closed};
         glm::dvec3 first_change{};
         if (loop.closed) {
             first_change = change_point(order[(first + n - 1) % n], order[first], lv.snaxel_qi[(first + n - 1) % n]);
@@ -183,7 +183,7 @@ ContourVisibility cut_runs(const SnaxelEngine& engine, const ContourResult& cont
                 lv.change_before[next] = c;
                 run.points.push_back(c);
                 lv.runs.push_back(std::move(run));
-                run = VisibilityRun{lv.snaxel_qi[next], false, {c}};
+                run = VisibilityRun{lv.snaxel_qi[next], false, {c}, next, true};
             }
             run.points.push_back(point(next));
         }

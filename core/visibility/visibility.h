@@ -36,6 +36,10 @@ struct VisibilityRun {
     int qi = 0;
     bool closed = false; ///< the whole loop, closed, at one QI
     std::vector<glm::dvec3> points;
+    /// The loop index of the first snaxel among points; points[0] is the
+    /// change point on the segment before it when @p from_change.
+    std::size_t first = 0;
+    bool from_change = false;
 };
 
 struct LoopVisibility {

@@ -1,5 +1,7 @@
-# The animated SVG of a 360-frame horse turntable is at most a fifth of the
-# size of its 360 static frame SVGs (prints both figures), and its paths
+# The animated SVG of a 360-frame horse turntable is at most a quarter of
+# the size of its 360 static frame SVGs (prints both figures; 15% when
+# dashes were a dash array, 21% since they are pieces of the line, which
+# keeps them where the static frames draw them: docs/animation.md), and its paths
 # persist: at least 80% of the stroke length x frames carried by paths shown
 # 30 frames or more, at most 10% of the paths shown one frame only, and
 # without SMIL only the paths of frame 0 show (measured by PERSISTENCE from
@@ -28,9 +30,9 @@ foreach(f IN LISTS frames)
 endforeach()
 math(EXPR ratio_pct "100 * ${animated} / ${total}")
 message("animated SVG ${animated} bytes; 360 static SVGs ${total} bytes; ratio ${ratio_pct}%")
-math(EXPR limit "${total} / 5")
+math(EXPR limit "${total} / 4")
 if(animated GREATER limit)
-  message(FATAL_ERROR "the animated SVG is more than a fifth of the static frames")
+  message(FATAL_ERROR "the animated SVG is more than a quarter of the static frames")
 endif()
 execute_process(COMMAND ${PERSISTENCE} ${OUT}/horse.svg 360 --strokes 30 0.8 --one-frame 0.1 --frame0-only
   RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)

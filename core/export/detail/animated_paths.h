@@ -42,14 +42,11 @@ struct AnimatedPathData {
     const RegionStyle* region = nullptr;
     std::string fill_colour; ///< the region's fill (its material's with fill="material")
     int first = 0, last = 0; ///< frames shown
-    /// Strokes: the contour sequence; fills: the region track. With run (a
-    /// surface-dashed stroke's run, else 0) what a path follows, so that a
-    /// path written in pieces (AnimationWriter) goes on from piece to piece.
+    /// Strokes: the contour sequence; fills: the region track: what a path
+    /// follows, so that a path written in pieces (AnimationWriter) goes on
+    /// from piece to piece.
     std::uint64_t track = 0;
-    int run = 0;
     std::vector<PathSegment> segments;
-    /// Surface-fastened dashes: the dash offset (pixels) at key times (frames).
-    std::vector<double> dash_times, dash_values;
 };
 
 /// When @p frames are a chunk of a longer animation (AnimationWriter): its

@@ -65,8 +65,4 @@ inline constexpr const char* kAnimationEnd = "\"/>";
 std::size_t append_path(std::string& out, const std::string& attributes, const AnimatedPath& path, const Clock& clock,
                         const std::string& children = {});
 
-/// A linear animation of a numeric attribute through (frame time, value) keys.
-std::string number_animation(const std::string& attribute, const std::vector<double>& times,
-                             const std::vector<double>& values, const Clock& clock);
-
 } // namespace snaxels::smil

@@ -64,12 +64,16 @@ TEST(LineWeight, StyleAttributes) {
     const StrokeStyle wobbly = parse("wobble=\"1 20\"").contours[0].visible;
     EXPECT_FALSE(wobbly.variable_width());
     EXPECT_TRUE(wobbly.needs_parameter());
+    // Hidden lines' default dashes give way to line weight.
+    const Style hidden = parse_style("<style version=\"1\"><contour kind=\"visual\"><hidden taper=\"5\"/></contour></style>", "test", nullptr);
+    EXPECT_TRUE(hidden.contours[0].hidden.dash.empty());
     // Without the attributes nothing reads the parameter.
     EXPECT_FALSE(parse("width=\"2\"").contours[0].visible.needs_parameter());
     // Bad values are named.
     for (const char* bad : {"taper=\"x\"", "taper=\"1 2 3\"", "taper=\"150%\"", "width-by=\"speed\"",
                             "calligraphy=\"30\"", "calligraphy=\"30 0\"", "wobble=\"1\"", "wobble=\"1 0.5\"",
-                            "width-min=\"3\" width-max=\"2\"", "boil=\"-1\""}) {
+                            "width-min=\"3\" width-max=\"2\"", "boil=\"-1\"", "dash=\"4 3\" taper=\"5\"",
+                            "dash=\"4 3\" wobble=\"1 20\""}) {
         try {
             parse(bad);
             ADD_FAILURE() << bad << " was accepted";
@@ -148,7 +152,15 @@ TEST(LineWeight, ParameterStaysOnTheSurface) {
             tf.contour.fronts.for_each_in_loop(tf.contour.fronts.loops[l], [&](std::int32_t s) { al.ids.push_back(tf.snaxel_id[s]); });
             loops.push_back(std::move(al));
         }
-        parameter.step(d.contours[0], loops);
+        std::vector<std::vector<SurfacePoint>> surface(loops.size());
+        for (std::size_t l = 0; l < loops.size(); ++l)
+            tf.contour.fronts.for_each_in_loop(tf.contour.fronts.loops[l], [&](std::int32_t s) {
+                const Snaxel& sn = tf.contour.fronts.snaxels[s];
+                surface[l].push_back({sn.inside, sn.outside, sn.t});
+            });
+        parameter.step(d.contours[0], loops, &surface, [&](const SurfacePoint& sp) {
+            return proj.project((1.0 - sp.t) * topo.positions()[sp.a] + sp.t * topo.positions()[sp.b]);
+        });
         std::unordered_map<std::uint64_t, double> now;
         for (std::size_t l = 0; l < loops.size(); ++l) {
             const DrawnLoop& loop = d.contours[0].loops[l];

@@ -4,7 +4,7 @@
 
 #include <glm/gtx/rotate_vector.hpp>
 
-#include "snaxels/export/dash_phase.h"
+#include "snaxels/export/stroke_weight.h"
 #include "snaxels/mesh/import.h"
 #include "snaxels/snaxel/tracker.h"
 
@@ -17,22 +17,24 @@ struct DriftResult {
     std::size_t ends = 0;
 };
 
-// Done-when 3: a 120-frame sphere turntable seen from above, so the surface
-// slides along the silhouette. For every dash end of frame k, the surface
-// point under it is carried to frame k+1 (projected with that frame's
-// camera onto its contour); the drift is how far the nearest dash end of
-// frame k+1 is from there, along the contour.
+// A 120-frame sphere turntable seen from above, so the surface slides
+// along the silhouette. For every dash start of frame k, the surface point
+// under it is carried to frame k+1 (projected with that frame's camera onto
+// its contour); the drift is how far the nearest dash start of frame k+1 is
+// from there, in the dash measure. Surface dashes measure the stroke
+// parameter carried by the snaxels (StrokeParameter), screen dashes arc
+// length from the loop's first point.
 DriftResult measure_drift(bool on_surface) {
     const LoadedMesh m = load_mesh("proc:sphere:20000");
     const MeshTopology topo = build_topology(m.mesh);
     const SnaxelEngine engine(topo);
     ContourTracker tracker(topo, ContourSpec{});
     const double period = 12.0; // dash 8, gap 4
-    SurfaceDashPhase dashes(period);
+    StrokeParameter parameter;
     struct Frame {
         std::vector<glm::dvec2> q;
         std::vector<glm::dvec3> p;
-        double phase = 0.0;
+        std::vector<double> u; ///< the dash measure at each point, unwrapped along the loop
         ImageProjection projection;
     };
     std::vector<Frame> frames;
@@ -42,47 +44,54 @@ DriftResult measure_drift(bool on_surface) {
         const TrackedFrame& tf = tracker.step(cam, Light{});
         const ImageProjection proj(cam, glm::dvec3(0.0), 1.0, 800, 800);
         EXPECT_EQ(tf.contour.fronts.loops.size(), 1u);
-        PhaseLoop loop;
-        Frame f{{}, {}, 0.0, proj};
+        Drawing d = make_drawing(engine, {tf.contour}, proj);
+        AnimatedLoop al;
+        tf.contour.fronts.for_each_in_loop(tf.contour.fronts.loops[0], [&](std::int32_t s) { al.ids.push_back(tf.snaxel_id[s]); });
+        std::vector<std::vector<SurfacePoint>> surface(1);
         tf.contour.fronts.for_each_in_loop(tf.contour.fronts.loops[0], [&](std::int32_t s) {
             const Snaxel& sn = tf.contour.fronts.snaxels[s];
-            f.p.push_back(engine.position(sn));
-            f.q.push_back(proj.project(f.p.back()));
-            loop.surface.push_back({sn.inside, sn.outside, sn.t});
+            surface[0].push_back({sn.inside, sn.outside, sn.t});
         });
-        loop.q = f.q;
-        const auto phases = dashes.step({loop}, [&](const SurfacePoint& sp) {
+        parameter.step(d.contours[0], {al}, &surface, [&](const SurfacePoint& sp) {
             return proj.project((1.0 - sp.t) * topo.positions()[sp.a] + sp.t * topo.positions()[sp.b]);
         });
-        f.phase = on_surface ? phases[0] : 0.0; // screen dashes start at the loop's first point
+        const DrawnLoop& loop = d.contours[0].loops[0];
+        Frame f{loop.q, loop.p, {}, proj};
+        // Screen dashes start at the loop's first point and measure arc
+        // length; surface dashes measure the carried parameter.
+        for (std::size_t i = 0; i < f.q.size(); ++i) {
+            if (i == 0) {
+                f.u.push_back(on_surface ? loop.u[0] : 0.0);
+                continue;
+            }
+            double du = on_surface ? loop.u[i] - loop.u[i - 1] : glm::length(f.q[i] - f.q[i - 1]);
+            if (on_surface && loop.u_period > 0.0) du -= loop.u_period * std::round(du / loop.u_period);
+            f.u.push_back(f.u.back() + du);
+        }
         frames.push_back(std::move(f));
     }
     std::vector<double> drifts;
     for (std::size_t k = 0; k + 1 < frames.size(); ++k) {
         const Frame& a = frames[k];
         const Frame& b = frames[k + 1];
-        const auto arc_a = arc_lengths(a.q), arc_b = arc_lengths(b.q);
-        const double length_a = arc_a.back() + glm::length(a.q.front() - a.q.back());
-        // Dash starts of frame k: arc s with (phase + s) a multiple of the period.
-        for (double s = std::fmod(period - a.phase, period); s < length_a; s += period) {
-            std::size_t i = 0;
-            while (i + 1 < a.q.size() && arc_a[i + 1] < s) ++i;
-            const std::size_t j = (i + 1) % a.q.size();
-            const double seg = glm::length(a.q[j] - a.q[i]);
-            const double t = seg > 0 ? std::clamp((s - arc_a[i]) / seg, 0.0, 1.0) : 0.0;
-            const glm::dvec3 surface = (1.0 - t) * a.p[i] + t * a.p[j];
+        // Dash starts of frame k: where its measure crosses a multiple of the period.
+        for (std::size_t i = 0; i + 1 < a.q.size(); ++i) {
+            const double m0 = a.u[i], m1 = a.u[i + 1];
+            if (m1 <= m0 || std::floor(m1 / period) == std::floor(m0 / period)) continue;
+            const double t = (std::floor(m1 / period) * period - m0) / (m1 - m0);
+            const glm::dvec3 surface = (1.0 - t) * a.p[i] + t * a.p[i + 1];
             const glm::dvec2 carried = b.projection.project(surface);
-            // Where it lands on frame k+1's contour.
-            double best = 1e300, s_b = 0.0;
-            for (std::size_t u = 0; u < b.q.size(); ++u) {
-                const glm::dvec2 p0 = b.q[u], p1 = b.q[(u + 1) % b.q.size()], d = p1 - p0;
+            // Where it lands on frame k+1's contour, and the measure there.
+            double best = 1e300, at = 0.0;
+            for (std::size_t j = 0; j + 1 < b.q.size(); ++j) {
+                const glm::dvec2 p0 = b.q[j], p1 = b.q[j + 1], d = p1 - p0;
                 const double l2 = glm::dot(d, d);
                 const double f = l2 > 0 ? std::clamp(glm::dot(carried - p0, d) / l2, 0.0, 1.0) : 0.0;
                 const double dist = glm::length(carried - (p0 + f * d));
-                if (dist < best) best = dist, s_b = (u < arc_b.size() ? arc_b[u] : 0.0) + f * std::sqrt(l2);
+                if (dist < best) best = dist, at = (1.0 - f) * b.u[j] + f * b.u[j + 1];
             }
             if (best > 2.0) continue;
-            const double r = std::fmod(b.phase + s_b, period);
+            const double r = std::fmod(std::fmod(at, period) + period, period);
             drifts.push_back(std::min(r, period - r));
         }
     }
