@@ -929,7 +929,12 @@ void stroke_paths(const std::vector<AnimationFrame>& frames, std::size_t c, cons
                 if (life.size() == 1) {
                     // A contour of one frame (mostly specks of a pixel or two):
                     // drawn by the kind's path of brief contours.
-                    for (const Run& r : life[0].runs[cls]) run_polyline(loops[0], r.span, stroke, options, brief[cls][first]);
+                    anim::Shape drawn; // may be empty: a run's dashes can all fall in gaps
+                    for (const Run& r : life[0].runs[cls]) run_polyline(loops[0], r.span, stroke, options, drawn);
+                    if (!drawn.empty()) {
+                        anim::Shape& shape = brief[cls][first];
+                        shape.insert(shape.end(), std::make_move_iterator(drawn.begin()), std::make_move_iterator(drawn.end()));
+                    }
                     continue;
                 }
                 AnimatedPathData path;

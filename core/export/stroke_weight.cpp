@@ -568,6 +568,7 @@ std::vector<Dash> dash_spans(const std::vector<double>& arcs, const std::vector<
         if (period > 0.0 && std::abs(m1 - m0) > 0.5 * period) m1 -= period * std::round((m1 - m0) / period); // the seam
         cuts.clear();
         boundaries(std::min(m0, m1), std::max(m0, m1), cuts);
+        cuts.erase(std::unique(cuts.begin(), cuts.end()), cuts.end()); // a dash of no length starts where its gap does
         if (m1 < m0) std::reverse(cuts.begin(), cuts.end());
         double from_arc = a0, from_m = m0;
         auto piece = [&](double to_arc, double to_m) {
@@ -581,6 +582,17 @@ std::vector<Dash> dash_spans(const std::vector<double>& arcs, const std::vector<
         for (const double c : cuts) {
             const double f = m1 != m0 ? (c - m0) / (m1 - m0) : 0.0;
             piece(a0 + f * (a1 - a0), c);
+            // A dash of no length (a dotted line: its caps draw the dot).
+            const double k = std::floor(c / cycle);
+            double at = k * cycle;
+            for (std::size_t e = 0; e < pattern.size(); e += 2) {
+                if (pattern[e] == 0.0 && std::abs(at - c) < 1e-9) {
+                    const std::int64_t id = std::int64_t(k) * count + std::int64_t(e / 2);
+                    const int again = seen[id]++;
+                    out.push_back({id + (std::int64_t(again) << 40), from_arc, from_arc, 0.0});
+                }
+                at += pattern[e] + (e + 1 < pattern.size() ? pattern[e + 1] : 0.0);
+            }
         }
         piece(a1, m1);
     }
