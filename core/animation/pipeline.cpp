@@ -185,7 +185,7 @@ AnimationOutput run_animation(const LoadedMesh& loaded, const std::string& mesh_
             tracker_of.push_back(tracker_of[t]);
         }
         const ContourStyle cs = job.scene.style.contour(spec);
-        stroke_parameters.push_back((cs.visible.draw && cs.visible.needs_parameter()) || (cs.hidden.draw && cs.hidden.needs_parameter())
+        stroke_parameters.push_back((cs.visible.draw && cs.visible.carries_parameter()) || (cs.hidden.draw && cs.hidden.carries_parameter())
                                         ? std::make_unique<StrokeParameter>()
                                         : nullptr);
     }

@@ -857,8 +857,9 @@ void stroke_paths(const std::vector<AnimationFrame>& frames, std::size_t c, cons
         return st.draw && dashes_as_geometry(st, options.screen_dash_array) && !st.dash_on_surface;
     };
     const bool screen_dashes = screen(cs.visible) || screen(cs.hidden);
+    const bool carried = (cs.visible.draw && cs.visible.carries_parameter()) || (cs.hidden.draw && cs.hidden.carries_parameter());
     std::vector<DrawnContour> stills;
-    if (weighted)
+    if (carried) // frames made without a carried parameter (by hand): a still's
         for (const AnimationFrame& frame : frames)
             if (std::any_of(frame.drawing.contours[c].loops.begin(), frame.drawing.contours[c].loops.end(),
                             [](const DrawnLoop& l) { return l.u.empty() && !l.q.empty(); })) {

@@ -218,7 +218,7 @@ void draw_weighted(std::string& out, const DrawnLoop& given, bool hidden, const 
     if (given.q.size() < 2) return;
     const DrawnLoop* loop = &given;
     DrawnLoop still;
-    if (given.u.empty()) { // a still: arc length from the first snaxel
+    if (given.u.empty() && stroke.carries_parameter()) { // a still: arc length from the first snaxel
         DrawnContour one;
         one.loops.push_back(given);
         parameterize_still(one);

@@ -59,9 +59,11 @@ struct StrokeStyle {
     /// The line reads the stroke parameter carried on the surface
     /// (DrawnLoop::u): it is variable-width, wobbles, or has dashes
     /// fastened to the surface.
-    bool needs_parameter() const {
-        return variable_width() || wobble_amplitude > 0.0 || (dash_on_surface && !dash.empty());
-    }
+    bool needs_parameter() const { return variable_width() || carries_parameter(); }
+    /// The line reads the parameter's values, not only arc length along its
+    /// runs: it wobbles or has dashes fastened to the surface (a line that
+    /// only varies in width needs none carried through an animation).
+    bool carries_parameter() const { return wobble_amplitude > 0.0 || (dash_on_surface && !dash.empty()); }
     double min_width() const { return width_min >= 0.0 ? width_min : 0.5 * width; }
     double max_width() const { return width_max >= 0.0 ? width_max : 1.5 * width; }
 };
