@@ -2,7 +2,7 @@
 // the SVG pane show after each camera step) while the user orbits the horse
 // one degree at a time: per-step medians and 95th percentiles, with the
 // shading-lines preset (five kinds, hidden lines) and the toon preset
-// (fills from the snaxel map).
+// (fills from the snaxel map); and the same on a noisy 100K-face scan.
 
 #include <benchmark/benchmark.h>
 
@@ -23,9 +23,8 @@ double percentile(std::vector<double> v, double p) {
     return v.empty() ? 0.0 : v[std::min(v.size() - 1, std::size_t(p * double(v.size())))];
 }
 
-void orbit_horse(benchmark::State& state, const char* style_file) {
-    const std::string path = std::string(SNAXELS_TEST_ASSETS) + "/horse.ply";
-    const LoadedMesh mesh = import_mesh(path);
+void orbit(benchmark::State& state, const std::string& path, const char* style_file) {
+    const LoadedMesh mesh = load_mesh(path);
     const Style style = load_style(std::string(SNAXELS_STYLES_DIR) + "/" + style_file, nullptr);
     const glm::dvec3 centre = 0.5 * (mesh.report.bbox_min + mesh.report.bbox_max);
     const double radius = 0.5 * glm::length(mesh.report.bbox_max - mesh.report.bbox_min);
@@ -49,10 +48,19 @@ void orbit_horse(benchmark::State& state, const char* style_file) {
     state.counters["snaxels"] = double(snaxels);
 }
 
+const std::string kHorse = std::string(SNAXELS_TEST_ASSETS) + "/horse.ply";
+const std::string kScan = "proc:scan:100000"; // a noisy scan's many small loops (bench_animation.cpp)
+
 } // namespace
 
-static void BM_AppOrbitHorseShadingLines(benchmark::State& state) { orbit_horse(state, "shading-lines.xml"); }
+static void BM_AppOrbitHorseShadingLines(benchmark::State& state) { orbit(state, kHorse, "shading-lines.xml"); }
 BENCHMARK(BM_AppOrbitHorseShadingLines)->Unit(benchmark::kMillisecond)->Iterations(1)->UseRealTime();
 
-static void BM_AppOrbitHorseToon(benchmark::State& state) { orbit_horse(state, "toon.xml"); }
+static void BM_AppOrbitHorseToon(benchmark::State& state) { orbit(state, kHorse, "toon.xml"); }
 BENCHMARK(BM_AppOrbitHorseToon)->Unit(benchmark::kMillisecond)->Iterations(1)->UseRealTime();
+
+static void BM_AppOrbitScanShadingLines(benchmark::State& state) { orbit(state, kScan, "shading-lines.xml"); }
+BENCHMARK(BM_AppOrbitScanShadingLines)->Unit(benchmark::kMillisecond)->Iterations(1)->UseRealTime();
+
+static void BM_AppOrbitScanToon(benchmark::State& state) { orbit(state, kScan, "toon.xml"); }
+BENCHMARK(BM_AppOrbitScanToon)->Unit(benchmark::kMillisecond)->Iterations(1)->UseRealTime();

@@ -18,7 +18,7 @@ namespace snaxels::cli {
 const char* const kMeshArgumentHelp =
     "MESH is a mesh file in any format Assimp reads (OBJ, PLY, STL, OFF, glTF/GLB,\n"
     "FBX, DAE, 3DS, X, BLEND, ...) or a procedural mesh proc:NAME[:FACES], NAME one\n"
-    "of torus, sphere, bumpy, nose and FACES the approximate face count (default\n"
+    "of torus, sphere, bumpy, nose, scan and FACES the approximate face count (default\n"
     "20000), for example proc:torus:100000.";
 
 const std::vector<Command>& commands() {

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <charconv>
+#include <cstdint>
 #include <cmath>
 #include <functional>
 #include <numbers>
@@ -100,22 +101,53 @@ TriangleSoup make_bumpy_sphere(std::size_t target_faces) {
     });
 }
 
-TriangleSoup make_nose(std::size_t target_faces) {
-    return make_cube_sphere(target_faces, [](const glm::dvec3& d) {
-        return 1.0 + 0.85 * bump(d, {0.0, -0.05, 1.0}, 0.2)    // the nose
-               + 0.25 * bump(d, {0.0, 0.25, 1.0}, 0.14)         // its bridge
-               + 0.2 * bump(d, {0.2, -0.32, 0.93}, 0.1)         // nostrils
-               + 0.2 * bump(d, {-0.2, -0.32, 0.93}, 0.1)
-               - 0.16 * bump(d, {0.38, 0.3, 0.87}, 0.13)        // eye sockets
-               - 0.16 * bump(d, {-0.38, 0.3, 0.87}, 0.13)
-               + 0.14 * bump(d, {0.4, 0.5, 0.77}, 0.12)         // brows
-               + 0.14 * bump(d, {-0.4, 0.5, 0.77}, 0.12)
-               - 0.1 * bump(d, {0.0, -0.6, 0.8}, 0.12)          // mouth
-               + 0.12 * bump(d, {0.0, -0.85, 0.53}, 0.2);       // chin
+namespace {
+
+/// The nose's radius in direction @p d.
+double nose_radius(const glm::dvec3& d) {
+    return 1.0 + 0.85 * bump(d, {0.0, -0.05, 1.0}, 0.2)    // the nose
+           + 0.25 * bump(d, {0.0, 0.25, 1.0}, 0.14)         // its bridge
+           + 0.2 * bump(d, {0.2, -0.32, 0.93}, 0.1)         // nostrils
+           + 0.2 * bump(d, {-0.2, -0.32, 0.93}, 0.1)
+           - 0.16 * bump(d, {0.38, 0.3, 0.87}, 0.13)        // eye sockets
+           - 0.16 * bump(d, {-0.38, 0.3, 0.87}, 0.13)
+           + 0.14 * bump(d, {0.4, 0.5, 0.77}, 0.12)         // brows
+           + 0.14 * bump(d, {-0.4, 0.5, 0.77}, 0.12)
+           - 0.1 * bump(d, {0.0, -0.6, 0.8}, 0.12)          // mouth
+           + 0.12 * bump(d, {0.0, -0.85, 0.53}, 0.2);       // chin
+}
+
+} // namespace
+
+TriangleSoup make_nose(std::size_t target_faces) { return make_cube_sphere(target_faces, nose_radius); }
+
+TriangleSoup make_scan(std::size_t target_faces) {
+    // The nose's cube-sphere grid: n cells along a cube face's side, each
+    // about a quarter turn / n long on the unit sphere.
+    const double cells = std::max(2.0, std::round(std::sqrt(double(target_faces) / 12.0)));
+    const double edge = 0.5 * std::numbers::pi / cells;
+    return make_cube_sphere(target_faces, [edge](const glm::dvec3& d) {
+        // Noise of the grid's scale: a value per point, from a hash of its
+        // direction (the same on every cube face that holds the point, so
+        // the seams still weld), a twentieth of an edge either way...
+        std::uint64_t h = 0x9e3779b97f4a7c15ull;
+        for (int k = 0; k < 3; ++k) {
+            h ^= std::uint64_t(std::llround(d[k] * 1e9)) + 0x9e3779b97f4a7c15ull + (h << 6) + (h >> 2);
+            h = (h ^ (h >> 30)) * 0xbf58476d1ce4e5b9ull;
+            h = (h ^ (h >> 27)) * 0x94d049bb133111ebull;
+            h ^= h >> 31;
+        }
+        const double grain = (double(h >> 11) * 0x1.0p-53 * 2.0 - 1.0) * 0.05 * edge;
+        // ... and ripples a few edges long and a tenth of one high, as a
+        // scanner's registration leaves. (The amounts give a 360-frame
+        // turntable of the 100K-face scan about the paths and events of a
+        // real 100K-face scanned bust.)
+        const double ripple = 0.1 * edge * std::sin(90.0 * d.x + 1.0) * std::sin(83.0 * d.y + 2.0) * std::sin(77.0 * d.z);
+        return nose_radius(d) + grain + ripple;
     });
 }
 
-std::vector<std::string> procedural_names() { return {"torus", "sphere", "bumpy", "nose"}; }
+std::vector<std::string> procedural_names() { return {"torus", "sphere", "bumpy", "nose", "scan"}; }
 
 TriangleSoup make_procedural(const std::string& description) {
     const auto colon = description.find(':');
@@ -133,8 +165,9 @@ TriangleSoup make_procedural(const std::string& description) {
     if (name == "sphere") return make_sphere(faces);
     if (name == "bumpy") return make_bumpy_sphere(faces);
     if (name == "nose") return make_nose(faces);
+    if (name == "scan") return make_scan(faces);
     throw Error("proc:" + description + ": unknown procedural mesh '" + name +
-                "' (known: torus, sphere, bumpy, nose)");
+                "' (known: torus, sphere, bumpy, nose, scan)");
 }
 
 } // namespace snaxels

@@ -21,6 +21,11 @@ TriangleSoup make_bumpy_sphere(std::size_t target_faces);
 /// bumps and hollow eye sockets and mouth:
 /// many saddles, so the visual contour changes topology often as it turns.
 TriangleSoup make_nose(std::size_t target_faces);
+/// The nose as a 3-D scanner gives it: every point off the surface by up
+/// to a twentieth of an edge (a fixed pseudo-random value per point) and
+/// ripples a few edges long. Its contours break into many small loops, as
+/// a scan's do: the mesh the speed benchmarks measure beside the horse.
+TriangleSoup make_scan(std::size_t target_faces);
 
 /// The generator names accepted by make_procedural.
 std::vector<std::string> procedural_names();
