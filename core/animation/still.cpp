@@ -8,6 +8,7 @@
 
 #include "snaxels/error.h"
 #include "snaxels/export/svg.h"
+#include "snaxels/util/detail/float_mode.h"
 #include "snaxels/util/detail/parallel.h"
 
 namespace snaxels {
@@ -90,6 +91,7 @@ std::vector<ContourResult> StillTracking::compute(const MeshTopology& topology, 
 
 StillOutput render_still(const LoadedMesh& mesh, const MeshTopology& topology, const RayScene* rays,
                          const StillJob& job, StillTracking* tracking) {
+    const FloatModeGuard mode;
     const SceneSettings& scene = job.scene;
     StillOutput out;
     const MeshReport& report = mesh.report;

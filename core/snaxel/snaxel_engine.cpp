@@ -10,6 +10,7 @@
 #include <numeric>
 
 #include "snaxels/error.h"
+#include "snaxels/util/detail/float_mode.h"
 #include "snaxels/util/detail/parallel.h"
 
 namespace snaxels {
@@ -208,6 +209,7 @@ void set_snaxel_margins(const MeshTopology& topology, const Camera& camera, Cont
 
 ContourResult SnaxelEngine::compute(const ContourSpec& spec, const Camera& camera,
                                     const Light& light, const EngineOptions& options) const {
+    const FloatModeGuard mode; // one answer whichever thread computes it (float_mode.h)
     const auto start = std::chrono::steady_clock::now();
     ContourResult result;
     result.spec = spec;

@@ -6,6 +6,7 @@
 #include <stdexcept>
 
 #include "snaxels/error.h"
+#include "snaxels/util/detail/float_mode.h"
 #include "snaxels/util/detail/parallel.h"
 
 namespace snaxels {
@@ -84,6 +85,7 @@ const TrackedFrame& ContourTracker::step(const MeshTopology& pose, const Camera&
 }
 
 const TrackedFrame& ContourTracker::step(const Camera& camera, const Light& light) {
+    const FloatModeGuard mode; // one answer whichever thread steps it (float_mode.h)
     ++frame_number_;
     if (fault_injected("tracker-step", frame_number_))
         throw InternalError("fault injected in the tracker at frame " + std::to_string(frame_number_) + " (SNAXELS_FAULT)");

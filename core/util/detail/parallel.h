@@ -1,13 +1,17 @@
 #pragma once
 /// Parallel loops over an index range, on oneTBB's thread pool. An
 /// exception thrown by an iteration reaches the caller (the first one; the
-/// rest of the loop is cancelled), as it would from a plain loop.
+/// rest of the loop is cancelled), as it would from a plain loop. Every
+/// block runs in IEEE floating-point mode (float_mode.h), whichever thread
+/// runs it.
 
 #include <algorithm>
 #include <cstddef>
 
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
+
+#include "snaxels/util/detail/float_mode.h"
 
 namespace snaxels {
 
@@ -18,10 +22,12 @@ namespace snaxels {
 template <class Fn> void parallel_for(std::size_t n, Fn&& fn, std::size_t grain = 512) {
     grain = std::max<std::size_t>(grain, 1);
     if (n <= grain) {
+        const FloatModeGuard mode;
         for (std::size_t i = 0; i < n; ++i) fn(i);
         return;
     }
     tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n, grain), [&](const tbb::blocked_range<std::size_t>& r) {
+        const FloatModeGuard mode;
         for (std::size_t i = r.begin(); i < r.end(); ++i) fn(i);
     });
 }

@@ -11,6 +11,9 @@
 #include "snaxels/mesh/mesh_animation.h"
 #include "snaxels/mesh/procedural.h"
 #include "snaxels/animation/frame_driver.h"
+#include "snaxels/animation/scene_settings.h"
+#include "snaxels/snaxel/contour_function.h"
+#include "snaxels/style/style.h"
 #include "snaxels/mesh/refine.h"
 #include "snaxels/snaxel/tracker.h"
 #include "tests/support/assets.h"
@@ -267,3 +270,54 @@ TEST(FrameDriver, PosesAreValuesOfOneSharedConnectivity) {
     // Neither is a pose with another vertex count.
     EXPECT_THROW(rest.posed(build_topology(sphere.mesh).pose()), InternalError);
 }
+
+#if defined(__SSE__) || defined(__x86_64__)
+#include <xmmintrin.h>
+
+// Tracking gives one answer whatever floating-point mode the thread that
+// steps it is in (float_mode.h). Frame 1 of Wuson's walk (split along its
+// hard edges and refined as the export does, the light of the command line's view) has a vertex whose shadow
+// function is a negative subnormal: read as zero under denormals-are-zero
+// (which Embree leaves on threads, and oneTBB carries to others) it lay on
+// the other side of the shadow's contour, and the export's document
+// depended on the thread that tracked it.
+TEST(ContourTracker, OneAnswerWhateverTheThreadsFloatMode) {
+    const std::string path = test::asset("anim/Testwuson.X");
+    const LoadedMesh loaded = import_mesh(path);
+    std::optional<LoadedMesh> split;
+    const LoadedMesh& mesh = scene_surface(loaded, Style{}, split); // split along its hard edges, as exported
+    const MeshTopology rest = engine_topology(mesh);
+    AnimationSpec spec;
+    spec.kind = AnimationSpec::Kind::Clip;
+    spec.frames = 2;
+    // The view and light `snaxels-cli animate Testwuson.X --clip 0` frames it with.
+    Camera camera;
+    camera.view_dir = {-0x1.e921dd42f09b9p-2, -0x1.2e9cd95baba33p-2, -0x1.a799d9fb7e802p-1};
+    Light light;
+    light.dir = {-0x1.3cf4c34497592p-2, 0x1.71c1e5e94003fp-1, 0x1.3cb6f2770efdep-1};
+    FrameDriver driver(spec, mesh, rest, camera, light, mesh.report.centre(), path);
+    const FramePose first = driver.pose(0), second = driver.pose(1);
+    const ContourSpec shadow{ContourKind::Shadow, 0.0};
+    VertexData<double> f;
+    ContourFunction(shadow, camera, light).evaluate_vertices(second.mesh, f);
+    std::size_t subnormal = 0;
+    for (const double value : f) subnormal += value < 0.0 && std::fpclassify(value) == FP_SUBNORMAL;
+    ASSERT_GT(subnormal, 0u) << "the test's premise: a vertex of frame 1 whose shadow function is a negative subnormal";
+    // The two frames tracked on this thread, with flush-to-zero and
+    // denormals-are-zero on or off; the fronts of frame 1 compared.
+    auto track = [&](bool flushing) {
+        const unsigned saved = _mm_getcsr();
+        if (flushing) _mm_setcsr(saved | 0x8040);
+        ContourTracker tracker(rest, shadow);
+        tracker.step(first.mesh, camera, light);
+        const Fronts fronts = tracker.step(second.mesh, camera, light).contour.fronts;
+        _mm_setcsr(saved);
+        std::vector<std::array<std::int32_t, 3>> out;
+        for (const Snaxel& s : fronts.snaxels) out.push_back({std::int32_t(s.edge.index()), std::int32_t(s.inside.index()), std::int32_t(s.outside.index())});
+        return out;
+    };
+    const auto ieee = track(false), flushing = track(true);
+    EXPECT_FALSE(ieee.empty());
+    EXPECT_TRUE(ieee == flushing) << ieee.size() << " snaxels in IEEE mode, " << flushing.size() << " when flushing";
+}
+#endif

@@ -35,3 +35,32 @@ TEST(ParallelFor, PropagatesAnExceptionToTheCaller) {
     EXPECT_THROW(parallel_for(3, [](std::size_t i) { if (i == 2) throw std::runtime_error("third"); }, 1),
                  std::runtime_error);
 }
+
+#if defined(__SSE__) || defined(__x86_64__)
+#include <xmmintrin.h>
+
+// Every block computes in IEEE mode, whatever the caller's thread was left
+// in: a subnormal stays itself (neither read as zero nor flushed to zero),
+// inline and on the pool's threads. (Embree leaves flush-to-zero and
+// denormals-are-zero on threads; oneTBB carries a captured mode to others.)
+TEST(ParallelFor, ComputesInIeeeModeWhateverTheCallerFlushes) {
+    const unsigned saved = _mm_getcsr();
+    _mm_setcsr(saved | 0x8040); // flush-to-zero and denormals-are-zero on this thread
+    volatile double tiny = -4.9406564584124654e-324; // the least negative subnormal
+    for (const std::size_t n : {8u, 100000u}) {
+        std::vector<char> below_zero(n, 0), kept(n, 0);
+        parallel_for(n, [&](std::size_t i) {
+            const double x = tiny;
+            below_zero[i] = x < 0.0;   // false when read as zero (denormals-are-zero)
+            kept[i] = x * 2.0 != 0.0;  // a subnormal product: zero when flushed (flush-to-zero)
+        }, 64);
+        for (std::size_t i = 0; i < n; ++i) {
+            ASSERT_TRUE(below_zero[i]) << "n " << n << " index " << i;
+            ASSERT_TRUE(kept[i]) << "n " << n << " index " << i;
+        }
+    }
+    const unsigned after = _mm_getcsr();
+    _mm_setcsr(saved);
+    EXPECT_EQ(after & 0x8040u, 0x8040u) << "the caller's own mode is put back";
+}
+#endif
