@@ -1,6 +1,7 @@
 #include "snaxels/visibility/ray_scene.h"
 
 #include <algorithm>
+#include <array>
 #include <limits>
 #include <span>
 #include <stdexcept>
@@ -24,8 +25,21 @@ struct CountContext {
     std::array<VertexId, 9> ignore_base{};
     std::size_t n_ignore_base = 0;
     Crossings crossings;
-    // A primitive can be reported more than once; remember what was counted.
-    std::vector<std::uint32_t> seen;
+    // A primitive can be reported more than once; remember what was counted
+    // (a ray crosses a few faces: kept in place, past that in `more`).
+    std::array<std::uint32_t, 16> seen{};
+    std::size_t n_seen = 0;
+    std::vector<std::uint32_t> more;
+    /// Whether @p prim was seen before; it is seen from now on.
+    bool seen_before(std::uint32_t prim) {
+        const auto kept = std::span(seen).first(n_seen);
+        if (std::find(kept.begin(), kept.end(), prim) != kept.end() ||
+            std::find(more.begin(), more.end(), prim) != more.end())
+            return true;
+        if (n_seen < seen.size()) seen[n_seen++] = prim;
+        else more.push_back(prim);
+        return false;
+    }
 };
 
 namespace {
@@ -58,8 +72,7 @@ void count_filter(const RTCFilterFunctionNArguments* args) {
         const std::uint32_t prim = RTCHitN_primID(args->hit, args->N, i);
         const FaceId face = face_of_primitive(prim);
         if (ignored(*c, face)) continue;
-        if (std::find(c->seen.begin(), c->seen.end(), prim) != c->seen.end()) continue;
-        c->seen.push_back(prim);
+        if (c->seen_before(prim)) continue;
         const auto& fv = c->topo->face_vertices()[face];
         const glm::dvec3 a = c->topo->positions()[fv[0]];
         const glm::dvec3 normal = glm::cross(c->topo->positions()[fv[1]] - a, c->topo->positions()[fv[2]] - a);
@@ -103,7 +116,7 @@ RTCDevice shared_device() {
 
 } // namespace
 
-RayScene::RayScene(MeshTopology topology) : topo_(std::move(topology)) {
+RayScene::RayScene(MeshTopology topology, bool moves) : topo_(std::move(topology)) {
     if (!topo_.positions().empty()) {
         glm::dvec3 lo = topo_.positions().values().front(), hi = lo;
         for (const glm::dvec3& p : topo_.positions()) {
@@ -115,13 +128,18 @@ RayScene::RayScene(MeshTopology topology) : topo_(std::move(topology)) {
     RTCDevice device = shared_device();
     RTCScene scene = rtcNewScene(device);
     scene_ = scene;
-    rtcSetSceneFlags(scene, RTC_SCENE_FLAG_CONTEXT_FILTER_FUNCTION | RTC_SCENE_FLAG_ROBUST |
-                                RTC_SCENE_FLAG_DYNAMIC);
-    rtcSetSceneBuildQuality(scene, RTC_BUILD_QUALITY_LOW);
     RTCGeometry geom = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_TRIANGLE);
     geometry_ = geom;
-    // The first build is the fast (Morton) one; refit() switches to refitting.
-    rtcSetGeometryBuildQuality(geom, RTC_BUILD_QUALITY_LOW);
+    if (moves) {
+        set_moving();
+    } else {
+        // A pose that stays (a turntable, the view) is traced many times: a
+        // SAH BVH (Embree's default, medium quality) makes each ray cheaper
+        // than the quick Morton one.
+        rtcSetSceneFlags(scene, RTC_SCENE_FLAG_CONTEXT_FILTER_FUNCTION | RTC_SCENE_FLAG_ROBUST);
+        rtcSetSceneBuildQuality(scene, RTC_BUILD_QUALITY_MEDIUM);
+        rtcSetGeometryBuildQuality(geom, RTC_BUILD_QUALITY_MEDIUM);
+    }
     vertices_ = static_cast<float*>(rtcSetNewGeometryBuffer(
         geom, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, 3 * sizeof(float), topo_.n_vertices()));
     auto* index = static_cast<std::uint32_t*>(rtcSetNewGeometryBuffer(
@@ -152,12 +170,23 @@ void RayScene::upload_positions() {
         for (int k = 0; k < 3; ++k) *out++ = float(p[k] - origin_[k]);
 }
 
+void RayScene::set_moving() {
+    // A two-level scene whose geometry is built the quick (Morton) way, then
+    // refitted to each pose.
+    moving_ = true;
+    auto scene = static_cast<RTCScene>(scene_);
+    rtcSetSceneFlags(scene, RTC_SCENE_FLAG_CONTEXT_FILTER_FUNCTION | RTC_SCENE_FLAG_ROBUST | RTC_SCENE_FLAG_DYNAMIC);
+    rtcSetSceneBuildQuality(scene, RTC_BUILD_QUALITY_LOW);
+    rtcSetGeometryBuildQuality(static_cast<RTCGeometry>(geometry_), RTC_BUILD_QUALITY_LOW);
+}
+
 void RayScene::refit(const MeshTopology& pose) {
     if (!pose.same_connectivity(topo_))
         throw InternalError("RayScene::refit: a pose of another mesh (its connectivity differs)");
     topo_ = pose;
     auto geom = static_cast<RTCGeometry>(geometry_);
-    rtcSetGeometryBuildQuality(geom, RTC_BUILD_QUALITY_REFIT);
+    if (!moving_) set_moving(); // rebuilt once, the quick way
+    else rtcSetGeometryBuildQuality(geom, RTC_BUILD_QUALITY_REFIT);
     upload_positions();
     rtcUpdateGeometryBuffer(geom, RTC_BUFFER_TYPE_VERTEX, 0);
     rtcCommitGeometry(geom);

@@ -272,6 +272,15 @@ int VisibilitySampler::contact_qi(const VisibilityRay& ray, const glm::dvec3& p,
     return qi(lifted);
 }
 
+bool VisibilitySampler::qi_is(const VisibilityRay& ray, const glm::dvec3& p, std::int64_t object, int q) const {
+    if (object >= 0) return contact_qi(ray, p, object) == q;
+    // One object: QI 0 is an any-hit query's answer alone.
+    if (!scene_.occluded(ray)) return q == 0;
+    if (q == 0) return false;
+    const Crossings c = scene_.count(ray);
+    return std::max(c.front, c.back) == q;
+}
+
 ContourVisibility VisibilitySampler::classify(const SnaxelEngine& engine,
                                               const ContourResult& contour) const {
     const Fronts& fronts = contour.fronts;
@@ -307,7 +316,7 @@ ContourVisibility VisibilitySampler::classify(const SnaxelEngine& engine,
             const double mid = 0.5 * (lo + hi);
             const glm::dvec3 n = glm::normalize((1.0 - mid) * na + mid * nb);
             const glm::dvec3 p = (1.0 - mid) * pa + mid * pb;
-            if (contact_qi(face_ray(face, p, n), p, object_of(topo, face)) == from) lo = mid;
+            if (qi_is(face_ray(face, p, n), p, object_of(topo, face), from)) lo = mid;
             else hi = mid;
         }
         const double u = 0.5 * (lo + hi);

@@ -98,6 +98,10 @@ class VisibilitySampler {
     /// floor, and the offset dips under it), that surface does not hide p:
     /// QI from as far off toward the viewer instead.
     int contact_qi(const VisibilityRay& ray, const glm::dvec3& p, std::int64_t object) const;
+    /// Whether contact_qi(ray, p, object) is @p q, casting no more than it
+    /// needs to tell (a point that is not seen, asked whether its QI is 0,
+    /// needs no count of its layers).
+    bool qi_is(const VisibilityRay& ray, const glm::dvec3& p, std::int64_t object, int q) const;
 
     const RayScene& scene_;
     Camera camera_;
