@@ -7,6 +7,8 @@
 #include <filesystem>
 #include <memory>
 
+#include <tbb/parallel_pipeline.h>
+
 #include "snaxels/error.h"
 #include "snaxels/animation/still.h"
 #include "snaxels/export/stroke_weight.h"
@@ -15,6 +17,7 @@
 #include "snaxels/snaxel/parabolic.h"
 #include "snaxels/util/atomic_file.h"
 #include "snaxels/planarmap/region_tracker.h"
+#include "snaxels/util/detail/float_mode.h"
 #include "snaxels/util/detail/parallel.h"
 #include "snaxels/visibility/visibility.h"
 
@@ -99,6 +102,9 @@ ImageFrame frame_image(FrameDriver& driver, const LoadedMesh& mesh, const Animat
     return out;
 }
 
+/// Frames between tracking and the writer at once (run_animation).
+constexpr std::size_t kFramesInFlight = 8;
+
 /// A tracked frame's loops as the animation writer takes them: snaxel ids.
 std::vector<AnimatedLoop> animated_loops(const TrackedFrame& tf) {
     std::vector<AnimatedLoop> loops;
@@ -144,7 +150,167 @@ void finish_output(AnimationWriter& writer, AtomicFile* file, AnimationOutput& o
 
 } // namespace
 
+namespace {
+
+/// A frame on its way through run_animation's stages.
+struct InFlight {
+    int k = 0;
+    FramePose pose;
+    std::vector<ContourResult> results;
+    std::vector<ContourVisibility> visibility;
+    AnimationFrame frame;
+};
+
+/// The frames of one export: what carries from frame to frame (trackers,
+/// the ray scene, stroke parameters, the writer) and the three stages each
+/// frame goes through (run_animation).
+class FrameStages {
+  public:
+    FrameStages(const AnimationJob& job, FrameDriver& driver, const MeshTopology& rest, const ImageFrame& image,
+                int frames, AnimationOutput& out)
+        : job_(job), driver_(driver), image_(image), frames_(frames), out_(out),
+          fills_(!job.scene.style.regions.empty()), fill_specs_(job.scene.style.fill_contours()),
+          writer_(job.format, std::size_t(frames), job.animation.fps, job.svg, job.scene.style) {
+        // One tracker per line: line sets of one line (other parts) share it.
+        for (std::size_t c = 0; c < job.scene.kinds.size(); ++c) {
+            const ContourSpec& spec = job.scene.kinds[c];
+            std::size_t t = 0;
+            while (t < c && !job.scene.kinds[t].line().same_as(spec.line())) ++t;
+            if (t == c) {
+                tracker_of_.push_back(trackers_.size());
+                trackers_.emplace_back(rest, spec.line(), job.scene.engine);
+            } else {
+                tracker_of_.push_back(tracker_of_[t]);
+            }
+            const ContourStyle cs = job.scene.style.contour(spec);
+            stroke_parameters_.push_back((cs.visible.draw && cs.visible.carries_parameter()) ||
+                                                 (cs.hidden.draw && cs.hidden.carries_parameter())
+                                             ? std::make_unique<StrokeParameter>()
+                                             : nullptr);
+        }
+        // Fills: the planar map's contours the drawn ones lack are tracked too.
+        if (fills_)
+            for (const ContourSpec& spec : fill_specs_)
+                if (std::none_of(job.scene.kinds.begin(), job.scene.kinds.end(), [&](const ContourSpec& k) { return k.line().same_as(spec); }))
+                    fill_trackers_.emplace_back(rest, spec, job.scene.engine);
+    }
+
+    AnimationWriter& writer() { return writer_; }
+
+    /// 1. In frame order: pose, tracking, hidden lines, the planar map
+    /// (they carry state from frame to frame, and the rays are refitted to
+    /// each pose).
+    std::shared_ptr<InFlight> track(int k) {
+        const FloatModeGuard mode;
+        if (job_.cancelled && job_.cancelled()) throw AnimationCancelled();
+        auto w = std::make_shared<InFlight>();
+        w->k = k;
+        w->pose = driver_.pose(k);
+        const MeshTopology& topology = w->pose.mesh;
+        const Light& light = w->pose.light;
+        Camera& camera = w->pose.camera;
+        // A moving mesh's camera stays (framed on its poses), unless the
+        // file's camera moves with it.
+        if (driver_.mesh_moves() && !driver_.camera_moves()) camera = image_.camera;
+        require_mesh_in_front(camera, topology.positions(), image_.radius);
+        if (job_.scene.visibility || fills_) {
+            if (!rays_) rays_ = std::make_unique<RayScene>(topology, driver_.mesh_moves());
+            else if (driver_.mesh_moves()) rays_->refit(topology);
+        }
+        const SnaxelEngine engine(topology);
+        double ms = 0.0;
+        // The kinds track independently: in parallel.
+        std::vector<const TrackedFrame*> tracked(trackers_.size() + fill_trackers_.size());
+        parallel_for(tracked.size(), [&](std::size_t c) {
+            tracked[c] = c < trackers_.size() ? &trackers_[c].step(topology, camera, light)
+                                              : &fill_trackers_[c - trackers_.size()].step(topology, camera, light);
+        }, 1);
+        for (std::size_t t = 0; t < trackers_.size(); ++t) ms += tracked[t]->contour.stats.ms;
+        for (std::size_t c = 0; c < job_.scene.kinds.size(); ++c) {
+            const TrackedFrame& tf = *tracked[tracker_of_[c]];
+            w->results.push_back(tf.contour);
+            w->results.back().spec = job_.scene.kinds[c]; // the line set's parts
+            w->frame.loops.push_back(animated_loops(tf));
+            for (const VisualEvent& e : tf.events) out_.events.push_back({c, e});
+            if (job_.scene.visibility) w->visibility.push_back(VisibilitySampler(*rays_, camera).classify(engine, w->results.back()));
+        }
+        out_.tracking_ms.push_back(ms);
+        if (fills_) {
+            std::vector<const ContourResult*> contours;
+            for (const ContourSpec& spec : fill_specs_) {
+                const ContourResult* r = nullptr;
+                for (std::size_t c = 0; c < tracked.size() && !r; ++c)
+                    if (tracked[c]->contour.spec.line().same_as(spec)) r = &tracked[c]->contour;
+                contours.push_back(r);
+            }
+            PlanarMap map = build_planar_map(job_.scene.map_kind, engine, contours, rays_.get(), projection(camera), camera, light);
+            w->frame.region_tracks = region_tracker_.step(map);
+            w->frame.regions = std::move(map.regions);
+        }
+        return w;
+    }
+
+    /// 2. Any frames at once: the drawing, from the frame's results alone.
+    void draw(InFlight& w) const {
+        const FloatModeGuard mode;
+        const SnaxelEngine engine(w.pose.mesh);
+        w.frame.drawing = make_drawing(engine, w.results, projection(w.pose.camera), job_.scene.visibility ? &w.visibility : nullptr);
+        w.frame.drawing.seconds = double(w.k) / job_.animation.fps;
+        weigh_strokes(w.frame.drawing, job_.scene.style, engine, w.results, w.pose.camera, w.pose.light, image_.centre,
+                      image_.radius);
+    }
+
+    /// 3. In frame order: the stroke parameter (carried from frame to
+    /// frame), the flipbook frame, and the writer (which encodes a chunk of
+    /// frames as it fills).
+    void write(InFlight& w) {
+        const FloatModeGuard mode;
+        const MeshTopology& topology = w.pose.mesh;
+        const ImageProjection image = projection(w.pose.camera);
+        for (std::size_t c = 0; c < w.results.size(); ++c)
+            if (stroke_parameters_[c]) {
+                const std::vector<std::vector<SurfacePoint>> points = surface_points(w.results[c].fronts);
+                stroke_parameters_[c]->step(w.frame.drawing.contours[c], w.frame.loops[c], &points, [&](const SurfacePoint& sp) {
+                    return image.project((1.0 - sp.t) * topology.positions()[sp.a] + sp.t * topology.positions()[sp.b]);
+                });
+            }
+        for (auto& contour : w.frame.drawing.contours)
+            for (auto& loop : contour.loops) std::vector<glm::dvec3>().swap(loop.p); // not exported: memory freed
+        if (!job_.frames_dir.empty()) {
+            char name[64];
+            std::snprintf(name, sizeof name, "frame_%05d.svg", w.k);
+            write_file_atomically((std::filesystem::path(job_.frames_dir) / name).string(),
+                                  to_svg(w.frame.drawing, job_.scene.style, w.frame.regions.empty() ? nullptr : &w.frame.regions));
+        }
+        writer_.add(std::move(w.frame));
+        if (job_.progress) job_.progress(w.k + 1, frames_);
+    }
+
+  private:
+    ImageProjection projection(const Camera& camera) const {
+        return ImageProjection(camera, image_.centre, image_.radius, job_.scene.style.width, job_.scene.style.height,
+                               job_.scene.style.margin);
+    }
+
+    const AnimationJob& job_;
+    FrameDriver& driver_;
+    const ImageFrame& image_;
+    int frames_;
+    AnimationOutput& out_;
+    bool fills_;
+    std::vector<ContourSpec> fill_specs_;
+    std::vector<ContourTracker> trackers_, fill_trackers_;
+    std::vector<std::size_t> tracker_of_; ///< per kind
+    std::vector<std::unique_ptr<StrokeParameter>> stroke_parameters_; ///< per kind, where its strokes read one
+    RegionTracker region_tracker_;
+    std::unique_ptr<RayScene> rays_;
+    AnimationWriter writer_; ///< frames are encoded as they come; the document is written at the end
+};
+
+} // namespace
+
 AnimationOutput run_animation(const LoadedMesh& loaded, const std::string& mesh_path, const AnimationJob& asked) {
+    const FloatModeGuard float_mode; // (each frame stage sets it too, on the thread it runs on)
     AnimationOutput out;
     AnimationJob job = asked;
     std::optional<LoadedMesh> surface;
@@ -170,109 +336,33 @@ AnimationOutput run_animation(const LoadedMesh& loaded, const std::string& mesh_
         std::filesystem::create_directories(job.frames_dir, ec);
         if (ec) throw Error("cannot create " + job.frames_dir + ": " + ec.message());
     }
-    // One tracker per line: line sets of one line (other parts) share it.
-    std::vector<ContourTracker> trackers;
-    std::vector<std::size_t> tracker_of; // per kind
-    std::vector<std::unique_ptr<StrokeParameter>> stroke_parameters; // per kind, where its strokes read one
-    for (std::size_t c = 0; c < job.scene.kinds.size(); ++c) {
-        const ContourSpec& spec = job.scene.kinds[c];
-        std::size_t t = 0;
-        while (t < c && !job.scene.kinds[t].line().same_as(spec.line())) ++t;
-        if (t == c) {
-            tracker_of.push_back(trackers.size());
-            trackers.emplace_back(rest, spec.line(), job.scene.engine);
-        } else {
-            tracker_of.push_back(tracker_of[t]);
-        }
-        const ContourStyle cs = job.scene.style.contour(spec);
-        stroke_parameters.push_back((cs.visible.draw && cs.visible.carries_parameter()) || (cs.hidden.draw && cs.hidden.carries_parameter())
-                                        ? std::make_unique<StrokeParameter>()
-                                        : nullptr);
-    }
-    // Fills: the planar map's contours the drawn ones lack are tracked too.
-    const bool fills = !job.scene.style.regions.empty();
-    std::vector<ContourSpec> fill_specs = job.scene.style.fill_contours();
-    std::vector<ContourTracker> fill_trackers;
-    if (fills)
-        for (const ContourSpec& spec : fill_specs)
-            if (std::none_of(job.scene.kinds.begin(), job.scene.kinds.end(), [&](const ContourSpec& k) { return k.line().same_as(spec); }))
-                fill_trackers.emplace_back(rest, spec, job.scene.engine);
-    RegionTracker region_tracker;
-    std::unique_ptr<RayScene> rays;
-    // Frames are encoded as they come; the document is written at the end.
-    AnimationWriter writer(job.format, std::size_t(frames), job.animation.fps, job.svg, job.scene.style);
+    FrameStages stages(job, driver, rest, image, frames, out);
     std::unique_ptr<AtomicFile> file;
     if (!job.output.empty()) file = std::make_unique<AtomicFile>(job.output); // fails early on a bad path
-    for (int k = 0; k < frames; ++k) {
-        if (job.cancelled && job.cancelled()) throw AnimationCancelled();
-        FramePose pose = driver.pose(k);
-        const MeshTopology& topology = pose.mesh;
-        const Light& light = pose.light;
-        Camera& camera = pose.camera;
-        // A moving mesh's camera stays (framed on its poses), unless the
-        // file's camera moves with it.
-        if (driver.mesh_moves() && !driver.camera_moves()) camera = image.camera;
-        require_mesh_in_front(camera, topology.positions(), image.radius);
-        if (job.scene.visibility || fills) {
-            if (!rays) rays = std::make_unique<RayScene>(topology);
-            else if (driver.mesh_moves()) rays->refit(topology);
-        }
-        const SnaxelEngine engine(topology);
-        std::vector<ContourResult> results;
-        std::vector<ContourVisibility> visibility;
-        AnimationFrame frame;
-        double ms = 0.0;
-        // The kinds track independently: in parallel.
-        std::vector<const TrackedFrame*> tracked(trackers.size() + fill_trackers.size());
-        parallel_for(tracked.size(), [&](std::size_t c) {
-            tracked[c] = c < trackers.size() ? &trackers[c].step(topology, camera, light)
-                                             : &fill_trackers[c - trackers.size()].step(topology, camera, light);
-        }, 1);
-        for (std::size_t t = 0; t < trackers.size(); ++t) ms += tracked[t]->contour.stats.ms;
-        for (std::size_t c = 0; c < job.scene.kinds.size(); ++c) {
-            const TrackedFrame& tf = *tracked[tracker_of[c]];
-            results.push_back(tf.contour);
-            results.back().spec = job.scene.kinds[c]; // the line set's parts
-            frame.loops.push_back(animated_loops(tf));
-            for (const VisualEvent& e : tf.events) out.events.push_back({c, e});
-            if (job.scene.visibility) visibility.push_back(VisibilitySampler(*rays, camera).classify(engine, results.back()));
-        }
-        out.tracking_ms.push_back(ms);
-        const ImageProjection projection(camera, image.centre, image.radius, job.scene.style.width, job.scene.style.height, job.scene.style.margin);
-        frame.drawing = make_drawing(engine, results, projection, job.scene.visibility ? &visibility : nullptr);
-        frame.drawing.seconds = double(k) / job.animation.fps;
-        weigh_strokes(frame.drawing, job.scene.style, engine, results, camera, light, image.centre, image.radius);
-        for (std::size_t c = 0; c < results.size(); ++c)
-            if (stroke_parameters[c]) {
-                const std::vector<std::vector<SurfacePoint>> points = surface_points(results[c].fronts);
-                stroke_parameters[c]->step(frame.drawing.contours[c], frame.loops[c], &points, [&](const SurfacePoint& sp) {
-                    return projection.project((1.0 - sp.t) * topology.positions()[sp.a] + sp.t * topology.positions()[sp.b]);
-                });
-            }
-        if (fills) {
-            std::vector<const ContourResult*> contours;
-            for (const ContourSpec& spec : fill_specs) {
-                const ContourResult* r = nullptr;
-                for (std::size_t c = 0; c < tracked.size() && !r; ++c)
-                    if (tracked[c]->contour.spec.line().same_as(spec)) r = &tracked[c]->contour;
-                contours.push_back(r);
-            }
-            PlanarMap map = build_planar_map(job.scene.map_kind, engine, contours, rays.get(), projection, camera, light);
-            frame.region_tracks = region_tracker.step(map);
-            frame.regions = std::move(map.regions);
-        }
-        for (auto& contour : frame.drawing.contours)
-            for (auto& loop : contour.loops) std::vector<glm::dvec3>().swap(loop.p); // not exported: memory freed
-        if (!job.frames_dir.empty()) {
-            char name[64];
-            std::snprintf(name, sizeof name, "frame_%05d.svg", k);
-            write_file_atomically((std::filesystem::path(job.frames_dir) / name).string(),
-                                  to_svg(frame.drawing, job.scene.style, frame.regions.empty() ? nullptr : &frame.regions));
-        }
-        writer.add(std::move(frame));
-        if (job.progress) job.progress(k + 1, frames);
-    }
-    finish_output(writer, file.get(), out);
+    // The stages run as a pipeline, so both cores stay busy: frame k+1 is
+    // tracked while frame k is drawn and written. Tokens are frames in
+    // flight at once: enough that tracking goes on while the writer encodes
+    // a chunk. The document is the one a frame-by-frame loop writes, byte
+    // for byte.
+    int next = 0;
+    tbb::parallel_pipeline(
+        kFramesInFlight,
+        tbb::make_filter<void, std::shared_ptr<InFlight>>(tbb::filter_mode::serial_in_order,
+                                                          [&](tbb::flow_control& fc) -> std::shared_ptr<InFlight> {
+                                                              if (next == frames) {
+                                                                  fc.stop();
+                                                                  return nullptr;
+                                                              }
+                                                              return stages.track(next++);
+                                                          }) &
+            tbb::make_filter<std::shared_ptr<InFlight>, std::shared_ptr<InFlight>>(tbb::filter_mode::parallel,
+                                                                                   [&](std::shared_ptr<InFlight> w) {
+                                                                                       stages.draw(*w);
+                                                                                       return w;
+                                                                                   }) &
+            tbb::make_filter<std::shared_ptr<InFlight>, void>(tbb::filter_mode::serial_in_order,
+                                                              [&](std::shared_ptr<InFlight> w) { stages.write(*w); }));
+    finish_output(stages.writer(), file.get(), out);
     return out;
 }
 

@@ -46,12 +46,15 @@ struct AnimationJob {
     /// AnimationOutput::document stays empty; memory then does not grow
     /// with the frame count (core/export/animation_writer.h).
     std::string output;
-    /// Called after each frame with (frames done, frames in all).
+    /// Called after each frame is written with (frames done, frames in
+    /// all), one call at a time and in frame order, from whichever of the
+    /// export's threads wrote it.
     std::function<void(int, int)> progress;
     /// When a kind is parabolic and the curves are not known yet: called as
     /// the search over view directions goes, with (steps done, in all).
     std::function<void(int, int)> parabolic_progress;
-    /// Asked before each frame; true stops the run with AnimationCancelled.
+    /// Asked before each frame is tracked (on the thread tracking it); true
+    /// stops the run with AnimationCancelled.
     std::function<bool()> cancelled;
 };
 
