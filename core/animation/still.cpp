@@ -6,6 +6,8 @@
 #include <memory>
 #include <stdexcept>
 
+#include <tbb/parallel_invoke.h>
+
 #include "snaxels/error.h"
 #include "snaxels/export/svg.h"
 #include "snaxels/util/detail/float_mode.h"
@@ -91,7 +93,7 @@ std::vector<ContourResult> StillTracking::compute(const MeshTopology& topology, 
 
 StillOutput render_still(const LoadedMesh& mesh, const MeshTopology& topology, const RayScene* rays,
                          const StillJob& job, StillTracking* tracking) {
-    const FloatModeGuard mode;
+    const FloatModeGuard float_mode;
     const SceneSettings& scene = job.scene;
     StillOutput out;
     const MeshReport& report = mesh.report;
@@ -139,16 +141,23 @@ StillOutput render_still(const LoadedMesh& mesh, const MeshTopology& topology, c
                                                   std::make_move_iterator(all.end()));
 
     std::unique_ptr<RayScene> own_rays;
-    if (scene.visibility) {
-        if (!rays) rays = (own_rays = std::make_unique<RayScene>(topology)).get();
-        const VisibilitySampler sampler(*rays, scene.camera);
-        for (const ContourResult& r : out.results) out.visibility.push_back(sampler.classify(engine, r));
-    }
+    if (!rays && (scene.visibility || map)) rays = (own_rays = std::make_unique<RayScene>(topology)).get();
     const ImageProjection projection(scene.camera, centre, radius, scene.style.width, scene.style.height, scene.style.margin);
-    out.drawing = make_drawing(engine, out.results, projection, scene.visibility ? &out.visibility : nullptr);
-    weigh_strokes(out.drawing, scene.style, engine, out.results, scene.camera, scene.light, centre, radius);
-
-    if (map) {
+    // The lines (hidden lines of every kind at once, the drawing) and the
+    // planar map are made at once: they share only what they read.
+    auto lines = [&] {
+        const FloatModeGuard mode;
+        if (scene.visibility) {
+            const VisibilitySampler sampler(*rays, scene.camera);
+            out.visibility.resize(out.results.size());
+            parallel_for(out.results.size(), [&](std::size_t c) { out.visibility[c] = sampler.classify(engine, out.results[c]); }, 1);
+        }
+        out.drawing = make_drawing(engine, out.results, projection, scene.visibility ? &out.visibility : nullptr);
+        weigh_strokes(out.drawing, scene.style, engine, out.results, scene.camera, scene.light, centre, radius);
+    };
+    auto fills = [&] {
+        const FloatModeGuard mode;
+        if (!map) return;
         auto result_of = [&](const ContourSpec& spec) -> const ContourResult* {
             for (const ContourResult& r : out.results)
                 if (r.spec.line().same_as(spec)) return &r;
@@ -158,9 +167,9 @@ StillOutput render_still(const LoadedMesh& mesh, const MeshTopology& topology, c
         };
         std::vector<const ContourResult*> contours;
         for (const ContourSpec& spec : needed) contours.push_back(result_of(spec));
-        if (!rays) rays = (own_rays = std::make_unique<RayScene>(topology)).get();
         out.regions = build_planar_map(scene.map_kind, engine, contours, rays, projection, scene.camera, scene.light).regions;
-    }
+    };
+    tbb::parallel_invoke(lines, fills);
     out.svg = to_svg(out.drawing, scene.style, out.regions.empty() ? nullptr : &out.regions);
     return out;
 }
