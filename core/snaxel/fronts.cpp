@@ -14,9 +14,10 @@ Fronts extract_fronts(const MeshTopology& topo, const VertexData<std::uint8_t>& 
 }
 
 Fronts extract_fronts(const MeshTopology& topo, const VertexData<std::uint8_t>& inside,
-                      const std::vector<EdgeId>& crossing_edges) {
+                      const std::vector<EdgeId>& crossing_edges, EdgeData<std::int32_t> edge_snaxel) {
     Fronts fronts;
-    fronts.edge_snaxel.assign(topo.n_edges(), kNoSnaxel);
+    fronts.edge_snaxel = std::move(edge_snaxel);
+    if (fronts.edge_snaxel.size() != topo.n_edges()) fronts.edge_snaxel.assign(topo.n_edges(), kNoSnaxel);
     const std::size_t n = crossing_edges.size();
     fronts.snaxels.resize(n);
     parallel_for(n, [&](std::size_t i) {

@@ -52,9 +52,12 @@ struct Fronts {
 Fronts extract_fronts(const MeshTopology& topology, const VertexData<std::uint8_t>& inside);
 
 /// The same, when the caller already knows the edges R crosses (each once):
-/// costs time in proportion to the front, not to the mesh.
+/// costs time in proportion to the front, not to the mesh, when it also
+/// hands over @p edge_snaxel, a lookup of one entry per edge, every one
+/// kNoSnaxel (a tracker's from the frame before, cleared where its snaxels
+/// were); given empty, one is made.
 Fronts extract_fronts(const MeshTopology& topology, const VertexData<std::uint8_t>& inside,
-                      const std::vector<EdgeId>& crossing_edges);
+                      const std::vector<EdgeId>& crossing_edges, EdgeData<std::int32_t> edge_snaxel = {});
 
 /// Appends to @p fronts a loop with one snaxel per entry of @p edges, at
 /// @p t[k] from the edge's first vertex (edge_vertices()[e][0], its inside

@@ -128,7 +128,7 @@ void ContourTracker::track(const Camera& camera, const Light& light) {
     const auto t0 = std::chrono::steady_clock::now();
     const SnaxelEngine engine(topo_);
     const ContourFunction f(spec_, camera, light);
-    const TrackedFrame prev = std::move(frame_);
+    TrackedFrame prev = std::move(frame_);
     const Fronts& old = prev.contour.fronts;
     const std::vector<glm::dvec3> old_position = std::move(snaxel_position_);
     frame_ = TrackedFrame{};
@@ -140,7 +140,7 @@ void ContourTracker::track(const Camera& camera, const Light& light) {
     f.evaluate_vertices(topo_, result.vertex_f);
     const std::vector<VertexId> changed = flip_changed_vertices();
     sweep_parents(old, changed);
-    result.fronts = extract_fronts(topo_, inside_, crossing_edges(old, changed));
+    result.fronts = extract_fronts(topo_, inside_, crossing_edges(old, changed), std::move(spare_edge_snaxel_));
     place_snaxels(engine, f);
     set_snaxel_margins(topo_, camera, result);
     if (options_.check_invariants) {
@@ -148,6 +148,10 @@ void ContourTracker::track(const Camera& camera, const Light& light) {
             throw InternalError("tracked fronts broken at frame " + std::to_string(frame_number_) + ": " + problem);
     }
     match_loops(prev, old_position, assign_identities(prev, old_position));
+    // The frame before's edge lookup, cleared where its snaxels were, serves the next frame.
+    spare_edge_snaxel_ = std::move(prev.contour.fronts.edge_snaxel);
+    if (spare_edge_snaxel_.size() == topo_.n_edges())
+        for (const Snaxel& s : old.snaxels) spare_edge_snaxel_[s.edge] = kNoSnaxel;
     result.stats.fanouts = frame_.fanouts;
     result.stats.iterations = 1;
     for (const VisualEvent& e : frame_.events) {
@@ -174,8 +178,11 @@ std::vector<VertexId> ContourTracker::flip_changed_vertices() {
 /// and the sweep carries the same parent on across connected changed
 /// vertices of the same kind.
 void ContourTracker::sweep_parents(const Fronts& old, const std::vector<VertexId>& changed) {
-    vertex_parent_.assign(topo_.n_vertices(), kNone);
-    std::vector<VertexId> queue;
+    // Cleared where the frame before set it (a pass over the mesh costs more).
+    if (vertex_parent_.size() != topo_.n_vertices()) vertex_parent_.assign(topo_.n_vertices(), kNone);
+    for (const VertexId v : parented_) vertex_parent_[v] = kNone;
+    std::vector<VertexId>& queue = parented_;
+    queue.clear();
     for (std::size_t s = 0; s < old.snaxels.size(); ++s) {
         for (const VertexId v : {old.snaxels[s].outside, old.snaxels[s].inside}) {
             const bool joined = v == old.snaxels[s].outside && inside_[v];

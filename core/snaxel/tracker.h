@@ -79,7 +79,9 @@ class ContourTracker {
     std::vector<glm::dvec3> snaxel_position_; ///< of the current frame's snaxels
     // Scratch, kept between frames to avoid reallocation.
     VertexData<std::int32_t> vertex_parent_; ///< the old snaxel that passed each vertex, or kNoSnaxel
+    std::vector<VertexId> parented_;          ///< the vertices vertex_parent_ holds a snaxel for
     EdgeData<std::uint8_t> edge_mark_;
+    EdgeData<std::int32_t> spare_edge_snaxel_; ///< the frame before's edge lookup, cleared: the next one
 };
 
 } // namespace snaxels
