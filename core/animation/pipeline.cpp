@@ -228,7 +228,7 @@ class FrameStages {
         for (std::size_t t = 0; t < trackers_.size(); ++t) ms += tracked[t]->contour.stats.ms;
         for (std::size_t c = 0; c < job_.scene.kinds.size(); ++c) {
             const TrackedFrame& tf = *tracked[tracker_of_[c]];
-            w->results.push_back(tf.contour);
+            w->results.push_back(lines_of(tf.contour)); // (the map reads the tracker's own)
             w->results.back().spec = job_.scene.kinds[c]; // the line set's parts
             w->frame.loops.push_back(animated_loops(tf));
             for (const VisualEvent& e : tf.events) out_.events.push_back({c, e});

@@ -34,7 +34,8 @@ double angle_deg(const glm::dvec3& a, const glm::dvec3& b) {
 
 std::vector<ContourResult> StillTracking::compute(const MeshTopology& topology, const std::vector<ContourSpec>& specs,
                                                   const Camera& camera, const Light& light,
-                                                  const EngineOptions& options, const glm::dvec3& centre) {
+                                                  const EngineOptions& options, const glm::dvec3& centre,
+                                                  bool vertex_data) {
     // A far step: another mesh, or what the view and the light look like
     // from the mesh's centre.
     bool far = connectivity_ != topology.connectivity() || !camera_ || !light_ || camera_->projection != camera.projection || light_->point != light.point;
@@ -80,7 +81,8 @@ std::vector<ContourResult> StillTracking::compute(const MeshTopology& topology, 
             results[i] = engine.compute(specs[i], camera, light, options);
         } else if (first_of[i] == i) {
             fresh[i] = tracker[i]->frames() == 0;
-            results[i] = tracker[i]->step(topology, camera, light).contour;
+            const ContourResult& tracked = tracker[i]->step(topology, camera, light).contour;
+            results[i] = vertex_data ? tracked : lines_of(tracked);
         }
     }, 1);
     for (std::size_t i = 0; i < specs.size(); ++i) {
@@ -120,7 +122,7 @@ StillOutput render_still(const LoadedMesh& mesh, const MeshTopology& topology, c
     }
     std::vector<ContourResult> all;
     if (tracking) {
-        all = tracking->compute(topology, specs, scene.camera, scene.light, scene.engine, centre);
+        all = tracking->compute(topology, specs, scene.camera, scene.light, scene.engine, centre, map);
     } else {
         // Line sets of one line (other parts) share its computation.
         std::vector<std::size_t> first(specs.size());

@@ -55,10 +55,12 @@ class StillTracking {
     /// @p topology, each tracked from its last frame or computed from
     /// scratch; kinds not asked for are forgotten. The kinds run in
     /// parallel. The mesh may move between frames (another pose of its
-    /// connectivity); another mesh starts every kind anew.
+    /// connectivity); another mesh starts every kind anew. Without
+    /// @p vertex_data the results are the lines alone (lines_of: no planar
+    /// map will read them).
     std::vector<ContourResult> compute(const MeshTopology& topology, const std::vector<ContourSpec>& specs,
                                        const Camera& camera, const Light& light, const EngineOptions& options,
-                                       const glm::dvec3& centre);
+                                       const glm::dvec3& centre, bool vertex_data = true);
 
     /// The mesh jumped (another pose, edited geometry): every kind starts anew.
     void jump() { trackers_.clear(); }

@@ -207,6 +207,16 @@ void set_snaxel_margins(const MeshTopology& topology, const Camera& camera, Cont
         suggestive_margins(topology, *require_curvature(topology), result.vertex_f, result.fronts, camera, result.spec);
 }
 
+ContourResult lines_of(const ContourResult& result) {
+    ContourResult out;
+    out.spec = result.spec;
+    out.fronts.snaxels = result.fronts.snaxels;
+    out.fronts.loops = result.fronts.loops;
+    out.snaxel_margin = result.snaxel_margin;
+    out.stats = result.stats;
+    return out;
+}
+
 ContourResult SnaxelEngine::compute(const ContourSpec& spec, const Camera& camera,
                                     const Light& light, const EngineOptions& options) const {
     const FloatModeGuard mode; // one answer whichever thread computes it (float_mode.h)

@@ -61,6 +61,13 @@ struct ContourResult {
     ContourStats stats;
 };
 
+/// @p result as its lines need it (hidden lines, the drawing, the stroke
+/// parameter): its spec, snaxels, loops, margins and stats, without what
+/// it holds per vertex and per edge (vertex_f, vertex_region, regions,
+/// fronts.edge_snaxel), which only the planar map reads. A tracker's frame
+/// is copied every frame: this copy is a tenth of the whole on the horse.
+ContourResult lines_of(const ContourResult& result);
+
 /// Puts every snaxel of @p result.fronts at the root of @p f on its edge
 /// (polish_root, from @p result.vertex_f, the frame's f; in parallel).
 void polish_snaxels(const MeshTopology& topology, const ContourFunction& f, const EngineOptions& options,
