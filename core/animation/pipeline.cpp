@@ -214,7 +214,7 @@ class FrameStages {
         if (driver_.mesh_moves() && !driver_.camera_moves()) camera = image_.camera;
         require_mesh_in_front(camera, topology.positions(), image_.radius);
         if (job_.scene.visibility || fills_) {
-            if (!rays_) rays_ = std::make_unique<RayScene>(topology, driver_.mesh_moves());
+            if (!rays_) rays_ = std::make_unique<RayScene>(topology);
             else if (driver_.mesh_moves()) rays_->refit(topology);
         }
         const SnaxelEngine engine(topology);

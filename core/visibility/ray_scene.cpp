@@ -116,7 +116,7 @@ RTCDevice shared_device() {
 
 } // namespace
 
-RayScene::RayScene(MeshTopology topology, bool moves) : topo_(std::move(topology)) {
+RayScene::RayScene(MeshTopology topology) : topo_(std::move(topology)) {
     if (!topo_.positions().empty()) {
         glm::dvec3 lo = topo_.positions().values().front(), hi = lo;
         for (const glm::dvec3& p : topo_.positions()) {
@@ -128,18 +128,13 @@ RayScene::RayScene(MeshTopology topology, bool moves) : topo_(std::move(topology
     RTCDevice device = shared_device();
     RTCScene scene = rtcNewScene(device);
     scene_ = scene;
+    rtcSetSceneFlags(scene, RTC_SCENE_FLAG_CONTEXT_FILTER_FUNCTION | RTC_SCENE_FLAG_ROBUST |
+                                RTC_SCENE_FLAG_DYNAMIC);
+    rtcSetSceneBuildQuality(scene, RTC_BUILD_QUALITY_LOW);
     RTCGeometry geom = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_TRIANGLE);
     geometry_ = geom;
-    if (moves) {
-        set_moving();
-    } else {
-        // A pose that stays (a turntable, the view) is traced many times: a
-        // SAH BVH (Embree's default, medium quality) makes each ray cheaper
-        // than the quick Morton one.
-        rtcSetSceneFlags(scene, RTC_SCENE_FLAG_CONTEXT_FILTER_FUNCTION | RTC_SCENE_FLAG_ROBUST);
-        rtcSetSceneBuildQuality(scene, RTC_BUILD_QUALITY_MEDIUM);
-        rtcSetGeometryBuildQuality(geom, RTC_BUILD_QUALITY_MEDIUM);
-    }
+    // The first build is the fast (Morton) one; refit() switches to refitting.
+    rtcSetGeometryBuildQuality(geom, RTC_BUILD_QUALITY_LOW);
     vertices_ = static_cast<float*>(rtcSetNewGeometryBuffer(
         geom, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, 3 * sizeof(float), topo_.n_vertices()));
     auto* index = static_cast<std::uint32_t*>(rtcSetNewGeometryBuffer(
@@ -170,23 +165,12 @@ void RayScene::upload_positions() {
         for (int k = 0; k < 3; ++k) *out++ = float(p[k] - origin_[k]);
 }
 
-void RayScene::set_moving() {
-    // A two-level scene whose geometry is built the quick (Morton) way, then
-    // refitted to each pose.
-    moving_ = true;
-    auto scene = static_cast<RTCScene>(scene_);
-    rtcSetSceneFlags(scene, RTC_SCENE_FLAG_CONTEXT_FILTER_FUNCTION | RTC_SCENE_FLAG_ROBUST | RTC_SCENE_FLAG_DYNAMIC);
-    rtcSetSceneBuildQuality(scene, RTC_BUILD_QUALITY_LOW);
-    rtcSetGeometryBuildQuality(static_cast<RTCGeometry>(geometry_), RTC_BUILD_QUALITY_LOW);
-}
-
 void RayScene::refit(const MeshTopology& pose) {
     if (!pose.same_connectivity(topo_))
         throw InternalError("RayScene::refit: a pose of another mesh (its connectivity differs)");
     topo_ = pose;
     auto geom = static_cast<RTCGeometry>(geometry_);
-    if (!moving_) set_moving(); // rebuilt once, the quick way
-    else rtcSetGeometryBuildQuality(geom, RTC_BUILD_QUALITY_REFIT);
+    rtcSetGeometryBuildQuality(geom, RTC_BUILD_QUALITY_REFIT);
     upload_positions();
     rtcUpdateGeometryBuffer(geom, RTC_BUFFER_TYPE_VERTEX, 0);
     rtcCommitGeometry(geom);

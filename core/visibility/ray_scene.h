@@ -45,17 +45,14 @@ struct CountContext;
 class RayScene {
   public:
     /// Builds the BVH of @p topology's faces in its pose (the scene keeps
-    /// the topology, a shared value). A scene whose mesh @p moves (refit()
-    /// each frame) is built the quick way, for updates; one that stays, for
-    /// tracing (a SAH BVH: each ray is cheaper).
-    explicit RayScene(MeshTopology topology, bool moves = false);
+    /// the topology, a shared value).
+    explicit RayScene(MeshTopology topology);
     ~RayScene();
     RayScene(const RayScene&) = delete;
     RayScene& operator=(const RayScene&) = delete;
 
     /// Refits the BVH to @p pose, another pose of the same connectivity (else
-    /// InternalError), for meshes that move between frames. (On a scene
-    /// built as one that stays, the first call rebuilds it for updates.)
+    /// InternalError), for meshes that move between frames.
     void refit(const MeshTopology& pose);
 
     /// Every crossing of the ray segment, each face once.
@@ -69,8 +66,6 @@ class RayScene {
 
   private:
     void upload_positions();
-    /// Flags and build qualities for a mesh that moves (set before a commit).
-    void set_moving();
     void init_context(CountContext& context, const VisibilityRay& ray, bool counting) const;
 
     MeshTopology topo_;
@@ -81,7 +76,6 @@ class RayScene {
     void* scene_ = nullptr;  // RTCScene
     void* geometry_ = nullptr; // RTCGeometry
     float* vertices_ = nullptr; // Embree-owned vertex buffer
-    bool moving_ = false;       ///< refit() was called: the scene is built for moving meshes
 };
 
 } // namespace snaxels
