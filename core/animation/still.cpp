@@ -6,8 +6,6 @@
 #include <memory>
 #include <stdexcept>
 
-#include <tbb/parallel_invoke.h>
-
 #include "snaxels/error.h"
 #include "snaxels/export/svg.h"
 #include "snaxels/util/detail/float_mode.h"
@@ -148,7 +146,6 @@ StillOutput render_still(const LoadedMesh& mesh, const MeshTopology& topology, c
     // The lines (hidden lines of every kind at once, the drawing) and the
     // planar map are made at once: they share only what they read.
     auto lines = [&] {
-        const FloatModeGuard mode;
         if (scene.visibility) {
             const VisibilitySampler sampler(*rays, scene.camera);
             out.visibility.resize(out.results.size());
@@ -158,7 +155,6 @@ StillOutput render_still(const LoadedMesh& mesh, const MeshTopology& topology, c
         weigh_strokes(out.drawing, scene.style, engine, out.results, scene.camera, scene.light, centre, radius);
     };
     auto fills = [&] {
-        const FloatModeGuard mode;
         if (!map) return;
         auto result_of = [&](const ContourSpec& spec) -> const ContourResult* {
             for (const ContourResult& r : out.results)
@@ -171,7 +167,7 @@ StillOutput render_still(const LoadedMesh& mesh, const MeshTopology& topology, c
         for (const ContourSpec& spec : needed) contours.push_back(result_of(spec));
         out.regions = build_planar_map(scene.map_kind, engine, contours, rays, projection, scene.camera, scene.light).regions;
     };
-    tbb::parallel_invoke(lines, fills);
+    parallel_invoke(lines, fills);
     out.svg = to_svg(out.drawing, scene.style, out.regions.empty() ? nullptr : &out.regions);
     return out;
 }

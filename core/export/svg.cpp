@@ -1,13 +1,10 @@
 #include "snaxels/export/svg.h"
-#include "snaxels/util/detail/float_mode.h"
 #include "snaxels/util/detail/parallel.h"
 
 #include <algorithm>
 #include <charconv>
 #include <cmath>
 #include <cstdio>
-
-#include <tbb/parallel_invoke.h>
 
 #include "snaxels/export/detail/polyline.h"
 #include "snaxels/export/detail/svg_writer.h"
@@ -282,7 +279,6 @@ void draw_weighted(std::string& out, const DrawnLoop& given, bool hidden, const 
 
 /// The fills' group of a still's SVG (empty without regions or region styles).
 std::string fills_svg(const Drawing& drawing, const Style& style, const std::vector<MapRegion>* regions) {
-    const FloatModeGuard mode;
     std::string out;
     if (regions && !style.regions.empty()) {
         // Region outlines run along mesh edges in straight stretches of many
@@ -331,7 +327,6 @@ std::string fills_svg(const Drawing& drawing, const Style& style, const std::vec
 
 /// The strokes' groups of a still's SVG: hidden, then visible lines.
 std::string strokes_svg(const Drawing& drawing, const Style& style, bool by_object) {
-    const FloatModeGuard mode;
     std::string out;
     // Hidden lines first, so visible strokes are drawn over them.
     const bool with_hidden = has_hidden_lines(drawing);
@@ -389,8 +384,8 @@ std::string to_svg(const Drawing& drawing, const Style& style, const std::vector
     // The fills (eroded and made a partition again with Clipper) and the
     // strokes (curves fitted) are made at once.
     std::string fills, strokes;
-    tbb::parallel_invoke([&] { fills = fills_svg(drawing, style, regions); },
-                         [&] { strokes = strokes_svg(drawing, style, by_object); });
+    parallel_invoke([&] { fills = fills_svg(drawing, style, regions); },
+                    [&] { strokes = strokes_svg(drawing, style, by_object); });
     out += fills;
     out += strokes;
     out += "</svg>\n";

@@ -1,15 +1,16 @@
 #pragma once
-/// Parallel loops over an index range, on oneTBB's thread pool. An
-/// exception thrown by an iteration reaches the caller (the first one; the
-/// rest of the loop is cancelled), as it would from a plain loop. Every
-/// block runs in IEEE floating-point mode (float_mode.h), whichever thread
-/// runs it.
+/// Parallel loops over an index range, and calls made at once, on oneTBB's
+/// thread pool. An exception thrown by an iteration reaches the caller (the
+/// first one; the rest of the loop is cancelled), as it would from a plain
+/// loop. Every block and call runs in IEEE floating-point mode
+/// (float_mode.h), whichever thread runs it.
 
 #include <algorithm>
 #include <cstddef>
 
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
+#include <tbb/parallel_invoke.h>
 
 #include "snaxels/util/detail/float_mode.h"
 
@@ -41,6 +42,15 @@ template <class Ids, class Fn>
     }
 void parallel_for(const Ids& ids, Fn&& fn, std::size_t grain = 512) {
     parallel_for(ids.size(), [&](std::size_t i) { fn(typename Ids::Id(i)); }, grain);
+}
+
+/// Calls each of @p fns at once, on the pool's threads, each in IEEE
+/// floating-point mode; returns when all have returned.
+template <class... Fns> void parallel_invoke(Fns&&... fns) {
+    tbb::parallel_invoke([&fns] {
+        const FloatModeGuard mode;
+        fns();
+    }...);
 }
 
 } // namespace snaxels
