@@ -27,6 +27,7 @@
 #include "snaxels/snaxel/snaxel_engine.h"
 #include "snaxels/mesh/topology.h"
 #include "snaxels/snaxel/tracker.h"
+#include "snaxels/util/memory.h"
 
 using namespace snaxels;
 
@@ -106,6 +107,7 @@ std::string check_identities(const TrackedFrame& f) {
 } // namespace
 
 int main(int argc, char** argv) {
+    snaxels::tune_allocator();
     int frames = 10000;
     std::size_t faces = 20000;
     unsigned seed = 1;

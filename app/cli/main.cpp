@@ -11,6 +11,7 @@
 #include "app/cli/commands.h"
 #include "snaxels/error.h"
 #include "snaxels/mesh/isolated_import.h"
+#include "snaxels/util/memory.h"
 #include "snaxels/version.h"
 
 namespace snaxels::cli {
@@ -68,6 +69,7 @@ extern "C" void on_fatal_signal(int sig) {
 int main(int argc, char** argv) {
     using namespace snaxels::cli;
     std::ios::sync_with_stdio(false);
+    snaxels::tune_allocator();
     for (const int sig : {SIGABRT, SIGSEGV, SIGBUS, SIGFPE, SIGILL}) std::signal(sig, on_fatal_signal);
     if (argc < 2) {
         print_help();

@@ -11,6 +11,7 @@
 #include <string>
 
 #include "snaxels/mesh/isolated_import.h"
+#include "snaxels/util/memory.h"
 #include "snaxels/version.h"
 #include "ui/mainwindow.h"
 #include "ui/resources.h"
@@ -27,6 +28,7 @@ void name_application() {
 } // namespace
 
 int main(int argc, char** argv) {
+    snaxels::tune_allocator();
     QSurfaceFormat format;
     format.setVersion(3, 3);
     format.setProfile(QSurfaceFormat::CoreProfile);

@@ -52,6 +52,11 @@ struct MeshConnectivity {
     /// (the copies of one vertex of a sharp edge name one of them; joined
     /// through the strips' zero-length edges). Empty without strips.
     VertexData<VertexId> point_of;
+    /// What is derived from the connectivity alone and so is the same in
+    /// every pose (the order in which curvature gathers a vertex's faces,
+    /// ...): computed on first use and kept for the mesh's life, under the
+    /// keys PoseQuantities describes.
+    PoseQuantities quantities{};
 
     std::size_t n_vertices() const { return ring_start.empty() ? 0 : ring_start.size() - 1; }
     /// The mesh's own vertices (the first ones; all of them unless refined).

@@ -18,6 +18,7 @@ namespace {
 /// matrix [ku kuv; kuv kv], with the face's share of each corner's area.
 struct FaceForm {
     glm::dvec3 t{0.0}, b{0.0};
+    glm::dvec3 n{0.0}; ///< t x b (the face's unit normal, as project_form turns toward it)
     double ku = 0.0, kuv = 0.0, kv = 0.0;
     std::array<double, 3> corner{0.0, 0.0, 0.0}; ///< 0 for a face of no area: it then counts nowhere
 };
@@ -76,19 +77,29 @@ FaceForm face_form(const MeshTopology& topo, FaceId f) {
     }
     const glm::dmat3 w(w00, w01, 0.0, w01, w00 + w22, w01, 0.0, w01, w22); // symmetric
     const double det = glm::determinant(w);
-    if (!(std::abs(det) > 1e-30 * std::pow(w00 + w22, 3))) return form;
+    const double scale = w00 + w22;
+    if (!(std::abs(det) > 1e-30 * (scale * scale * scale))) return form;
     const glm::dvec3 k = glm::inverse(w) * glm::dvec3(m0, m1, m2);
     form.ku = k.x;
     form.kuv = k.y;
     form.kv = k.z;
+    form.n = glm::cross(form.t, form.b);
     form.corner = corner_areas(e, 0.5 * twice_area);
     return form;
 }
 
+/// A vertex's unit tangent frame (u, v) and u x v (its normal, as
+/// turn_frame turns it).
+struct TangentFrame {
+    glm::dvec3 u, v, n;
+};
+
 /// The frame (u, v) turned about u x v onto the plane of normal @p n: the
 /// smallest rotation taking u x v to n.
-std::pair<glm::dvec3, glm::dvec3> turn_frame(const glm::dvec3& u, const glm::dvec3& v, const glm::dvec3& n) {
-    const glm::dvec3 old_n = glm::cross(u, v);
+std::pair<glm::dvec3, glm::dvec3> turn_frame(const TangentFrame& frame, const glm::dvec3& n) {
+    const glm::dvec3& u = frame.u;
+    const glm::dvec3& v = frame.v;
+    const glm::dvec3& old_n = frame.n;
     const double ndot = glm::dot(old_n, n);
     if (ndot <= -1.0) return {-u, -v};
     const glm::dvec3 perp = n - ndot * old_n;
@@ -96,9 +107,9 @@ std::pair<glm::dvec3, glm::dvec3> turn_frame(const glm::dvec3& u, const glm::dve
     return {u - dperp * glm::dot(u, perp), v - dperp * glm::dot(v, perp)};
 }
 
-/// @p form, a form in the frame (ou, ov), as a form in the frame (nu, nv).
-std::array<double, 3> project_form(const FaceForm& form, const glm::dvec3& nu, const glm::dvec3& nv) {
-    const auto [ru, rv] = turn_frame(nu, nv, glm::cross(form.t, form.b));
+/// @p form, a form in the frame (form.t, form.b), as a form in @p frame.
+std::array<double, 3> project_form(const FaceForm& form, const TangentFrame& frame) {
+    const auto [ru, rv] = turn_frame(frame, form.n);
     const double u1 = glm::dot(ru, form.t), v1 = glm::dot(ru, form.b);
     const double u2 = glm::dot(rv, form.t), v2 = glm::dot(rv, form.b);
     return {form.ku * u1 * u1 + form.kuv * (2.0 * u1 * v1) + form.kv * v1 * v1,
@@ -107,7 +118,7 @@ std::array<double, 3> project_form(const FaceForm& form, const glm::dvec3& nu, c
 }
 
 /// A unit tangent frame (u, v) at vertex @p v, u toward its first neighbour.
-std::pair<glm::dvec3, glm::dvec3> vertex_frame(const MeshTopology& topo, VertexId v) {
+TangentFrame vertex_frame(const MeshTopology& topo, VertexId v) {
     const glm::dvec3 n = topo.normals()[v];
     glm::dvec3 u(0.0);
     if (const auto ring = topo.neighbours(v); !ring.empty()) {
@@ -118,7 +129,16 @@ std::pair<glm::dvec3, glm::dvec3> vertex_frame(const MeshTopology& topo, VertexI
         u = glm::cross(n, std::abs(n.x) < 0.9 ? glm::dvec3(1.0, 0.0, 0.0) : glm::dvec3(0.0, 1.0, 0.0));
     }
     u = glm::normalize(u);
-    return {u, glm::cross(n, u)};
+    const glm::dvec3 w = glm::cross(n, u);
+    return {u, w, glm::cross(u, w)};
+}
+
+/// Every vertex's tangent frame (vertex_frame), found once per pose for
+/// the passes that turn forms into it.
+VertexData<TangentFrame> vertex_frames(const MeshTopology& topo) {
+    VertexData<TangentFrame> frames(topo.n_vertices());
+    parallel_for(topo.vertices(), [&](VertexId v) { frames[v] = vertex_frame(topo, v); }, 4096);
+    return frames;
 }
 
 /// The normal curvature of vertex @p v along @p view (toward the viewer)
@@ -194,22 +214,82 @@ double typical_curvature(const CurvatureField& field) {
     return *middle;
 }
 
-} // namespace
+/// What the curvature passes read of the connectivity alone, found once per
+/// mesh and shared by its poses: each vertex's faces (faces_around's order,
+/// with the vertex's corner) and, for the gradient operator, where each of
+/// a face's corners adds to the vertex's weights.
+struct CurvaturePlan {
+    /// CSR: the faces around v are around[around_start[v] .. around_start[v+1]).
+    std::vector<std::int32_t> around_start;
+    std::vector<FaceCorner> around;
+    /// Per entry of around, per corner k of its face: the place of corner
+    /// k's vertex among v's gradient weights (0 for v, 1 + i for its i-th
+    /// neighbour), or kNoPlace when it is none of them.
+    std::vector<std::array<std::int32_t, 3>> place;
+    static constexpr std::int32_t kNoPlace = -1;
+    /// CurvatureField::gradient_start and gradient_vertex, the same in every pose.
+    std::vector<std::int32_t> gradient_start;
+    std::vector<VertexId> gradient_vertex;
+};
 
-CurvatureField smoothed_curvatures(const MeshTopology& topo, const CurvatureField& field) {
+CurvaturePlan make_plan(const MeshTopology& topo) {
+    CurvaturePlan plan;
+    const std::size_t nv = topo.n_vertices();
+    plan.around_start.assign(nv + 1, 0);
+    plan.gradient_start.assign(nv + 1, 0);
+    for (const VertexId v : topo.vertices()) {
+        const auto i = v.index();
+        for (const FaceCorner fc : topo.faces_around(v)) plan.around.push_back(fc);
+        plan.around_start[i + 1] = std::int32_t(plan.around.size());
+        plan.gradient_start[i + 1] = plan.gradient_start[i] + 1 + topo.degree(v); // v itself, then its neighbours
+    }
+    plan.place.resize(plan.around.size());
+    plan.gradient_vertex.resize(std::size_t(plan.gradient_start.back()));
+    parallel_for(topo.vertices(), [&](VertexId v) {
+        const std::span<const VertexId> ring = topo.neighbours(v);
+        const auto at = plan.gradient_vertex.begin() + plan.gradient_start[v.index()];
+        *at = v;
+        std::copy(ring.begin(), ring.end(), at + 1);
+        for (std::int32_t a = plan.around_start[v.index()]; a < plan.around_start[v.index() + 1]; ++a) {
+            const auto& fv = topo.face_vertices()[plan.around[std::size_t(a)].face];
+            for (std::size_t k = 0; k < 3; ++k) {
+                std::int32_t place = CurvaturePlan::kNoPlace;
+                if (fv[k] == v) {
+                    place = 0;
+                } else if (const auto it = std::find(ring.begin(), ring.end(), fv[k]); it != ring.end()) {
+                    place = std::int32_t(1 + (it - ring.begin()));
+                }
+                plan.place[std::size_t(a)][k] = place;
+            }
+        }
+    }, 4096);
+    return plan;
+}
+
+/// The topology's plan, made on first use and kept with its connectivity.
+std::shared_ptr<const CurvaturePlan> require_plan(const MeshTopology& topo) {
+    return topo.connectivity()->quantities.require<CurvaturePlan>("curvature plan", [&] { return make_plan(topo); });
+}
+
+/// smoothed_curvatures with the pose's tangent frames given, without the
+/// typical curvature (only the last pass's is read).
+CurvatureField smoothed(const MeshTopology& topo, const CurvatureField& field, const VertexData<TangentFrame>& frames) {
     CurvatureField out = field;
+    // Each vertex's principal frame as a form's frame, with its normal.
+    VertexData<glm::dvec3> principal_normal(topo.n_vertices());
+    parallel_for(topo.vertices(), [&](VertexId v) { principal_normal[v] = glm::cross(field.dir1[v], field.dir2[v]); }, 4096);
     parallel_for(topo.vertices(), [&](VertexId v) {
         if (!(field.area[v] > 0.0)) return;
-        const std::pair<glm::dvec3, glm::dvec3> frame = vertex_frame(topo, v);
-        const glm::dvec3 u = frame.first, w = frame.second; // (not a binding: the lambda below uses them)
+        const TangentFrame& frame = frames[v];
         double total = 0.0, ku = 0.0, kuv = 0.0, kv = 0.0;
         auto add = [&](VertexId j) {
             FaceForm form; // vertex j's form in its principal frame
             form.t = field.dir1[j];
             form.b = field.dir2[j];
+            form.n = principal_normal[j];
             form.ku = field.k1[j];
             form.kv = field.k2[j];
-            const std::array<double, 3> k = project_form(form, u, w);
+            const std::array<double, 3> k = project_form(form, frame);
             total += field.area[j];
             ku += field.area[j] * k[0];
             kuv += field.area[j] * k[1];
@@ -218,13 +298,14 @@ CurvatureField smoothed_curvatures(const MeshTopology& topo, const CurvatureFiel
         add(v);
         for (const VertexId n : topo.neighbours(v))
             if (field.area[n] > 0.0) add(n);
-        set_principal(out, v, topo.normals()[v], u, w, ku / total, kuv / total, kv / total);
+        set_principal(out, v, topo.normals()[v], frame.u, frame.v, ku / total, kuv / total, kv / total);
     }, 1024);
-    out.typical = typical_curvature(out);
     return out;
 }
 
-CurvatureField vertex_curvatures(const MeshTopology& topo) {
+/// vertex_curvatures with the plan and the pose's tangent frames given,
+/// without the typical curvature.
+CurvatureField unsmoothed(const MeshTopology& topo, const CurvaturePlan& plan, const VertexData<TangentFrame>& frames) {
     const std::size_t nv = topo.n_vertices(), nf = topo.n_faces();
     FaceData<FaceForm> forms(nf);
     parallel_for(topo.faces(), [&](FaceId f) { forms[f] = face_form(topo, f); }, 2048);
@@ -236,14 +317,14 @@ CurvatureField vertex_curvatures(const MeshTopology& topo) {
     out.dir2.assign(nv, glm::dvec3(0.0));
     out.area.assign(nv, 0.0);
     parallel_for(topo.vertices(), [&](VertexId v) {
-        const std::pair<glm::dvec3, glm::dvec3> frame = vertex_frame(topo, v);
-        const glm::dvec3 u = frame.first, w = frame.second; // (not a binding: the lambda below uses them)
+        const TangentFrame& frame = frames[v];
         double area = 0.0, ku = 0.0, kuv = 0.0, kv = 0.0;
-        for (const auto [f, c] : topo.faces_around(v)) {
-            const FaceForm& form = forms[f];
-            const double weight = form.corner[c];
+        for (std::int32_t a = plan.around_start[v.index()]; a < plan.around_start[v.index() + 1]; ++a) {
+            const FaceCorner fc = plan.around[std::size_t(a)];
+            const FaceForm& form = forms[fc.face];
+            const double weight = form.corner[std::size_t(fc.corner)];
             if (!(weight > 0.0)) continue;
-            const std::array<double, 3> k = project_form(form, u, w);
+            const std::array<double, 3> k = project_form(form, frame);
             area += weight;
             ku += weight * k[0];
             kuv += weight * k[1];
@@ -251,49 +332,59 @@ CurvatureField vertex_curvatures(const MeshTopology& topo) {
         }
         out.area[v] = area;
         if (!(area > 0.0)) {
-            out.dir1[v] = u;
-            out.dir2[v] = w;
+            out.dir1[v] = frame.u;
+            out.dir2[v] = frame.v;
             return;
         }
-        set_principal(out, v, topo.normals()[v], u, w, ku / area, kuv / area, kv / area);
+        set_principal(out, v, topo.normals()[v], frame.u, frame.v, ku / area, kuv / area, kv / area);
     }, 1024);
+    return out;
+}
+
+/// add_gradient_operator with the plan given.
+void gradient_operator(const MeshTopology& topo, const CurvaturePlan& plan, CurvatureField& field) {
+    field.gradient_start = plan.gradient_start;
+    field.gradient_vertex = plan.gradient_vertex;
+    field.gradient_weight.assign(plan.gradient_vertex.size(), glm::dvec3(0.0));
+    // Each face's corner gradients once (a face is around three vertices).
+    struct FaceGradients {
+        double area = 0.0;
+        std::array<glm::dvec3, 3> g;
+    };
+    FaceData<FaceGradients> faces(topo.n_faces());
+    parallel_for(topo.faces(), [&](FaceId f) { faces[f].g = corner_gradients(topo, f, faces[f].area); }, 4096);
+    parallel_for(topo.vertices(), [&](VertexId v) {
+        const auto begin = field.gradient_weight.begin() + plan.gradient_start[v.index()];
+        const auto end = field.gradient_weight.begin() + plan.gradient_start[v.index() + 1];
+        double total = 0.0;
+        for (std::int32_t a = plan.around_start[v.index()]; a < plan.around_start[v.index() + 1]; ++a) {
+            const FaceGradients& face = faces[plan.around[std::size_t(a)].face];
+            const auto& place = plan.place[std::size_t(a)];
+            for (std::size_t k = 0; k < 3; ++k)
+                if (place[k] != CurvaturePlan::kNoPlace) begin[place[k]] += face.area * face.g[k];
+            total += face.area;
+        }
+        if (total > 0.0)
+            for (auto w = begin; w != end; ++w) *w /= total;
+    }, 1024);
+}
+
+} // namespace
+
+CurvatureField smoothed_curvatures(const MeshTopology& topo, const CurvatureField& field) {
+    CurvatureField out = smoothed(topo, field, vertex_frames(topo));
+    out.typical = typical_curvature(out);
+    return out;
+}
+
+CurvatureField vertex_curvatures(const MeshTopology& topo) {
+    CurvatureField out = unsmoothed(topo, *require_plan(topo), vertex_frames(topo));
     out.typical = typical_curvature(out);
     return out;
 }
 
 void add_gradient_operator(const MeshTopology& topo, CurvatureField& field) {
-    field.gradient_start.assign(topo.n_vertices() + 1, 0);
-    for (const VertexId v : topo.vertices()) { // v itself, then its neighbours in ring order
-        const auto i = v.index();
-        field.gradient_start[i + 1] = field.gradient_start[i] + 1 + topo.degree(v);
-    }
-    field.gradient_vertex.assign(field.gradient_start.back(), VertexId());
-    field.gradient_weight.assign(field.gradient_start.back(), glm::dvec3(0.0));
-    parallel_for(topo.vertices(), [&](VertexId v) {
-        const auto begin = field.gradient_weight.begin() + field.gradient_start[v.index()];
-        const auto end = field.gradient_weight.begin() + field.gradient_start[v.index() + 1];
-        const std::span<const VertexId> ring = topo.neighbours(v);
-        const auto at = field.gradient_vertex.begin() + field.gradient_start[v.index()];
-        *at = v;
-        std::copy(ring.begin(), ring.end(), at + 1);
-        // Where vertex j's weight goes: v's first, then its neighbours'.
-        auto weight_of = [&](VertexId j) {
-            if (j == v) return begin;
-            const auto place = std::find(ring.begin(), ring.end(), j);
-            return place == ring.end() ? end : begin + 1 + (place - ring.begin());
-        };
-        double total = 0.0;
-        for (const auto [face, corner] : topo.faces_around(v)) {
-            const auto& fv = topo.face_vertices()[face];
-            double area = 0.0;
-            const std::array<glm::dvec3, 3> g = corner_gradients(topo, face, area);
-            for (std::size_t k = 0; k < 3; ++k)
-                if (const auto w = weight_of(fv[k]); w != end) *w += area * g[k];
-            total += area;
-        }
-        if (total > 0.0)
-            for (auto w = begin; w != end; ++w) *w /= total;
-    }, 1024);
+    gradient_operator(topo, *require_plan(topo), field);
 }
 
 std::shared_ptr<const CurvatureField> require_curvature(const MeshTopology& topo, const CurvatureOptions& options) {
@@ -302,9 +393,12 @@ std::shared_ptr<const CurvatureField> require_curvature(const MeshTopology& topo
     // Computed outside the store's lock: the computation runs parallel
     // loops, whose workers may be asked for the same pose's curvature.
     return topo.pose()->quantities.require<CurvatureField>(key, [&] {
-        CurvatureField field = vertex_curvatures(topo);
-        for (int pass = 0; pass < options.smoothing; ++pass) field = smoothed_curvatures(topo, field);
-        if (options.gradient) add_gradient_operator(topo, field);
+        const std::shared_ptr<const CurvaturePlan> plan = require_plan(topo);
+        const VertexData<TangentFrame> frames = vertex_frames(topo);
+        CurvatureField field = unsmoothed(topo, *plan, frames);
+        for (int pass = 0; pass < options.smoothing; ++pass) field = smoothed(topo, field, frames);
+        field.typical = typical_curvature(field);
+        if (options.gradient) gradient_operator(topo, *plan, field);
         return field;
     });
 }

@@ -6,6 +6,10 @@
 
 #include <unistd.h>
 
+#if defined(__GLIBC__)
+#include <malloc.h>
+#endif
+
 namespace snaxels {
 
 std::uint64_t machine_memory_bytes() {
@@ -17,6 +21,14 @@ std::uint64_t machine_memory_bytes() {
     const long pages = ::sysconf(_SC_PHYS_PAGES), page = ::sysconf(_SC_PAGE_SIZE);
     if (pages <= 0 || page <= 0) return UINT64_MAX;
     return std::uint64_t(pages) * std::uint64_t(page);
+}
+
+void tune_allocator() {
+#if defined(__GLIBC__)
+    // Fixing the thresholds also turns off glibc's own adjustment of them.
+    mallopt(M_MMAP_THRESHOLD, 32 * 1024 * 1024);
+    mallopt(M_TRIM_THRESHOLD, 128 * 1024 * 1024);
+#endif
 }
 
 std::string describe_bytes(std::uint64_t bytes) {
