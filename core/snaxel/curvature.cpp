@@ -220,7 +220,7 @@ double typical_curvature(const CurvatureField& field) {
 /// a face's corners adds to the vertex's weights.
 struct CurvaturePlan {
     /// CSR: the faces around v are around[around_start[v] .. around_start[v+1]).
-    std::vector<std::int32_t> around_start;
+    std::vector<std::size_t> around_start;
     std::vector<FaceCorner> around;
     /// Per entry of around, per corner k of its face: the place of corner
     /// k's vertex among v's gradient weights (0 for v, 1 + i for its i-th
@@ -240,18 +240,18 @@ CurvaturePlan make_plan(const MeshTopology& topo) {
     for (const VertexId v : topo.vertices()) {
         const auto i = v.index();
         for (const FaceCorner fc : topo.faces_around(v)) plan.around.push_back(fc);
-        plan.around_start[i + 1] = std::int32_t(plan.around.size());
+        plan.around_start[i + 1] = plan.around.size();
         plan.gradient_start[i + 1] = plan.gradient_start[i] + 1 + topo.degree(v); // v itself, then its neighbours
     }
     plan.place.resize(plan.around.size());
-    plan.gradient_vertex.resize(std::size_t(plan.gradient_start.back()));
+    plan.gradient_vertex.resize(plan.gradient_start.back());
     parallel_for(topo.vertices(), [&](VertexId v) {
         const std::span<const VertexId> ring = topo.neighbours(v);
         const auto at = plan.gradient_vertex.begin() + plan.gradient_start[v.index()];
         *at = v;
         std::copy(ring.begin(), ring.end(), at + 1);
-        for (std::int32_t a = plan.around_start[v.index()]; a < plan.around_start[v.index() + 1]; ++a) {
-            const auto& fv = topo.face_vertices()[plan.around[std::size_t(a)].face];
+        for (std::size_t a = plan.around_start[v.index()]; a < plan.around_start[v.index() + 1]; ++a) {
+            const auto& fv = topo.face_vertices()[plan.around[a].face];
             for (std::size_t k = 0; k < 3; ++k) {
                 std::int32_t place = CurvaturePlan::kNoPlace;
                 if (fv[k] == v) {
@@ -259,7 +259,7 @@ CurvaturePlan make_plan(const MeshTopology& topo) {
                 } else if (const auto it = std::find(ring.begin(), ring.end(), fv[k]); it != ring.end()) {
                     place = std::int32_t(1 + (it - ring.begin()));
                 }
-                plan.place[std::size_t(a)][k] = place;
+                plan.place[a][k] = place;
             }
         }
     }, 4096);
@@ -319,10 +319,10 @@ CurvatureField unsmoothed(const MeshTopology& topo, const CurvaturePlan& plan, c
     parallel_for(topo.vertices(), [&](VertexId v) {
         const TangentFrame& frame = frames[v];
         double area = 0.0, ku = 0.0, kuv = 0.0, kv = 0.0;
-        for (std::int32_t a = plan.around_start[v.index()]; a < plan.around_start[v.index() + 1]; ++a) {
-            const FaceCorner fc = plan.around[std::size_t(a)];
-            const FaceForm& form = forms[fc.face];
-            const double weight = form.corner[std::size_t(fc.corner)];
+        for (std::size_t a = plan.around_start[v.index()]; a < plan.around_start[v.index() + 1]; ++a) {
+            const auto [face, corner] = plan.around[a];
+            const FaceForm& form = forms[face];
+            const double weight = form.corner[corner];
             if (!(weight > 0.0)) continue;
             const std::array<double, 3> k = project_form(form, frame);
             area += weight;
@@ -357,9 +357,9 @@ void gradient_operator(const MeshTopology& topo, const CurvaturePlan& plan, Curv
         const auto begin = field.gradient_weight.begin() + plan.gradient_start[v.index()];
         const auto end = field.gradient_weight.begin() + plan.gradient_start[v.index() + 1];
         double total = 0.0;
-        for (std::int32_t a = plan.around_start[v.index()]; a < plan.around_start[v.index() + 1]; ++a) {
-            const FaceGradients& face = faces[plan.around[std::size_t(a)].face];
-            const auto& place = plan.place[std::size_t(a)];
+        for (std::size_t a = plan.around_start[v.index()]; a < plan.around_start[v.index() + 1]; ++a) {
+            const FaceGradients& face = faces[plan.around[a].face];
+            const auto& place = plan.place[a];
             for (std::size_t k = 0; k < 3; ++k)
                 if (place[k] != CurvaturePlan::kNoPlace) begin[place[k]] += face.area * face.g[k];
             total += face.area;
