@@ -15,6 +15,8 @@
 #include <QSettings>
 #include <QStatusBar>
 
+#include "snaxels/export/raster.h"
+#include "snaxels/export/video.h"
 #include "snaxels/util/atomic_file.h"
 #include "ui/animation_export.h"
 #include "ui/contour_scheduler.h"
@@ -158,7 +160,8 @@ void MainWindow::dropEvent(QDropEvent* event) {
 
 bool MainWindow::exportFrame(const QString& path) {
     try {
-        write_file_atomically(path.toStdString(), svg_.toStdString());
+        if (QFileInfo(path).suffix().compare("pdf", Qt::CaseInsensitive) == 0) write_pdf(path.toStdString(), svg_.toStdString());
+        else write_file_atomically(path.toStdString(), svg_.toStdString());
         reportExported(path);
         emit exportFinished(path);
         return true;
@@ -175,6 +178,23 @@ void MainWindow::exportAnimation(const QString& path, AnimationFormat format) {
     commitWidgets(); // the export writes the document
     AnimationJob job = document_->animationJob();
     job.format = format;
+    QString problem;
+    if (!set_output(job, path.toStdString())) {
+        problem = tr("Cannot write %1: the file's extension must be one of %2.")
+                      .arg(QFileInfo(path).fileName(), QString::fromStdString(output_extensions()));
+    } else if (!job.video.empty()) {
+        try {
+            require_ffmpeg();
+        } catch (const std::exception& e) {
+            problem = QString::fromStdString(e.what());
+        }
+    }
+    if (!problem.isEmpty()) { // said before any work, as an export's failure is
+        statusBar()->showMessage(problem, 8000);
+        warn(tr("Export Animation"), tr("The animation was not exported: %1").arg(problem));
+        emit exportFailed(problem);
+        return;
+    }
     export_->start(this, path, std::move(job), document_->mesh(), document_->meshSpec().toStdString());
 }
 

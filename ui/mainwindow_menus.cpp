@@ -97,23 +97,38 @@ void MainWindow::createMenus() {
 void MainWindow::createExportMenu() {
     QMenu* exportMenu = menuBar()->addMenu(tr("&Export"));
     QAction* exportAnim = exportMenu->addAction(tr("&Animated SVG…"), this, [this] {
-        const QString path = askSavePath(tr("Export Animated SVG"), kExportFolder, ".svg", tr("SVG (*.svg)"));
+        const QString path = askSavePath(tr("Export Animated SVG"), kExportFolder, ".svg",
+                                         tr("SVG (*.svg);;Compressed SVG (*.svgz)"));
         if (!path.isEmpty()) exportAnimation(path);
     });
     exportAnim->setObjectName("exportAnimatedSvg");
     exportAnim->setShortcut(QKeySequence(tr("Ctrl+E")));
     QAction* exportLottie = exportMenu->addAction(tr("&Lottie…"), this, [this] {
-        const QString path = askSavePath(tr("Export Lottie"), kExportFolder, ".json", tr("Lottie JSON (*.json)"));
+        const QString path = askSavePath(tr("Export Lottie"), kExportFolder, ".json",
+                                         tr("Lottie JSON (*.json);;dotLottie (*.lottie)"));
         if (!path.isEmpty()) exportAnimation(path, AnimationFormat::Lottie);
     });
     exportLottie->setObjectName("exportLottie");
     exportLottie->setShortcut(QKeySequence(tr("Ctrl+Alt+E")));
+    QAction* exportVideo = exportMenu->addAction(tr("&Video…"), this, [this] {
+        const QString path = askSavePath(tr("Export Video"), kExportFolder, ".mp4",
+                                         tr("MP4 video (*.mp4);;WebM video (*.webm);;Animated GIF (*.gif)"));
+        if (!path.isEmpty()) exportAnimation(path);
+    });
+    exportVideo->setObjectName("exportVideo");
+    exportVideo->setToolTip(tr("The animation's frames rendered and encoded by FFmpeg, at the canvas size and the frame rate"));
     QAction* exportStill = exportMenu->addAction(tr("Current &Frame as SVG…"), this, [this] {
         const QString path = askSavePath(tr("Export Frame"), kExportFolder, ".svg", tr("SVG (*.svg)"));
         if (!path.isEmpty()) exportFrame(path);
     });
     exportStill->setObjectName("exportFrame");
     exportStill->setShortcut(QKeySequence(tr("Ctrl+Shift+E")));
+    QAction* exportPdf = exportMenu->addAction(tr("Current Frame as &PDF…"), this, [this] {
+        const QString path = askSavePath(tr("Export Frame as PDF"), kExportFolder, ".pdf", tr("PDF (*.pdf)"));
+        if (!path.isEmpty()) exportFrame(path);
+    });
+    exportPdf->setObjectName("exportFramePdf");
+    exportPdf->setToolTip(tr("The drawing as vector PDF for print: its lines and fills stay paths"));
 }
 
 void MainWindow::createViewMenu() {
@@ -340,9 +355,15 @@ QString MainWindow::suggestedPath(const char* folder_key, const QString& extensi
 
 QString MainWindow::askSavePath(const QString& title, const char* folder_key, const QString& extension,
                                 const QString& filter) {
-    QString path = QFileDialog::getSaveFileName(this, title, suggestedPath(folder_key, extension), filter);
+    QString chosen_filter;
+    QString path = QFileDialog::getSaveFileName(this, title, suggestedPath(folder_key, extension), filter, &chosen_filter);
     if (path.isEmpty()) return path;
-    if (QFileInfo(path).suffix().isEmpty()) path += extension;
+    if (QFileInfo(path).suffix().isEmpty()) {
+        // The extension of the filter chosen ("Compressed SVG (*.svgz)"), else the first one.
+        const qsizetype star = chosen_filter.indexOf("(*");
+        const qsizetype close = chosen_filter.indexOf(')', star);
+        path += star >= 0 && close > star ? chosen_filter.mid(star + 2, close - star - 2) : extension;
+    }
     QSettings().setValue(folder_key, QFileInfo(path).absolutePath());
     return path;
 }

@@ -16,6 +16,7 @@
 #include "snaxels/mesh/file_cameras.h"
 #include "snaxels/mesh/import.h"
 #include "snaxels/animation/pipeline.h"
+#include "snaxels/export/video.h"
 #include "snaxels/util/atomic_file.h"
 
 namespace snaxels::cli {
@@ -58,15 +59,18 @@ int run_animate(const std::vector<std::string>& argv) {
                   {"start", "N", "begin at the source's frame N (an in point: turntable angle, clip time, sequence file)"},
                   {"fps", "F", "frames per second (default 24)"},
                   {"tolerance", "PX", "drop path vertices and keyframes reproduced within PX pixels (default 0.25)"},
-                  {"output", "OUT", "the animation to write: animated SVG, or Lottie for OUT.json", false, 'o'},
-                  {"format", "svg|lottie", "the output's format (default: by OUT's extension, .json for Lottie)"},
+                  {"output", "OUT", "the animation to write, by its extension: .svg (animated SVG), .svgz (the same, "
+                                    "gzipped), .json (Lottie), .lottie (dotLottie), .mp4, .webm or .gif (video of the frames)",
+                   false, 'o'},
+                  {"format", "svg|lottie", "the document's format; must agree with OUT's extension"},
                   {"frames-dir", "DIR", "also write every frame as a static SVG into DIR (a flipbook, for comparison)"},
+                  {"png-dir", "DIR", "also render every frame as PNG into DIR (frame_00000.png, ...)"},
                   {"events", "OUT.json", "write the visual events (creation, annihilation, split, merge)"},
                   {"stats", "OUT.json", "write the animated SVG's paths: frames shown, vertices, keyframes"}});
     Args args("animate",
               "animate MESH (--turntable DEG | --light-orbit DEG | --clip NAME | --sequence PATTERN | --camera NAME)\n"
               "       --frames N [--fps F] [view, light and kind options as in contours]\n"
-              "       [--tolerance PX] -o OUT.svg|OUT.json [--format svg|lottie] [--frames-dir DIR]\n"
+              "       [--tolerance PX] -o OUT.svg|.svgz|.json|.lottie|.mp4|.webm|.gif [--frames-dir DIR] [--png-dir DIR]\n"
               "       [--events OUT.json] [--stats OUT.json]",
               std::string("Tracks contours through an animation and writes an animated SVG in which every\n"
                           "contour is one path whose vertices move (SMIL), keyframed only where needed,\n"
@@ -120,9 +124,11 @@ int run_animate(const std::vector<std::string>& argv) {
     AnimatedSvgOptions svg_options;
     if (const auto v = args.value("tolerance")) svg_options.tolerance_px = parse_number("tolerance", *v, -1e-12, 100.0);
     const auto output = args.value("output");
-    if (!output) throw UsageError("-o OUT.svg is required (or OUT.json for Lottie)");
-    const AnimationFormat format = parse_animation_format(args.value("format"), *output);
+    if (!output) throw UsageError("-o OUT is required (" + output_extensions() + ")");
+    check_output(args.value("format"), *output);
+    if (is_video(*output_kind_for(*output))) require_ffmpeg(); // before the work, not after it
     const std::string frames_dir = args.value("frames-dir").value_or("");
+    const std::string png_dir = args.value("png-dir").value_or("");
     const std::string events_out = args.value("events").value_or("");
     const std::string stats_out = args.value("stats").value_or("");
 
@@ -151,9 +157,9 @@ int run_animate(const std::vector<std::string>& argv) {
     job.scene = complete_scene(scene, loaded.report, mesh_path, anim.start / anim.fps);
     job.svg = svg_options;
     job.canvas_follows_camera = !scene.size_given;
-    job.format = format;
     job.frames_dir = frames_dir;
-    job.output = *output; // written as the frames are made, atomically
+    job.png_dir = png_dir;
+    set_output(job, *output); // written as the frames are made, atomically
     const AnimationOutput result = run_animation_with_progress(loaded, mesh_path, job);
     if (!events_out.empty()) write_file_atomically(events_out, events_json(result, job).dump(1) + "\n");
     if (!stats_out.empty()) write_file_atomically(stats_out, stats_json(result).dump(1) + "\n");
@@ -162,6 +168,13 @@ int run_animate(const std::vector<std::string>& argv) {
     double tracking = 0.0;
     for (const double ms : result.tracking_ms) tracking += ms;
     const AnimatedSvgStats& stats = result.stats;
+    if (!job.video.empty()) {
+        std::printf("%s: %d frames at %g fps, %ux%u, %ju bytes; tracking %.2f ms per frame, %.0f ms in all; %zu events\n",
+                    output->c_str(), result.frames, anim.fps, unsigned(job.scene.style.width), unsigned(job.scene.style.height),
+                    std::uintmax_t(std::filesystem::file_size(*output)), tracking / std::max(1, result.frames), total_ms,
+                    result.events.size());
+        return 0;
+    }
     std::printf("%s: %d frames at %g fps, %zu paths, %zu keyframes (of %zu path-frames), %zu bytes; "
                 "tracking %.2f ms per frame, %.0f ms in all; %zu events\n",
                 output->c_str(), result.frames, anim.fps, stats.paths, stats.keyframes, stats.frames_spanned,

@@ -12,6 +12,7 @@
 #include "snaxels/error.h"
 #include "snaxels/animation/still.h"
 #include "snaxels/export/contours_json.h"
+#include "snaxels/export/raster.h"
 #include "snaxels/export/svg.h"
 #include "snaxels/mesh/import.h"
 #include "snaxels/mesh/refine.h"
@@ -25,10 +26,10 @@ int run_contours(const std::vector<std::string>& argv) {
     Args args(
         "contours",
         "contours MESH [--view-dir X,Y,Z | --eye X,Y,Z [--target X,Y,Z] [--fov DEG]]\n"
-        "       [--light-dir X,Y,Z | --light-pos X,Y,Z] [--kind KIND]... [--json OUT] [--svg OUT]",
+        "       [--light-dir X,Y,Z | --light-pos X,Y,Z] [--kind KIND]... [--json OUT] [--svg OUT] [--pdf OUT]",
         std::string(
             "Finds contours on MESH with snaxels and writes them as JSON (docs/contours-json.md)\n"
-            "and/or SVG; without --json or --svg prints a summary. KIND is visual (N.V = 0),\n"
+            "and/or SVG and vector PDF; without --json, --svg or --pdf prints a summary. KIND is visual (N.V = 0),\n"
             "shadow (N.L = 0 on front faces), isophote:K (N.L = K), gleam:K (V.R = K), K a\n"
             "cosine in [-1, 1], parabolic (the mesh's parabolic curves, found from visual\n"
             "events over all views: see `snaxels-cli parabolic`), crease[:DEG] (edges whose\n"
@@ -45,6 +46,7 @@ int run_contours(const std::vector<std::string>& argv) {
             auto specs = scene_option_specs();
             specs.push_back({"json", "OUT", "write the contours as JSON to OUT ('-' for standard output)"});
             specs.push_back({"svg", "OUT", "write the contours as SVG to OUT ('-' for standard output)"});
+            specs.push_back({"pdf", "OUT", "write the drawing as a vector PDF to OUT (the SVG's page, a pixel a point)"});
             return specs;
         }(),
         {"MESH"});
@@ -56,8 +58,10 @@ int run_contours(const std::vector<std::string>& argv) {
     const bool planar = scene.overrides.planar_map.has_value();
     const std::string json_out = args.value("json").value_or("");
     const std::string svg_out = args.value("svg").value_or("");
-    if (!json_out.empty() && json_out == svg_out)
-        throw UsageError("--json and --svg name the same file");
+    const std::string pdf_out = args.value("pdf").value_or("");
+    if ((!json_out.empty() && (json_out == svg_out || json_out == pdf_out)) || (!svg_out.empty() && svg_out == pdf_out))
+        throw UsageError("--json, --svg and --pdf name the same file");
+    if (pdf_out == "-") throw UsageError("--pdf needs a file, not standard output");
 
     // Everything about the command line is checked: now the expensive part.
     const LoadedMesh loaded = load_mesh(args.positional()[0]);
@@ -80,6 +84,7 @@ int run_contours(const std::vector<std::string>& argv) {
         else write_file_atomically(path, text);
     };
     if (!svg_out.empty()) emit(svg_out, still.svg);
+    if (!pdf_out.empty()) write_pdf(pdf_out, still.svg);
     if (!json_out.empty()) {
         nlohmann::json doc = contours_to_json(report, camera, light, still.drawing, results,
                                               planar || !still.regions.empty() ? &still.regions : nullptr);
@@ -87,7 +92,7 @@ int run_contours(const std::vector<std::string>& argv) {
                          {"faces", topology.n_faces()}};
         emit(json_out, doc.dump() + "\n");
     }
-    if (json_out.empty() && svg_out.empty()) {
+    if (json_out.empty() && svg_out.empty() && pdf_out.empty()) {
         std::cout << report.source << ": " << report.vertices << " vertices, " << report.faces
                   << " faces\n";
         for (std::size_t i = 0; i < results.size(); ++i) {

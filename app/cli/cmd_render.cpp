@@ -1,6 +1,7 @@
 #include <unistd.h>
 
 #include <cstdio>
+#include <filesystem>
 #include <iostream>
 
 #include "app/cli/args.h"
@@ -10,6 +11,8 @@
 #include "snaxels/animation/pipeline.h"
 #include "snaxels/animation/still.h"
 #include "snaxels/error.h"
+#include "snaxels/export/raster.h"
+#include "snaxels/export/video.h"
 #include "snaxels/mesh/import.h"
 #include "snaxels/project/project.h"
 #include "snaxels/mesh/refine.h"
@@ -19,15 +22,18 @@ namespace snaxels::cli {
 
 int run_render(const std::vector<std::string>& argv) {
     Args args("render",
-              "render PROJECT.snaxels -o OUT.svg|OUT.json [--format svg|lottie] [--still [--frame N]]",
+              "render PROJECT.snaxels -o OUT.svg|.svgz|.json|.lottie|.mp4|.webm|.gif [--png-dir DIR]\n"
+              "       | --still [--frame N] -o OUT.svg|OUT.pdf",
               "Renders a project saved by the application: its mesh, camera, light, animation and\n"
-              "style. Without --still it writes the animated SVG (or, for OUT.json, Lottie), the\n"
-              "very bytes the application's Export > Animated SVG (Export > Lottie) writes for the\n"
-              "project; with --still, one frame of the animation (the project's current frame,\n"
-              "or N) as static SVG.",
-              {{"output", "OUT", "the file to write: SVG, or Lottie for OUT.json", false, 'o'},
-               {"format", "svg|lottie", "the animation's format (default: by OUT's extension, .json for Lottie)"},
-               {"still", "", "write one frame as static SVG instead of the animation"},
+              "style. Without --still it writes the animation as OUT's extension asks: the animated\n"
+              "SVG (.svg, or gzipped .svgz) or Lottie (.json, or the dotLottie .lottie), the very\n"
+              "bytes the application's Export menu writes for the project, or a video of its\n"
+              "frames (.mp4, .webm, .gif); with --still, one frame of the animation (the project's\n"
+              "current frame, or N) as static SVG or vector PDF.",
+              {{"output", "OUT", "the file to write, by its extension", false, 'o'},
+               {"format", "svg|lottie", "the animation's format; must agree with OUT's extension"},
+               {"png-dir", "DIR", "also render every frame of the animation as PNG into DIR"},
+               {"still", "", "write one frame as static SVG (or PDF, for OUT.pdf) instead of the animation"},
                {"frame", "N", "with --still: the frame (default: the project's current frame)"}},
               {"PROJECT"});
     if (!args.parse(argv)) {
@@ -35,11 +41,18 @@ int run_render(const std::vector<std::string>& argv) {
         return 0;
     }
     const auto output = args.value("output");
-    if (!output) throw UsageError("-o OUT.svg is required (or OUT.json for Lottie)");
-    if (args.flag("still") && args.value("format") && *args.value("format") != "svg")
-        throw UsageError("--still writes static SVG; --format lottie is for the animation");
-    const AnimationFormat format =
-        args.flag("still") ? AnimationFormat::Svg : parse_animation_format(args.value("format"), *output);
+    if (!output) throw UsageError("-o OUT is required (" + output_extensions() + "; with --still .svg or .pdf)");
+    const bool still_pdf = args.flag("still") && std::filesystem::path(*output).extension() == ".pdf";
+    if (args.flag("still")) {
+        if (args.value("format") && *args.value("format") != "svg")
+            throw UsageError("--still writes static SVG; --format lottie is for the animation");
+        if (args.value("png-dir")) throw UsageError("--png-dir is for the animation, not --still");
+        if (output_kind_for(*output) != OutputKind::Svg && !still_pdf)
+            throw UsageError("cannot write '" + *output + "' with --still: the output's extension must be .svg or .pdf");
+    } else {
+        check_output(args.value("format"), *output);
+        if (is_video(*output_kind_for(*output))) require_ffmpeg(); // before the work, not after it
+    }
     if (args.flag("frame") && !args.flag("still")) throw UsageError("--frame goes with --still");
     const std::string project_path = args.positional()[0];
     const Project project = read_project(project_path);
@@ -58,10 +71,9 @@ int run_render(const std::vector<std::string>& argv) {
     if (animation.kind == AnimationSpec::Kind::Sequence) // relative to the project, as its mesh is
         animation.pattern = resolve_project_mesh(project_path, animation.pattern);
     AnimationJob job = make_animation_job(style, animation, orbit_base_camera(view), project.light);
-    job.format = format;
-
     if (!args.flag("still")) {
-        job.output = *output; // written as the frames are made, atomically
+        set_output(job, *output); // written as the frames are made, atomically
+        job.png_dir = args.value("png-dir").value_or("");
         const AnimationOutput result = run_animation_with_progress(loaded, mesh_path, job);
         std::printf("%s: %d frames at %g fps, %zu paths, %zu bytes\n", output->c_str(), result.frames,
                     project.animation.fps, result.stats.paths, result.bytes);
@@ -79,8 +91,9 @@ int run_render(const std::vector<std::string>& argv) {
     still.scene.camera = pose.camera;
     still.scene.light = pose.light;
     const StillOutput out = render_still(surface, pose.mesh, nullptr, still);
-    write_file_atomically(*output, out.svg);
-    std::printf("%s: frame %d, %zu bytes\n", output->c_str(), frame, out.svg.size());
+    if (still_pdf) write_pdf(*output, out.svg);
+    else write_file_atomically(*output, out.svg);
+    std::printf("%s: frame %d, %ju bytes\n", output->c_str(), frame, std::uintmax_t(std::filesystem::file_size(*output)));
     return 0;
 }
 

@@ -1,6 +1,6 @@
 #pragma once
 // A frame counter on standard error for long runs (only on a terminal),
-// and the output format of the commands that write animations.
+// and the output files of the commands that write animations.
 
 #include <unistd.h>
 
@@ -56,13 +56,18 @@ inline void find_parabolic_with_progress(const MeshTopology& topology, const std
     if (shown) progress.finish();
 }
 
-/// The format of the animation written to @p output: --format (svg or
-/// lottie) when given, else by the file's extension (.json: Lottie).
-inline AnimationFormat parse_animation_format(const std::optional<std::string>& format, const std::string& output) {
-    if (!format) return animation_format_for(output);
-    if (*format == "svg") return AnimationFormat::Svg;
-    if (*format == "lottie") return AnimationFormat::Lottie;
-    throw UsageError("--format must be svg or lottie, not '" + *format + "'");
+/// Checks, before any work, that @p output (-o) names a file the command
+/// can write (its extension one of output_extensions()) and that --format,
+/// when given, agrees with it (svg for .svg and .svgz, lottie for .json and
+/// .lottie); throws UsageError naming what it can write otherwise.
+inline void check_output(const std::optional<std::string>& format, const std::string& output) {
+    const std::optional<OutputKind> kind = output_kind_for(output);
+    if (!kind)
+        throw UsageError("cannot write '" + output + "': the output's extension must be one of " + output_extensions());
+    if (!format) return;
+    if (*format != "svg" && *format != "lottie") throw UsageError("--format must be svg or lottie, not '" + *format + "'");
+    if (is_video(*kind) || (*format == "lottie") != (document_format(*kind) == AnimationFormat::Lottie))
+        throw UsageError("--format " + *format + " does not fit '" + output + "' (.svg and .svgz are SVG; .json and .lottie are Lottie)");
 }
 
 /// Runs @p job with a frame counter on standard error (when it is a terminal).

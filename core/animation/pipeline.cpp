@@ -13,7 +13,9 @@
 #include "snaxels/animation/still.h"
 #include "snaxels/export/stroke_weight.h"
 #include "snaxels/export/lottie.h"
+#include "snaxels/export/raster.h"
 #include "snaxels/export/svg.h"
+#include "snaxels/export/video.h"
 #include "snaxels/snaxel/parabolic.h"
 #include "snaxels/util/atomic_file.h"
 #include "snaxels/planarmap/region_tracker.h"
@@ -26,7 +28,24 @@ namespace snaxels {
 AnimationFormat animation_format_for(const std::string& path) {
     std::string ext = std::filesystem::path(path).extension().string();
     std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
-    return ext == ".json" ? AnimationFormat::Lottie : AnimationFormat::Svg;
+    return ext == ".json" || ext == ".lottie" ? AnimationFormat::Lottie : AnimationFormat::Svg;
+}
+
+bool set_output(AnimationJob& job, const std::string& path) {
+    const std::optional<OutputKind> kind = output_kind_for(path);
+    if (!kind) return false;
+    if (is_video(*kind)) {
+        job.video = path;
+        job.video_kind = *kind;
+        job.output.clear();
+        job.document = false;
+    } else {
+        job.output = path;
+        job.format = document_format(*kind);
+        job.encoding = document_encoding(*kind);
+        job.document = true;
+    }
+    return true;
 }
 
 AnimationJob make_animation_job(const Style& style, const AnimationSpec& animation, const Camera& camera,
@@ -128,24 +147,17 @@ std::vector<std::vector<SurfacePoint>> surface_points(const Fronts& fronts) {
     return out;
 }
 
-/// The finished document: into @p file in blocks of about a megabyte, or
-/// into out.document.
-void finish_output(AnimationWriter& writer, AtomicFile* file, AnimationOutput& out) {
+/// The finished document: into @p file (encoded as it asks), or into
+/// out.document.
+void finish_output(AnimationWriter& writer, DocumentFile* file, AnimationOutput& out) {
     if (!file) {
         writer.finish([&](std::string_view piece) { out.document += piece; }, &out.stats);
         out.bytes = out.document.size();
         return;
     }
-    std::string block;
-    writer.finish(
-        [&](std::string_view piece) {
-            block += piece;
-            out.bytes += piece.size();
-            if (block.size() > (1u << 20)) file->write(block), block.clear();
-        },
-        &out.stats);
-    file->write(block);
-    file->commit();
+    writer.finish([&](std::string_view piece) { file->write(piece); }, &out.stats);
+    file->finish();
+    out.bytes = file->document_bytes();
 }
 
 } // namespace
@@ -159,10 +171,12 @@ struct InFlight {
     std::vector<ContourResult> results;
     std::vector<ContourVisibility> visibility;
     AnimationFrame frame;
+    std::string still; ///< the frame's static SVG, when it is rendered
+    RgbaImage picture; ///< the rendered frame, for a video or PNG files
 };
 
 /// The frames of one export: what carries from frame to frame (trackers,
-/// the ray scene, stroke parameters, the writer) and the three stages each
+/// the ray scene, stroke parameters, the writer) and the five stages each
 /// frame goes through (run_animation).
 class FrameStages {
   public:
@@ -276,17 +290,53 @@ class FrameStages {
             }
         for (auto& contour : w.frame.drawing.contours)
             for (auto& loop : contour.loops) std::vector<glm::dvec3>().swap(loop.p); // not exported: memory freed
-        if (!job_.frames_dir.empty()) {
-            char name[64];
-            std::snprintf(name, sizeof name, "frame_%05d.svg", w.k);
-            write_file_atomically((std::filesystem::path(job_.frames_dir) / name).string(),
-                                  to_svg(w.frame.drawing, job_.scene.style, w.frame.regions.empty() ? nullptr : &w.frame.regions));
+        if (!job_.frames_dir.empty() || renders()) {
+            std::string still = to_svg(w.frame.drawing, job_.scene.style, w.frame.regions.empty() ? nullptr : &w.frame.regions);
+            if (!job_.frames_dir.empty())
+                write_file_atomically((std::filesystem::path(job_.frames_dir) / frame_name(w.k, "svg")).string(), still);
+            if (renders()) w.still = std::move(still);
         }
-        writer_.add(std::move(w.frame));
+        if (job_.document) writer_.add(std::move(w.frame));
+        else w.frame = {};
+    }
+
+    /// Whether the frames are rendered (for a video or PNG files).
+    bool renders() const { return !job_.video.empty() || !job_.png_dir.empty(); }
+
+    /// 4. Any frames at once: the rendered frame.
+    void render(InFlight& w) const {
+        if (!renders()) return;
+        w.picture = render_svg(w.still, job_.scene.style.width, job_.scene.style.height, !job_.video.empty());
+        std::string().swap(w.still);
+    }
+
+    /// 5. In frame order: the rendered frame into the video and the PNG
+    /// folder, and the progress.
+    void deliver(InFlight& w) {
+        if (!job_.png_dir.empty()) write_png((std::filesystem::path(job_.png_dir) / frame_name(w.k, "png")).string(), w.picture);
+        if (video_) video_->add(w.picture);
+        w.picture = {};
         if (job_.progress) job_.progress(w.k + 1, frames_);
     }
 
+    /// The video being encoded, if any (started before the frames, so a bad
+    /// path or a missing ffmpeg fails at once).
+    void start_video() {
+        if (!job_.video.empty())
+            video_ = std::make_unique<VideoEncoder>(job_.video, job_.video_kind, job_.scene.style.width,
+                                                    job_.scene.style.height, job_.animation.fps);
+    }
+    void finish_video() {
+        if (video_) video_->finish();
+    }
+
   private:
+    static std::string frame_name(int k, const char* extension) {
+        char name[64];
+        std::snprintf(name, sizeof name, "frame_%05d.%s", k, extension);
+        return name;
+    }
+
     ImageProjection projection(const Camera& camera) const {
         return ImageProjection(camera, image_.centre, image_.radius, job_.scene.style.width, job_.scene.style.height,
                                job_.scene.style.margin);
@@ -305,6 +355,7 @@ class FrameStages {
     RegionTracker region_tracker_;
     std::unique_ptr<RayScene> rays_;
     AnimationWriter writer_; ///< frames are encoded as they come; the document is written at the end
+    std::unique_ptr<VideoEncoder> video_;
 };
 
 } // namespace
@@ -331,14 +382,17 @@ AnimationOutput run_animation(const LoadedMesh& loaded, const std::string& mesh_
     out.frames = frames;
     const ImageFrame image = frame_image(driver, mesh, job, frames);
 
-    if (!job.frames_dir.empty()) {
+    for (const std::string& dir : {job.frames_dir, job.png_dir}) {
+        if (dir.empty()) continue;
         std::error_code ec;
-        std::filesystem::create_directories(job.frames_dir, ec);
-        if (ec) throw Error("cannot create " + job.frames_dir + ": " + ec.message());
+        std::filesystem::create_directories(dir, ec);
+        if (ec) throw Error("cannot create " + dir + ": " + ec.message());
     }
     FrameStages stages(job, driver, rest, image, frames, out);
-    std::unique_ptr<AtomicFile> file;
-    if (!job.output.empty()) file = std::make_unique<AtomicFile>(job.output); // fails early on a bad path
+    std::unique_ptr<DocumentFile> file; // (fails early on a bad path)
+    if (job.document && !job.output.empty())
+        file = std::make_unique<DocumentFile>(job.output, job.encoding, dotlottie_id_for(job.output));
+    stages.start_video();
     // The stages run as a pipeline, so both cores stay busy: frame k+1 is
     // tracked while frame k is drawn and written. Tokens are frames in
     // flight at once: enough that tracking goes on while the writer encodes
@@ -360,9 +414,20 @@ AnimationOutput run_animation(const LoadedMesh& loaded, const std::string& mesh_
                                                                                        stages.draw(*w);
                                                                                        return w;
                                                                                    }) &
+            tbb::make_filter<std::shared_ptr<InFlight>, std::shared_ptr<InFlight>>(tbb::filter_mode::serial_in_order,
+                                                                                   [&](std::shared_ptr<InFlight> w) {
+                                                                                       stages.write(*w);
+                                                                                       return w;
+                                                                                   }) &
+            tbb::make_filter<std::shared_ptr<InFlight>, std::shared_ptr<InFlight>>(tbb::filter_mode::parallel,
+                                                                                   [&](std::shared_ptr<InFlight> w) {
+                                                                                       stages.render(*w);
+                                                                                       return w;
+                                                                                   }) &
             tbb::make_filter<std::shared_ptr<InFlight>, void>(tbb::filter_mode::serial_in_order,
-                                                              [&](std::shared_ptr<InFlight> w) { stages.write(*w); }));
-    finish_output(stages.writer(), file.get(), out);
+                                                              [&](std::shared_ptr<InFlight> w) { stages.deliver(*w); }));
+    stages.finish_video();
+    if (job.document) finish_output(stages.writer(), file.get(), out);
     return out;
 }
 

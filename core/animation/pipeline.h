@@ -15,6 +15,7 @@
 #include "snaxels/error.h"
 #include "snaxels/export/animated_svg.h"
 #include "snaxels/export/animation_writer.h"
+#include "snaxels/export/output_file.h"
 #include "snaxels/planarmap/planar_map.h"
 #include "snaxels/animation/frame_driver.h"
 #include "snaxels/animation/scene_settings.h"
@@ -24,7 +25,8 @@
 
 namespace snaxels {
 
-/// The format a file name asks for: Lottie for .json (any case), else SVG.
+/// The format a file name asks for: Lottie for .json and .lottie (any
+/// case), else SVG.
 AnimationFormat animation_format_for(const std::string& path);
 
 struct AnimationJob {
@@ -46,6 +48,18 @@ struct AnimationJob {
     /// AnimationOutput::document stays empty; memory then does not grow
     /// with the frame count (core/export/animation_writer.h).
     std::string output;
+    /// How `output`'s document is stored: plain, gzip (.svgz) or in the
+    /// dotLottie zip (.lottie).
+    DocumentEncoding encoding = DocumentEncoding::Plain;
+    /// When set, the frames (each frame's static SVG, as frames_dir has
+    /// them) are rendered and encoded as a video of kind video_kind there
+    /// (core/export/video.h), atomically.
+    std::string video;
+    OutputKind video_kind = OutputKind::Mp4;
+    /// When set, every frame is also rendered there as PNG (frame_00000.png).
+    std::string png_dir;
+    /// Whether the animated document is made at all (not for a video alone).
+    bool document = true;
     /// Called after each frame is written with (frames done, frames in
     /// all), one call at a time and in frame order, from whichever of the
     /// export's threads wrote it.
@@ -73,6 +87,13 @@ struct AnimationOutput {
     std::vector<double> tracking_ms; ///< per frame, all kinds
     int frames = 0;
 };
+
+/// Points @p job's output at @p path, as its extension asks: the document
+/// (output, format and encoding) for .svg, .svgz, .json and .lottie; a
+/// video alone (video, video_kind, no document) for .mp4, .webm and .gif.
+/// False, and @p job unchanged, for an extension no output has
+/// (output_extensions() lists them).
+bool set_output(AnimationJob& job, const std::string& path);
 
 /// The job the application and a project export: @p animation seen from
 /// @p camera (frame 0), lit by @p light, else the style's light, else the

@@ -303,7 +303,7 @@ std::string fills_svg(const Drawing& drawing, const Style& style, const std::vec
         for (MapRegion& r : eroded)
             if (!r.polygons.empty()) drawn.regions.push_back(std::move(r));
         subtract_nearer_regions(drawn);
-        out += "<g id=\"fills\" stroke=\"none\" fill-rule=\"nonzero\">\n";
+        out += "<g id=\"fills\" inkscape:groupmode=\"layer\" inkscape:label=\"fills\" stroke=\"none\" fill-rule=\"nonzero\">\n";
         for (const MapRegion& region : drawn.regions) {
             const RegionStyle* rs = style.region(region, drawing.parts.get());
             out += "<path class=\"region\" data-class=\"" + std::string(region_class_name(region.cls)) + "\" fill=\"" +
@@ -332,12 +332,17 @@ std::string strokes_svg(const Drawing& drawing, const Style& style, bool by_obje
     const bool with_hidden = has_hidden_lines(drawing);
     for (const bool hidden : {true, false}) {
         if (hidden && !with_hidden) continue;
-        out += hidden ? "<g id=\"hidden\">\n" : "<g id=\"visible\">\n";
+        // Layers as Inkscape names them, as the animated SVG's are.
+        const std::string part = hidden ? "hidden" : "visible";
+        out += "<g id=\"" + part + "\" inkscape:groupmode=\"layer\" inkscape:label=\"" + part + " lines\">\n";
         for (const DrawnContour& c : drawing.contours) {
             const ContourStyle cs = style.contour(c.spec);
             const StrokeStyle& stroke = hidden ? cs.hidden : cs.visible;
             if (!stroke.draw) continue;
-            out += svg::kind_group(c.spec, stroke);
+            const std::string label = c.spec.label();
+            out += svg::kind_group(c.spec, stroke,
+                                   " id=\"" + part + "-" + label + "\" inkscape:groupmode=\"layer\" inkscape:label=\"" + label +
+                                       " (" + part + ")\"");
             auto draw_loop = [&](std::string& text, const DrawnLoop& loop) {
                 if (stroke.needs_parameter()) {
                     draw_weighted(text, loop, hidden, stroke, drawing.seconds);
@@ -380,7 +385,7 @@ std::string strokes_svg(const Drawing& drawing, const Style& style, bool by_obje
 
 std::string to_svg(const Drawing& drawing, const Style& style, const std::vector<MapRegion>* regions) {
     const bool by_object = groups_by_object(drawing);
-    std::string out = svg::document_start(drawing.width, drawing.height, style.background, by_object);
+    std::string out = svg::document_start(drawing.width, drawing.height, style.background, true);
     // The fills (eroded and made a partition again with Clipper) and the
     // strokes (curves fitted) are made at once.
     std::string fills, strokes;

@@ -29,6 +29,9 @@ class AtomicFile {
     void write(const char* data, std::size_t size);
     void write(const std::string& text) { write(text.data(), text.size()); }
     void commit();
+    /// The temporary's path, for a program that writes the file itself
+    /// (ffmpeg): it is committed, synced and renamed, the same way.
+    const std::string& temp_path() const { return tmp_; }
 
   private:
     void fail(const std::string& why);
