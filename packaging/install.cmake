@@ -45,6 +45,8 @@ set(CPACK_DEBIAN_PACKAGE_SECTION graphics)
 set(CPACK_DEBIAN_RUNTIME_PACKAGE_NAME snaxels)
 set(CPACK_DEBIAN_RUNTIME_PACKAGE_SHLIBDEPS ON)
 set(CPACK_DEBIAN_RUNTIME_PACKAGE_DEPENDS "qt6-qpa-plugins")
+# Video and GIF exports run FFmpeg's program.
+set(CPACK_DEBIAN_RUNTIME_PACKAGE_RECOMMENDS "ffmpeg")
 set(CPACK_DEBIAN_RUNTIME_DESCRIPTION "${PROJECT_DESCRIPTION}
  The desktop application (snaxels) and its command-line twin (snaxels-cli)
  find silhouettes, shadow and shading contours, specular gleams and
@@ -55,7 +57,7 @@ set(CPACK_DEBIAN_RUNTIME_DESCRIPTION "${PROJECT_DESCRIPTION}
 set(CPACK_DEBIAN_DEVELOPMENT_PACKAGE_NAME snaxels-dev)
 set(CPACK_DEBIAN_DEVELOPMENT_PACKAGE_SECTION libdevel)
 # The library is static: a program that links it needs what it links.
-set(CPACK_DEBIAN_DEVELOPMENT_PACKAGE_DEPENDS "libopenmesh-dev, libglm-dev, nlohmann-json3-dev, libassimp-dev, libembree-dev, libpugixml-dev, libpolyclipping-dev, libtbb-dev, pkg-config")
+set(CPACK_DEBIAN_DEVELOPMENT_PACKAGE_DEPENDS "libopenmesh-dev, libglm-dev, nlohmann-json3-dev, libassimp-dev, libembree-dev, libpugixml-dev, libpolyclipping-dev, libtbb-dev, librsvg2-dev, libcairo2-dev, libminizip-dev, zlib1g-dev, pkg-config")
 set(CPACK_DEBIAN_DEVELOPMENT_DESCRIPTION "The snaxels engine as a C++ library
  snaxels::core for CMake's find_package(snaxels): mesh import, contour
  finding and tracking, hidden lines, planar maps, styles and SVG export.")

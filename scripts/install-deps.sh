@@ -14,9 +14,10 @@ PACKAGES=(
   qt6-base-dev libqt6opengl6-dev qt6-svg-dev libgl-dev libglx-dev
   libopenmesh-dev libglm-dev libassimp-dev zlib1g-dev
   libembree-dev libtbb-dev libpolyclipping-dev libpugixml-dev nlohmann-json3-dev
+  librsvg2-dev libcairo2-dev libminizip-dev ffmpeg
   libgtest-dev libgmock-dev libbenchmark-dev
   xvfb xauth libgl1-mesa-dri mesa-utils
-  chromium fonts-dejavu-core librsvg2-bin
+  chromium fonts-dejavu-core librsvg2-bin inkscape poppler-utils parallel
   librlottie-dev python3-jsonschema
   clang libclang-rt-14-dev llvm
   dpkg-dev file desktop-file-utils

@@ -9,7 +9,9 @@
 # FRAMES 0: the clip's own length. FILLS="#RRGGBB ..." in the environment:
 # fill colours to compare. TIME_MS=LIMIT: also export at the style's canvas
 # size and time goToAndStop over every frame in lottie-web, with the style
-# and layout it causes; the median must be under LIMIT.
+# and layout it causes; the median must be under LIMIT. DOTLOTTIE=1: export
+# the dotLottie container (.lottie) instead, check its zip and manifest, and
+# play the animation unzipped from it.
 set -euo pipefail
 cli=$1; compare=$2; rlottie=$3; players=$4; outdir=$5; name=$6; mesh=$7; frames=$8; fps=$9; shift 10
 here=$(dirname "$0")
@@ -22,8 +24,14 @@ rm -rf "$dir"; mkdir -p "$dir"
 cell=400; cols=4; rows=3; shots=$((cols * rows))
 frame_args=()
 if [ "$frames" != 0 ]; then frame_args=(--frames "$frames"); fi
-"$cli" animate "$mesh" "${frame_args[@]}" --fps "$fps" --size ${cell}x${cell} -o "$dir/anim.json" \
-  --frames-dir "$dir/frames" "$@"
+if [ "${DOTLOTTIE:-}" = 1 ]; then
+  "$cli" animate "$mesh" "${frame_args[@]}" --fps "$fps" --size ${cell}x${cell} -o "$dir/anim.lottie" \
+    --frames-dir "$dir/frames" "$@"
+  python3 "$here/../outputs/dotlottie_check.py" "$dir/anim.lottie" "$dir/anim.json"
+else
+  "$cli" animate "$mesh" "${frame_args[@]}" --fps "$fps" --size ${cell}x${cell} -o "$dir/anim.json" \
+    --frames-dir "$dir/frames" "$@"
+fi
 count=$(ls "$dir/frames" | wc -l)
 
 "$players/validate.py" "$dir/anim.json"

@@ -296,8 +296,8 @@ class TestMainWindow : public QObject {
 
         // The SVG pane shows the export of this view: visible and hidden
         // groups, and it renders.
-        QVERIFY(window.currentSvg().contains("<g id=\"visible\">"));
-        QVERIFY(window.currentSvg().contains("<g id=\"hidden\">"));
+        QVERIFY(window.currentSvg().contains("<g id=\"visible\""));
+        QVERIFY(window.currentSvg().contains("<g id=\"hidden\""));
         QVERIFY(window.svgPane()->renderer()->isValid());
         const QByteArray before = window.currentSvg();
 
@@ -458,6 +458,42 @@ class TestMainWindow : public QObject {
         QVERIFY(failed.wait(120000));
         QVERIFY2(failed.last().first().toString().contains("does not exist"), qPrintable(failed.last().first().toString()));
         QVERIFY(!QFile::exists(nowhere));
+
+        // The outputs chosen by extension: compressed SVG, dotLottie, video, PDF.
+        const QString svgz = dir.filePath("turntable.svgz");
+        window.exportAnimation(svgz);
+        QVERIFY(finished.wait(120000));
+        QFile gz(svgz);
+        QVERIFY(gz.open(QIODevice::ReadOnly));
+        const QByteArray gz_bytes = gz.readAll();
+        QVERIFY(gz_bytes.startsWith("\x1f\x8b")); // a gzip member
+        QVERIFY(gz_bytes.size() < svg.size());
+        const QString dotlottie = dir.filePath("turntable.lottie");
+        window.exportAnimation(dotlottie, snaxels::AnimationFormat::Lottie);
+        QVERIFY(finished.wait(120000));
+        QFile zip(dotlottie);
+        QVERIFY(zip.open(QIODevice::ReadOnly));
+        const QByteArray zip_bytes = zip.readAll();
+        QVERIFY(zip_bytes.startsWith("PK\x03\x04") && zip_bytes.contains("manifest.json") &&
+                zip_bytes.contains("animations/turntable.json"));
+        const QString video = dir.filePath("turntable.mp4");
+        window.exportAnimation(video);
+        QVERIFY(finished.wait(120000));
+        QFile mp4(video);
+        QVERIFY(mp4.open(QIODevice::ReadOnly));
+        QVERIFY(mp4.read(12).mid(4, 4) == "ftyp"); // an MP4 file
+        QVERIFY(window.exportFrame(dir.filePath("frame.pdf")));
+        QFile pdf(dir.filePath("frame.pdf"));
+        QVERIFY(pdf.open(QIODevice::ReadOnly));
+        QVERIFY(pdf.read(5) == "%PDF-");
+        // An extension no export writes: refused at once, nothing written.
+        const QString unknown = dir.filePath("turntable.mp3");
+        window.exportAnimation(unknown);
+        QVERIFY(!failed.isEmpty());
+        QVERIFY2(failed.last().first().toString().contains(".svg, .svgz, .json, .lottie, .mp4, .webm, .gif"),
+                 qPrintable(failed.last().first().toString()));
+        QVERIFY(!QFile::exists(unknown));
+        for (QMessageBox* b : window.findChildren<QMessageBox*>()) b->close();
     }
 
     // A fault inside the tracker while the contour kinds are tracked in
