@@ -6,8 +6,9 @@
 /// the PATH. MP4 is H.264 in yuv420p (what every player reads), which needs
 /// an even width and height: an odd canvas is padded by a pixel of white on
 /// the right or bottom. WebM is VP9. A GIF's frame delays are whole
-/// hundredths of a second, so its rate is 100 over a whole number (25 fps
-/// plays as 25; 24 as 25).
+/// hundredths of a second: at a rate that is 100 over a whole number (25,
+/// 20, 50 fps) every delay is exact; at another (24 fps) FFmpeg mixes the
+/// two nearest delays (4 and 5 hundredths) so the clip keeps its length.
 
 #include <memory>
 #include <string>
