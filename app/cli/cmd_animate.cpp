@@ -131,6 +131,8 @@ int run_animate(const std::vector<std::string>& argv) {
     const std::string png_dir = args.value("png-dir").value_or("");
     const std::string events_out = args.value("events").value_or("");
     const std::string stats_out = args.value("stats").value_or("");
+    if (!stats_out.empty() && is_video(*output_kind_for(*output)))
+        throw UsageError("--stats describes the animated document's paths; a video (" + *output + ") has none");
 
     std::string mesh_path = args.positional()[0];
     if (anim.kind == AnimationSpec::Kind::Sequence && mesh_path == "-") mesh_path.clear();
