@@ -118,9 +118,11 @@ SceneOptions parse_scene_options(const Args& args) {
             if (args.flag(view)) throw UsageError(std::string("--camera and --") + view + " exclude each other (the file's camera sets the view)");
     if (args.flag("light-dir") && args.flag("light-pos"))
         throw UsageError("--light-dir and --light-pos exclude each other");
+    std::vector<bool> valued; // per --kind: whether it gave its values (suggestive:D, crease:DEG)
     for (const std::string& k : args.values("kind")) {
         try {
             o.overrides.kinds.push_back(ContourSpec::parse(k));
+            valued.push_back(k.find(':') != std::string::npos);
         } catch (const Error& e) {
             throw UsageError(e.what());
         }
@@ -131,6 +133,20 @@ SceneOptions parse_scene_options(const Args& args) {
         o.style_source = *path;
         for (const StyleDiagnostic& w : warnings)
             std::cerr << "snaxels-cli: " << *path << ":" << w.line << ":" << w.column << ": warning: " << w.message << '\n';
+    }
+    // A kind named without its values takes the style's, where the style
+    // draws that kind: --kind suggestive with a style's min-derivative and
+    // min-angle, --kind crease with its angle and least length.
+    for (std::size_t i = 0; i < o.overrides.kinds.size(); ++i) {
+        ContourSpec& spec = o.overrides.kinds[i];
+        if (valued[i] || (spec.kind != ContourKind::Suggestive && spec.kind != ContourKind::Crease)) continue;
+        for (const ContourStyle& cs : o.style.contours)
+            if (cs.spec.kind == spec.kind) {
+                spec.k = cs.spec.k;
+                spec.min_angle = cs.spec.min_angle;
+                spec.min_length = cs.spec.min_length;
+                break;
+            }
     }
     o.file_camera = args.value("camera");
     o.size_given = args.flag("size");

@@ -40,7 +40,9 @@ nlohmann::json contours_to_json(const MeshReport& mesh, const Camera& camera, co
             for (std::size_t k = 0; k < loop.p.size(); ++k) {
                 nlohmann::json s = {{"p", {loop.p[k].x, loop.p[k].y, loop.p[k].z}},
                                     {"q", {loop.q[k].x, loop.q[k].y}}};
-                if (!loop.qi.empty()) s["qi"] = loop.qi[k];
+                // Without visibility a QI is known only where a part is
+                // left out (-1): a drawn snaxel's would claim it is seen.
+                if (!loop.qi.empty() && (drawing.hidden_lines || loop.qi[k] < 0)) s["qi"] = loop.qi[k];
                 snaxels.push_back(std::move(s));
             }
             nlohmann::json l = {{"closed", loop.closed}, {"snaxels", std::move(snaxels)}};
