@@ -388,6 +388,11 @@ AnimationOutput run_animation(const LoadedMesh& loaded, const std::string& mesh_
         std::filesystem::create_directories(dir, ec);
         if (ec) throw Error("cannot create " + dir + ": " + ec.message());
     }
+    if ((!job.video.empty() || !job.png_dir.empty()) &&
+        (job.scene.style.width > kMaxRenderedSide || job.scene.style.height > kMaxRenderedSide))
+        throw Error("cannot render the frames of a " + std::to_string(job.scene.style.width) + "x" +
+                    std::to_string(job.scene.style.height) + " canvas: a video or PNG frame is at most " +
+                    std::to_string(kMaxRenderedSide) + " pixels a side");
     FrameStages stages(job, driver, rest, image, frames, out);
     std::unique_ptr<DocumentFile> file; // (fails early on a bad path)
     if (job.document && !job.output.empty())

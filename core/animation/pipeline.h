@@ -25,6 +25,10 @@
 
 namespace snaxels {
 
+/// The largest side of a rendered frame (a video's or --png-dir's): eight
+/// frames are in flight at 4 bytes a pixel, 2 GB at this size.
+inline constexpr int kMaxRenderedSide = 8192;
+
 /// The format a file name asks for: Lottie for .json and .lottie (any
 /// case), else SVG.
 AnimationFormat animation_format_for(const std::string& path);
