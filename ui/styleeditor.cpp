@@ -141,10 +141,23 @@ class CompletingEdit : public QPlainTextEdit {
     };
 
     int gutterWidth() const { return fontMetrics().height() + 4; }
-    void resizeEvent(QResizeEvent* event) override {
-        QPlainTextEdit::resizeEvent(event);
+    void placeGutter() {
         const QRect r = contentsRect();
         gutter_->setGeometry(r.left(), r.top(), gutterWidth(), r.height());
+    }
+    void resizeEvent(QResizeEvent* event) override {
+        QPlainTextEdit::resizeEvent(event);
+        placeGutter();
+    }
+    /// The gutter's width follows the font (the editor's fixed-width font
+    /// is set after construction, and may be taller than the default one):
+    /// the text then starts after the gutter, never under it.
+    void changeEvent(QEvent* event) override {
+        QPlainTextEdit::changeEvent(event);
+        if (event->type() == QEvent::FontChange) {
+            setViewportMargins(gutterWidth(), 0, 0, 0);
+            placeGutter();
+        }
     }
     /// Hovering an element's or attribute's name says what it does.
     bool viewportEvent(QEvent* event) override {
