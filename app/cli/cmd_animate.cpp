@@ -177,10 +177,12 @@ int run_animate(const std::vector<std::string>& argv) {
                     result.events.size());
         return 0;
     }
-    std::printf("%s: %d frames at %g fps, %zu paths, %zu keyframes (of %zu path-frames), %zu bytes; "
+    const std::uintmax_t on_disk = std::filesystem::file_size(*output);
+    const std::string compressed = on_disk != result.bytes ? " (" + std::to_string(on_disk) + " compressed)" : "";
+    std::printf("%s: %d frames at %g fps, %zu paths, %zu keyframes (of %zu path-frames), %zu bytes%s; "
                 "tracking %.2f ms per frame, %.0f ms in all; %zu events\n",
                 output->c_str(), result.frames, anim.fps, stats.paths, stats.keyframes, stats.frames_spanned,
-                result.bytes, tracking / std::max(1, result.frames), total_ms, result.events.size());
+                result.bytes, compressed.c_str(), tracking / std::max(1, result.frames), total_ms, result.events.size());
     return 0;
 }
 

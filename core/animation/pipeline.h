@@ -86,7 +86,9 @@ struct AnimationOutput {
     /// The visual events, with the index of their kind in job.kinds (kept
     /// compact: a long animation has thousands): events_json() lists them.
     std::vector<std::pair<std::size_t, VisualEvent>> events;
-    std::size_t bytes = 0; ///< the document's size (in the file, with job.output)
+    /// The document's size, before compression (a .svgz or .lottie file
+    /// holds fewer bytes: its size on disk is the file's).
+    std::size_t bytes = 0;
     AnimatedSvgStats stats;
     std::vector<double> tracking_ms; ///< per frame, all kinds
     int frames = 0;
