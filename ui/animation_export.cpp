@@ -53,8 +53,6 @@ bool AnimationExport::start(QWidget* window, const QString& path, AnimationJob j
         }, Qt::QueuedConnection);
     };
     job.cancelled = [cancelled] { return cancelled->load(); };
-    // Written as the frames are made, atomically, where the job says (set_output).
-    if (job.output.empty() && job.video.empty()) job.output = path.toStdString();
     auto* watcher = new QFutureWatcher<QString>(this);
     connect(watcher, &QFutureWatcher<QString>::finished, this, [this, watcher, guard, path] {
         const QString error = watcher->result();

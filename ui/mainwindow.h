@@ -100,11 +100,13 @@ class MainWindow : public QMainWindow {
     bool parabolicPending() const;
     /// Contours are scheduled or being computed (a result is still to come).
     bool contoursBusy() const;
-    /// Exports the timeline's animation as animated SVG (or Lottie) to
-    /// @p path off the GUI thread, with a progress dialog that can cancel
-    /// (nothing is written then); ends with exportFinished or exportFailed.
-    void exportAnimation(const QString& path, AnimationFormat format = AnimationFormat::Svg);
-    /// Writes the SVG of the current frame to @p path (atomically).
+    /// Exports the timeline's animation to @p path as its extension asks
+    /// (set_output: animated SVG, Lottie, compressed, or video) off the GUI
+    /// thread, with a progress dialog that can cancel (nothing is written
+    /// then); ends with exportFinished or exportFailed.
+    void exportAnimation(const QString& path);
+    /// Writes the SVG (or, for a .pdf path, the vector PDF) of the current
+    /// frame to @p path (atomically).
     bool exportFrame(const QString& path);
     /// The SVG the pane shows: what export writes for the current view.
     const QByteArray& currentSvg() const { return svg_; }

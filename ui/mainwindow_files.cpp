@@ -173,11 +173,10 @@ bool MainWindow::exportFrame(const QString& path) {
     }
 }
 
-void MainWindow::exportAnimation(const QString& path, AnimationFormat format) {
+void MainWindow::exportAnimation(const QString& path) {
     if (!document_->mesh() || export_->running()) return;
     commitWidgets(); // the export writes the document
     AnimationJob job = document_->animationJob();
-    job.format = format;
     QString problem;
     if (!set_output(job, path.toStdString())) {
         problem = tr("Cannot write %1: the file's extension must be one of %2.")

@@ -106,7 +106,7 @@ void MainWindow::createExportMenu() {
     QAction* exportLottie = exportMenu->addAction(tr("&Lottie…"), this, [this] {
         const QString path = askSavePath(tr("Export Lottie"), kExportFolder, ".json",
                                          tr("Lottie JSON (*.json);;dotLottie (*.lottie)"));
-        if (!path.isEmpty()) exportAnimation(path, AnimationFormat::Lottie);
+        if (!path.isEmpty()) exportAnimation(path);
     });
     exportLottie->setObjectName("exportLottie");
     exportLottie->setShortcut(QKeySequence(tr("Ctrl+Alt+E")));

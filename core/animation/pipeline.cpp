@@ -1,7 +1,6 @@
 #include "snaxels/animation/pipeline.h"
 
 #include <algorithm>
-#include <cctype>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -24,12 +23,6 @@
 #include "snaxels/visibility/visibility.h"
 
 namespace snaxels {
-
-AnimationFormat animation_format_for(const std::string& path) {
-    std::string ext = std::filesystem::path(path).extension().string();
-    std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
-    return ext == ".json" || ext == ".lottie" ? AnimationFormat::Lottie : AnimationFormat::Svg;
-}
 
 bool set_output(AnimationJob& job, const std::string& path) {
     const std::optional<OutputKind> kind = output_kind_for(path);

@@ -29,10 +29,6 @@ namespace snaxels {
 /// frames are in flight at 4 bytes a pixel, 2 GB at this size.
 inline constexpr int kMaxRenderedSide = 8192;
 
-/// The format a file name asks for: Lottie for .json and .lottie (any
-/// case), else SVG.
-AnimationFormat animation_format_for(const std::string& path);
-
 struct AnimationJob {
     AnimationSpec animation;
     /// What each frame draws and how, seen at frame 0 (the animation moves

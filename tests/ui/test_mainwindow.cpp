@@ -469,7 +469,7 @@ class TestMainWindow : public QObject {
         QVERIFY(gz_bytes.startsWith("\x1f\x8b")); // a gzip member
         QVERIFY(gz_bytes.size() < svg.size());
         const QString dotlottie = dir.filePath("turntable.lottie");
-        window.exportAnimation(dotlottie, snaxels::AnimationFormat::Lottie);
+        window.exportAnimation(dotlottie);
         QVERIFY(finished.wait(120000));
         QFile zip(dotlottie);
         QVERIFY(zip.open(QIODevice::ReadOnly));
@@ -686,7 +686,7 @@ class TestMainWindow : public QObject {
         QVERIFY(lottie);
         QVERIFY(lottie->text().contains("Lottie"));
         finished.clear();
-        reopened.exportAnimation(dir.filePath("app.json"), snaxels::AnimationFormat::Lottie);
+        reopened.exportAnimation(dir.filePath("app.json"));
         QVERIFY(finished.wait(180000));
         const QByteArray app_lottie = readAll(dir.filePath("app.json"));
         const QJsonDocument doc = QJsonDocument::fromJson(app_lottie);
