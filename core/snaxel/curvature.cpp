@@ -2,7 +2,10 @@
 
 #include <algorithm>
 #include <array>
+#include <atomic>
 #include <cmath>
+#include <cstdint>
+#include <cstring>
 #include <string>
 #include <utility>
 
@@ -18,7 +21,7 @@ namespace {
 /// matrix [ku kuv; kuv kv], with the face's share of each corner's area.
 struct FaceForm {
     glm::dvec3 t{0.0}, b{0.0};
-    glm::dvec3 n{0.0}; ///< t x b (the face's unit normal, as project_form turns toward it)
+    glm::dvec3 n{0.0}; ///< t x b (the face's unit normal, which a vertex frame is turned toward)
     double ku = 0.0, kuv = 0.0, kv = 0.0;
     std::array<double, 3> corner{0.0, 0.0, 0.0}; ///< 0 for a face of no area: it then counts nowhere
 };
@@ -46,76 +49,158 @@ std::array<double, 3> corner_areas(const std::array<glm::dvec3, 3>& e, double ar
     return c;
 }
 
-/// Fits face @p f's second fundamental form to the change of the vertex
-/// normals along its edges (least squares over the three edges).
-FaceForm face_form(const MeshTopology& topo, FaceId f) {
-    FaceForm form;
-    const auto& fv = topo.face_vertices()[f];
-    const auto P = topo.positions();
-    const auto N = topo.normals();
-    // Edge j is opposite corner j, running from corner j+1 to corner j+2.
-    const std::array<glm::dvec3, 3> e{P[fv[2]] - P[fv[1]], P[fv[0]] - P[fv[2]], P[fv[1]] - P[fv[0]]};
-    const glm::dvec3 cross = glm::cross(e[0], e[1]);
-    const double twice_area = glm::length(cross);
-    const double e0 = glm::length(e[0]);
-    if (!(twice_area > 0.0) || !(e0 > 0.0)) return form;
-    const glm::dvec3 n = cross / twice_area;
-    form.t = e[0] / e0;
-    form.b = glm::cross(n, form.t);
-    // Normal equations of [u v 0; 0 u v] (ku kuv kv) = (dn.t dn.b) over the edges.
-    double w00 = 0.0, w01 = 0.0, w22 = 0.0, m0 = 0.0, m1 = 0.0, m2 = 0.0;
-    for (std::size_t j = 0; j < 3; ++j) {
-        const double u = glm::dot(e[j], form.t), v = glm::dot(e[j], form.b);
-        w00 += u * u;
-        w01 += u * v;
-        w22 += v * v;
-        const glm::dvec3 dn = N[fv[(j + 2) % 3]] - N[fv[(j + 1) % 3]];
-        const double dnu = glm::dot(dn, form.t), dnv = glm::dot(dn, form.b);
-        m0 += dnu * u;
-        m1 += dnu * v + dnv * u;
-        m2 += dnv * v;
-    }
-    const glm::dmat3 w(w00, w01, 0.0, w01, w00 + w22, w01, 0.0, w01, w22); // symmetric
-    const double det = glm::determinant(w);
-    const double scale = w00 + w22;
-    if (!(std::abs(det) > 1e-30 * (scale * scale * scale))) return form;
-    const glm::dvec3 k = glm::inverse(w) * glm::dvec3(m0, m1, m2);
-    form.ku = k.x;
-    form.kuv = k.y;
-    form.kv = k.z;
-    form.n = glm::cross(form.t, form.b);
-    form.corner = corner_areas(e, 0.5 * twice_area);
-    return form;
-}
-
-/// A vertex's unit tangent frame (u, v) and u x v (its normal, as
-/// turn_frame turns it).
+/// A vertex's unit tangent frame (u, v) and u x v (its normal, the axis
+/// the frame is turned about).
 struct TangentFrame {
     glm::dvec3 u, v, n;
 };
 
-/// The frame (u, v) turned about u x v onto the plane of normal @p n: the
-/// smallest rotation taking u x v to n.
-std::pair<glm::dvec3, glm::dvec3> turn_frame(const TangentFrame& frame, const glm::dvec3& n) {
-    const glm::dvec3& u = frame.u;
-    const glm::dvec3& v = frame.v;
-    const glm::dvec3& old_n = frame.n;
-    const double ndot = glm::dot(old_n, n);
-    if (ndot <= -1.0) return {-u, -v};
-    const glm::dvec3 perp = n - ndot * old_n;
-    const glm::dvec3 dperp = (old_n + n) / (1.0 + ndot);
-    return {u - dperp * glm::dot(u, perp), v - dperp * glm::dot(v, perp)};
+// Vector lanes. The passes below compute several forms, vertices or faces
+// at once, each a lane of a vector of doubles (GCC/Clang vector
+// extensions), with the same operations in the same order as the scalar
+// formulas they stand for, so every lane's result is the scalar one to the
+// bit. Each pass is built twice, two lanes for any x86-64 and four for
+// AVX2 (chosen at run time); neither build fuses a product and a sum (AVX2
+// brings no FMA), so both give the same bits (a test compares them).
+// The vectors are passed only between functions inlined into one build of
+// a pass, never across the ABI GCC and Clang warn about (at the end of the
+// file, so the warning is off for all of it).
+#if defined(__GNUC__)
+#pragma GCC diagnostic ignored "-Wpsabi"
+#endif
+namespace lanes {
+
+/// The most lanes any build uses (AVX2's four doubles).
+constexpr std::size_t kMaxWidth = 4;
+
+// (Spelled per width: GCC drops a vector attribute on an alias template.)
+using Doubles2 = double __attribute__((vector_size(2 * sizeof(double))));
+using Doubles4 = double __attribute__((vector_size(4 * sizeof(double))));
+using Mask2 = std::int64_t __attribute__((vector_size(2 * sizeof(double))));
+using Mask4 = std::int64_t __attribute__((vector_size(4 * sizeof(double))));
+template <std::size_t W> struct Vectors;
+template <> struct Vectors<2> {
+    using Doubles = Doubles2;
+    using Mask = Mask2;
+};
+template <> struct Vectors<4> {
+    using Doubles = Doubles4;
+    using Mask = Mask4;
+};
+template <std::size_t W> using Doubles = typename Vectors<W>::Doubles;
+template <std::size_t W> using Mask = typename Vectors<W>::Mask;
+
+/// The projected forms, a lane per form: [k0 k1; k1 k2] in the frame.
+struct Projected {
+    alignas(32) double k0[kMaxWidth], k1[kMaxWidth], k2[kMaxWidth];
+};
+
+template <std::size_t W> [[gnu::always_inline]] inline void store(double* p, Doubles<W> d) { std::memcpy(p, &d, sizeof d); }
+/// The vector of value(lane) over the lanes (built in registers: lanes
+/// written to memory one by one and read back as a vector would stall).
+template <std::size_t W, class Value> [[gnu::always_inline]] inline Doubles<W> gather(Value&& value) {
+    static_assert(W == 2 || W == 4);
+    if constexpr (W == 2) return Doubles<W>{value(0), value(1)};
+    else return Doubles<W>{value(0), value(1), value(2), value(3)};
+}
+/// @p x in every lane (exactly: adding it to zeros would turn -0 into +0).
+template <std::size_t W> [[gnu::always_inline]] inline Doubles<W> splat(double x) {
+    return gather<W>([x](std::size_t) { return x; });
 }
 
-/// @p form, a form in the frame (form.t, form.b), as a form in @p frame.
-std::array<double, 3> project_form(const FaceForm& form, const TangentFrame& frame) {
-    const auto [ru, rv] = turn_frame(frame, form.n);
-    const double u1 = glm::dot(ru, form.t), v1 = glm::dot(ru, form.b);
-    const double u2 = glm::dot(rv, form.t), v2 = glm::dot(rv, form.b);
-    return {form.ku * u1 * u1 + form.kuv * (2.0 * u1 * v1) + form.kv * v1 * v1,
-            form.ku * u1 * u2 + form.kuv * (u1 * v2 + u2 * v1) + form.kv * v1 * v2,
-            form.ku * u2 * u2 + form.kuv * (2.0 * u2 * v2) + form.kv * v2 * v2};
+/// @p a where @p m is set, else @p b.
+template <std::size_t W> [[gnu::always_inline]] inline Doubles<W> select(Mask<W> m, Doubles<W> a, Doubles<W> b) {
+    return Doubles<W>((Mask<W>(a) & m) | (Mask<W>(b) & ~m));
 }
+/// glm::dot's order: (x x' + y y') + z z'.
+template <std::size_t W>
+[[gnu::always_inline]] inline Doubles<W> dot(Doubles<W> ax, Doubles<W> ay, Doubles<W> az, Doubles<W> bx, Doubles<W> by,
+                                             Doubles<W> bz) {
+    return ax * bx + ay * by + az * bz;
+}
+
+/// The forms of @p source numbered @p at, turned into @p frame, a lane
+/// each. source.t(i), b(i), n(i), ku(i), kuv(i), kv(i) give form i: the
+/// form [ku kuv; kuv kv] in the frame (t, b) of normal n. The vertex frame
+/// (u, v) is first turned about o = u x v onto the form's plane (the
+/// smallest rotation taking o to n: u - d (u.p) with p = n - (n.o) o and
+/// d = (o + n) / (1 + n.o); negated when n = -o), then the turned axes'
+/// coordinates in (t, b) give the form in (u, v).
+template <std::size_t W, class Source>
+[[gnu::always_inline]] inline void project(const Source& source, const std::size_t* at, const TangentFrame& frame,
+                                           Projected& out) {
+    using D = Doubles<W>;
+    const D tx = gather<W>([&](std::size_t l) { return source.t(at[l]).x; });
+    const D ty = gather<W>([&](std::size_t l) { return source.t(at[l]).y; });
+    const D tz = gather<W>([&](std::size_t l) { return source.t(at[l]).z; });
+    const D bx = gather<W>([&](std::size_t l) { return source.b(at[l]).x; });
+    const D by = gather<W>([&](std::size_t l) { return source.b(at[l]).y; });
+    const D bz = gather<W>([&](std::size_t l) { return source.b(at[l]).z; });
+    const D nx = gather<W>([&](std::size_t l) { return source.n(at[l]).x; });
+    const D ny = gather<W>([&](std::size_t l) { return source.n(at[l]).y; });
+    const D nz = gather<W>([&](std::size_t l) { return source.n(at[l]).z; });
+    const D ux = splat<W>(frame.u.x), uy = splat<W>(frame.u.y), uz = splat<W>(frame.u.z);
+    const D vx = splat<W>(frame.v.x), vy = splat<W>(frame.v.y), vz = splat<W>(frame.v.z);
+    const D ox = splat<W>(frame.n.x), oy = splat<W>(frame.n.y), oz = splat<W>(frame.n.z);
+    // The frame turned onto each form's plane.
+    const D ndot = dot<W>(ox, oy, oz, nx, ny, nz);
+    const Mask<W> flip = ndot <= splat<W>(-1.0);
+    const D px = nx - ndot * ox, py = ny - ndot * oy, pz = nz - ndot * oz;
+    const D denominator = splat<W>(1.0) + ndot;
+    const D dx = (ox + nx) / denominator, dy = (oy + ny) / denominator, dz = (oz + nz) / denominator;
+    const D du = dot<W>(ux, uy, uz, px, py, pz), dv = dot<W>(vx, vy, vz, px, py, pz);
+    const D rux = select<W>(flip, -ux, ux - dx * du), ruy = select<W>(flip, -uy, uy - dy * du),
+            ruz = select<W>(flip, -uz, uz - dz * du);
+    const D rvx = select<W>(flip, -vx, vx - dx * dv), rvy = select<W>(flip, -vy, vy - dy * dv),
+            rvz = select<W>(flip, -vz, vz - dz * dv);
+    // Each form in the turned frame.
+    const D u1 = dot<W>(rux, ruy, ruz, tx, ty, tz), v1 = dot<W>(rux, ruy, ruz, bx, by, bz);
+    const D u2 = dot<W>(rvx, rvy, rvz, tx, ty, tz), v2 = dot<W>(rvx, rvy, rvz, bx, by, bz);
+    const D ku = gather<W>([&](std::size_t l) { return source.ku(at[l]); });
+    const D kuv = gather<W>([&](std::size_t l) { return source.kuv(at[l]); });
+    const D kv = gather<W>([&](std::size_t l) { return source.kv(at[l]); });
+    const D two = splat<W>(2.0);
+    store<W>(out.k0, ku * u1 * u1 + kuv * (two * u1 * v1) + kv * v1 * v1);
+    store<W>(out.k1, ku * u1 * u2 + kuv * (u1 * v2 + u2 * v1) + kv * v1 * v2);
+    store<W>(out.k2, ku * u2 * u2 + kuv * (two * u2 * v2) + kv * v2 * v2);
+}
+
+/// A vertex's weighted sum of the forms of a Source (as project reads it)
+/// turned into its frame, W at a time: add() each (its number and weight,
+/// in order), then finish().
+template <std::size_t W, class Source> struct FormSum {
+    FormSum(const Source& s, const TangentFrame& f) : source(s), frame(f) {}
+    const Source& source;
+    const TangentFrame& frame;
+    Projected k;
+    std::size_t at[kMaxWidth]{};
+    double weight[kMaxWidth]{};
+    std::size_t filled = 0;
+    double total = 0.0, ku = 0.0, kuv = 0.0, kv = 0.0;
+
+    [[gnu::always_inline]] void add(std::size_t i, double w) {
+        at[filled] = i;
+        weight[filled++] = w;
+        if (filled == W) flush();
+    }
+    [[gnu::always_inline]] void finish() {
+        if (filled == 0) return;
+        for (std::size_t lane = filled; lane < W; ++lane) at[lane] = at[0]; // computed, never summed
+        flush();
+    }
+    [[gnu::always_inline]] void flush() {
+        project<W>(source, at, frame, k);
+        for (std::size_t lane = 0; lane < filled; ++lane) {
+            total += weight[lane];
+            ku += weight[lane] * k.k0[lane];
+            kuv += weight[lane] * k.k1[lane];
+            kv += weight[lane] * k.k2[lane];
+        }
+        filled = 0;
+    }
+};
+
+} // namespace lanes
 
 /// A unit tangent frame (u, v) at vertex @p v, u toward its first neighbour.
 TangentFrame vertex_frame(const MeshTopology& topo, VertexId v) {
@@ -162,29 +247,200 @@ struct ToViewer {
     glm::dvec3 v_;
 };
 
-/// Vertex @p v's principal curvatures and directions from its second
-/// fundamental form [ku kuv; kuv kv] in the tangent frame (u, w): the
-/// Jacobi rotation that diagonalizes it, |k1| >= |k2|.
-void set_principal(CurvatureField& out, VertexId v, const glm::dvec3& n, const glm::dvec3& u, const glm::dvec3& w,
-                   double ku, double kuv, double kv) {
-    double c = 1.0, s = 0.0, tt = 0.0;
-    if (kuv != 0.0) {
-        const double h = 0.5 * (kv - ku) / kuv;
-        tt = h < 0.0 ? 1.0 / (h - std::sqrt(1.0 + h * h)) : 1.0 / (h + std::sqrt(1.0 + h * h));
-        c = 1.0 / std::sqrt(1.0 + tt * tt);
-        s = tt * c;
-    }
-    double k1 = ku - tt * kuv, k2 = kv + tt * kuv;
-    glm::dvec3 d1 = c * u - s * w;
-    if (std::abs(k1) < std::abs(k2)) {
-        std::swap(k1, k2);
-        d1 = s * u + c * w;
-    }
-    out.k1[v] = k1;
-    out.k2[v] = k2;
-    out.dir1[v] = d1;
-    out.dir2[v] = glm::cross(n, d1);
+/// A face's area and its corners' gradients (corner_gradients).
+struct FaceGradients {
+    double area = 0.0;
+    std::array<glm::dvec3, 3> g;
+};
+
+namespace lanes {
+
+/// A vertex waiting for its principal curvatures: its mean form in its frame.
+struct Pending {
+    VertexId v;
+    double ku, kuv, kv;
+};
+
+template <std::size_t W> [[gnu::always_inline]] inline Doubles<W> abs(Doubles<W> x) {
+    return Doubles<W>(Mask<W>(x) & ~Mask<W>(splat<W>(-0.0)));
 }
+/// std::sqrt lane by lane (exact in every build).
+template <std::size_t W> [[gnu::always_inline]] inline Doubles<W> sqrt(Doubles<W> x) {
+    return gather<W>([&](std::size_t l) { return std::sqrt(x[l]); });
+}
+
+/// The principal curvatures and directions of @p count pending vertices
+/// (at most W), a lane each, from each one's second fundamental form
+/// [ku kuv; kuv kv] in its tangent frame (u, w): the Jacobi rotation that
+/// diagonalizes it, |k1| >= |k2|, and dir2 = n x dir1.
+template <std::size_t W>
+[[gnu::always_inline]] inline void principal(const Pending* pending, std::size_t count, const VertexData<TangentFrame>& frames,
+                                             ElementSpan<VertexTag, const glm::dvec3> normals, CurvatureField& out) {
+    using D = Doubles<W>;
+    auto lane = [&](std::size_t l) -> const Pending& { return pending[l < count ? l : 0]; };
+    const D ku = gather<W>([&](std::size_t l) { return lane(l).ku; });
+    const D kuv = gather<W>([&](std::size_t l) { return lane(l).kuv; });
+    const D kv = gather<W>([&](std::size_t l) { return lane(l).kv; });
+    // The Jacobi rotation, where kuv != 0 (else none).
+    const Mask<W> rotate = kuv != splat<W>(0.0);
+    const D h = splat<W>(0.5) * (kv - ku) / kuv;
+    const D root = sqrt<W>(splat<W>(1.0) + h * h);
+    const D t_rotate = splat<W>(1.0) / select<W>(h < splat<W>(0.0), h - root, h + root);
+    const D c_rotate = splat<W>(1.0) / sqrt<W>(splat<W>(1.0) + t_rotate * t_rotate);
+    const D tt = select<W>(rotate, t_rotate, splat<W>(0.0));
+    const D c = select<W>(rotate, c_rotate, splat<W>(1.0));
+    const D s = select<W>(rotate, t_rotate * c_rotate, splat<W>(0.0));
+    const D k1 = ku - tt * kuv, k2 = kv + tt * kuv;
+    const Mask<W> swap = abs<W>(k1) < abs<W>(k2);
+    auto frame_of = [&](std::size_t l) -> const TangentFrame& { return frames[lane(l).v]; };
+    const D ux = gather<W>([&](std::size_t l) { return frame_of(l).u.x; });
+    const D uy = gather<W>([&](std::size_t l) { return frame_of(l).u.y; });
+    const D uz = gather<W>([&](std::size_t l) { return frame_of(l).u.z; });
+    const D wx = gather<W>([&](std::size_t l) { return frame_of(l).v.x; });
+    const D wy = gather<W>([&](std::size_t l) { return frame_of(l).v.y; });
+    const D wz = gather<W>([&](std::size_t l) { return frame_of(l).v.z; });
+    const D d1x = select<W>(swap, s * ux + c * wx, c * ux - s * wx);
+    const D d1y = select<W>(swap, s * uy + c * wy, c * uy - s * wy);
+    const D d1z = select<W>(swap, s * uz + c * wz, c * uz - s * wz);
+    const D nx = gather<W>([&](std::size_t l) { return normals[lane(l).v].x; });
+    const D ny = gather<W>([&](std::size_t l) { return normals[lane(l).v].y; });
+    const D nz = gather<W>([&](std::size_t l) { return normals[lane(l).v].z; });
+    // glm::cross(n, d1)'s order.
+    const D d2x = ny * d1z - d1y * nz, d2y = nz * d1x - d1z * nx, d2z = nx * d1y - d1x * ny;
+    const D first = select<W>(swap, k2, k1), second = select<W>(swap, k1, k2);
+    for (std::size_t l = 0; l < count; ++l) {
+        const VertexId v = pending[l].v;
+        out.k1[v] = first[l];
+        out.k2[v] = second[l];
+        out.dir1[v] = glm::dvec3(d1x[l], d1y[l], d1z[l]);
+        out.dir2[v] = glm::dvec3(d2x[l], d2y[l], d2z[l]);
+    }
+}
+
+/// principal over all of @p pending, W at a time.
+template <std::size_t W>
+[[gnu::always_inline]] inline void principals(const Pending* pending, std::size_t count,
+                                              const VertexData<TangentFrame>& frames, ElementSpan<VertexTag, const glm::dvec3> normals,
+                                              CurvatureField& out) {
+    for (std::size_t at = 0; at < count; at += W) principal<W>(pending + at, std::min(W, count - at), frames, normals, out);
+}
+
+/// A vector of three coordinates, a point or direction per lane.
+template <std::size_t W> struct Vec3 {
+    Doubles<W> x, y, z;
+    Vec3 operator-(const Vec3& o) const { return {x - o.x, y - o.y, z - o.z}; }
+    Vec3 operator/(Doubles<W> d) const { return {x / d, y / d, z / d}; }
+    glm::dvec3 lane(std::size_t l) const { return {x[l], y[l], z[l]}; }
+};
+/// glm::dot's order.
+template <std::size_t W> [[gnu::always_inline]] inline Doubles<W> dot(const Vec3<W>& a, const Vec3<W>& b) {
+    return a.x * b.x + a.y * b.y + a.z * b.z;
+}
+/// glm::cross's order.
+template <std::size_t W> [[gnu::always_inline]] inline Vec3<W> cross(const Vec3<W>& a, const Vec3<W>& b) {
+    return {a.y * b.z - b.y * a.z, a.z * b.x - b.z * a.x, a.x * b.y - b.x * a.y};
+}
+template <std::size_t W, class Point> [[gnu::always_inline]] inline Vec3<W> gather3(Point&& point) {
+    return {gather<W>([&](std::size_t l) { return point(l).x; }), gather<W>([&](std::size_t l) { return point(l).y; }),
+            gather<W>([&](std::size_t l) { return point(l).z; })};
+}
+
+/// The vertex values @p values (positions or normals) at each corner of the
+/// @p count (at most W) faces from @p first, a face per lane (the lanes
+/// past count repeat the first face).
+template <std::size_t W>
+[[gnu::always_inline]] inline std::array<Vec3<W>, 3> at_corners(const MeshTopology& topo, std::size_t first, std::size_t count,
+                                                                ElementSpan<VertexTag, const glm::dvec3> values) {
+    const auto fv = topo.face_vertices();
+    auto corner = [&](std::size_t l, std::size_t k) -> const glm::dvec3& {
+        return values[fv[FaceId(first + (l < count ? l : 0))][k]];
+    };
+    return {gather3<W>([&](std::size_t l) -> const glm::dvec3& { return corner(l, 0); }),
+            gather3<W>([&](std::size_t l) -> const glm::dvec3& { return corner(l, 1); }),
+            gather3<W>([&](std::size_t l) -> const glm::dvec3& { return corner(l, 2); })};
+}
+
+/// The second fundamental forms of the @p count (at most W) faces from
+/// @p first, a lane each, written to @p out: each fitted to the change of
+/// the vertex normals along the face's edges (least squares over the three
+/// edges, in the face's frame t along its first edge, b = n x t), with each
+/// corner's share of the face's area. A face of no area gets a zero form
+/// and no area; one whose normal equations are singular keeps its frame
+/// and gets no area.
+template <std::size_t W>
+[[gnu::always_inline]] inline void face_forms(const MeshTopology& topo, std::size_t first, std::size_t count, FaceForm* out) {
+    using D = Doubles<W>;
+    const auto [p0, p1, p2] = at_corners<W>(topo, first, count, topo.positions());
+    const std::array<Vec3<W>, 3> normal = at_corners<W>(topo, first, count, topo.normals());
+    const std::array<Vec3<W>, 3> e{p2 - p1, p0 - p2, p1 - p0};
+    const Vec3<W> cr = cross<W>(e[0], e[1]);
+    const D twice_area = sqrt<W>(dot<W>(cr, cr));
+    const D e0 = sqrt<W>(dot<W>(e[0], e[0]));
+    const Vec3<W> n = cr / twice_area;
+    const Vec3<W> t = e[0] / e0;
+    const Vec3<W> b = cross<W>(n, t);
+    D w00 = splat<W>(0.0), w01 = splat<W>(0.0), w22 = splat<W>(0.0), m0 = splat<W>(0.0), m1 = splat<W>(0.0),
+      m2 = splat<W>(0.0);
+    for (std::size_t j = 0; j < 3; ++j) {
+        const D u = dot<W>(e[j], t), v = dot<W>(e[j], b);
+        w00 = w00 + u * u;
+        w01 = w01 + u * v;
+        w22 = w22 + v * v;
+        const Vec3<W> dn = normal[(j + 2) % 3] - normal[(j + 1) % 3];
+        const D dnu = dot<W>(dn, t), dnv = dot<W>(dn, b);
+        m0 = m0 + dnu * u;
+        m1 = m1 + (dnu * v + dnv * u);
+        m2 = m2 + dnv * v;
+    }
+    // glm::determinant and glm::inverse of the symmetric [w00 w01 0; w01 w00+w22 w01; 0 w01 w22] (m[column][row]).
+    const D zero = splat<W>(0.0);
+    const D a00 = w00, a01 = w01, a02 = zero, a10 = w01, a11 = w00 + w22, a12 = w01, a20 = zero, a21 = w01, a22 = w22;
+    const D det = a00 * (a11 * a22 - a21 * a12) - a10 * (a01 * a22 - a21 * a02) + a20 * (a01 * a12 - a11 * a02);
+    const D scale = w00 + w22;
+    const Mask<W> solvable = abs<W>(det) > splat<W>(1e-30) * (scale * scale * scale);
+    const D ood = splat<W>(1.0) / det;
+    const D i00 = (a11 * a22 - a21 * a12) * ood, i10 = -(a10 * a22 - a20 * a12) * ood, i20 = (a10 * a21 - a20 * a11) * ood;
+    const D i01 = -(a01 * a22 - a21 * a02) * ood, i11 = (a00 * a22 - a20 * a02) * ood, i21 = -(a00 * a21 - a20 * a01) * ood;
+    const D i02 = (a01 * a12 - a11 * a02) * ood, i12 = -(a00 * a12 - a10 * a02) * ood, i22 = (a00 * a11 - a10 * a01) * ood;
+    const D ku = i00 * m0 + i10 * m1 + i20 * m2;
+    const D kuv = i01 * m0 + i11 * m1 + i21 * m2;
+    const D kv = i02 * m0 + i12 * m1 + i22 * m2;
+    const Vec3<W> tb = cross<W>(t, b);
+    for (std::size_t l = 0; l < count; ++l) {
+        FaceForm& form = out[l];
+        form = FaceForm{};
+        if (!(twice_area[l] > 0.0) || !(e0[l] > 0.0)) continue;
+        form.t = t.lane(l);
+        form.b = b.lane(l);
+        if (!solvable[l]) continue;
+        form.ku = ku[l];
+        form.kuv = kuv[l];
+        form.kv = kv[l];
+        form.n = tb.lane(l);
+        form.corner = corner_areas({e[0].lane(l), e[1].lane(l), e[2].lane(l)}, 0.5 * twice_area[l]);
+    }
+}
+
+/// The gradients of the corners' barycentric coordinates of the @p count
+/// (at most W) faces from @p first (corner_gradients, a lane each, with the
+/// same operations in the same order), and their areas.
+template <std::size_t W>
+[[gnu::always_inline]] inline void face_gradients(const MeshTopology& topo, std::size_t first, std::size_t count,
+                                                  FaceGradients* out) {
+    using D = Doubles<W>;
+    const auto [a, b, c] = at_corners<W>(topo, first, count, topo.positions());
+    const Vec3<W> normal = cross<W>(b - a, c - a);
+    const D twice_area2 = dot<W>(normal, normal);
+    const D area = splat<W>(0.5) * sqrt<W>(twice_area2);
+    const std::array<Vec3<W>, 3> g{cross<W>(normal, c - b) / twice_area2, cross<W>(normal, a - c) / twice_area2,
+                                   cross<W>(normal, b - a) / twice_area2};
+    for (std::size_t l = 0; l < count; ++l) {
+        out[l].area = area[l];
+        for (std::size_t k = 0; k < 3; ++k) out[l].g[k] = twice_area2[l] > 0.0 ? g[k].lane(l) : glm::dvec3(0.0);
+    }
+}
+
+} // namespace lanes
 
 /// The gradients over face @p face of its corners' barycentric coordinates,
 /// (n x opposite edge) / |n|^2, and the face's area through @p area (all 0
@@ -271,6 +527,145 @@ std::shared_ptr<const CurvaturePlan> require_plan(const MeshTopology& topo) {
     return topo.connectivity()->quantities.require<CurvaturePlan>("curvature plan", [&] { return make_plan(topo); });
 }
 
+/// The passes that turn forms into vertex frames, over the vertices
+/// [begin, end), built twice (below): for the baseline x86-64 and for AVX2.
+/// The vertices or faces a pass runs over at a time.
+constexpr std::size_t kBlock = 256;
+
+/// The smoothing pass: each vertex's form becomes the mean of its own and
+/// its neighbours' forms (each in its principal frame) weighted by area.
+struct SmoothPass {
+    const MeshTopology& topo;
+    const CurvatureField& field;
+    const VertexData<TangentFrame>& frames;
+    const VertexData<glm::dvec3>& principal_normal;
+    CurvatureField& out;
+
+    // Vertex j's form, as lanes::project reads it.
+    const glm::dvec3& t(std::size_t j) const { return field.dir1.data()[j]; }
+    const glm::dvec3& b(std::size_t j) const { return field.dir2.data()[j]; }
+    const glm::dvec3& n(std::size_t j) const { return principal_normal.data()[j]; }
+    double ku(std::size_t j) const { return field.k1.data()[j]; }
+    double kuv(std::size_t) const { return 0.0; }
+    double kv(std::size_t j) const { return field.k2.data()[j]; }
+
+    /// The vertices [begin, end), at most kBlock of them.
+    template <std::size_t W> [[gnu::always_inline]] void run(std::size_t begin, std::size_t end) const {
+        lanes::Pending pending[kBlock];
+        std::size_t waiting = 0;
+        for (std::size_t i = begin; i < end; ++i) {
+            const VertexId v(i);
+            if (!(field.area[v] > 0.0)) continue;
+            const TangentFrame& frame = frames[v];
+            lanes::FormSum<W, SmoothPass> sum(*this, frame);
+            sum.add(i, field.area[v]);
+            for (const VertexId j : topo.neighbours(v))
+                if (field.area[j] > 0.0) sum.add(j.index(), field.area[j]);
+            sum.finish();
+            pending[waiting++] = {v, sum.ku / sum.total, sum.kuv / sum.total, sum.kv / sum.total};
+        }
+        lanes::principals<W>(pending, waiting, frames, topo.normals(), out);
+    }
+};
+
+/// The pass over the faces: their forms (lanes::face_forms).
+struct FormPass {
+    const MeshTopology& topo;
+    FaceData<FaceForm>& forms;
+    template <std::size_t W> [[gnu::always_inline]] void run(std::size_t begin, std::size_t end) const {
+        for (std::size_t f = begin; f < end; f += W) lanes::face_forms<W>(topo, f, std::min(W, end - f), forms.data() + f);
+    }
+};
+
+/// The pass over the faces for the gradient operator (lanes::face_gradients).
+struct GradientPass {
+    const MeshTopology& topo;
+    FaceData<FaceGradients>& faces;
+    template <std::size_t W> [[gnu::always_inline]] void run(std::size_t begin, std::size_t end) const {
+        for (std::size_t f = begin; f < end; f += W)
+            lanes::face_gradients<W>(topo, f, std::min(W, end - f), faces.data() + f);
+    }
+};
+
+/// The first pass over the vertices: each vertex's form is the mean of its faces' forms
+/// weighted by the vertex's share of each face's area.
+struct FacePass {
+    const MeshTopology& topo;
+    const CurvaturePlan& plan;
+    const VertexData<TangentFrame>& frames;
+    const FaceData<FaceForm>& forms;
+    CurvatureField& out;
+
+    // Face f's form, as lanes::project reads it.
+    const glm::dvec3& t(std::size_t f) const { return forms.data()[f].t; }
+    const glm::dvec3& b(std::size_t f) const { return forms.data()[f].b; }
+    const glm::dvec3& n(std::size_t f) const { return forms.data()[f].n; }
+    double ku(std::size_t f) const { return forms.data()[f].ku; }
+    double kuv(std::size_t f) const { return forms.data()[f].kuv; }
+    double kv(std::size_t f) const { return forms.data()[f].kv; }
+
+    /// The vertices [begin, end), at most kBlock of them.
+    template <std::size_t W> [[gnu::always_inline]] void run(std::size_t begin, std::size_t end) const {
+        lanes::Pending pending[kBlock];
+        std::size_t waiting = 0;
+        for (std::size_t i = begin; i < end; ++i) {
+            const VertexId v(i);
+            const TangentFrame& frame = frames[v];
+            lanes::FormSum<W, FacePass> sum(*this, frame);
+            for (std::size_t a = plan.around_start[i]; a < plan.around_start[i + 1]; ++a) {
+                const auto [face, corner] = plan.around[a];
+                const double w = forms[face].corner[corner];
+                if (w > 0.0) sum.add(face.index(), w);
+            }
+            sum.finish();
+            out.area[v] = sum.total;
+            if (!(sum.total > 0.0)) {
+                out.dir1[v] = frame.u;
+                out.dir2[v] = frame.v;
+                continue;
+            }
+            pending[waiting++] = {v, sum.ku / sum.total, sum.kuv / sum.total, sum.kv / sum.total};
+        }
+        lanes::principals<W>(pending, waiting, frames, topo.normals(), out);
+    }
+};
+
+// Each pass is built twice: two lanes for the baseline x86-64 (SSE2) and
+// four for AVX2, chosen at run time by what the processor has. Neither
+// build may fuse a product and a sum (AVX2 does not bring FMA), so both
+// give the same bits.
+template <class Pass> void run_pass(const Pass& pass, std::size_t begin, std::size_t end) {
+    pass.template run<2>(begin, end);
+}
+#if defined(__x86_64__)
+template <class Pass> __attribute__((target("avx2"))) void run_pass_avx2(const Pass& pass, std::size_t begin, std::size_t end) {
+    pass.template run<4>(begin, end);
+}
+#endif
+
+bool wide_lanes_available() {
+#if defined(__x86_64__)
+    return __builtin_cpu_supports("avx2") != 0;
+#else
+    return false;
+#endif
+}
+
+/// Whether the passes take their AVX2 build.
+std::atomic<bool> wide_lanes{wide_lanes_available()};
+
+/// Runs @p pass over [0, @p n) (vertices or faces), in blocks, in parallel.
+template <class Pass> void run_blocks(std::size_t n, const Pass& pass) {
+    const bool wide = wide_lanes.load(std::memory_order_relaxed);
+    parallel_for((n + kBlock - 1) / kBlock, [&](std::size_t b) {
+        const std::size_t begin = b * kBlock, end = std::min(n, begin + kBlock);
+#if defined(__x86_64__)
+        if (wide) return run_pass_avx2(pass, begin, end);
+#endif
+        run_pass(pass, begin, end);
+    }, 4);
+}
+
 /// smoothed_curvatures with the pose's tangent frames given, without the
 /// typical curvature (only the last pass's is read).
 CurvatureField smoothed(const MeshTopology& topo, const CurvatureField& field, const VertexData<TangentFrame>& frames) {
@@ -278,28 +673,7 @@ CurvatureField smoothed(const MeshTopology& topo, const CurvatureField& field, c
     // Each vertex's principal frame as a form's frame, with its normal.
     VertexData<glm::dvec3> principal_normal(topo.n_vertices());
     parallel_for(topo.vertices(), [&](VertexId v) { principal_normal[v] = glm::cross(field.dir1[v], field.dir2[v]); }, 4096);
-    parallel_for(topo.vertices(), [&](VertexId v) {
-        if (!(field.area[v] > 0.0)) return;
-        const TangentFrame& frame = frames[v];
-        double total = 0.0, ku = 0.0, kuv = 0.0, kv = 0.0;
-        auto add = [&](VertexId j) {
-            FaceForm form; // vertex j's form in its principal frame
-            form.t = field.dir1[j];
-            form.b = field.dir2[j];
-            form.n = principal_normal[j];
-            form.ku = field.k1[j];
-            form.kv = field.k2[j];
-            const std::array<double, 3> k = project_form(form, frame);
-            total += field.area[j];
-            ku += field.area[j] * k[0];
-            kuv += field.area[j] * k[1];
-            kv += field.area[j] * k[2];
-        };
-        add(v);
-        for (const VertexId n : topo.neighbours(v))
-            if (field.area[n] > 0.0) add(n);
-        set_principal(out, v, topo.normals()[v], frame.u, frame.v, ku / total, kuv / total, kv / total);
-    }, 1024);
+    run_blocks(topo.n_vertices(), SmoothPass{topo, field, frames, principal_normal, out});
     return out;
 }
 
@@ -308,7 +682,7 @@ CurvatureField smoothed(const MeshTopology& topo, const CurvatureField& field, c
 CurvatureField unsmoothed(const MeshTopology& topo, const CurvaturePlan& plan, const VertexData<TangentFrame>& frames) {
     const std::size_t nv = topo.n_vertices(), nf = topo.n_faces();
     FaceData<FaceForm> forms(nf);
-    parallel_for(topo.faces(), [&](FaceId f) { forms[f] = face_form(topo, f); }, 2048);
+    run_blocks(nf, FormPass{topo, forms});
 
     CurvatureField out;
     out.k1.assign(nv, 0.0);
@@ -316,28 +690,7 @@ CurvatureField unsmoothed(const MeshTopology& topo, const CurvaturePlan& plan, c
     out.dir1.assign(nv, glm::dvec3(0.0));
     out.dir2.assign(nv, glm::dvec3(0.0));
     out.area.assign(nv, 0.0);
-    parallel_for(topo.vertices(), [&](VertexId v) {
-        const TangentFrame& frame = frames[v];
-        double area = 0.0, ku = 0.0, kuv = 0.0, kv = 0.0;
-        for (std::size_t a = plan.around_start[v.index()]; a < plan.around_start[v.index() + 1]; ++a) {
-            const auto [face, corner] = plan.around[a];
-            const FaceForm& form = forms[face];
-            const double weight = form.corner[corner];
-            if (!(weight > 0.0)) continue;
-            const std::array<double, 3> k = project_form(form, frame);
-            area += weight;
-            ku += weight * k[0];
-            kuv += weight * k[1];
-            kv += weight * k[2];
-        }
-        out.area[v] = area;
-        if (!(area > 0.0)) {
-            out.dir1[v] = frame.u;
-            out.dir2[v] = frame.v;
-            return;
-        }
-        set_principal(out, v, topo.normals()[v], frame.u, frame.v, ku / area, kuv / area, kv / area);
-    }, 1024);
+    run_blocks(topo.n_vertices(), FacePass{topo, plan, frames, forms, out});
     return out;
 }
 
@@ -347,12 +700,8 @@ void gradient_operator(const MeshTopology& topo, const CurvaturePlan& plan, Curv
     field.gradient_vertex = plan.gradient_vertex;
     field.gradient_weight.assign(plan.gradient_vertex.size(), glm::dvec3(0.0));
     // Each face's corner gradients once (a face is around three vertices).
-    struct FaceGradients {
-        double area = 0.0;
-        std::array<glm::dvec3, 3> g;
-    };
     FaceData<FaceGradients> faces(topo.n_faces());
-    parallel_for(topo.faces(), [&](FaceId f) { faces[f].g = corner_gradients(topo, f, faces[f].area); }, 4096);
+    run_blocks(topo.n_faces(), GradientPass{topo, faces});
     parallel_for(topo.vertices(), [&](VertexId v) {
         const auto begin = field.gradient_weight.begin() + plan.gradient_start[v.index()];
         const auto end = field.gradient_weight.begin() + plan.gradient_start[v.index() + 1];
@@ -370,6 +719,14 @@ void gradient_operator(const MeshTopology& topo, const CurvaturePlan& plan, Curv
 }
 
 } // namespace
+
+namespace detail {
+
+bool allow_curvature_wide_lanes(bool allowed) { return wide_lanes.exchange(allowed && wide_lanes_available()); }
+
+bool curvature_wide_lanes_available() { return wide_lanes_available(); }
+
+} // namespace detail
 
 CurvatureField smoothed_curvatures(const MeshTopology& topo, const CurvatureField& field) {
     CurvatureField out = smoothed(topo, field, vertex_frames(topo));

@@ -80,6 +80,15 @@ struct CurvatureOptions {
     bool gradient = true;
 };
 
+namespace detail {
+/// Whether the curvature passes may take their build for wider vector lanes
+/// (AVX2), where the processor has them (the default); returns the setting
+/// before. Both builds give the same bits: tests compare them.
+bool allow_curvature_wide_lanes(bool allowed);
+/// Whether this processor can run the wider lanes.
+bool curvature_wide_lanes_available();
+} // namespace detail
+
 /// The curvature of @p topology's pose: vertex_curvatures smoothed
 /// @p options.smoothing times, with its gradient operator when asked.
 /// Computed once per pose and options (the first caller computes it; it is
