@@ -67,7 +67,8 @@ int run_contours(const std::vector<std::string>& argv) {
     const LoadedMesh loaded = load_mesh(args.positional()[0]);
     const MeshReport& report = loaded.report;
     warn_about_parts(scene.style, loaded, scene.style_source);
-    const StillJob job{complete_scene(scene, report, args.positional()[0])};
+    StillJob job{complete_scene(scene, report, args.positional()[0])};
+    job.all_hidden_levels = !json_out.empty(); // the JSON reports every hidden level; a drawing needs them where drawn
     const Camera& camera = job.scene.camera;
     const Light& light = job.scene.light;
 

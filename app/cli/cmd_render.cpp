@@ -88,6 +88,7 @@ int run_render(const std::vector<std::string>& argv) {
     FrameDriver driver(job.animation, surface, topology, job.scene.camera, job.scene.light, centre, mesh_path);
     const FramePose pose = driver.pose(frame);
     StillJob still{job.scene}; // the animation's scene at this frame's camera and light
+    still.all_hidden_levels = false; // an SVG or PDF: hidden levels only where drawn
     still.scene.camera = pose.camera;
     still.scene.light = pose.light;
     const StillOutput out = render_still(surface, pose.mesh, nullptr, still);

@@ -17,7 +17,9 @@ StillJob make_still_job(const Style& style, const Camera& camera, const std::opt
     SceneOverrides overrides;
     overrides.light = light;
     overrides.check_invariants = false;
-    return StillJob{scene_settings(style, camera, overrides)};
+    StillJob job{scene_settings(style, camera, overrides)};
+    job.all_hidden_levels = false;
+    return job;
 }
 
 StillTracking::StillTracking(double max_step_deg) : max_step_deg_(max_step_deg) {}
@@ -149,7 +151,16 @@ StillOutput render_still(const LoadedMesh& mesh, const MeshTopology& topology, c
         if (scene.visibility) {
             const VisibilitySampler sampler(*rays, scene.camera);
             out.visibility.resize(out.results.size());
-            parallel_for(out.results.size(), [&](std::size_t c) { out.visibility[c] = sampler.classify(engine, out.results[c]); }, 1);
+            auto levels = [&](const ContourSpec& spec) {
+                if (job.all_hidden_levels) return VisibilitySampler::HiddenLevels::Counted;
+                const ContourStyle cs = scene.style.contour(spec);
+                const bool by_qi = cs.visible.width_by == StrokeStyle::WidthBy::Qi || cs.hidden.width_by == StrokeStyle::WidthBy::Qi;
+                return cs.hidden.draw || by_qi ? VisibilitySampler::HiddenLevels::Counted
+                                               : VisibilitySampler::HiddenLevels::WhereSeen;
+            };
+            parallel_for(out.results.size(), [&](std::size_t c) {
+                out.visibility[c] = sampler.classify(engine, out.results[c], levels(out.results[c].spec));
+            }, 1);
         }
         out.drawing = make_drawing(engine, out.results, projection, scene.visibility ? &out.visibility : nullptr);
         weigh_strokes(out.drawing, scene.style, engine, out.results, scene.camera, scene.light, centre, radius);

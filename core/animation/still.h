@@ -22,6 +22,12 @@ namespace snaxels {
 /// One still frame to render.
 struct StillJob {
     SceneSettings scene; ///< what is drawn and how (scene_settings())
+    /// Whether every hidden snaxel's QI is counted (the contours JSON
+    /// reports them all). Else a contour whose hidden lines are not drawn
+    /// and whose strokes no QI weighs counts them only where the parts seen
+    /// need it (VisibilitySampler::HiddenLevels::WhereSeen): the same
+    /// drawing at about half the rays' cost.
+    bool all_hidden_levels = true;
 };
 
 struct StillOutput {
@@ -34,7 +40,7 @@ struct StillOutput {
 
 /// The job the application's view draws: the style's contours (visual if
 /// none) seen from @p camera, lit by @p light, else the style's light, else
-/// the default light for the camera.
+/// the default light for the camera; hidden levels only where drawn.
 StillJob make_still_job(const Style& style, const Camera& camera, const std::optional<Light>& light);
 
 /// Contours followed from one still frame to the next, as the application's

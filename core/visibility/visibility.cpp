@@ -281,8 +281,58 @@ bool VisibilitySampler::qi_is(const VisibilityRay& ray, const glm::dvec3& p, std
     return std::max(c.front, c.back) == q;
 }
 
-ContourVisibility VisibilitySampler::classify(const SnaxelEngine& engine,
-                                              const ContourResult& contour) const {
+namespace {
+
+/// A hidden snaxel whose level is not counted yet (HiddenLevels::WhereSeen).
+constexpr int kUncounted = std::numeric_limits<int>::max();
+
+} // namespace
+
+void VisibilitySampler::count_where_seen(const SnaxelEngine& engine, const ContourResult& contour,
+                                         std::vector<int>& snaxel_qi) const {
+    const Fronts& fronts = contour.fronts;
+    auto count = [&](std::int32_t s) {
+        const Snaxel& sn = fronts.snaxels[s];
+        const glm::dvec3 p = engine.position(sn);
+        snaxel_qi[s] = qi(snaxel_ray(sn, p, engine.normal(sn)));
+    };
+    parallel_for(fronts.loops.size(), [&](std::size_t l) {
+        const FrontLoop& loop = fronts.loops[l];
+        std::vector<std::int32_t> order;
+        order.reserve(loop.size);
+        fronts.for_each_in_loop(loop, [&](std::int32_t s) { order.push_back(s); });
+        const std::size_t n = order.size();
+        if (n == 0) return;
+        auto seen = [&](std::size_t k) { return snaxel_qi[order[k % n]] == 0; };
+        // Where the next snaxel is seen: the level a change to seen starts from.
+        for (std::size_t k = 0; k + 1 < n + (loop.closed ? 1 : 0); ++k)
+            if (snaxel_qi[order[k]] == kUncounted && seen(k + 1)) count(order[k]);
+        // The rest take the level of their hidden stretch's end, walking
+        // back from a snaxel already known (on an open loop, from its end).
+        auto level_after = [&](std::size_t k) {
+            if (k >= n) return 1; // an open loop's last snaxel
+            const int q = snaxel_qi[order[k]];
+            return q > 0 && q != kNotDrawn ? q : 1;
+        };
+        std::size_t known = n; // an open loop's walk starts past its end
+        if (loop.closed) {
+            known = 0;
+            while (known < n && snaxel_qi[order[known]] == kUncounted) ++known;
+            if (known == n) { // hidden all round, nowhere counted
+                for (const std::int32_t s : order) snaxel_qi[s] = 1;
+                return;
+            }
+        }
+        for (std::size_t step = 1; step <= n; ++step) {
+            const std::size_t k = (known + n - step) % n;
+            if (snaxel_qi[order[k]] != kUncounted) continue;
+            snaxel_qi[order[k]] = level_after(loop.closed ? (k + 1) % n : k + 1);
+        }
+    }, 1);
+}
+
+ContourVisibility VisibilitySampler::classify(const SnaxelEngine& engine, const ContourResult& contour,
+                                              HiddenLevels levels) const {
     const Fronts& fronts = contour.fronts;
     const MeshTopology& topo = scene_.topology();
     const bool margins = !contour.snaxel_margin.empty();
@@ -293,13 +343,20 @@ ContourVisibility VisibilitySampler::classify(const SnaxelEngine& engine,
         for (std::size_t i = 0; i < over.size(); ++i) selected[i] = selected[i] && over[i];
     }
     std::vector<int> snaxel_qi(fronts.snaxels.size());
+    const bool where_seen = levels == HiddenLevels::WhereSeen;
     parallel_for(fronts.snaxels.size(), [&](std::size_t i) {
         const Snaxel& s = fronts.snaxels[i];
+        if ((margins && contour.snaxel_margin[i] < 0.0) || (!selected.empty() && !selected[i])) {
+            snaxel_qi[i] = kNotDrawn;
+            return;
+        }
         const glm::dvec3 p = engine.position(s);
-        snaxel_qi[i] = (margins && contour.snaxel_margin[i] < 0.0) || (!selected.empty() && !selected[i])
-                           ? kNotDrawn
-                           : contact_qi(snaxel_ray(s, p, engine.normal(s)), p, snaxel_object(topo, s));
+        const VisibilityRay ray = snaxel_ray(s, p, engine.normal(s));
+        const std::int64_t object = snaxel_object(topo, s);
+        if (where_seen && object < 0) snaxel_qi[i] = scene_.occluded(ray) ? kUncounted : 0;
+        else snaxel_qi[i] = contact_qi(ray, p, object);
     });
+    if (where_seen) count_where_seen(engine, contour, snaxel_qi);
 
     // The point where QI stops being `from` between snaxels a and b.
     auto change_point = [&](std::int32_t ia, std::int32_t ib, int from) {
