@@ -143,6 +143,7 @@ SceneOptions parse_scene_options(const Args& args) {
         for (const ContourStyle& cs : o.style.contours)
             if (cs.spec.kind == spec.kind) {
                 spec.k = cs.spec.k;
+                spec.test = cs.spec.test;
                 spec.min_angle = cs.spec.min_angle;
                 spec.min_length = cs.spec.min_length;
                 break;

@@ -64,6 +64,8 @@ nlohmann::json contours_to_json(const MeshReport& mesh, const Camera& camera, co
                                   {"loops", std::move(loops)},
                                   {"regions", {{"positive", positive}, {"negative", r.regions.size() - positive}}},
                                   {"stats", stats_json(r.stats)}};
+        if (c.spec.kind == ContourKind::Suggestive)
+            contour["test"] = c.spec.test == SuggestiveTest::Rtsc ? "rtsc" : "derivative";
         if (!c.spec.parts.objects.empty()) contour["object"] = c.spec.parts.objects;
         if (!c.spec.parts.materials.empty()) contour["material"] = c.spec.parts.materials;
         if (c.spec.parts.over_objects) contour["over"] = "objects";

@@ -5,6 +5,7 @@
 #include <map>
 
 #include "snaxels/export/detail/polyline.h"
+#include "snaxels/snaxel/curvature.h"
 #include "snaxels/visibility/visibility.h"
 
 namespace snaxels {
@@ -399,6 +400,11 @@ void weigh_strokes(Drawing& drawing, const Style& style, const SnaxelEngine& eng
         const StrokeStyle::WidthBy by =
             cs.visible.width_by != StrokeStyle::WidthBy::None ? cs.visible.width_by : cs.hidden.width_by;
         const Fronts& fronts = results[c].fronts;
+        std::vector<double> strength;
+        if (by == StrokeStyle::WidthBy::Strength && contour.spec.kind == ContourKind::Suggestive) {
+            const MeshTopology& topo = engine.topology();
+            strength = suggestive_strength(topo, *require_curvature(topo), fronts, camera, contour.spec);
+        }
         for (std::size_t l = 0; l < contour.loops.size() && l < fronts.loops.size(); ++l) {
             DrawnLoop& loop = contour.loops[l];
             const std::size_t n = loop.q.size();
@@ -416,6 +422,16 @@ void weigh_strokes(Drawing& drawing, const Style& style, const SnaxelEngine& eng
                     const Snaxel& sn = fronts.snaxels[s];
                     const double ndotl = glm::dot(engine.normal(sn), light.to_light(engine.position(sn)));
                     loop.weight[k++] = float(std::clamp(0.5 * (1.0 - ndotl), 0.0, 1.0));
+                });
+            } else if (by == StrokeStyle::WidthBy::Strength) {
+                // How far the test passes, faded as rtsc fades its lines:
+                // m / (fade + m), 0 where it does not pass.
+                const double fade = cs.fade_or_default();
+                std::size_t k = 0;
+                fronts.for_each_in_loop(fronts.loops[l], [&](std::int32_t s) {
+                    if (k >= n || strength.empty()) return;
+                    const double m = strength[std::size_t(s)];
+                    loop.weight[k++] = m > 0.0 ? float(m / (fade + m)) : 0.0f;
                 });
             } else if (by == StrokeStyle::WidthBy::Qi) {
                 for (std::size_t k = 0; k < n && k < loop.qi.size(); ++k)

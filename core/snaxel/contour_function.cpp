@@ -33,13 +33,15 @@ std::string ContourSpec::label() const {
         kind == ContourKind::Border || kind == ContourKind::Material || kind == ContourKind::Object)
         return kind_name() + selector;
     char buf[96];
-    if (kind == ContourKind::Suggestive) std::snprintf(buf, sizeof buf, "suggestive:%g:%g", k, min_angle);
+    if (kind == ContourKind::Suggestive && test == SuggestiveTest::Rtsc) std::snprintf(buf, sizeof buf, "suggestive:rtsc:%g", k);
+    else if (kind == ContourKind::Suggestive) std::snprintf(buf, sizeof buf, "suggestive:%g:%g", k, min_angle);
     else std::snprintf(buf, sizeof buf, "%s:%g", kind_name().c_str(), k);
     return buf + selector;
 }
 
 bool ContourSpec::same_as(const ContourSpec& other) const {
-    return kind == other.kind && std::abs(k - other.k) < 1e-9 && std::abs(min_length - other.min_length) < 1e-9 &&
+    return kind == other.kind && test == other.test && std::abs(k - other.k) < 1e-9 &&
+           std::abs(min_length - other.min_length) < 1e-9 &&
            std::abs(min_angle - other.min_angle) < 1e-9 && parts == other.parts;
 }
 
@@ -78,15 +80,27 @@ ContourSpec ContourSpec::parse(const std::string& text) {
         return spec;
     }
     if (name == "suggestive") {
+        // rtsc's test unless the derivative test's values are given.
         spec.kind = ContourKind::Suggestive;
+        spec.test = SuggestiveTest::Rtsc;
+        spec.k = kDefaultRtscThreshold;
+        if (colon == std::string::npos) return spec;
+        spec.test = SuggestiveTest::Derivative;
         spec.k = kDefaultSuggestiveDerivative;
         spec.min_angle = kDefaultSuggestiveAngle;
-        if (colon == std::string::npos) return spec;
         const std::string rest = text.substr(colon + 1);
         const auto second = rest.find(':');
         auto read = [&](const std::string& value, double& out, double lo, double hi, const char* what) {
             if (!read_number(value, out) || out < lo || out > hi) throw Error("contour kind '" + text + "': " + what);
         };
+        if (rest.substr(0, second) == "rtsc") {
+            spec.test = SuggestiveTest::Rtsc;
+            spec.k = kDefaultRtscThreshold;
+            spec.min_angle = 0.0;
+            if (second != std::string::npos)
+                read(rest.substr(second + 1), spec.k, 0.0, 1e6, "the rtsc threshold T must be a number of at least 0");
+            return spec;
+        }
         read(rest.substr(0, second), spec.k, 0.0, 1e6, "the least derivative D must be a number of at least 0");
         if (second != std::string::npos)
             read(rest.substr(second + 1), spec.min_angle, 0.0, 89.0,
@@ -96,7 +110,7 @@ ContourSpec ContourSpec::parse(const std::string& text) {
     if (name != "isophote" && name != "gleam")
         throw Error("unknown contour kind '" + text +
                     "' (expected visual, shadow, isophote:K, gleam:K, parabolic, crease[:DEG], border, "
-                    "suggestive[:D[:DEG]], material or object)");
+                    "suggestive[:D[:DEG]], suggestive:rtsc[:T], material or object)");
     spec.kind = name == "isophote" ? ContourKind::Isophote : ContourKind::Gleam;
     if (colon == std::string::npos)
         throw Error("contour kind '" + text + "' needs a value, for example " + name +

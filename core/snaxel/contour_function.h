@@ -29,6 +29,22 @@ constexpr double kEdgeOn = 1e-5;
 constexpr double kDefaultSuggestiveDerivative = 4.0;
 constexpr double kDefaultSuggestiveAngle = 15.0;
 
+/// Which parts of kappa_r's zeros a suggestive contour draws.
+enum class SuggestiveTest {
+    /// Where the derivative of kappa_r along the view, over the square of
+    /// the mesh's typical curvature, is at least k, and the surface is seen
+    /// at more than min_angle from its normal.
+    Derivative,
+    /// DeCarlo et al. 2004's test, as their rtsc draws: where
+    /// s = feature_size^2 tan(theta) D_w kappa_r exceeds k (theta the angle
+    /// between the normal and the view, the feature size the median edge
+    /// length of the surface). The tan(theta) carries a line that continues
+    /// a silhouette on into the fold it makes.
+    Rtsc,
+};
+/// The rtsc test's default threshold on s (rtsc's own).
+constexpr double kDefaultRtscThreshold = 0.01;
+
 /// Which contour: visual N.V; shadow min(N.L, N.V); diffuse isophote
 /// min(N.L - k, N.V); specular gleam min(V.R - k, N.V) with R = 2(N.L)N - L.
 /// Parabolic curves, creases, borders and part boundaries have no contour
@@ -55,6 +71,10 @@ struct ContourSpec {
     /// derivative of kappa_r along the view, times the squared bounding-box
     /// diagonal, that is drawn).
     double min_angle = 0.0;
+    /// Suggestive contours: which test draws (k is then its threshold).
+    /// parse() and styles take rtsc's unless the derivative test's values
+    /// are given; a spec built in code says which.
+    SuggestiveTest test = SuggestiveTest::Derivative;
     /// The parts of the scene whose stretches of the line are drawn (a line
     /// set of a style): the engine finds the whole line; the drawing leaves
     /// out what lies on other parts (core/visibility/visibility.h).
@@ -64,7 +84,8 @@ struct ContourSpec {
     /// "border", "suggestive", "material" or "object".
     std::string kind_name() const;
     /// "visual", "shadow", "isophote:0.5", "gleam:0.9", "parabolic",
-    /// "crease:30", "border", "suggestive:0.5:15", "material", "object":
+    /// "crease:30", "border", "suggestive:0.5:15" (the derivative test),
+    /// "suggestive:rtsc:0.01" (rtsc's), "material", "object":
     /// what parse() reads; followed by the part selector's text when it has
     /// one ("visual object=wheel*").
     std::string label() const;
@@ -87,8 +108,8 @@ struct ContourSpec {
     }
     /// Parses the CLI's --kind values; throws snaxels::Error when malformed.
     static ContourSpec parse(const std::string& text);
-    /// The same contour (kind, and k, min_length and min_angle within 1e-9,
-    /// and the same parts).
+    /// The same contour (kind, test, and k, min_length and min_angle within
+    /// 1e-9, and the same parts).
     bool same_as(const ContourSpec& other) const;
 };
 

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstdint>
 #include <cstring>
+#include <limits>
 #include <string>
 #include <utility>
 
@@ -760,6 +761,22 @@ std::shared_ptr<const CurvatureField> require_curvature(const MeshTopology& topo
     });
 }
 
+double require_feature_size(const MeshTopology& topo) {
+    return *topo.pose()->quantities.require<double>("feature size", [&] {
+        std::vector<double> lengths;
+        lengths.reserve(topo.n_edges());
+        const auto P = topo.positions();
+        for (const auto& [a, b] : topo.edge_vertices()) {
+            const double l = glm::length(P[b] - P[a]);
+            if (l > 0.0) lengths.push_back(l); // a split sharp edge's strip has edges of no length
+        }
+        if (lengths.empty()) return 0.0;
+        const auto middle = lengths.begin() + std::ptrdiff_t(lengths.size() / 2);
+        std::nth_element(lengths.begin(), middle, lengths.end());
+        return *middle;
+    });
+}
+
 VertexData<double> radial_curvature(const MeshTopology& topo, const CurvatureField& field, const Camera& camera) {
     VertexData<double> out(topo.n_vertices(), 0.0);
     const auto P = topo.positions();
@@ -777,9 +794,15 @@ void suggestive_function(const MeshTopology& topo, const CurvatureField& field, 
     const auto P = topo.positions();
     const auto N = topo.normals();
     const ToViewer to_viewer(camera);
+    VertexData<std::uint8_t> facing(topo.n_vertices());
+    parallel_for(topo.vertices(), [&](VertexId v) { facing[v] = glm::dot(to_viewer(P[v]), N[v]) > 0.0; }, 4096);
     parallel_for(topo.vertices(), [&](VertexId v) {
-        const glm::dvec3 view = to_viewer(P[v]);
-        out[v] = glm::dot(view, N[v]) > 0.0 ? radial_at(field, v, view) : away;
+        // kappa_r itself on the side seen and one ring past it (the last
+        // ring of faces before the contour, where a suggestive contour meets
+        // the silhouette it continues); the stand-in beyond.
+        bool near = facing[v];
+        for (const VertexId w : topo.neighbours(v)) near = near || facing[w];
+        out[v] = near ? radial_at(field, v, to_viewer(P[v])) : away;
     }, 4096);
 }
 
@@ -808,40 +831,21 @@ constexpr std::size_t kNoSlot = ~std::size_t(0);
 
 } // namespace
 
-std::vector<double> suggestive_margins(const MeshTopology& topo, const CurvatureField& field, const VertexData<double>& kr,
-                                       const Fronts& fronts, const Camera& camera, const ContourSpec& spec) {
+namespace {
+
+/// The strength of a suggestive contour's test (suggestive_strength) at the
+/// snaxels of @p fronts where @p wanted says, -infinity at the others.
+std::vector<double> strength_where(const MeshTopology& topo, const CurvatureField& field, const Fronts& fronts,
+                                   const Camera& camera, const ContourSpec& spec, const std::vector<std::uint8_t>& wanted) {
     const std::size_t n = fronts.snaxels.size();
-    const double typical = field.typical, away = suggestive_away_value(field);
     const ToViewer to_viewer(camera);
-    std::vector<double> margin(n);
-    const double scale = typical > 0.0 ? 1.0 / (typical * typical) : 0.0, most_facing = std::cos(glm::radians(spec.min_angle));
     const auto P = topo.positions();
     const auto N = topo.normals();
-    // The view terms first: where they already leave a snaxel out (about
-    // half of them face away), its margin is theirs and kappa_r's derivative
-    // is not needed.
-    parallel_for(n, [&](std::size_t i) {
-        const Snaxel& s = fronts.snaxels[i];
-        const glm::dvec3 p = (1.0 - s.t) * P[s.inside] + s.t * P[s.outside];
-        // (The normalized mean of the end normals: the slerp's direction
-        // within a hair, at a fraction of its cost.)
-        const glm::dvec3 mixed = (1.0 - s.t) * N[s.inside] + s.t * N[s.outside];
-        const double len = glm::length(mixed);
-        const double nv = len > 0.0 ? glm::dot(mixed, to_viewer(p)) / len : 0.0;
-        // A snaxel on an edge from a vertex facing away (its inside end,
-        // where suggestive_function holds its stand-in) lies on the rim of
-        // the side seen, a zero of suggestive_function only: never drawn.
-        const bool rim = kr[s.inside] == away;
-        // Inside a sharp edge's strip kappa_r jumps from one side's to the
-        // other's: a zero there is no suggestive contour (they are drawn on
-        // smooth patches only).
-        margin[i] = rim || (topo.has_strips() && edge_in_strip(topo, s.edge)) ? -1.0 : std::min(most_facing - nv, nv);
-    }, 4096);
-    // The derivative at each end vertex of the other snaxels, once per vertex.
+    // The derivative at each end vertex of the snaxels wanted, once per vertex.
     VertexData<std::size_t> slot(topo.n_vertices(), kNoSlot);
     std::vector<VertexId> ends;
     for (std::size_t i = 0; i < n; ++i) {
-        if (margin[i] < 0.0) continue;
+        if (!wanted[i]) continue;
         for (const VertexId v : {fronts.snaxels[i].inside, fronts.snaxels[i].outside})
             if (slot[v] == kNoSlot) {
                 slot[v] = ends.size();
@@ -850,18 +854,89 @@ std::vector<double> suggestive_margins(const MeshTopology& topo, const Curvature
     }
     std::vector<double> derivative(ends.size());
     parallel_for(ends.size(), [&](std::size_t k) {
-        // kappa_r itself, also at the neighbours facing away (where @p kr
-        // holds suggestive_function's stand-in; a true kappa_r of the same
-        // value is recomputed, to itself).
-        auto radial = [&](VertexId j) { return kr[j] != away ? kr[j] : radial_at(field, j, to_viewer(P[j])); };
+        // kappa_r itself at every vertex (suggestive_function holds a
+        // stand-in past the last ring; it is recomputed there, and a true
+        // kappa_r of the stand-in's value is recomputed to itself).
+        auto radial = [&](VertexId j) { return radial_at(field, j, to_viewer(P[j])); };
         derivative[k] = vertex_derivative_along_view(topo, field, radial, ends[k], to_viewer);
     }, 1024);
-    for (std::size_t i = 0; i < n; ++i) {
-        if (margin[i] < 0.0) continue;
-        const Snaxel& s = fronts.snaxels[i];
-        const double d = (1.0 - s.t) * derivative[slot[s.inside]] + s.t * derivative[slot[s.outside]];
-        margin[i] = std::min(margin[i], d * scale - spec.k);
+    std::vector<double> out(n, -std::numeric_limits<double>::infinity());
+    if (spec.test == SuggestiveTest::Derivative) {
+        const double typical = field.typical, scale = typical > 0.0 ? 1.0 / (typical * typical) : 0.0;
+        for (std::size_t i = 0; i < n; ++i) {
+            if (!wanted[i]) continue;
+            const Snaxel& s = fronts.snaxels[i];
+            const double d = (1.0 - s.t) * derivative[slot[s.inside]] + s.t * derivative[slot[s.outside]];
+            out[i] = d * scale - spec.k;
+        }
+        return out;
     }
+    // rtsc's test: feature_size^2 sin(theta) D_w kappa_r and cos(theta) at
+    // each end, interpolated apart along the edge, their ratio against k.
+    const double fs = require_feature_size(topo), fs2 = fs * fs;
+    std::vector<double> num(ends.size()), den(ends.size());
+    parallel_for(ends.size(), [&](std::size_t k) {
+        const VertexId v = ends[k];
+        const double c = glm::dot(to_viewer(P[v]), N[v]);
+        den[k] = c;
+        num[k] = fs2 * std::sqrt(std::max(0.0, 1.0 - c * c)) * derivative[k];
+    }, 4096);
+    for (std::size_t i = 0; i < n; ++i) {
+        if (!wanted[i]) continue;
+        const Snaxel& s = fronts.snaxels[i];
+        const std::size_t a = slot[s.inside], b = slot[s.outside];
+        const double nu = (1.0 - s.t) * num[a] + s.t * num[b], de = (1.0 - s.t) * den[a] + s.t * den[b];
+        if (de > 0.0) out[i] = nu / de - spec.k;
+    }
+    return out;
+}
+
+} // namespace
+
+std::vector<double> suggestive_strength(const MeshTopology& topo, const CurvatureField& field, const Fronts& fronts,
+                                        const Camera& camera, const ContourSpec& spec) {
+    return strength_where(topo, field, fronts, camera, spec, std::vector<std::uint8_t>(fronts.snaxels.size(), 1));
+}
+
+std::vector<double> suggestive_margins(const MeshTopology& topo, const CurvatureField& field, const VertexData<double>& kr,
+                                       const Fronts& fronts, const Camera& camera, const ContourSpec& spec) {
+    const std::size_t n = fronts.snaxels.size();
+    const double away = suggestive_away_value(field);
+    const ToViewer to_viewer(camera);
+    std::vector<double> margin(n);
+    const bool rtsc = spec.test == SuggestiveTest::Rtsc;
+    const double most_facing = std::cos(glm::radians(spec.min_angle));
+    const auto P = topo.positions();
+    const auto N = topo.normals();
+    // The view terms first: where they already leave a snaxel out (about
+    // half of them face away), its margin is theirs and the test's
+    // strength is not needed.
+    parallel_for(n, [&](std::size_t i) {
+        const Snaxel& s = fronts.snaxels[i];
+        const glm::dvec3 p = (1.0 - s.t) * P[s.inside] + s.t * P[s.outside];
+        // (The normalized mean of the end normals: the slerp's direction
+        // within a hair, at a fraction of its cost.)
+        const glm::dvec3 mixed = (1.0 - s.t) * N[s.inside] + s.t * N[s.outside];
+        const double len = glm::length(mixed);
+        const double nv = len > 0.0 ? glm::dot(mixed, to_viewer(p)) / len : 0.0;
+        // A snaxel on an edge from a vertex holding suggestive_function's
+        // stand-in (its inside end) lies on the rim of the stand-in, a zero
+        // of suggestive_function only: never drawn.
+        const bool rim = kr[s.inside] == away;
+        // Inside a sharp edge's strip kappa_r jumps from one side's to the
+        // other's: a zero there is no suggestive contour (they are drawn on
+        // smooth patches only).
+        // (The rtsc test has no least angle: its tan(theta) falls to 0 where
+        // the surface faces the viewer.)
+        margin[i] = rim || (topo.has_strips() && edge_in_strip(topo, s.edge)) ? -1.0
+                    : rtsc                                                   ? nv
+                                                                             : std::min(most_facing - nv, nv);
+    }, 4096);
+    std::vector<std::uint8_t> open(n);
+    for (std::size_t i = 0; i < n; ++i) open[i] = margin[i] >= 0.0;
+    const std::vector<double> strength = strength_where(topo, field, fronts, camera, spec, open);
+    for (std::size_t i = 0; i < n; ++i)
+        if (open[i]) margin[i] = std::isfinite(strength[i]) ? std::min(margin[i], strength[i]) : -1.0;
     return margin;
 }
 

@@ -105,12 +105,14 @@ std::shared_ptr<const CurvatureField> require_curvature(const MeshTopology& topo
 VertexData<double> radial_curvature(const MeshTopology& topology, const CurvatureField& field, const Camera& camera);
 
 /// The function whose zeros the suggestive kind tracks: kappa_r
-/// (radial_curvature) at the vertices facing the viewer, and a positive
-/// value (the typical curvature) at those facing away. Suggestive contours
-/// lie on the side seen; the zeros of kappa_r beyond it (half of a noisy
-/// mesh's) are then not tracked. Its zeros also run along the rim between
-/// the two sides where kappa_r < 0 on the near side: suggestive_margins
-/// leaves those out. Written into @p out, resized to the vertex count.
+/// (radial_curvature) at the vertices facing the viewer and at those facing
+/// away next to one (the last ring of faces before the contour, where a
+/// suggestive contour runs on to meet the silhouette), and a positive value
+/// (the typical curvature) at the others. Suggestive contours lie on the
+/// side seen; the zeros of kappa_r beyond it (half of a noisy mesh's) are
+/// then not tracked. Its zeros also run along the rim of the stand-in where
+/// kappa_r < 0 next to it: suggestive_margins leaves those out. Written
+/// into @p out, resized to the vertex count.
 void suggestive_function(const MeshTopology& topology, const CurvatureField& field, const Camera& camera,
                          VertexData<double>& out);
 /// The value suggestive_function gives a vertex facing away.
@@ -123,6 +125,20 @@ double suggestive_away_value(const CurvatureField& field);
 /// normal or the face has no area).
 double derivative_along_view(const MeshTopology& topology, const VertexData<double>& f, FaceId face,
                              const glm::dvec3& p, const Camera& camera);
+
+/// The feature size of @p topology's pose: its median edge length (rtsc's
+/// measure), which makes the rtsc test's threshold free of the mesh's scale.
+/// Kept with the pose.
+double require_feature_size(const MeshTopology& topology);
+
+/// How far each snaxel of @p fronts (a suggestive contour of @p spec, on
+/// @p topology's pose of curvature @p field, seen from @p camera) passes
+/// its test: the test's value less its threshold spec.k (the derivative
+/// test's scale-free derivative, or rtsc's s; see suggestive_margins),
+/// -infinity where the test has no value (rtsc's where the surface turns
+/// away). What a stroke with width-by="strength" follows.
+std::vector<double> suggestive_strength(const MeshTopology& topology, const CurvatureField& field, const Fronts& fronts,
+                                        const Camera& camera, const ContourSpec& spec);
 
 /// Where a suggestive contour is drawn (DeCarlo et al. 2003's pruning). Per
 /// snaxel of @p fronts, zeros of @p kr (suggestive_function's values from
@@ -137,7 +153,14 @@ double derivative_along_view(const MeshTopology& topology, const VertexData<doub
 ///   - cos(spec.min_angle) - N.V: where the surface faces the viewer, w
 ///     (and so kappa_r) turns unstable;
 ///   - N.V: suggestive contours lie on the side seen from the camera; a
-///     snaxel on an edge with an end vertex facing away gets -1.
+///     snaxel on an edge from a vertex holding suggestive_function's
+///     stand-in gets -1.
+/// That is spec.test Derivative's. With SuggestiveTest::Rtsc the margin is
+/// the least of N.V and s - spec.k, with s = feature_size^2 tan(theta)
+/// D_w kappa_r (DeCarlo et al. 2004, as rtsc computes it: the numerator
+/// feature_size^2 sin(theta) D_w kappa_r and the denominator cos(theta)
+/// interpolated apart along the edge from its ends, D_w kappa_r as above,
+/// the feature size require_feature_size's).
 /// The drawing cuts a loop where the margin changes sign, between two
 /// snaxels where it interpolates to zero. (Where the view terms are already
 /// negative the derivative is not computed and the margin is theirs.)

@@ -44,6 +44,7 @@ const char* width_by_name(StrokeStyle::WidthBy by) {
     case StrokeStyle::WidthBy::Light: return "light";
     case StrokeStyle::WidthBy::Curvature: return "curvature";
     case StrokeStyle::WidthBy::Qi: return "qi";
+    case StrokeStyle::WidthBy::Strength: return "strength";
     case StrokeStyle::WidthBy::None: break;
     }
     return "none";
@@ -62,7 +63,7 @@ const std::vector<StyleElement>& style_vocabulary() {
             {"join", {"miter", "round", "bevel"}, "line joins"},
             {"smoothing", {}, "when above 0, lines are drawn as chains of cubic Béziers"},
             {"taper", {}, "the line's width grows from 0 over its first length and falls to 0 over its last"},
-            {"width-by", {"none", "depth", "light", "curvature", "qi"}, "what the line's width follows between width-min and width-max"},
+            {"width-by", {"none", "depth", "light", "curvature", "qi", "strength"}, "what the line's width follows between width-min and width-max (strength: how far a suggestive contour passes its test)"},
             {"width-min", {}, "the thinnest width-by draws"},
             {"width-max", {}, "the thickest width-by draws"},
             {"calligraphy", {}, "a flat nib: an angle and how thin a line along it is against one across it"},
@@ -90,8 +91,11 @@ const std::vector<StyleElement>& style_vocabulary() {
               {"k", {}, "the isophote level N.L = k, or the gleam threshold V.R = k"},
               {"angle", {}, "the crease angle"},
               {"min-length", {}, "chains (runs of crease, border, material or object edges from end to end, or junction to junction) shorter than this are left out"},
+              {"test", {"rtsc", "derivative"}, "which test draws a suggestive contour's parts: rtsc (DeCarlo et al.'s, threshold) or derivative (min-derivative and min-angle)"},
               {"min-derivative", {}, "the least derivative of kappa_r along the view that is drawn"},
               {"min-angle", {}, "parts where the surface faces the viewer within this angle of its normal are left out"},
+              {"threshold", {}, "the rtsc test's threshold on feature size squared times tan(theta) times the derivative of kappa_r along the view"},
+              {"fade", {}, "the strength past its test's threshold at which a suggestive contour's width-by=\"strength\" stroke is half way to width-max"},
               {"object", {}, "draws the line only on the objects these patterns select"},
               {"material", {}, "draws the line only on the materials these patterns select"},
               {"over", {"objects"}, "draws a visual contour only where it lies over another object in the image"}}},
@@ -190,6 +194,38 @@ struct Parser {
         return none;
     }
 
+    // `cs` with its fade read, once its strokes are: width-by="strength" is a
+    // suggestive contour's.
+    ContourStyle finished(const pugi::xml_node& node, ContourStyle cs) const {
+        const bool suggestive = cs.spec.kind == ContourKind::Suggestive;
+        if (!suggestive && node.attribute("fade")) fail(node, "only a suggestive contour takes fade");
+        for (const StrokeStyle* s : {&cs.visible, &cs.hidden})
+            if (!suggestive && s->width_by == StrokeStyle::WidthBy::Strength)
+                fail(node, "width-by=\"strength\" follows a suggestive contour's test: a " + cs.spec.kind_name() + " contour has none");
+        cs.fade = number(node, "fade", -1.0, 0.0, 1e6);
+        if (node.attribute("fade") && !(cs.fade > 0.0)) fail(node, "fade must be above 0");
+        return cs;
+    }
+    // A suggestive contour's test and its values into `spec`.
+    void suggestive(const pugi::xml_node& node, ContourSpec& spec) const {
+        spec.kind = ContourKind::Suggestive;
+        std::string test = node.attribute("test").value();
+        if (!test.empty() && test != "derivative" && test != "rtsc") fail(node, "test=\"" + test + "\" must be derivative or rtsc");
+        // Without test: rtsc's, unless the derivative test's values are given
+        // (styles written before there were two tests).
+        if (test.empty()) test = node.attribute("min-derivative") || node.attribute("min-angle") ? "derivative" : "rtsc";
+        if (test == "rtsc") {
+            for (const char* attr : {"min-derivative", "min-angle"})
+                if (node.attribute(attr)) fail(node, std::string("the rtsc test takes threshold=\"T\", not ") + attr);
+            spec.test = SuggestiveTest::Rtsc;
+            spec.k = number(node, "threshold", kDefaultRtscThreshold, 0.0, 1e6);
+            return;
+        }
+        if (node.attribute("threshold"))
+            fail(node, "threshold=\"T\" is the rtsc test's: the derivative test takes min-derivative and min-angle");
+        spec.k = number(node, "min-derivative", kDefaultSuggestiveDerivative, 0.0, 1e6);
+        spec.min_angle = number(node, "min-angle", kDefaultSuggestiveAngle, 0.0, 89.0);
+    }
     double number(const pugi::xml_node& node, const char* name, double fallback, double lo, double hi) const {
         const pugi::xml_attribute a = node.attribute(name);
         if (!a) return fallback;
@@ -320,7 +356,7 @@ struct Parser {
         }
         const std::string by = choice(node, "width-by", width_by_name(s.width_by));
         for (const auto b : {StrokeStyle::WidthBy::None, StrokeStyle::WidthBy::Depth, StrokeStyle::WidthBy::Light,
-                             StrokeStyle::WidthBy::Curvature, StrokeStyle::WidthBy::Qi})
+                             StrokeStyle::WidthBy::Curvature, StrokeStyle::WidthBy::Qi, StrokeStyle::WidthBy::Strength})
             if (by == width_by_name(b)) s.width_by = b;
         s.width_min = number(node, "width-min", s.width_min, 0.0, 1000.0);
         s.width_max = number(node, "width-max", s.width_max, 0.0, 1000.0);
@@ -403,7 +439,7 @@ struct Parser {
                 const std::string kind = child.attribute("kind").value();
                 ContourSpec spec;
                 if (kind != "crease" && child.attribute("angle")) fail(child, "only a crease contour takes an angle");
-                for (const char* attr : {"min-derivative", "min-angle"})
+                for (const char* attr : {"min-derivative", "min-angle", "test", "threshold"})
                     if (kind != "suggestive" && child.attribute(attr))
                         fail(child, std::string("only a suggestive contour takes ") + attr);
                 if (kind != "crease" && kind != "border" && kind != "material" && kind != "object" &&
@@ -421,9 +457,7 @@ struct Parser {
                 } else if (kind == "suggestive") {
                     if (child.attribute("k"))
                         fail(child, "a suggestive contour takes min-derivative=\"D\" and min-angle=\"DEGREES\", not k");
-                    spec.kind = ContourKind::Suggestive;
-                    spec.k = number(child, "min-derivative", kDefaultSuggestiveDerivative, 0.0, 1e6);
-                    spec.min_angle = number(child, "min-angle", kDefaultSuggestiveAngle, 0.0, 89.0);
+                    suggestive(child, spec);
                 } else if (kind == "isophote" || kind == "gleam") {
                     if (!child.attribute("k")) fail(child, "an " + kind + " contour needs k (a cosine in -1 .. 1)");
                     spec.kind = kind == "isophote" ? ContourKind::Isophote : ContourKind::Gleam;
@@ -450,7 +484,7 @@ struct Parser {
                     else if (part_name == "hidden") cs.hidden = stroke(part, cs.hidden);
                     else warn(part, "unknown element <" + part_name + "> in <contour> (expected <visible> or <hidden>)");
                 }
-                style.contours.push_back(cs);
+                style.contours.push_back(finished(child, cs));
             } else if (name == "region") {
                 check_attributes(child);
                 RegionStyle rs;

@@ -39,7 +39,7 @@ struct StrokeStyle {
     double taper_start = 0.0, taper_end = 0.0;
     bool taper_start_fraction = false, taper_end_fraction = false;
     /// width-by: what the width follows between width_min and width_max.
-    enum class WidthBy { None, Depth, Light, Curvature, Qi };
+    enum class WidthBy { None, Depth, Light, Curvature, Qi, Strength };
     WidthBy width_by = WidthBy::None;
     double width_min = -1.0, width_max = -1.0; ///< negative: half and one and a half times width
     /// calligraphy="ANGLE RATIO": a flat nib at ANGLE degrees (from the
@@ -74,6 +74,16 @@ const char* width_by_name(StrokeStyle::WidthBy by);
 struct ContourStyle {
     ContourSpec spec;
     StrokeStyle visible, hidden;
+    /// Suggestive contours: the strength (suggestive_strength, how far past
+    /// its threshold the test passes) at which a width-by="strength" stroke
+    /// is half way from width-min to width-max: its weight is m / (fade + m)
+    /// for strength m > 0 (rtsc's fading). Negative: the test's default,
+    /// kDefaultFade for rtsc's and kDefaultDerivativeFade for the derivative's.
+    double fade = -1.0;
+    static constexpr double kDefaultFade = 0.03, kDefaultDerivativeFade = 1.0;
+    double fade_or_default() const {
+        return fade >= 0.0 ? fade : spec.test == SuggestiveTest::Rtsc ? kDefaultFade : kDefaultDerivativeFade;
+    }
 };
 
 /// How one class of planar-map region is filled.

@@ -44,7 +44,8 @@ class TestStyleEditor : public QObject {
         const StyleCompletion attribute = at_end("<contour ");
         QCOMPARE(attribute.kind, StyleCompletion::Kind::Attribute);
         QCOMPARE(attribute.prefix, QString());
-        QCOMPARE(attribute.candidates, (QStringList{"kind", "k", "angle", "min-length", "min-derivative", "min-angle", "object", "material", "over"}));
+        QCOMPARE(attribute.candidates, (QStringList{"kind", "k", "angle", "min-length", "test", "min-derivative", "min-angle",
+                                                    "threshold", "fade", "object", "material", "over"}));
         // Those already written are not offered again.
         const StyleCompletion rest = at_end("<contour kind=\"suggestive\" min-d");
         QCOMPARE(rest.kind, StyleCompletion::Kind::Attribute);
@@ -83,11 +84,14 @@ class TestStyleEditor : public QObject {
                     if (e.name == "region" && a.name == "class" && (word == "band" || word == "highlight")) attrs += " k=\"0.5\"";
                     if (e.name == "contour" && a.name == "kind" && (word == "isophote" || word == "gleam")) attrs += " k=\"0.5\"";
                     if (e.name == "contour" && a.name == "over") attrs += " kind=\"visual\"";
+                    if (e.name == "contour" && a.name == "test") attrs += " kind=\"suggestive\"";
                     if (e.name == "object" && a.name != "name") attrs += " name=\"Ground\"";
                     if (e.name == "region" && a.name != "class") attrs += " class=\"lit\"";
                     const QString inner = QString("<%1 %2/>").arg(QString::fromStdString(e.name), attrs);
+                    // (width-by="strength" follows a suggestive contour's test.)
+                    const QString kind = word == "strength" ? "suggestive" : "visual";
                     const QString doc = e.name == "visible" || e.name == "hidden"
-                                            ? QString("<style version=\"1\"><contour kind=\"visual\">%1</contour></style>").arg(inner)
+                                            ? QString("<style version=\"1\"><contour kind=\"%2\">%1</contour></style>").arg(inner, kind)
                                             : QString("<style version=\"1\">%1</style>").arg(inner);
                     std::vector<snaxels::StyleDiagnostic> warnings;
                     try {
@@ -128,7 +132,7 @@ class TestStyleEditor : public QObject {
         QTest::keyClicks(edit, " ");
         QTest::keyClick(edit, Qt::Key_Space, Qt::ControlModifier);
         QVERIFY(editor.completer()->popup()->isVisible());
-        QCOMPARE(editor.completer()->completionCount(), 7); // k, angle, min-length, min-angle, object, material, over
+        QCOMPARE(editor.completer()->completionCount(), 10); // k, angle, min-length, test, min-angle, threshold, fade, object, material, over
         QTest::keyClick(editor.completer()->popup(), Qt::Key_Escape);
     }
 

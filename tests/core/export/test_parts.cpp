@@ -35,6 +35,7 @@
 #include "snaxels/mesh/sharp_edges.h"
 #include "snaxels/style/style.h"
 #include "tests/support/reference_raster.h"
+#include "tests/support/segment_distance.h"
 #include "tests/support/scene_reader.h"
 
 namespace snaxels {
@@ -141,12 +142,7 @@ template <class Take> std::vector<std::uint8_t> coverage(const OracleScene& s, c
     return grown;
 }
 
-double segment_distance(const glm::dvec2& p, const glm::dvec2& a, const glm::dvec2& b) {
-    const glm::dvec2 ab = b - a;
-    const double len2 = glm::dot(ab, ab);
-    const double t = len2 > 0.0 ? std::clamp(glm::dot(p - a, ab) / len2, 0.0, 1.0) : 0.0;
-    return glm::length(p - (a + t * ab));
-}
+using snaxels::test::segment_distance;
 
 /// Points every half pixel along a polyline.
 std::vector<glm::dvec2> dense(const std::vector<glm::dvec2>& q, bool closed) {

@@ -9,6 +9,7 @@
 
 #include "snaxels/export/stroke_weight.h"
 #include "snaxels/mesh/import.h"
+#include "snaxels/snaxel/curvature.h"
 #include "snaxels/snaxel/tracker.h"
 #include "snaxels/style/style.h"
 #include "tests/support/assets.h"
@@ -213,4 +214,51 @@ TEST(LineWeight, StillParameterIsArcLength) {
     const LoopAttributes at(c.loops[0]);
     EXPECT_DOUBLE_EQ(at.at(35.0).u, 35.0);
     EXPECT_NEAR(at.at(35.0).q.y, 5.0, 1e-12);
+}
+
+// width-by="strength" on a suggestive contour fades it as rtsc does: each
+// drawn snaxel's weight is m / (fade + m), m how far it passes its test
+// (read here from the engine's margins where the test, not the view, sets
+// them), 0 where it is not drawn; the weights span the range.
+TEST(LineWeight, StrengthFadesSuggestiveContours) {
+    const LoadedMesh horse = load_mesh(test::asset("horse.ply"));
+    const MeshTopology topo = build_topology(horse.mesh);
+    const SnaxelEngine engine(topo);
+    const Style style = parse_style(R"(<style version="1"><contour kind="suggestive" test="rtsc" fade="0.05">
+        <visible width-by="strength" width-min="0" width-max="2"/></contour></style>)", "test", nullptr);
+    Camera cam;
+    cam.view_dir = glm::normalize(glm::dvec3(1.0, -0.3, -1.0));
+    const ContourResult r = engine.compute(style.contours[0].spec, cam, Light{});
+    const ImageProjection projection(cam, glm::dvec3(0.0), bounding_radius(topo), 800, 800, 32.0);
+    Drawing drawing = make_drawing(engine, {r}, projection, nullptr);
+    weigh_strokes(drawing, style, engine, {r}, cam, Light{}, glm::dvec3(0.0), bounding_radius(topo));
+    ASSERT_EQ(drawing.contours.size(), 1u);
+    std::size_t drawn = 0, checked = 0, faint = 0, strong = 0;
+    const std::vector<double> strength = suggestive_strength(topo, *require_curvature(topo), r.fronts, cam, r.spec);
+    for (std::size_t l = 0; l < r.fronts.loops.size(); ++l) {
+        const DrawnLoop& loop = drawing.contours[0].loops[l];
+        std::size_t k = 0;
+        r.fronts.for_each_in_loop(r.fronts.loops[l], [&](std::int32_t s) {
+            const float w = loop.weight[k++];
+            const double margin = r.snaxel_margin[std::size_t(s)], m = strength[std::size_t(s)];
+            ASSERT_GE(w, 0.0f);
+            ASSERT_LT(w, 1.0f);
+            EXPECT_FLOAT_EQ(w, m > 0.0 ? float(m / (0.05 + m)) : 0.0f);
+            if (margin < 0.0) return;
+            ++drawn;
+            EXPECT_GT(w, 0.0f);
+            // Where the margin is the test's, the weight is its fade.
+            if (margin == strength[std::size_t(s)]) {
+                EXPECT_FLOAT_EQ(w, float(margin / (0.05 + margin)));
+                ++checked;
+            }
+            faint += w < 0.3f;
+            strong += w > 0.7f;
+        });
+    }
+    std::printf("horse: %zu drawn snaxels, %zu weights checked against the margins, %zu faint, %zu strong\n", drawn,
+                checked, faint, strong);
+    EXPECT_GT(checked, 200u);
+    EXPECT_GT(faint, 20u);
+    EXPECT_GT(strong, 20u);
 }

@@ -161,13 +161,20 @@ namespace {
 
 /// kappa_r at every vertex from the pose's curvature field, computed here:
 /// k1 cos^2 + k2 sin^2 of the angle between the projected view and dir1;
-/// positive at a vertex facing away (the tracked function's convention).
+/// positive at a vertex facing away whose neighbours all face away too
+/// (the tracked function's convention: kappa_r is kept one ring past the
+/// side seen).
 VertexData<double> oracle_kr(const MeshTopology& topo, const CurvatureField& field, const Camera& cam) {
     VertexData<double> kr(topo.n_vertices());
+    std::vector<bool> facing(topo.n_vertices());
+    for (const VertexId v : topo.vertices())
+        facing[std::size_t(v.index())] = glm::dot(topo.normals()[v], cam.to_viewer(topo.positions()[v])) > 0.0;
     for (const VertexId v : topo.vertices()) {
         const glm::dvec3 n = topo.normals()[v];
         const glm::dvec3 view = cam.to_viewer(topo.positions()[v]);
-        if (glm::dot(n, view) <= 0.0) {
+        bool near = facing[std::size_t(v.index())];
+        for (const VertexId w : topo.neighbours(v)) near = near || facing[std::size_t(w.index())];
+        if (!near) {
             kr[v] = 1.0;
             continue;
         }
@@ -186,53 +193,78 @@ class SuggestiveTurntable : public ::testing::TestWithParam<std::string> {};
 // is, at every frame, the from-scratch one: the same snaxels on the same
 // edges at the same points (each the zero of kappa_r, linear along its
 // edge, on exactly the edges where the oracle's kappa_r changes sign), the
-// same parts drawn; and the tracker keeps identities across frames.
+// same parts drawn, each passing its test by as much (what a faded stroke
+// follows); and the tracker keeps identities across frames. For both tests.
 TEST_P(SuggestiveTurntable, TrackedEqualsFromScratchAtEveryFrame) {
     const LoadedMesh m = load_mesh(test::asset(GetParam()));
     const MeshTopology topo = build_topology(m.mesh);
     const SnaxelEngine engine(topo);
     EngineOptions options;
     options.check_invariants = false;
-    const ContourSpec spec = ContourSpec::parse("suggestive");
-    ContourTracker tracker(topo, spec, options);
-    const CurvatureField& field = *require_curvature(topo); // the (smoothed) field the kind reads: the oracle's input
-    std::size_t kept_ids = 0, moves = 0;
-    std::set<std::uint64_t> previous;
-    for (int frame = 0; frame < 120; ++frame) {
-        Camera cam;
-        cam.view_dir = glm::rotate(glm::normalize(glm::dvec3(0.3, -0.35, 1.0)), glm::radians(3.0 * frame), glm::dvec3(0, 1, 0));
-        const TrackedFrame& tf = tracker.step(cam, Light{});
-        const ContourResult fresh = engine.compute(spec, cam, Light{}, options);
-        const Fronts& a = tf.contour.fronts;
-        const Fronts& b = fresh.fronts;
-        ASSERT_EQ(a.snaxels.size(), b.snaxels.size()) << "frame " << frame;
-        ASSERT_EQ(tf.contour.snaxel_margin.size(), a.snaxels.size());
-        // Oracle: the edges where kappa_r changes sign.
-        const VertexData<double> kr = oracle_kr(topo, field, cam);
-        std::size_t crossing = 0;
-        for (const auto& [u, w] : topo.edge_vertices()) {
-            crossing += (kr[u] >= 0.0) != (kr[w] >= 0.0);
+    for (const char* text : {"suggestive:4:15", "suggestive:rtsc"}) {
+        SCOPED_TRACE(text);
+        const ContourSpec spec = ContourSpec::parse(text);
+        ContourTracker tracker(topo, spec, options);
+        std::set<std::uint64_t> previous;
+        const CurvatureField& field =
+            *require_curvature(topo); // the (smoothed) field the kind reads: the oracle's input
+        std::size_t kept_ids = 0, moves = 0;
+        for (int frame = 0; frame < 120; ++frame) {
+            Camera cam;
+            cam.view_dir = glm::rotate(glm::normalize(glm::dvec3(0.3, -0.35, 1.0)),
+                                       glm::radians(3.0 * frame), glm::dvec3(0, 1, 0));
+            const TrackedFrame& tf = tracker.step(cam, Light{});
+            const ContourResult fresh = engine.compute(spec, cam, Light{}, options);
+            const Fronts& a = tf.contour.fronts;
+            const Fronts& b = fresh.fronts;
+            ASSERT_EQ(a.snaxels.size(), b.snaxels.size()) << "frame " << frame;
+            ASSERT_EQ(tf.contour.snaxel_margin.size(), a.snaxels.size());
+            // Oracle: the edges where kappa_r changes sign.
+            const VertexData<double> kr = oracle_kr(topo, field, cam);
+            std::size_t crossing = 0;
+            for (const auto& [u, w] : topo.edge_vertices()) {
+                crossing += (kr[u] >= 0.0) != (kr[w] >= 0.0);
+            }
+            ASSERT_EQ(a.snaxels.size(), crossing) << "frame " << frame;
+            for (std::size_t i = 0; i < a.snaxels.size(); ++i) {
+                const Snaxel& s = a.snaxels[i];
+                const std::int32_t j = b.edge_snaxel[s.edge];
+                ASSERT_NE(j, kNoSnaxel) << "frame " << frame;
+                const double len =
+                    glm::length(topo.positions()[s.inside] - topo.positions()[s.outside]);
+                ASSERT_LE(
+                    glm::length(engine.position(s) - engine.position(b.snaxels[std::size_t(j)])),
+                    1e-9 * len);
+                const double ki = kr[s.inside], ko = kr[s.outside];
+                if (ki != 1.0 && ko != 1.0)
+                    ASSERT_NEAR(s.t, ki / (ki - ko), 1e-9) << "frame " << frame;
+                else
+                    ASSERT_LT(tf.contour.snaxel_margin[i], 0.0)
+                        << "frame " << frame; // the rim: never drawn
+                ASSERT_EQ(tf.contour.snaxel_margin[i] >= 0.0,
+                          fresh.snaxel_margin[std::size_t(j)] >= 0.0)
+                    << "frame " << frame;
+            }
+            // How far each passes its test (what a faded stroke's width
+            // follows): the same tracked as from scratch.
+            const std::vector<double> ma = suggestive_strength(topo, field, a, cam, spec);
+            const std::vector<double> mb = suggestive_strength(topo, field, b, cam, spec);
+            for (std::size_t i = 0; i < a.snaxels.size(); ++i) {
+                const double x = ma[i], y = mb[std::size_t(b.edge_snaxel[a.snaxels[i].edge])];
+                if (std::isfinite(x) || std::isfinite(y)) {
+                    ASSERT_NEAR(x, y, 1e-9 * (1.0 + std::abs(y))) << "frame " << frame;
+                }
+            }
+            std::set<std::uint64_t> ids(tf.snaxel_id.begin(), tf.snaxel_id.end());
+            ASSERT_EQ(ids.size(), tf.snaxel_id.size()) << "frame " << frame;
+            for (const auto id : ids)
+                kept_ids += previous.count(id);
+            moves += tf.fanouts + tf.retreats;
+            previous = std::move(ids);
         }
-        ASSERT_EQ(a.snaxels.size(), crossing) << "frame " << frame;
-        for (std::size_t i = 0; i < a.snaxels.size(); ++i) {
-            const Snaxel& s = a.snaxels[i];
-            const std::int32_t j = b.edge_snaxel[s.edge];
-            ASSERT_NE(j, kNoSnaxel) << "frame " << frame;
-            const double len = glm::length(topo.positions()[s.inside] - topo.positions()[s.outside]);
-            ASSERT_LE(glm::length(engine.position(s) - engine.position(b.snaxels[std::size_t(j)])), 1e-9 * len);
-            const double ki = kr[s.inside], ko = kr[s.outside];
-            if (ki != 1.0 && ko != 1.0) ASSERT_NEAR(s.t, ki / (ki - ko), 1e-9) << "frame " << frame;
-            else ASSERT_LT(tf.contour.snaxel_margin[i], 0.0) << "frame " << frame; // the rim: never drawn
-            ASSERT_EQ(tf.contour.snaxel_margin[i] >= 0.0, fresh.snaxel_margin[std::size_t(j)] >= 0.0) << "frame " << frame;
-        }
-        std::set<std::uint64_t> ids(tf.snaxel_id.begin(), tf.snaxel_id.end());
-        ASSERT_EQ(ids.size(), tf.snaxel_id.size()) << "frame " << frame;
-        for (const auto id : ids) kept_ids += previous.count(id);
-        moves += tf.fanouts + tf.retreats;
-        previous = std::move(ids);
+        EXPECT_GT(moves, 0u);
+        EXPECT_GT(kept_ids, 0u); // snaxels live on from frame to frame
     }
-    EXPECT_GT(moves, 0u);
-    EXPECT_GT(kept_ids, 0u); // snaxels live on from frame to frame
 }
 
 INSTANTIATE_TEST_SUITE_P(Meshes, SuggestiveTurntable, ::testing::Values("spot.obj", "horse.ply"),
@@ -266,7 +298,7 @@ TEST(Suggestive, DrawingLeavesOutWeakParts) {
     };
     std::size_t snaxels = 0;
     const double loose = drawn_length(ContourSpec::parse("suggestive:0:0"), &snaxels);
-    const double usual = drawn_length(ContourSpec::parse("suggestive"));
+    const double usual = drawn_length(ContourSpec::parse("suggestive:4:15"));
     const double none = drawn_length(ContourSpec::parse("suggestive:1000000"));
     std::printf("spot: %zu snaxels; drawn length %.0f px with no threshold, %.0f by default, %.0f past any\n", snaxels,
                 loose, usual, none);
@@ -337,11 +369,18 @@ TEST(Suggestive, SmoothingKeepsShapeAndRemovesNoise) {
 
 // The kind's text: parsed, labelled and refused as the CLI says.
 TEST(Suggestive, SpecParsesAndRefuses) {
-    const ContourSpec d = ContourSpec::parse("suggestive");
+    // Named alone: rtsc's test at its threshold; with a value, the derivative test.
+    const ContourSpec r = ContourSpec::parse("suggestive");
+    EXPECT_EQ(r.test, SuggestiveTest::Rtsc);
+    EXPECT_DOUBLE_EQ(r.k, kDefaultRtscThreshold);
+    EXPECT_TRUE(ContourSpec::parse(r.label()).same_as(r));
+    const ContourSpec d = ContourSpec::parse("suggestive:4");
     EXPECT_EQ(d.kind, ContourKind::Suggestive);
+    EXPECT_EQ(d.test, SuggestiveTest::Derivative);
     EXPECT_DOUBLE_EQ(d.k, kDefaultSuggestiveDerivative);
     EXPECT_DOUBLE_EQ(d.min_angle, kDefaultSuggestiveAngle);
     EXPECT_FALSE(d.on_surface());
+    EXPECT_FALSE(r.same_as(d));
     const ContourSpec s = ContourSpec::parse("suggestive:2.5:20");
     EXPECT_DOUBLE_EQ(s.k, 2.5);
     EXPECT_DOUBLE_EQ(s.min_angle, 20.0);

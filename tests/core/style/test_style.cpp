@@ -249,3 +249,49 @@ TEST(Style, SurfaceSharpAngle) {
         }
     }
 }
+
+// A suggestive contour's two tests: the derivative test's min-derivative and
+// min-angle, rtsc's threshold, and the fade a width-by="strength" stroke
+// follows; each test refuses the other's values, and strength and fade
+// belong to suggestive contours alone.
+TEST(Style, SuggestiveTests) {
+    const Style s = parse_style(R"(<style version="1">
+  <contour kind="suggestive" test="rtsc" threshold="0.02" fade="0.05">
+    <visible width-by="strength" width-min="0" width-max="2"/>
+  </contour>
+</style>)", "t.xml", nullptr);
+    ASSERT_EQ(s.contours.size(), 1u);
+    const ContourStyle& cs = s.contours[0];
+    EXPECT_EQ(cs.spec.test, SuggestiveTest::Rtsc);
+    EXPECT_EQ(cs.spec.k, 0.02);
+    EXPECT_EQ(cs.spec.label(), "suggestive:rtsc:0.02");
+    EXPECT_TRUE(cs.spec.same_as(ContourSpec::parse("suggestive:rtsc:0.02")));
+    EXPECT_FALSE(cs.spec.same_as(ContourSpec::parse("suggestive:0.02:0")));
+    EXPECT_EQ(cs.fade_or_default(), 0.05);
+    EXPECT_EQ(cs.visible.width_by, StrokeStyle::WidthBy::Strength);
+
+    // Without test: rtsc's, unless the derivative test's values are given.
+    const Style d = parse_style("<style><contour kind=\"suggestive\" min-angle=\"15\"/><contour kind=\"suggestive\"/></style>", "t", nullptr);
+    ASSERT_EQ(d.contours.size(), 2u);
+    EXPECT_EQ(d.contours[1].spec.test, SuggestiveTest::Rtsc);
+    EXPECT_EQ(d.contours[0].spec.test, SuggestiveTest::Derivative);
+    EXPECT_EQ(d.contours[0].spec.k, kDefaultSuggestiveDerivative);
+    EXPECT_EQ(d.contours[0].fade_or_default(), ContourStyle::kDefaultDerivativeFade);
+    EXPECT_EQ(d.contours[1].spec.k, kDefaultRtscThreshold);
+    EXPECT_EQ(d.contours[1].fade_or_default(), ContourStyle::kDefaultFade);
+
+    EXPECT_NE(error_of("<style><contour kind=\"suggestive\" test=\"rtsc\" min-derivative=\"2\"/></style>").message.find("threshold"), std::string::npos);
+    EXPECT_NE(error_of("<style><contour kind=\"suggestive\" min-angle=\"10\" threshold=\"0.1\"/></style>").message.find("rtsc"), std::string::npos);
+    EXPECT_NE(error_of("<style><contour kind=\"visual\" threshold=\"0.1\"/></style>").message.find("suggestive"), std::string::npos);
+    EXPECT_NE(error_of("<style><contour kind=\"visual\" fade=\"0.1\"/></style>").message.find("suggestive"), std::string::npos);
+    EXPECT_NE(error_of("<style><contour kind=\"visual\"><visible width-by=\"strength\"/></contour></style>").message.find("strength"), std::string::npos);
+    EXPECT_NE(error_of("<style><contour kind=\"suggestive\" fade=\"0\"/></style>").message.find("fade"), std::string::npos);
+
+    // The command line's spelling.
+    const ContourSpec rtsc = ContourSpec::parse("suggestive:rtsc");
+    EXPECT_EQ(rtsc.test, SuggestiveTest::Rtsc);
+    EXPECT_EQ(rtsc.k, kDefaultRtscThreshold);
+    EXPECT_EQ(ContourSpec::parse("suggestive:rtsc:0.5").k, 0.5);
+    EXPECT_THROW(ContourSpec::parse("suggestive:rtsc:x"), Error);
+    EXPECT_THROW(ContourSpec::parse("suggestive:rtsc:-1"), Error);
+}
