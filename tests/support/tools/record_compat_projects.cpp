@@ -7,9 +7,11 @@
 //   record_compat_projects OUT_DIR STYLES_DIR
 
 #include <cstdio>
+#include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <string>
+#include <utility>
 
 #include "snaxels/project/project.h"
 
@@ -17,12 +19,25 @@ using namespace snaxels;
 
 namespace {
 
-std::string read(const std::string& path) {
+/// The text of the preset @p name in @p dir.
+std::string preset(const std::filesystem::path& dir, const char* name) {
+    const std::filesystem::path path = dir / name;
     std::ifstream in(path);
     std::stringstream text;
     text << in.rdbuf();
-    if (!in) throw std::runtime_error("cannot read " + path);
+    if (!in) throw std::runtime_error("cannot read " + path.string());
     return text.str();
+}
+
+/// A project of @p mesh seen from the orbit (yaw, pitch, distance), in @p style.
+Project seen(const std::string& mesh, double yaw, double pitch, double distance, std::string style) {
+    Project p;
+    p.mesh = mesh;
+    p.view.yaw = yaw;
+    p.view.pitch = pitch;
+    p.view.distance = distance;
+    p.style = std::move(style);
+    return p;
 }
 
 } // namespace
@@ -32,14 +47,11 @@ int main(int argc, char** argv) {
         std::fprintf(stderr, "usage: record_compat_projects OUT_DIR STYLES_DIR\n");
         return 2;
     }
-    const std::string out = argv[1], styles = argv[2];
+    const std::string out = argv[1];
+    const std::filesystem::path styles = argv[2];
     try {
         // A turntable of a character in the faded pencil sketch, a light given.
-        Project a;
-        a.mesh = "../../../spot.obj";
-        a.view.yaw = 0.6;
-        a.view.pitch = 0.25;
-        a.view.distance = 3.2;
+        Project a = seen("../../../spot.obj", 0.6, 0.25, 3.2, preset(styles, "pencil-sketch.xml"));
         a.view.fov_deg = 35.0;
         Light la;
         la.dir = {-0.5, 1.0, 0.8};
@@ -49,43 +61,28 @@ int main(int argc, char** argv) {
         a.animation.frames = 24;
         a.animation.fps = 24.0;
         a.frame = 5;
-        a.style = read(styles + "/pencil-sketch.xml");
         write_project(out + "/spot-pencil-turntable.snaxels", a);
 
         // A still of a Z-up scan in two tones under a point light.
-        Project b;
-        b.mesh = "../../../horse.ply";
-        b.view.yaw = 2.2;
-        b.view.pitch = 0.15;
-        b.view.distance = 0.33;
+        Project b = seen("../../../horse.ply", 2.2, 0.15, 0.33, preset(styles, "toon.xml"));
         b.view.up = {0.0, 0.0, 1.0};
         Light lb;
         lb.point = true;
         lb.pos = {0.1, -0.25, 0.2};
         b.light = lb;
-        b.style = read(styles + "/toon.xml");
         write_project(out + "/horse-toon-zup.snaxels", b);
 
         // A file's own clip at a frame of it, in shading lines.
-        Project c;
-        c.mesh = "../../../anim/morph-ball.gltf";
-        c.view.yaw = -0.4;
-        c.view.pitch = 0.3;
-        c.view.distance = 6.0;
+        Project c = seen("../../../anim/morph-ball.gltf", -0.4, 0.3, 6.0, preset(styles, "shading-lines.xml"));
         c.animation.kind = AnimationSpec::Kind::Clip;
         c.animation.clip = "0";
         c.animation.frames = 30;
         c.animation.fps = 24.0;
         c.frame = 12;
-        c.style = read(styles + "/shading-lines.xml");
         write_project(out + "/morph-ball-clip.snaxels", c);
 
         // A procedural mesh, the default style and light, a light orbit.
-        Project d;
-        d.mesh = "proc:nose:20000";
-        d.view.yaw = 0.3;
-        d.view.pitch = 0.1;
-        d.view.distance = 5.2;
+        Project d = seen("proc:nose:20000", 0.3, 0.1, 5.2, "");
         d.animation.kind = AnimationSpec::Kind::LightOrbit;
         d.animation.degrees_per_frame = 10.0;
         d.animation.frames = 12;
