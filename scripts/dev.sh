@@ -3,6 +3,9 @@
 #   scripts/dev.sh run [MESH]   install what is missing, build, start the application
 #   scripts/dev.sh test         install what is missing, build, run every test (ctest)
 #   scripts/dev.sh build        install what is missing and build
+#   scripts/dev.sh robot SECONDS [SEED]  install, build, and let the seeded
+#                               robot use the window (tests/ui/robot.cpp) under
+#                               Xvfb for SECONDS; its log goes to robot-SEED.log
 #   scripts/dev.sh sanitize     clang build with AddressSanitizer and
 #                               UndefinedBehaviorSanitizer (build-sanitize/);
 #                               runs the core and cli test labels
@@ -16,8 +19,8 @@ cd "$(dirname "$0")/.."
 
 action=${1:-}
 case "$action" in
-  run|test|build|sanitize|fuzz) shift ;;
-  *) echo "usage: scripts/dev.sh run [MESH] | test | build | sanitize | fuzz [SECONDS]" >&2; exit 2 ;;
+  run|test|build|sanitize|fuzz|robot) shift ;;
+  *) echo "usage: scripts/dev.sh run [MESH] | test | build | sanitize | fuzz [SECONDS] | robot SECONDS [SEED]" >&2; exit 2 ;;
 esac
 
 bash scripts/install-deps.sh
@@ -59,4 +62,8 @@ case "$action" in
   # The 10,000-frame soak (label soak) is left out: ctest -L soak runs it.
   test) cd "$build_dir" && exec ctest --output-on-failure -j2 --timeout 900 -LE '^soak$' ;;
   build) ;;
+  robot)
+    seed=${2:-$RANDOM}
+    exec xvfb-run -a -s "-screen 0 1280x800x24" "$build_dir/bin/snaxels-robot" --seconds "${1:-60}" --seed "$seed" \
+      --log "robot-$seed.log" ;;
 esac

@@ -159,6 +159,12 @@ void MainWindow::dropEvent(QDropEvent* event) {
 }
 
 bool MainWindow::exportFrame(const QString& path) {
+    if (svg_.isEmpty()) { // the first drawing has not come yet (a mesh still loading): nothing is written
+        const QString message = tr("Nothing to export yet: the first frame is still being drawn.");
+        QMessageBox::warning(this, tr("Export Frame"), message);
+        emit exportFailed(message);
+        return false;
+    }
     try {
         if (QFileInfo(path).suffix().compare("pdf", Qt::CaseInsensitive) == 0) write_pdf(path.toStdString(), svg_.toStdString());
         else write_file_atomically(path.toStdString(), svg_.toStdString());

@@ -248,6 +248,32 @@ double drawnAspect(MainWindow& window) {
 class TestMainWindow : public QObject {
     Q_OBJECT
   private slots:
+    // Found by the robot (#41): Export Frame before the first drawing came
+    // wrote an empty file and said it had exported. It now says there is
+    // nothing to export yet and writes nothing.
+    void exportFrameBeforeTheFirstDrawingWritesNothing() {
+        MainWindow window;
+        QVERIFY(showWindow(window, {900, 600}));
+        QVERIFY(window.currentSvg().isEmpty()); // the default scene still loading
+        QTemporaryDir dir;
+        QSignalSpy failed(&window, &MainWindow::exportFailed);
+        bool warned = false;
+        QTimer poll; // the warning's box
+        poll.setInterval(20);
+        QObject::connect(&poll, &QTimer::timeout, [&] {
+            if (auto* box = qobject_cast<QMessageBox*>(QApplication::activeModalWidget())) {
+                warned = true;
+                box->accept();
+            }
+        });
+        poll.start();
+        QVERIFY(!window.exportFrame(dir.filePath("early.svg")));
+        QVERIFY(warned);
+        QCOMPARE(failed.size(), 1);
+        QVERIFY2(failed.first().first().toString().contains("Nothing to export yet"), qPrintable(failed.first().first().toString()));
+        QVERIFY(!QFile::exists(dir.filePath("early.svg")));
+    }
+
     void initTestCase() {
         QStandardPaths::setTestModeEnabled(true);
         snaxels::set_mesh_importer(snaxels::importer_beside_executable()); // as the application does

@@ -1,0 +1,349 @@
+// A seeded robot that uses the real window as a user might: orbit, zoom and
+// light drags, presets and broken styles typed in, timeline scrubs and
+// play, undo and redo bursts, meshes opened from a pool that includes bad
+// files, frames exported, animation exports started and cancelled, and the
+// window closed at the end with work under way. After every action it
+// checks what must always hold; every action is logged so that a failure
+// replays from its log.
+//
+//   snaxels-robot [--seconds S] [--seed N] [--log FILE] [--replay FILE]
+//                 [--max-rss-growth FRACTION]
+//
+// Each log line is "ACTION A B" (two integers). --replay performs exactly
+// the actions of a log, in order; without it the actions are drawn from the
+// seed until the time is up. Exit 0 when every check held, 1 when one did
+// not (the message names the step), 2 on a bad command line.
+
+#include <cstdio>
+#include <fstream>
+#include <random>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include <unistd.h>
+
+#include <QApplication>
+#include <QDir>
+#include <QElapsedTimer>
+#include <QFile>
+#include <QFileInfo>
+#include <QMessageBox>
+#include <QPlainTextEdit>
+#include <QProgressDialog>
+#include <QPushButton>
+#include <QSet>
+#include <QSurfaceFormat>
+#include <QTemporaryDir>
+#include <QTest>
+#include <QTimer>
+#include <QUndoStack>
+#include <QWheelEvent>
+#include <QXmlStreamReader>
+
+#include "ui/mainwindow.h"
+#include "ui/meshview.h"
+#include "ui/resources.h"
+#include "ui/styleeditor.h"
+#include "ui/timeline.h"
+
+using snaxels::ui::MainWindow;
+using snaxels::ui::MeshView;
+
+namespace {
+
+enum class Act { Orbit, Zoom, Light, Preset, BrokenStyle, Scrub, Play, Undo, Redo, Open, ExportFrame, ExportAnimation, Wait, Count };
+const char* kNames[] = {"orbit", "zoom", "light", "preset", "broken-style", "scrub", "play", "undo", "redo",
+                        "open", "export-frame", "export-animation", "wait"};
+// How often each is drawn.
+const int kWeights[] = {20, 10, 8, 6, 3, 8, 3, 6, 4, 3, 3, 2, 10};
+
+struct Action {
+    Act act;
+    int a = 0, b = 0;
+    std::string text() const { return std::string(kNames[int(act)]) + " " + std::to_string(a) + " " + std::to_string(b); }
+};
+
+bool parse_action(const std::string& line, Action& out) {
+    std::istringstream in(line);
+    std::string name;
+    if (!(in >> name >> out.a >> out.b)) return false;
+    for (int i = 0; i < int(Act::Count); ++i)
+        if (name == kNames[i]) {
+            out.act = Act(i);
+            return true;
+        }
+    return false;
+}
+
+Action draw(std::mt19937& rng) {
+    int total = 0;
+    for (const int w : kWeights) total += w;
+    int pick = std::uniform_int_distribution<int>(0, total - 1)(rng);
+    int i = 0;
+    while (pick >= kWeights[i]) pick -= kWeights[i++];
+    std::uniform_int_distribution<int> any(-1000, 1000);
+    return {Act(i), any(rng), any(rng)};
+}
+
+long rss_kb() {
+    std::ifstream statm("/proc/self/statm");
+    long pages = 0, resident = 0;
+    statm >> pages >> resident;
+    return resident * (sysconf(_SC_PAGESIZE) / 1024);
+}
+
+/// Answers every message box while it lives (the unsaved-changes question
+/// with Discard, any other with its default button), counting them.
+struct AnswerMessageBoxes {
+    AnswerMessageBoxes() {
+        poll.setInterval(15);
+        QObject::connect(&poll, &QTimer::timeout, [this] {
+            auto* box = qobject_cast<QMessageBox*>(QApplication::activeModalWidget());
+            if (!box) return;
+            ++answered;
+            if (QAbstractButton* discard = box->button(QMessageBox::Discard)) discard->click();
+            else if (QAbstractButton* ok = box->defaultButton()) ok->click();
+            else box->reject();
+        });
+        poll.start();
+    }
+    QTimer poll;
+    int answered = 0;
+};
+
+/// Empty when @p svg is well-formed XML, else what is wrong and where.
+QString xml_error(const QByteArray& svg) {
+    QXmlStreamReader xml(svg);
+    while (!xml.atEnd()) xml.readNext();
+    if (!xml.hasError()) return {};
+    return QString("%1 at line %2, column %3 (%4 bytes)").arg(xml.errorString()).arg(xml.lineNumber()).arg(xml.columnNumber()).arg(svg.size());
+}
+bool parses(const QByteArray& svg) { return xml_error(svg).isEmpty(); }
+
+class Robot {
+  public:
+    Robot(MainWindow& window, const QString& work) : window_(window), work_(work) {
+        const QString assets = SNAXELS_TEST_ASSETS;
+        pool_ = {assets + "/spot.obj", assets + "/horse.ply", assets + "/teapot.obj", "proc:nose:20000",
+                 assets + "/anim/morph-ball.gltf", assets + "/hard/CesiumMilkTruck.gltf"};
+        for (const QString& bad : QDir(assets + "/bad").entryList(QDir::Files)) pool_.push_back(assets + "/bad/" + bad);
+        for (const char* name : {"toon", "shading-lines", "pencil-sketch", "ink-outline", "technical-drawing", "clip-art"}) {
+            QFile f(snaxels::ui::dataDirectory() + "/styles/" + name + ".xml");
+            if (f.open(QIODevice::ReadOnly)) presets_.push_back(QString::fromUtf8(f.readAll()));
+        }
+    }
+
+    /// Performs @p a; false (with @p why) when a check fails after it.
+    bool perform(const Action& a, QString& why) {
+        MeshView* view = window_.meshView();
+        const QPoint centre = view->rect().center();
+        switch (a.act) {
+        case Act::Orbit:
+        case Act::Light: {
+            const Qt::KeyboardModifiers mods = a.act == Act::Light ? Qt::ShiftModifier : Qt::NoModifier;
+            const QPoint to = centre + QPoint(a.a / 5, a.b / 5);
+            QTest::mousePress(view, Qt::LeftButton, mods, centre);
+            QTest::mouseMove(view, (centre + to) / 2);
+            QTest::mouseMove(view, to);
+            QTest::mouseRelease(view, Qt::LeftButton, mods, to);
+            break;
+        }
+        case Act::Zoom: {
+            QWheelEvent wheel(centre, view->mapToGlobal(centre), QPoint(), QPoint(0, a.a > 0 ? 120 : -120), Qt::NoButton,
+                              Qt::NoModifier, Qt::NoScrollPhase, false);
+            QApplication::sendEvent(view, &wheel);
+            break;
+        }
+        case Act::Preset:
+            if (!presets_.empty()) window_.styleEditor()->editor()->setPlainText(presets_[std::size_t(std::abs(a.a)) % presets_.size()]);
+            break;
+        case Act::BrokenStyle: {
+            const QStringList broken{"<style><contour kind=\"visual\"", "<style><contour kind=\"banana\"/></style>",
+                                     "<style><canvas width=\"-3\"/></style>", "not xml at all", ""};
+            window_.styleEditor()->editor()->setPlainText(broken[std::abs(a.a) % broken.size()]);
+            break;
+        }
+        case Act::Scrub:
+            window_.timeline()->setFrame(std::abs(a.a) % 200);
+            break;
+        case Act::Play:
+            QTest::keyClick(&window_, Qt::Key_Space);
+            break;
+        case Act::Undo:
+            for (int i = 0; i < 1 + std::abs(a.a) % 5; ++i) window_.undoStack()->undo();
+            break;
+        case Act::Redo:
+            for (int i = 0; i < 1 + std::abs(a.a) % 5; ++i) window_.undoStack()->redo();
+            break;
+        case Act::Open:
+            window_.openMesh(pool_[std::size_t(std::abs(a.a)) % pool_.size()]);
+            break;
+        case Act::ExportFrame: {
+            const QString path = work_ + QString("/frame-%1.svg").arg(++exports_);
+            asked_.insert(QFileInfo(path).fileName());
+            if (window_.exportFrame(path) && !parses(read(path))) return fail(why, path + " is not a whole SVG: " + xml_error(read(path)));
+            break;
+        }
+        case Act::ExportAnimation: {
+            const QString path = work_ + QString("/anim-%1.svg").arg(++exports_);
+            asked_.insert(QFileInfo(path).fileName());
+            window_.exportAnimation(path);
+            QTest::qWait(std::abs(a.b) % 300);
+            for (QWidget* w : QApplication::topLevelWidgets())
+                if (auto* progress = qobject_cast<QProgressDialog*>(w); progress && progress->isVisible() && a.a % 2 == 0)
+                    progress->cancel();
+            break;
+        }
+        case Act::Wait:
+            QTest::qWait(std::abs(a.a) % 400);
+            break;
+        case Act::Count:
+            break;
+        }
+        QApplication::processEvents();
+        return check(why);
+    }
+
+    /// What always holds.
+    bool check(QString& why) {
+        if (!window_.isVisible()) return fail(why, "the window is gone");
+        QUndoStack* undo = window_.undoStack();
+        if (undo->index() < 0 || undo->index() > undo->count()) return fail(why, "the undo stack's index is out of range");
+        if (!window_.isLoading() && !window_.contoursBusy() && !window_.currentSvg().isEmpty() && !parses(window_.currentSvg()))
+            return fail(why, "the SVG pane holds a broken SVG");
+        // Only files the robot asked for, and no temporary ones once no export runs.
+        for (const QString& name : QDir(work_).entryList(QDir::Files))
+            if (!asked_.contains(name) && !exporting()) return fail(why, "a file nobody asked for: " + name);
+        return true;
+    }
+
+    /// Every export asked for is whole, or absent (cancelled, or failed).
+    bool finalCheck(QString& why) {
+        for (const QString& name : QDir(work_).entryList(QDir::Files)) {
+            if (!asked_.contains(name)) return fail(why, "a file nobody asked for: " + name);
+            if (!parses(read(work_ + "/" + name))) return fail(why, name + " is not a whole SVG");
+        }
+        return true;
+    }
+
+    bool exporting() const {
+        for (QWidget* w : QApplication::topLevelWidgets())
+            if (qobject_cast<QProgressDialog*>(w) && w->isVisible()) return true;
+        return false;
+    }
+
+  private:
+    static bool fail(QString& why, const QString& text) {
+        why = text;
+        return false;
+    }
+    static QByteArray read(const QString& path) {
+        QFile f(path);
+        return f.open(QIODevice::ReadOnly) ? f.readAll() : QByteArray();
+    }
+
+    MainWindow& window_;
+    QString work_;
+    std::vector<QString> pool_;
+    std::vector<QString> presets_;
+    QSet<QString> asked_;
+    int exports_ = 0;
+};
+
+} // namespace
+
+int main(int argc, char** argv) {
+    QSurfaceFormat format = QSurfaceFormat::defaultFormat();
+    format.setDepthBufferSize(24);
+    QSurfaceFormat::setDefaultFormat(format);
+    QApplication app(argc, argv);
+    double seconds = 60.0, max_growth = -1.0;
+    unsigned seed = 1;
+    QString log_path, replay_path;
+    const QStringList args = app.arguments();
+    for (int i = 1; i < args.size(); ++i) {
+        const QString& arg = args[i];
+        const bool has_value = i + 1 < args.size();
+        if (arg == "--seconds" && has_value) seconds = args[++i].toDouble();
+        else if (arg == "--seed" && has_value) seed = args[++i].toUInt();
+        else if (arg == "--log" && has_value) log_path = args[++i];
+        else if (arg == "--replay" && has_value) replay_path = args[++i];
+        else if (arg == "--max-rss-growth" && has_value) max_growth = args[++i].toDouble();
+        else {
+            std::fprintf(stderr, "snaxels-robot: unknown argument %s\n", qPrintable(arg));
+            return 2;
+        }
+    }
+    std::vector<Action> replay;
+    if (!replay_path.isEmpty()) {
+        std::ifstream in(replay_path.toStdString());
+        if (!in) {
+            std::fprintf(stderr, "snaxels-robot: cannot read %s\n", qPrintable(replay_path));
+            return 2;
+        }
+        for (std::string line; std::getline(in, line);) {
+            Action a{Act::Wait};
+            if (!line.empty() && line[0] != '#' && !parse_action(line, a)) {
+                std::fprintf(stderr, "snaxels-robot: %s: not an action: %s\n", qPrintable(replay_path), line.c_str());
+                return 2;
+            }
+            if (!line.empty() && line[0] != '#') replay.push_back(a);
+        }
+    }
+    std::ofstream log;
+    if (!log_path.isEmpty()) log.open(log_path.toStdString());
+
+    QTemporaryDir work;
+    MainWindow window;
+    window.resize(1100, 750);
+    window.show();
+    if (!QTest::qWaitForWindowExposed(&window)) {
+        std::fprintf(stderr, "snaxels-robot: the window did not show\n");
+        return 1;
+    }
+    AnswerMessageBoxes boxes;
+    Robot robot(window, work.path());
+    std::mt19937 rng(seed);
+    QElapsedTimer clock;
+    clock.start();
+    std::vector<long> rss;
+    std::size_t step = 0;
+    std::printf("snaxels-robot: seed %u, %s\n", seed,
+                replay.empty() ? qPrintable(QString("%1 s").arg(seconds)) : qPrintable(QString("replaying %1 actions").arg(replay.size())));
+    int counts[int(Act::Count)] = {};
+    while (replay.empty() ? clock.elapsed() < seconds * 1000.0 : step < replay.size()) {
+        const Action a = replay.empty() ? draw(rng) : replay[step];
+        if (log.is_open()) log << a.text() << '\n' << std::flush; // written before it runs: a crash keeps it
+        ++counts[int(a.act)];
+        QString why;
+        if (!robot.perform(a, why)) {
+            std::printf("snaxels-robot: step %zu (%s): %s\n", step, a.text().c_str(), qPrintable(why));
+            return 1;
+        }
+        if (step % 25 == 0) rss.push_back(rss_kb());
+        ++step;
+    }
+    // Let what runs finish, then check the files, then close with work under way.
+    for (int i = 0; i < 600 && (window.isLoading() || window.contoursBusy() || robot.exporting()); ++i) QTest::qWait(50);
+    QString why;
+    if (!robot.finalCheck(why)) {
+        std::printf("snaxels-robot: at the end: %s\n", qPrintable(why));
+        return 1;
+    }
+    std::string summary;
+    for (int i = 0; i < int(Act::Count); ++i) summary += std::string(i ? ", " : "") + kNames[i] + " " + std::to_string(counts[i]);
+    const std::size_t warm = rss.size() / 10;
+    const long after_warmup = rss.empty() ? 0 : rss[warm], last = rss.empty() ? 0 : rss.back();
+    const double growth = after_warmup > 0 ? double(last - after_warmup) / double(after_warmup) : 0.0;
+    std::printf("snaxels-robot: %zu actions (%s); %d message boxes answered; RSS %ld KB after warm-up, %ld KB at the end "
+                "(%+.1f%%)\n",
+                step, summary.c_str(), boxes.answered, after_warmup, last, 100.0 * growth);
+    if (max_growth >= 0.0 && growth > max_growth) {
+        std::printf("snaxels-robot: RSS grew %.1f%%, more than %.1f%%\n", 100.0 * growth, 100.0 * max_growth);
+        return 1;
+    }
+    window.openMesh(SNAXELS_TEST_ASSETS "/horse.ply"); // work under way as it closes
+    window.close();
+    return 0;
+}
