@@ -265,13 +265,19 @@ int main(int argc, char** argv) {
     for (int i = 1; i < args.size(); ++i) {
         const QString& arg = args[i];
         const bool has_value = i + 1 < args.size();
-        if (arg == "--seconds" && has_value) seconds = args[++i].toDouble();
-        else if (arg == "--seed" && has_value) seed = args[++i].toUInt();
+        bool ok = true;
+        if (arg == "--seconds" && has_value) ok = (seconds = args[++i].toDouble(&ok), ok && seconds > 0.0);
+        else if (arg == "--seed" && has_value) seed = args[++i].toUInt(&ok);
         else if (arg == "--log" && has_value) log_path = args[++i];
         else if (arg == "--replay" && has_value) replay_path = args[++i];
-        else if (arg == "--max-rss-growth" && has_value) max_growth = args[++i].toDouble();
+        else if (arg == "--max-rss-growth" && has_value) ok = (max_growth = args[++i].toDouble(&ok), ok && max_growth >= 0.0);
         else {
             std::fprintf(stderr, "snaxels-robot: unknown argument %s\n", qPrintable(arg));
+            return 2;
+        }
+        if (!ok) {
+            std::fprintf(stderr, "snaxels-robot: %s needs a number (seconds above 0, a seed, a growth of 0 or more), not %s\n",
+                         qPrintable(arg), qPrintable(args[i]));
             return 2;
         }
     }
