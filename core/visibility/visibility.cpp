@@ -294,7 +294,9 @@ void VisibilitySampler::count_where_seen(const SnaxelEngine& engine, const Conto
     auto count = [&](std::int32_t s) {
         const Snaxel& sn = fronts.snaxels[s];
         const glm::dvec3 p = engine.position(sn);
-        snaxel_qi[s] = qi(snaxel_ray(sn, p, engine.normal(sn)));
+        // Known hidden (the any-hit query said so): the count alone.
+        const Crossings c = scene_.count(snaxel_ray(sn, p, engine.normal(sn)));
+        snaxel_qi[s] = std::max(c.front, c.back);
     };
     parallel_for(fronts.loops.size(), [&](std::size_t l) {
         const FrontLoop& loop = fronts.loops[l];
