@@ -13,9 +13,16 @@ namespace snaxels {
 void Camera::screen_basis(glm::dvec3& right, glm::dvec3& screen_up) const {
     const glm::dvec3 f = forward();
     glm::dvec3 u = glm::normalize(up);
-    // Looking straight along `up`: fall back to another world axis.
-    if (std::abs(glm::dot(f, u)) > 0.999) u = std::abs(f.z) < 0.9 ? glm::dvec3(0, 0, 1) : glm::dvec3(1, 0, 0);
-    right = glm::normalize(glm::cross(f, u));
+    // Looking straight along `up` (no direction is left across it): fall
+    // back to another world axis. Only then: a view a degree off the up
+    // axis (an orbit's top view) still takes its roll from `up`, as the
+    // orbit's own basis does.
+    glm::dvec3 across = glm::cross(f, u);
+    if (glm::dot(across, across) < 1e-18) {
+        u = std::abs(f.z) < 0.9 ? glm::dvec3(0, 0, 1) : glm::dvec3(1, 0, 0);
+        across = glm::cross(f, u);
+    }
+    right = glm::normalize(across);
     screen_up = glm::cross(right, f);
 }
 
