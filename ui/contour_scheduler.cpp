@@ -16,28 +16,30 @@ ContourScheduler::ContourScheduler(std::function<std::optional<Work>()> source, 
 ContourScheduler::~ContourScheduler() { watcher_.waitForFinished(); }
 
 void ContourScheduler::schedule() {
-    if (watcher_.isRunning()) pending_ = true;
+    if (running_) pending_ = true;
     else if (!timer_->isActive()) timer_->start();
 }
 
 void ContourScheduler::invalidate() {
-    if (watcher_.isRunning()) stale_ = pending_ = true;
+    if (running_) stale_ = pending_ = true;
 }
 
-bool ContourScheduler::busy() const { return timer_->isActive() || watcher_.isRunning(); }
+bool ContourScheduler::busy() const { return timer_->isActive() || running_; }
 
 void ContourScheduler::start() {
-    if (watcher_.isRunning()) {
+    if (running_) {
         pending_ = true;
         return;
     }
     std::optional<Work> work = source_();
     if (!work) return;
     pending_ = stale_ = false;
+    running_ = true;
     watcher_.setFuture(QtConcurrent::run(std::move(*work)));
 }
 
 void ContourScheduler::onFinished() {
+    running_ = false;
     const bool again = pending_, drop = stale_;
     // A result for the mesh shown is the newest the view can have, even
     // when the input moved on meanwhile; one for another mesh is not.

@@ -50,6 +50,9 @@ class ContourScheduler : public QObject {
     std::function<std::optional<Work>()> source_;
     QTimer* timer_;
     QFutureWatcher<OverlayResult> watcher_;
+    /// From a computation's start until its end is handled: the watcher
+    /// stops running when the thread ends, before its result is delivered.
+    bool running_ = false;
     bool pending_ = false; ///< asked for while one was running
     bool stale_ = false;   ///< the running one's result is for another mesh
 };

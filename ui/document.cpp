@@ -14,6 +14,7 @@ Document::Document(QString style_text, QObject* parent)
     } catch (const StyleError&) {
         parsed_ = default_style();
     }
+    historyStart_ = edited();
 }
 
 AnimationJob Document::animationJob() const {
@@ -27,8 +28,7 @@ void Document::edit(const T& now, const T& value, const QString& text, int id, v
                     bool mergeable) {
     if (value == now) return;
     // Pushing the step runs its redo, which makes the change.
-    undo_->push(new SetValueCommand<T>(text, id, now, value, [this, assign](const T& v) { (this->*assign)(v); },
-                                       mergeable));
+    undo_->push(new SetValueCommand<T>(text, id, now, value, this, assign, mergeable));
 }
 
 void Document::setStyleText(const QString& text) {
@@ -109,7 +109,7 @@ void Document::startNew(const QString& spec, std::shared_ptr<const LoadedMesh> m
     resetAnimation(animation);
     setFrame(0);
     if (light_) assignLight(std::nullopt); // the user's light was the last file's
-    undo_->clear();                       // the history belongs to its document
+    startHistory(); // the history belongs to its document
     if (!projectPath_.isEmpty()) {
         projectPath_.clear();
         emit projectPathChanged(projectPath_);
@@ -120,14 +120,34 @@ void Document::startNew(const QString& spec, std::shared_ptr<const LoadedMesh> m
 
 void Document::resetStyleText(const QString& text) {
     if (text != style_) assignStyle(text);
+    changedOutsideHistory();
 }
 
 void Document::resetView(const OrbitView& view) {
     if (view != view_) assignView(view);
+    changedOutsideHistory();
 }
 
 void Document::resetAnimation(const AnimationSpec& animation) {
     if (animation != animation_) assignAnimation(animation);
+    changedOutsideHistory();
+}
+
+void Document::restore(const Edited& edited) {
+    if (edited.style != style_) assignStyle(edited.style);
+    if (edited.view != view_) assignView(edited.view);
+    if (edited.light != light_) assignLight(edited.light);
+    if (edited.animation != animation_) assignAnimation(edited.animation);
+    changedOutsideHistory();
+}
+
+void Document::startHistory() {
+    undo_->clear();
+    historyStart_ = edited();
+}
+
+void Document::changedOutsideHistory() {
+    if (undo_->count() == 0) historyStart_ = edited();
 }
 
 void Document::markModified() { setMeshChanged(true); }
@@ -168,7 +188,7 @@ void Document::load(const Project& project, const QString& path, const QString& 
     emit frameChanged(frame_);
     assignLight(project.light);
     assignView(project.view);
-    undo_->clear();
+    startHistory();
     projectPath_ = path;
     emit projectPathChanged(projectPath_);
     setMeshChanged(false);

@@ -29,6 +29,24 @@ class Document : public QObject {
     /// An empty document with @p style_text (the style a new document starts with).
     explicit Document(QString style_text, QObject* parent = nullptr);
 
+    /// The parts of the document that edits change, each an undo step.
+    struct Edited {
+        QString style;
+        OrbitView view;
+        std::optional<Light> light;
+        AnimationSpec animation;
+        bool operator==(const Edited&) const = default;
+    };
+    Edited edited() const { return {style_, view_, light_, animation_}; }
+    /// What the edited parts were where the undo history begins (a mesh
+    /// or project opened, or changes that are not edits made while the
+    /// history was empty): the undo stack's steps, carried out on these
+    /// from the first, give edited() at the stack's index.
+    const Edited& historyStart() const { return historyStart_; }
+    /// Sets the edited parts to @p edited with no undo step (the start of
+    /// a replay on a fresh document).
+    void restore(const Edited& edited);
+
     QUndoStack* undoStack() const { return undo_; }
 
     const QString& styleText() const { return style_; }
@@ -121,6 +139,11 @@ class Document : public QObject {
     void assignLight(const std::optional<Light>& light);
     void assignAnimation(const AnimationSpec& animation);
     void setMeshChanged(bool changed);
+    /// Clears the undo history, which now begins at the present state.
+    void startHistory();
+    /// A change that is not an edit: it moves the history's start while
+    /// the history is empty.
+    void changedOutsideHistory();
 
     QUndoStack* undo_;
     QString defaultStyle_;
@@ -134,6 +157,7 @@ class Document : public QObject {
     std::shared_ptr<const LoadedMesh> mesh_;
     QString projectPath_;
     bool meshChanged_ = false; ///< a new mesh, or a difference no undo step holds
+    Edited historyStart_;
 };
 
 } // namespace snaxels::ui

@@ -187,10 +187,12 @@ void MainWindow::connectControllers() {
         scheduleContours();
     });
     connect(export_, &AnimationExport::finished, this, [this](const QString& path) {
+        returnFreedMemorySoon();
         reportExported(path);
         emit exportFinished(path);
     });
     connect(export_, &AnimationExport::failed, this, [this](const QString& error) {
+        returnFreedMemorySoon();
         statusBar()->showMessage(error, 8000);
         // A failure is said in a box; a cancel the user asked for is not.
         if (error != AnimationExport::cancelledMessage())
@@ -323,8 +325,12 @@ std::optional<std::function<OverlayResult()>> MainWindow::contourWork() const {
     std::optional<CameraShot> shot;
     if (const AnimationSpec spec = timeline_->spec(); !spec.camera.empty()) shot = CameraShot{spec, frame};
     // Through a file's camera the view's orbit is not the camera: the
-    // turntable's orbit is the shot's to apply.
-    const Camera seen = shot ? view_->baseCamera() : camera;
+    // turntable's orbit is the shot's to apply. A turntable's frame turns
+    // the view's camera as the export turns it (the same arithmetic, so the
+    // pane holds the export's frame to the bit).
+    Camera seen = shot ? view_->baseCamera() : camera;
+    if (const AnimationSpec spec = timeline_->spec(); !shot && spec.kind == AnimationSpec::Kind::Turntable)
+        seen = camera_at_frame(spec, view_->baseCamera(), nullptr, timeline_->sourceFrame(), meshCentre());
     return [mesh, scene, seen, style, light, pose, parabolic, showParabolic, frame, shot] {
         OverlayResult result = compute_overlay(*mesh, *scene, seen, style, light, pose, parabolic, showParabolic, shot);
         result.frame = frame;

@@ -134,6 +134,11 @@ class MainWindow : public QMainWindow {
     void dropEvent(QDropEvent* event) override;
 
   private:
+    /// Once the window is idle (a second after nothing runs), gives the
+    /// memory freed by a mesh replaced or an export ended back to the
+    /// system: the C library keeps what its threads freed otherwise, and
+    /// the window's footprint would creep up over a long session.
+    void returnFreedMemorySoon();
     /// Starts reading @p spec for the document (opening a mesh, a project's
     /// mesh or a sequence's first file, which have asked about unsaved
     /// changes already).
@@ -215,6 +220,7 @@ class MainWindow : public QMainWindow {
     // The document: what a project file keeps, its undo stack and state. The
     // widgets show it; their edits go to its setters.
     Document* document_ = nullptr;
+    QTimer* memoryTimer_ = nullptr;
     MeshLoader* loader_;
     ContourScheduler* contours_;
     ParabolicSearch* parabolic_;

@@ -2,6 +2,10 @@
 // exporting, recent files, drag-and-drop and closing.
 #include "ui/mainwindow.h"
 
+#ifdef __GLIBC__
+#include <malloc.h>
+#endif
+
 #include <QCloseEvent>
 #include <QDir>
 #include <QDragEnterEvent>
@@ -29,6 +33,7 @@
 namespace snaxels::ui {
 
 void MainWindow::commitWidgets() {
+    styleEditor_->applyPending();
     document_->setStyleText(styleEditor_->text());
     document_->setView(viewState());
     document_->setAnimation(timeline_->spec());
@@ -66,7 +71,23 @@ void MainWindow::onLoadFailed(const LoadResult& result) {
     if (wasProject) emit projectFailed(message);
 }
 
+void MainWindow::returnFreedMemorySoon() {
+    if (!memoryTimer_) {
+        memoryTimer_ = new QTimer(this);
+        memoryTimer_->setSingleShot(true);
+        memoryTimer_->setInterval(1000);
+        connect(memoryTimer_, &QTimer::timeout, this, [this] {
+            if (isLoading() || contoursBusy() || export_->running() || parabolic_->running()) return memoryTimer_->start();
+#ifdef __GLIBC__
+            malloc_trim(0);
+#endif
+        });
+    }
+    memoryTimer_->start();
+}
+
 void MainWindow::onLoadFinished(const LoadResult& result) {
+    returnFreedMemorySoon(); // the last mesh's memory, once nothing holds it
     contours_->invalidate(); // what is under way is of the old mesh
     scene_ = result.scene;
     parabolic_->setMesh(scene_->rest);
@@ -209,6 +230,7 @@ void MainWindow::openFile(const QString& path) {
 }
 
 bool MainWindow::maybeSave() {
+    commitWidgets(); // typing not applied yet is an unsaved change too
     if (!isModified()) return true;
     const QString name = !document_->projectPath().isEmpty() ? QFileInfo(document_->projectPath()).fileName()
                          : document_->meshSpec().isEmpty() ? tr("this project")

@@ -71,10 +71,23 @@ void MainWindow::createMenus() {
     quit->setShortcut(QKeySequence::Quit);
 
     QMenu* edit = menuBar()->addMenu(tr("&Edit"));
-    QAction* undo = document_->undoStack()->createUndoAction(this, tr("&Undo"));
+    // Typing the style editor has not applied yet becomes a step first, so
+    // Undo takes back the latest typing rather than the step before it.
+    QUndoStack* stack = document_->undoStack();
+    QAction* undo = stack->createUndoAction(this, tr("&Undo"));
     undo->setShortcut(QKeySequence::Undo);
-    QAction* redo = document_->undoStack()->createRedoAction(this, tr("&Redo"));
+    disconnect(undo, &QAction::triggered, stack, &QUndoStack::undo);
+    connect(undo, &QAction::triggered, this, [this, stack] {
+        styleEditor_->applyPending();
+        stack->undo();
+    });
+    QAction* redo = stack->createRedoAction(this, tr("&Redo"));
     redo->setShortcut(QKeySequence::Redo);
+    disconnect(redo, &QAction::triggered, stack, &QUndoStack::redo);
+    connect(redo, &QAction::triggered, this, [this, stack] {
+        styleEditor_->applyPending();
+        stack->redo();
+    });
     edit->addAction(undo);
     edit->addAction(redo);
 

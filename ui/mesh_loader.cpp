@@ -26,13 +26,17 @@ LoadResult loadInBackground(const QString& spec) {
 } // namespace
 
 MeshLoader::MeshLoader(QObject* parent) : QObject(parent) {
-    connect(&watcher_, &QFutureWatcher<LoadResult>::finished, this, [this] { emit finished(watcher_.result()); });
+    connect(&watcher_, &QFutureWatcher<LoadResult>::finished, this, [this] {
+        loading_ = false;
+        emit finished(watcher_.result());
+    });
 }
 
 MeshLoader::~MeshLoader() { watcher_.waitForFinished(); }
 
 bool MeshLoader::load(const QString& spec) {
-    if (watcher_.isRunning()) return false;
+    if (loading_) return false;
+    loading_ = true;
     spec_ = spec;
     watcher_.setFuture(QtConcurrent::run(loadInBackground, spec));
     return true;

@@ -32,7 +32,9 @@ class MeshLoader : public QObject {
     /// Starts reading @p spec (a file path or proc:NAME[:FACES]); false
     /// when a load is under way (nothing starts then).
     bool load(const QString& spec);
-    bool loading() const { return watcher_.isRunning(); }
+    /// A load is under way: from load() until finished() is emitted (the
+    /// watcher stops running when the thread ends, before that).
+    bool loading() const { return loading_; }
     /// The spec being read, or last read.
     const QString& spec() const { return spec_; }
 
@@ -42,6 +44,7 @@ class MeshLoader : public QObject {
   private:
     QString spec_;
     QFutureWatcher<LoadResult> watcher_;
+    bool loading_ = false;
 };
 
 } // namespace snaxels::ui

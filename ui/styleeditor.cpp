@@ -457,6 +457,12 @@ void StyleEditor::setSharpAngle(const QString& value) {
     apply(); // at once: one edit of the document
 }
 
+void StyleEditor::applyPending() {
+    if (!debounce_.isActive()) return;
+    debounce_.stop();
+    apply();
+}
+
 void StyleEditor::setText(const QString& text, const QString& source) {
     source_ = source;
     edit_->setPlainText(text);

@@ -47,6 +47,10 @@ class StyleEditor : public QWidget {
     QString text() const { return edit_->toPlainText(); }
     /// Replaces the text (a preset or a file) and applies it at once.
     void setText(const QString& text, const QString& source);
+    /// Typing not applied yet (it is applied when typing pauses).
+    bool pending() const { return debounce_.isActive(); }
+    /// Applies typing not applied yet at once (before a save, an undo).
+    void applyPending();
     /// The last parse problem, "LINE:COL: message", or empty.
     QString problem() const { return problem_; }
     QPlainTextEdit* editor() const { return edit_; }

@@ -5,27 +5,40 @@
 // kind in quick succession (wheel turns, spin-box clicks) merge into one.
 
 #include <chrono>
-#include <functional>
 #include <utility>
 
 #include <QUndoCommand>
+
+#include "ui/document.h"
 
 namespace snaxels::ui {
 
 /// Ids of mergeable steps; each value type has its own.
 enum UndoId { kUndoStyle = 1, kUndoCamera, kUndoLight, kUndoAnimation };
 
-template <class T>
-class SetValueCommand : public QUndoCommand {
+/// A step on a document's undo stack, which can also be carried out on
+/// another document (replaying a history onto a fresh document must give
+/// the state the stack stands at).
+class DocumentStep : public QUndoCommand {
   public:
-    /// Redo applies @p after through @p apply, undo @p before.
-    SetValueCommand(const QString& text, int id, T before, T after, std::function<void(const T&)> apply,
-                    bool mergeable = true)
-        : QUndoCommand(text), id_(mergeable ? id : -1), before_(std::move(before)), after_(std::move(after)),
-          apply_(std::move(apply)), stamp_(std::chrono::steady_clock::now()) {}
+    using QUndoCommand::QUndoCommand;
+    /// Sets on @p other what redo sets on this step's document (no undo step there).
+    virtual void applyTo(Document& other) const = 0;
+};
 
-    void undo() override { apply_(before_); }
-    void redo() override { apply_(after_); }
+template <class T>
+class SetValueCommand : public DocumentStep {
+  public:
+    using Assign = void (Document::*)(const T&);
+    /// Redo applies @p after to @p document through @p assign, undo @p before.
+    SetValueCommand(const QString& text, int id, T before, T after, Document* document, Assign assign,
+                    bool mergeable = true)
+        : DocumentStep(text), id_(mergeable ? id : -1), before_(std::move(before)), after_(std::move(after)),
+          document_(document), assign_(assign), stamp_(std::chrono::steady_clock::now()) {}
+
+    void undo() override { (document_->*assign_)(before_); }
+    void redo() override { (document_->*assign_)(after_); }
+    void applyTo(Document& other) const override { (other.*assign_)(after_); }
     int id() const override { return id_; }
     bool mergeWith(const QUndoCommand* other) override {
         const auto* o = static_cast<const SetValueCommand*>(other); // same id: same type
@@ -39,7 +52,8 @@ class SetValueCommand : public QUndoCommand {
   private:
     int id_;
     T before_, after_;
-    std::function<void(const T&)> apply_;
+    Document* document_;
+    Assign assign_;
     std::chrono::steady_clock::time_point stamp_;
 };
 

@@ -58,6 +58,7 @@
 
 #include "snaxels/mesh/procedural.h"
 #include "snaxels/project/project.h"
+#include "ui/document.h"
 #include "ui/mainwindow.h"
 #include "ui/meshview.h"
 #include "ui/objects_panel.h"
@@ -807,6 +808,50 @@ class TestMainWindow : public QObject {
         QVERIFY(window.close());
         QVERIFY(asked);
         QVERIFY(!window.isModified());
+    }
+
+    // Typing the editor has not applied yet (it waits for a pause) is an
+    // edit like any other: Undo takes it back first, and closing asks about it.
+    void typingNotYetAppliedIsUndoneFirstAndNeverLost() {
+        QTemporaryDir dir;
+        MainWindow window;
+        QVERIFY(showWithMesh(window, QString(SNAXELS_TEST_ASSETS) + "/spot.obj"));
+        QPlainTextEdit* editor = window.styleEditor()->editor();
+        QAction* undo = nullptr;
+        QAction* redo = nullptr;
+        for (QAction* a : window.findChildren<QAction*>()) {
+            if (a->shortcut() == QKeySequence(QKeySequence::Undo)) undo = a;
+            if (a->shortcut() == QKeySequence(QKeySequence::Redo)) redo = a;
+        }
+        QVERIFY(undo && redo);
+        const auto type = [&](const QString& text) {
+            editor->setFocus();
+            editor->moveCursor(QTextCursor::End);
+            QTest::keyClicks(editor, text);
+        };
+        const QString original = window.document()->styleText();
+        type("<!--a-->");
+        QTest::qWait(1900); // applied after the pause, and too late to merge with what follows
+        QCOMPARE(window.document()->styleText(), original + "<!--a-->");
+        type("<!--b-->");
+        QVERIFY(window.styleEditor()->pending());
+        undo->trigger(); // at once: the typing becomes a step, which is undone
+        QCOMPARE(window.document()->styleText(), original + "<!--a-->");
+        QCOMPARE(editor->toPlainText(), original + "<!--a-->");
+        redo->trigger();
+        QCOMPARE(window.document()->styleText(), original + "<!--a-->" + "<!--b-->");
+        QTest::qWait(400);
+        QCOMPARE(window.document()->styleText(), original + "<!--a-->" + "<!--b-->");
+
+        // Saved, then typed into and closed at once: the close asks.
+        QVERIFY(window.saveProject(dir.filePath("p.snaxels")));
+        QVERIFY(!window.isModified());
+        type("<!--c-->");
+        bool asked = false;
+        answerUnsavedPrompt(QMessageBox::Save, &asked);
+        QVERIFY(window.close());
+        QVERIFY(asked);
+        QVERIFY(readAll(dir.filePath("p.snaxels")).contains("<!--c-->"));
     }
 
     // Opening a mesh starts a new untitled document: it asks about unsaved
