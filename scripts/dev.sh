@@ -9,6 +9,10 @@
 #   scripts/dev.sh sanitize     clang build with AddressSanitizer and
 #                               UndefinedBehaviorSanitizer (build-sanitize/);
 #                               runs the core and cli test labels
+#   scripts/dev.sh sanitize-robot SECONDS [SEED]  the robot in a clang
+#                               build with AddressSanitizer and
+#                               UndefinedBehaviorSanitizer of the window, the
+#                               importer and snaxels-cli (build-sanitize-gui/)
 #   scripts/dev.sh fuzz [SECONDS]  builds the libFuzzer targets (fuzz/) in
 #                               build-sanitize/ and runs each for SECONDS
 #                               (default 60) on its corpus
@@ -19,11 +23,26 @@ cd "$(dirname "$0")/.."
 
 action=${1:-}
 case "$action" in
-  run|test|build|sanitize|fuzz|robot) shift ;;
-  *) echo "usage: scripts/dev.sh run [MESH] | test | build | sanitize | fuzz [SECONDS] | robot SECONDS [SEED]" >&2; exit 2 ;;
+  run|test|build|sanitize|fuzz|robot|sanitize-robot) shift ;;
+  *) echo "usage: scripts/dev.sh run [MESH] | test | build | sanitize | fuzz [SECONDS] | robot SECONDS [SEED] | sanitize-robot SECONDS [SEED]" >&2; exit 2 ;;
 esac
 
 bash scripts/install-deps.sh
+
+if [ "$action" = sanitize-robot ]; then
+  san_dir=${SNAXELS_SANITIZE_GUI_BUILD_DIR:-build-sanitize-gui}
+  CC=clang CXX=clang++ cmake -S . -B "$san_dir" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo \
+    -DSNAXELS_SANITIZE=ON -DSNAXELS_BUILD_BENCH=OFF -DSNAXELS_WERROR=OFF
+  cmake --build "$san_dir" -j2 --target snaxels-robot snaxels-import snaxels-cli
+  # Leaks are reported at exit; Qt, fontconfig and Mesa keep caches of
+  # their own until then (scripts/lsan-gui.supp names each, with Assimp's).
+  export ASAN_OPTIONS=detect_leaks=1:abort_on_error=0
+  export UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
+  export LSAN_OPTIONS=suppressions=$PWD/scripts/lsan-gui.supp:print_suppressions=0
+  seed=${2:-$RANDOM}
+  exec xvfb-run -a -s "-screen 0 1280x800x24" "$san_dir/bin/snaxels-robot" --seconds "${1:-60}" --seed "$seed" \
+    --log "robot-sanitize-$seed.log"
+fi
 
 if [ "$action" = sanitize ] || [ "$action" = fuzz ]; then
   san_dir=${SNAXELS_SANITIZE_BUILD_DIR:-build-sanitize}
