@@ -65,7 +65,13 @@ MainWindow::MainWindow(QWidget* parent)
     restoreState(settings.value("window/state").toByteArray());
 }
 
-MainWindow::~MainWindow() = default; // the controllers stop and wait for their threads
+MainWindow::~MainWindow() {
+    // QWidget's destructor deletes the children while the connections to
+    // this window still stand: the undo stack, cleared as the document
+    // goes, would call updateTitle on a window that is no longer one.
+    disconnect(document_->undoStack(), nullptr, this, nullptr);
+    disconnect(document_, nullptr, this, nullptr);
+} // the controllers stop and wait for their threads
 
 void MainWindow::createDocks() {
     // The style editor, docked; the text it takes up is the document's style.
