@@ -401,6 +401,7 @@ int main(int argc, char** argv) {
     QSurfaceFormat format = QSurfaceFormat::defaultFormat();
     format.setDepthBufferSize(24);
     QSurfaceFormat::setDefaultFormat(format);
+    std::setvbuf(stdout, nullptr, _IOLBF, 0); // each line out at once: a sanitizer ends the process without flushing
     QApplication app(argc, argv);
     QStandardPaths::setTestModeEnabled(true); // the user's settings and recent files stay untouched
     double seconds = 60.0, max_growth = -1.0;
