@@ -330,16 +330,17 @@ std::optional<std::function<OverlayResult()>> MainWindow::contourWork() const {
     const int frame = timeline_->frame();
     std::optional<CameraShot> shot;
     if (const AnimationSpec spec = timeline_->spec(); !spec.camera.empty()) shot = CameraShot{spec, frame};
-    // Through a file's camera the view's orbit is not the camera: the
-    // turntable's orbit is the shot's to apply. A turntable's frame turns
-    // the view's camera as the export turns it (the same arithmetic, so the
-    // pane holds the export's frame to the bit).
-    Camera seen = shot ? view_->baseCamera() : camera;
-    if (const AnimationSpec spec = timeline_->spec(); !shot && spec.kind == AnimationSpec::Kind::Turntable)
-        seen = camera_at_frame(spec, view_->baseCamera(), nullptr, timeline_->sourceFrame(), meshCentre());
-    return [mesh, scene, seen, style, light, pose, parabolic, showParabolic, frame, shot] {
+    // The camera the export starts from (the model's up as its up), turned
+    // to the frame as the export turns it: the same arithmetic, so the pane
+    // holds the export's frame to the bit. Through a file's camera the
+    // view's orbit is not the camera: the shot applies the turntable.
+    const Camera seen = shot ? view_->baseCamera()
+                             : camera_at_frame(timeline_->spec(), view_->baseCamera(), nullptr,
+                                               timeline_->sourceFrame(), meshCentre());
+    return [mesh, scene, camera, seen, style, light, pose, parabolic, showParabolic, frame, shot] {
         OverlayResult result = compute_overlay(*mesh, *scene, seen, style, light, pose, parabolic, showParabolic, shot);
         result.frame = frame;
+        if (!shot) result.camera = camera; // the 3-D view's own: its lines are current while it has not moved
         return result;
     };
 }

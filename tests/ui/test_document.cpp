@@ -2,7 +2,10 @@
 // steps, undo and redo restoring exact values and telling observers, the
 // modified state, and project files written and read back. Expected values
 // are spelled out here, not computed by the code under test.
+#include <atomic>
+#include <chrono>
 #include <cmath>
+#include <thread>
 
 #include <QFile>
 #include <QSignalSpy>
@@ -13,7 +16,9 @@
 #include "snaxels/animation/pipeline.h"
 #include "snaxels/error.h"
 #include "snaxels/project/project.h"
+#include "ui/contour_scheduler.h"
 #include "ui/document.h"
+#include "ui/undo.h"
 
 using snaxels::AnimationSpec;
 using snaxels::Light;
@@ -303,6 +308,72 @@ class TestDocument : public QObject {
         QCOMPARE(job.scene.kinds.size(), std::size_t(2));
         QCOMPARE(job.scene.light.dir.x, 1.0);
         QCOMPARE(job.animation.frames, 48);
+    }
+
+    // The undo stack's steps, carried out on a fresh document from where
+    // the history began, give the document's state at the stack's index,
+    // after undo, redo, merges and changes that are not edits alike.
+    void theHistoryReplaysOntoAFreshDocument() {
+        Document doc("<style/>");
+        doc.resetView(view(0.1, 0.2, 3.0)); // not an edit, with no history yet: where it begins
+        QVERIFY(doc.historyStart().view == view(0.1, 0.2, 3.0));
+        doc.setStyleText("<style><canvas width=\"300\"/></style>");
+        pastMergeWindow();
+        doc.setView(view(0.5, 0.2, 3.0));
+        doc.setView(view(0.7, 0.1, 3.0)); // merges with the one before
+        doc.setLight(directional(0, 1, 0));
+        AnimationSpec spin;
+        spin.kind = AnimationSpec::Kind::LightOrbit;
+        doc.setAnimation(spin);
+        const auto replayed = [&doc] {
+            Document fresh("<other/>");
+            fresh.restore(doc.historyStart());
+            for (int i = 0; i < doc.undoStack()->index(); ++i)
+                dynamic_cast<const snaxels::ui::DocumentStep*>(doc.undoStack()->command(i))->applyTo(fresh);
+            return fresh.edited();
+        };
+        QCOMPARE(doc.undoStack()->count(), 4);
+        QVERIFY(replayed() == doc.edited());
+        doc.undoStack()->undo();
+        doc.undoStack()->undo();
+        QVERIFY(doc.edited().view == view(0.7, 0.1, 3.0));
+        QVERIFY(!doc.edited().light.has_value());
+        QVERIFY(replayed() == doc.edited());
+        doc.undoStack()->undo();
+        doc.undoStack()->undo();
+        QCOMPARE(doc.edited().style, QString("<style/>"));
+        QVERIFY(replayed() == doc.edited());
+        doc.undoStack()->redo();
+        QVERIFY(replayed() == doc.edited());
+        // A change that is not an edit, with history: the start stays.
+        doc.resetView(view(1.0, 0.0, 2.0));
+        QVERIFY(doc.historyStart().view == view(0.1, 0.2, 3.0));
+    }
+
+    // The contour scheduler is busy until a computation's result has been
+    // handed on: between the thread's end and the result's delivery it was
+    // not, and the window called itself idle with a stale drawing.
+    void theSchedulerIsBusyUntilTheResultIsHandedOn() {
+        std::atomic<bool> started{false}, go{false}, done{false};
+        snaxels::ui::ContourScheduler scheduler([&]() -> std::optional<snaxels::ui::ContourScheduler::Work> {
+            return snaxels::ui::ContourScheduler::Work([&] {
+                started = true;
+                while (!go) std::this_thread::sleep_for(std::chrono::milliseconds(1));
+                done = true;
+                return snaxels::ui::OverlayResult{};
+            });
+        });
+        QSignalSpy ready(&scheduler, &snaxels::ui::ContourScheduler::ready);
+        scheduler.schedule();
+        QVERIFY(scheduler.busy());
+        QTRY_VERIFY(started.load());
+        go = true;
+        while (!done) std::this_thread::sleep_for(std::chrono::milliseconds(1));
+        std::this_thread::sleep_for(std::chrono::milliseconds(200)); // the thread ends; no event is handled
+        QCOMPARE(ready.count(), 0);
+        QVERIFY(scheduler.busy());
+        QTRY_COMPARE(ready.count(), 1);
+        QVERIFY(!scheduler.busy());
     }
 
     void aFailedSaveChangesNothing() {

@@ -810,6 +810,40 @@ class TestMainWindow : public QObject {
         QVERIFY(!window.isModified());
     }
 
+    // Looking from straight above or below (the orbit's top view, at any
+    // yaw), through a turntable's frames and without one, the pane holds
+    // what snaxels-cli renders for the project saved: the export's camera
+    // takes its roll from the view as the pane's does.
+    void theTopViewExportsAsThePaneShowsIt() {
+        QTemporaryDir dir;
+        MainWindow window;
+        QVERIFY(showWithMesh(window, QString(SNAXELS_TEST_ASSETS) + "/spot.obj"));
+        const auto settle = [&window] {
+            for (int i = 0; i < 2400 && window.contoursBusy(); ++i) QTest::qWait(25);
+            return !window.contoursBusy();
+        };
+        int n = 0;
+        for (const double pitch : {snaxels::kMaxPitch, -snaxels::kMaxPitch})
+            for (const int frame : {0, 40}) {
+                snaxels::OrbitView v = window.document()->view();
+                v.yaw = 1.0;
+                v.pitch = pitch;
+                window.document()->setView(v, "Top");
+                window.timeline()->setFrame(frame);
+                QVERIFY(settle());
+                const QString project = dir.filePath(QString("top-%1.snaxels").arg(++n));
+                QVERIFY(window.saveProject(project));
+                QVERIFY(settle());
+                QProcess still;
+                still.start(QCoreApplication::applicationDirPath() + "/snaxels-cli",
+                            {"render", project, "--still", "-o", project + ".svg"});
+                QVERIFY(still.waitForFinished(180000));
+                QVERIFY2(still.exitCode() == 0, still.readAllStandardError().constData());
+                QVERIFY2(readAll(project + ".svg") == window.currentSvg(),
+                         qPrintable(QString("pitch %1, frame %2: the pane differs from render --still").arg(pitch).arg(frame)));
+            }
+    }
+
     // Typing the editor has not applied yet (it waits for a pause) is an
     // edit like any other: Undo takes it back first, and closing asks about it.
     void typingNotYetAppliedIsUndoneFirstAndNeverLost() {
