@@ -237,6 +237,8 @@ bool MainWindow::contoursBusy() const { return contours_->busy(); }
 
 bool MainWindow::isLoading() const { return loader_->loading(); }
 
+bool MainWindow::exporting() const { return export_->running(); }
+
 void MainWindow::applyFrame() {
     const AnimationSpec spec = timeline_->spec();
     if (spec.kind == AnimationSpec::Kind::Turntable) {

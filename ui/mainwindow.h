@@ -108,6 +108,8 @@ class MainWindow : public QMainWindow {
     /// Writes the SVG (or, for a .pdf path, the vector PDF) of the current
     /// frame to @p path (atomically).
     bool exportFrame(const QString& path);
+    /// An animation export is under way (its progress dialog may not show yet).
+    bool exporting() const;
     /// The SVG the pane shows: what export writes for the current view.
     const QByteArray& currentSvg() const { return svg_; }
     bool isLoading() const;

@@ -284,6 +284,7 @@ class Robot {
     }
 
     bool exporting() const {
+        if (window_.exporting()) return true;
         for (QWidget* w : QApplication::topLevelWidgets())
             if (qobject_cast<QProgressDialog*>(w) && w->isVisible()) return true;
         return false;
