@@ -413,12 +413,19 @@ int main(int argc, char** argv) {
         const QString& arg = args[i];
         const bool has_value = i + 1 < args.size();
         bool ok = true;
-        if (arg == "--seconds" && has_value) ok = (seconds = args[++i].toDouble(&ok), ok && seconds > 0.0);
-        else if (arg == "--seed" && has_value) seed = args[++i].toUInt(&ok);
-        else if (arg == "--log" && has_value) log_path = args[++i];
-        else if (arg == "--replay" && has_value) replay_path = args[++i];
-        else if (arg == "--max-rss-growth" && has_value) ok = (max_growth = args[++i].toDouble(&ok), ok && max_growth >= 0.0);
-        else {
+        if (arg == "--seconds" && has_value) {
+            seconds = args[++i].toDouble(&ok);
+            ok = ok && seconds > 0.0;
+        } else if (arg == "--seed" && has_value) {
+            seed = args[++i].toUInt(&ok);
+        } else if (arg == "--log" && has_value) {
+            log_path = args[++i];
+        } else if (arg == "--replay" && has_value) {
+            replay_path = args[++i];
+        } else if (arg == "--max-rss-growth" && has_value) {
+            max_growth = args[++i].toDouble(&ok);
+            ok = ok && max_growth >= 0.0;
+        } else {
             std::fprintf(stderr, "snaxels-robot: unknown argument %s\n", qPrintable(arg));
             return 2;
         }
