@@ -357,9 +357,20 @@ bool MainWindow::wantsParabolic() const {
 void MainWindow::onContoursReady(const OverlayResult& ready) {
     OverlayResult result = ready;
     if (!result.error.isEmpty()) {
-        statusBar()->showMessage(result.error, 8000);
+        // The frame asked for cannot be drawn (the eye inside the mesh):
+        // no drawing of another frame stands in for it, in the pane, the
+        // 3-D view's lines or Export Frame.
+        frameProblem_ = tr("This frame cannot be drawn: %1").arg(result.error);
+        svg_.clear();
+        svgPane_->setProblem(frameProblem_);
+        contourLoops_ = 0;
+        contourLabel_->setText(tr("no contours: this frame cannot be drawn"));
+        view_->setContours({}, result.camera);
+        timeline_->frameShown(result.frame);
+        emit contoursUpdated();
         return;
     }
+    frameProblem_.clear();
     if (result.geometry) view_->setPose(std::move(*result.geometry));
     view_->setRegionShading(region_shading(document_->style(), result.light, regionsAction_->isChecked()));
     contourLoops_ = result.loops;

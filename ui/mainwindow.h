@@ -112,6 +112,9 @@ class MainWindow : public QMainWindow {
     bool exporting() const;
     /// The SVG the pane shows: what export writes for the current view.
     const QByteArray& currentSvg() const { return svg_; }
+    /// Why the current frame cannot be drawn (empty when it is drawn): the
+    /// pane then holds no SVG and says this instead.
+    const QString& frameProblem() const { return frameProblem_; }
     bool isLoading() const;
 
     /// The contours currently drawn (for tests): loops and snaxels.
@@ -205,6 +208,7 @@ class MainWindow : public QMainWindow {
     MeshView* view_;
     SvgPane* svgPane_;
     QByteArray svg_;
+    QString frameProblem_;
     StyleEditor* styleEditor_;
     Timeline* timeline_;
     ObjectsPanel* objects_;

@@ -180,8 +180,9 @@ void MainWindow::dropEvent(QDropEvent* event) {
 }
 
 bool MainWindow::exportFrame(const QString& path) {
-    if (svg_.isEmpty()) { // the first drawing has not come yet (a mesh still loading): nothing is written
-        const QString message = tr("Nothing to export yet: the first frame is still being drawn.");
+    if (svg_.isEmpty()) { // the first drawing has not come yet (a mesh still loading), or cannot be made: nothing is written
+        const QString message =
+            !frameProblem_.isEmpty() ? frameProblem_ : tr("Nothing to export yet: the first frame is still being drawn.");
         QMessageBox::warning(this, tr("Export Frame"), message);
         emit exportFailed(message);
         return false;

@@ -11,15 +11,22 @@ namespace snaxels::ui {
 
 SvgPane::SvgPane(QWidget* parent) : QWidget(parent) {
     setMinimumSize(200, 200);
-    setToolTip(tr("The exported SVG of this frame. Wheel: zoom, drag: pan, double click: fit"));
+    setProblem({});
     setCursor(Qt::OpenHandCursor);
 }
 
 bool SvgPane::load(const QByteArray& svg) {
+    setProblem({});
     const bool ok = renderer_.load(svg);
     renderer_.setAspectRatioMode(Qt::KeepAspectRatio);
     update();
     return ok;
+}
+
+void SvgPane::setProblem(const QString& problem) {
+    problem_ = problem;
+    setToolTip(!problem.isEmpty() ? problem : tr("The exported SVG of this frame. Wheel: zoom, drag: pan, double click: fit"));
+    update();
 }
 
 QRectF SvgPane::fittedRect() const {
@@ -55,7 +62,16 @@ void SvgPane::fit() {
 void SvgPane::paintEvent(QPaintEvent*) {
     QPainter painter(this);
     painter.fillRect(rect(), palette().window());
-    if (!renderer_.isValid()) return;
+    if (renderer_.isValid()) paintPage(painter);
+    if (problem_.isEmpty()) return;
+    // Over a faded drawing of another frame (or nothing): why this one is missing.
+    if (renderer_.isValid()) painter.fillRect(rect(), QColor(255, 255, 255, 190));
+    const QRectF box = QRectF(rect()).adjusted(24, 24, -24, -24);
+    painter.setPen(palette().color(QPalette::WindowText));
+    painter.drawText(box, Qt::AlignCenter | Qt::TextWordWrap, problem_);
+}
+
+void SvgPane::paintPage(QPainter& painter) {
     // The page, as the exported file shows it: what lies past its canvas
     // (strokes and fills near the edge) is clipped away, as a viewer of the
     // file clips it; the page's edge is drawn round it.

@@ -6,8 +6,11 @@
 
 #include <QByteArray>
 #include <QPointF>
+#include <QString>
 #include <QSvgRenderer>
 #include <QWidget>
+
+class QPainter;
 
 namespace snaxels::ui {
 
@@ -18,6 +21,10 @@ class SvgPane : public QWidget {
 
     /// Shows @p svg, keeping the zoom and pan; false if it does not parse.
     bool load(const QByteArray& svg);
+    /// The frame the pane is for cannot be drawn: the last drawing stays,
+    /// faded, under @p problem (until the next load).
+    void setProblem(const QString& problem);
+    const QString& problem() const { return problem_; }
     QSvgRenderer* renderer() { return &renderer_; }
     double zoom() const { return zoom_; }
     QPointF offset() const { return offset_; }
@@ -38,11 +45,13 @@ class SvgPane : public QWidget {
 
   private:
     QRectF fittedRect() const;
+    void paintPage(QPainter& painter);
 
     QSvgRenderer renderer_;
     double zoom_ = 1.0;
     QPointF offset_; ///< pan in widget pixels
     QPointF lastPos_;
+    QString problem_;
 };
 
 } // namespace snaxels::ui

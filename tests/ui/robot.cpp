@@ -42,6 +42,7 @@
 #include <QMessageBox>
 #include <QPlainTextEdit>
 #include <QProcess>
+#include <QRegularExpression>
 #include <QProgressDialog>
 #include <QPushButton>
 #include <QSet>
@@ -320,6 +321,10 @@ class Robot {
     /// Stops playback and waits (a minute at most) until nothing runs.
     void settle() {
         if (window_.timeline()->playing()) QTest::keyClick(&window_, Qt::Key_Space);
+        // Space goes to a text box that has the focus: then Play > Play / Pause.
+        if (window_.timeline()->playing())
+            for (QAction* a : window_.findChildren<QAction*>())
+                if (a->shortcut() == QKeySequence(Qt::Key_Space)) a->trigger();
         for (int i = 0; i < 2400 && (window_.isLoading() || window_.contoursBusy() || window_.parabolicPending() || exporting()); ++i)
             QTest::qWait(25);
     }
@@ -329,9 +334,10 @@ class Robot {
 
     bool matchesCli(QString& why) {
         settle();
+        if (window_.timeline()->playing()) return fail(why, "Play / Pause did not stop playback");
         if (window_.isLoading() || window_.contoursBusy() || exporting()) return true; // not settled: no checkpoint
         const Document& document = *window_.document();
-        if (!document.mesh() || window_.currentSvg().isEmpty()) return true;
+        if (!document.mesh() || (window_.currentSvg().isEmpty() && window_.frameProblem().isEmpty())) return true;
         // Saved as the user saves it: what the widgets hold goes into the document first.
         const QString project = checkpoints_.filePath(QString("checkpoint-%1.snaxels").arg(++checkpointCount_));
         const QString svg = checkpoints_.filePath(QString("checkpoint-%1.svg").arg(checkpointCount_));
@@ -349,15 +355,24 @@ class Robot {
         if (!parses) return QFile::remove(project);
         QProcess cli;
         cli.start(QCoreApplication::applicationDirPath() + "/snaxels-cli", {"render", project, "--still", "-o", svg});
-        if (!cli.waitForFinished(600000) || cli.exitCode() != 0)
-            return fail(why, "snaxels-cli render " + project + " failed: " + QString::fromUtf8(cli.readAllStandardError()));
+        if (!cli.waitForFinished(600000)) return fail(why, "snaxels-cli render " + project + " did not end");
+        // A frame that cannot be drawn: the CLI refuses it too, for the reason the pane gives.
+        const QString cliError = QString::fromUtf8(cli.readAllStandardError()).trimmed().remove(QRegularExpression("^snaxels-cli: "));
+        if (cli.exitCode() != 0 && (cliError.isEmpty() || !window_.frameProblem().endsWith(cliError)))
+            return fail(why, "snaxels-cli render " + project + " failed (" + cliError + ") where the pane says: " +
+                                 (window_.frameProblem().isEmpty() ? QString("nothing (it drew the frame)") : window_.frameProblem()));
+        if (cli.exitCode() == 0 && !window_.frameProblem().isEmpty())
+            return fail(why, "the pane says " + window_.frameProblem() + " where snaxels-cli render " + project + " draws it");
         const QByteArray shown = window_.currentSvg(), rendered = read(svg);
         if (shown != rendered) {
             QFile keep(svg + ".pane.svg");
             if (keep.open(QIODevice::WriteOnly)) keep.write(shown);
             checkpoints_.setAutoRemove(false);
-            return fail(why, QString("the SVG pane (%1 bytes) differs from snaxels-cli render --still (%2 bytes); both are kept in %3")
-                                 .arg(shown.size()).arg(rendered.size()).arg(checkpoints_.path()));
+            return fail(why, QString("the SVG pane (%1 bytes) differs from snaxels-cli render --still (%2 bytes); both are kept "
+                                     "in %3 (timeline at frame %4, %5)")
+                                 .arg(shown.size()).arg(rendered.size()).arg(checkpoints_.path())
+                                 .arg(window_.timeline()->frame())
+                                 .arg(window_.timeline()->playing() ? "still playing" : "not playing"));
         }
         QFile::remove(project);
         QFile::remove(svg);

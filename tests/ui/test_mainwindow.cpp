@@ -135,6 +135,12 @@ bool showWindow(MainWindow& window, QSize size) {
     return QTest::qWaitForWindowExposed(&window);
 }
 
+/// Waits (a minute at most) until no contours are computed or due.
+bool contoursSettle(const MainWindow& window) {
+    for (int i = 0; i < 2400 && window.contoursBusy(); ++i) QTest::qWait(25);
+    return !window.contoursBusy();
+}
+
 bool showWithMesh(MainWindow& window, const QString& mesh, QSize size = {1000, 700}) {
     if (!showWindow(window, size)) return false;
     QSignalSpy contours(&window, &MainWindow::contoursUpdated);
@@ -810,6 +816,58 @@ class TestMainWindow : public QObject {
         QVERIFY(!window.isModified());
     }
 
+    // A frame that cannot be drawn (the eye inside the mesh) is said so in
+    // the pane; the drawing of the frame before does not stand in for it,
+    // and Export Frame writes nothing. snaxels-cli refuses the same frame
+    // for the same reason.
+    void aFrameThatCannotBeDrawnIsNotShownAsAnother() {
+        QTemporaryDir dir;
+        MainWindow window;
+        QVERIFY(showWithMesh(window, QString(SNAXELS_TEST_ASSETS) + "/spot.obj"));
+        QVERIFY(contoursSettle(window));
+        QVERIFY(!window.currentSvg().isEmpty());
+        QVERIFY(window.frameProblem().isEmpty());
+        const snaxels::OrbitView outside = window.document()->view();
+        snaxels::OrbitView inside = outside;
+        inside.distance = 0.02 * outside.distance; // the eye by the orbit's centre, in the cow
+        window.document()->setView(inside, "Inside");
+        QVERIFY(contoursSettle(window));
+        QVERIFY(window.currentSvg().isEmpty());
+        QVERIFY2(window.frameProblem().contains("inside the mesh"), qPrintable(window.frameProblem()));
+        QVERIFY(window.contourLoops() == 0);
+        auto* pane = window.findChild<snaxels::ui::SvgPane*>();
+        QVERIFY(pane);
+        QCOMPARE(pane->problem(), window.frameProblem());
+        const QString frame = dir.filePath("frame.svg");
+        QSignalSpy failed(&window, &MainWindow::exportFailed);
+        QTimer poll; // the warning's box
+        poll.setInterval(20);
+        QObject::connect(&poll, &QTimer::timeout, [] {
+            if (auto* box = qobject_cast<QMessageBox*>(QApplication::activeModalWidget())) box->accept();
+        });
+        poll.start();
+        QVERIFY(!window.exportFrame(frame));
+        poll.stop();
+        QCOMPARE(failed.size(), 1);
+        QCOMPARE(failed.first().first().toString(), window.frameProblem());
+        QVERIFY(!QFileInfo::exists(frame));
+        const QString project = dir.filePath("inside.snaxels");
+        QVERIFY(window.saveProject(project));
+        QProcess still;
+        still.start(QCoreApplication::applicationDirPath() + "/snaxels-cli", {"render", project, "--still", "-o", frame});
+        QVERIFY(still.waitForFinished(180000));
+        QVERIFY(still.exitCode() != 0);
+        const QString cliError = QString::fromUtf8(still.readAllStandardError()).trimmed().remove("snaxels-cli: ");
+        QVERIFY2(window.frameProblem().endsWith(cliError), qPrintable(cliError + " / " + window.frameProblem()));
+        // Back outside, the frame is drawn again and the problem is gone.
+        window.document()->setView(outside, "Outside");
+        QVERIFY(contoursSettle(window));
+        QVERIFY(!window.currentSvg().isEmpty());
+        QVERIFY(window.frameProblem().isEmpty());
+        QVERIFY(pane->problem().isEmpty());
+        QVERIFY(window.exportFrame(frame));
+    }
+
     // Looking from straight above or below (the orbit's top view, at any
     // yaw), through a turntable's frames and without one, the pane holds
     // what snaxels-cli renders for the project saved: the export's camera
@@ -818,10 +876,6 @@ class TestMainWindow : public QObject {
         QTemporaryDir dir;
         MainWindow window;
         QVERIFY(showWithMesh(window, QString(SNAXELS_TEST_ASSETS) + "/spot.obj"));
-        const auto settle = [&window] {
-            for (int i = 0; i < 2400 && window.contoursBusy(); ++i) QTest::qWait(25);
-            return !window.contoursBusy();
-        };
         int n = 0;
         for (const double pitch : {snaxels::kMaxPitch, -snaxels::kMaxPitch})
             for (const int frame : {0, 40}) {
@@ -830,10 +884,10 @@ class TestMainWindow : public QObject {
                 v.pitch = pitch;
                 window.document()->setView(v, "Top");
                 window.timeline()->setFrame(frame);
-                QVERIFY(settle());
+                QVERIFY(contoursSettle(window));
                 const QString project = dir.filePath(QString("top-%1.snaxels").arg(++n));
                 QVERIFY(window.saveProject(project));
-                QVERIFY(settle());
+                QVERIFY(contoursSettle(window));
                 QProcess still;
                 still.start(QCoreApplication::applicationDirPath() + "/snaxels-cli",
                             {"render", project, "--still", "-o", project + ".svg"});
