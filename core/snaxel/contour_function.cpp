@@ -152,9 +152,21 @@ double first_downward(double c0, double a, double b, double span) {
 
 } // namespace
 
+NormalArc normal_arc(const glm::dvec3& na, const glm::dvec3& nb) {
+    NormalArc arc;
+    arc.c = std::clamp(glm::dot(na, nb), -1.0, 1.0);
+    arc.w = std::acos(arc.c);
+    arc.s = std::sin(arc.w);
+    return arc;
+}
+
 double ContourFunction::first_zero(const glm::dvec3& na, const glm::dvec3& nb, double f_a, double f_b) const {
-    const double c = std::clamp(glm::dot(na, nb), -1.0, 1.0);
-    const double w = std::acos(c), s = std::sin(w);
+    return first_zero(na, nb, normal_arc(na, nb), f_a, f_b);
+}
+
+double ContourFunction::first_zero(const glm::dvec3& na, const glm::dvec3& nb, const NormalArc& arc, double f_a,
+                                   double f_b) const {
+    const double c = arc.c, w = arc.w, s = arc.s;
     if (s < 1e-9) {
         if (c < 0.0) return std::numeric_limits<double>::quiet_NaN(); // no unique arc
         return f_a <= 0.0 ? 0.0 : std::clamp(f_a / (f_a - f_b), 0.0, 1.0); // aligned: the slerp's limit is linear
@@ -204,17 +216,22 @@ void ContourFunction::evaluate_vertices(ElementSpan<VertexTag, const glm::dvec3>
         return;
     }
     if (closed_) { // V and L the same everywhere: evaluate() without normalizing them per vertex
-        for (const VertexId v : normals.ids()) {
-            const glm::dvec3& n = normals[v];
-            const double nv = glm::dot(n, v_);
-            double g = nv;
-            switch (spec_.kind) {
-            case ContourKind::Shadow: g = glm::dot(n, l_); break;
-            case ContourKind::Isophote: g = glm::dot(n, l_) - spec_.k; break;
-            case ContourKind::Gleam: g = glm::dot(v_, 2.0 * glm::dot(n, l_) * n - l_) - spec_.k; break;
-            default: break;
+        // One loop per kind (the kind chosen once, not per vertex).
+        auto each = [&](auto g) {
+            for (const VertexId v : normals.ids()) {
+                const glm::dvec3& n = normals[v];
+                const double nv = glm::dot(n, v_);
+                out[v] = std::min(g(n, nv), nv);
             }
-            out[v] = std::min(g, nv);
+        };
+        const double k = spec_.k;
+        switch (spec_.kind) {
+        case ContourKind::Shadow: each([&](const glm::dvec3& n, double) { return glm::dot(n, l_); }); break;
+        case ContourKind::Isophote: each([&](const glm::dvec3& n, double) { return glm::dot(n, l_) - k; }); break;
+        case ContourKind::Gleam:
+            each([&](const glm::dvec3& n, double) { return glm::dot(v_, 2.0 * glm::dot(n, l_) * n - l_) - k; });
+            break;
+        default: each([](const glm::dvec3&, double nv) { return nv; }); break;
         }
         return;
     }
@@ -223,8 +240,12 @@ void ContourFunction::evaluate_vertices(ElementSpan<VertexTag, const glm::dvec3>
 
 double slerp_dot_root(const glm::dvec3& na, const glm::dvec3& nb, double a, double b) {
     if (a <= 0.0) return 0.0;
-    const double c = std::clamp(glm::dot(na, nb), -1.0, 1.0);
-    const double w = std::acos(c), s = std::sin(w);
+    return slerp_dot_root(normal_arc(na, nb), a, b);
+}
+
+double slerp_dot_root(const NormalArc& arc, double a, double b) {
+    if (a <= 0.0) return 0.0;
+    const double c = arc.c, w = arc.w, s = arc.s;
     if (s < 1e-9) { // aligned (or opposite): the slerp's limit is linear
         const double t = a / (a - b);
         return std::clamp(t, 0.0, 1.0);
@@ -263,19 +284,16 @@ double ContourFunction::evaluate(const glm::dvec3& p, const glm::dvec3& n) const
     return nv;
 }
 
-SlerpArc::SlerpArc(const glm::dvec3& na, const glm::dvec3& nb)
-    : na_(na), nb_(nb), c_(std::clamp(glm::dot(na, nb), -1.0, 1.0)), theta_(std::acos(c_)), s_(std::sin(theta_)) {}
-
 glm::dvec3 SlerpArc::operator()(double t) const {
-    if (s_ < 1e-9) {
+    if (arc_.s < 1e-9) {
         // Aligned: the limit is na. (Opposite normals have no unique arc;
         // fall back to normalized linear interpolation.)
-        if (c_ > 0.0) return na_;
+        if (arc_.c > 0.0) return na_;
         const glm::dvec3 m = (1.0 - t) * na_ + t * nb_;
         const double len = glm::length(m);
         return len > 1e-12 ? m / len : na_;
     }
-    return (std::sin((1.0 - t) * theta_) * na_ + std::sin(t * theta_) * nb_) / s_;
+    return (std::sin((1.0 - t) * arc_.w) * na_ + std::sin(t * arc_.w) * nb_) / arc_.s;
 }
 
 glm::dvec3 slerp_normal(const glm::dvec3& na, const glm::dvec3& nb, double t) { return SlerpArc(na, nb)(t); }

@@ -2,6 +2,8 @@
 /// The implicit contour functions of the paper's "NPR Contouring" section,
 /// evaluated at a surface point with its (slerped) normal. f >= 0 is inside.
 
+#include <cmath>
+#include <limits>
 #include <span>
 #include <string>
 #include <vector>
@@ -113,6 +115,16 @@ struct ContourSpec {
     bool same_as(const ContourSpec& other) const;
 };
 
+/// The arc between two unit normals, the part of a root on a slerped edge
+/// that depends on the edge alone (so it is the same in every frame while
+/// the mesh keeps its pose): its cosine (clamped to [-1, 1]), its angle w
+/// and sin(w).
+struct NormalArc {
+    double c = 0.0, w = std::numeric_limits<double>::quiet_NaN(), s = 0.0;
+    bool known() const { return !std::isnan(w); }
+};
+NormalArc normal_arc(const glm::dvec3& na, const glm::dvec3& nb);
+
 /// f for one spec, camera and light.
 class ContourFunction {
   public:
@@ -142,6 +154,8 @@ class ContourFunction {
     /// NaN when the arc is degenerate (normals opposite) or no term crosses
     /// (rounding): the caller then brackets the root numerically.
     double first_zero(const glm::dvec3& na, const glm::dvec3& nb, double f_a, double f_b) const;
+    /// The same with the arc from @p na to @p nb given (normal_arc).
+    double first_zero(const glm::dvec3& na, const glm::dvec3& nb, const NormalArc& arc, double f_a, double f_b) const;
 
     /// f at every vertex of @p topology's pose into @p out: evaluate_vertices
     /// below, or for suggestive contours suggestive_function (kappa_r on the
@@ -166,6 +180,8 @@ class ContourFunction {
 /// (N.v = @p b < 0), as t in [0, 1]: a sin((1-t)w) + b sin(tw) = 0 with w
 /// the arc's angle, solved in closed form.
 double slerp_dot_root(const glm::dvec3& na, const glm::dvec3& nb, double a, double b);
+/// The same with the arc from @p na to @p nb given (normal_arc).
+double slerp_dot_root(const NormalArc& arc, double a, double b);
 
 /// Spherical linear interpolation of unit normals, the limit na as they align.
 glm::dvec3 slerp_normal(const glm::dvec3& na, const glm::dvec3& nb, double t);
@@ -175,12 +191,14 @@ glm::dvec3 slerp_normal(const glm::dvec3& na, const glm::dvec3& nb, double t);
 /// sin calls).
 class SlerpArc {
   public:
-    SlerpArc(const glm::dvec3& na, const glm::dvec3& nb);
+    SlerpArc(const glm::dvec3& na, const glm::dvec3& nb) : SlerpArc(na, nb, normal_arc(na, nb)) {}
+    /// With the arc between them known (normal_arc(na, nb)).
+    SlerpArc(const glm::dvec3& na, const glm::dvec3& nb, const NormalArc& arc) : na_(na), nb_(nb), arc_(arc) {}
     glm::dvec3 operator()(double t) const;
 
   private:
     glm::dvec3 na_, nb_;
-    double c_, theta_, s_;
+    NormalArc arc_;
 };
 
 } // namespace snaxels

@@ -1,8 +1,41 @@
 #include "snaxels/snaxel/fronts.h"
 
+#include <array>
+#include <memory>
+
 #include "snaxels/util/detail/parallel.h"
 
 namespace snaxels {
+namespace {
+
+/// What a front crossing an edge needs of the edge's two faces, in one
+/// record per edge (one cache line, where the faces' own arrays are four):
+/// for the face in which the edge runs from its vertex 0 to its vertex 1
+/// (side 0) and the one in which it runs back (side 1), the face's third
+/// vertex, the edge after this one in the face (from the edge's end to the
+/// third vertex) and the edge before it (from the third vertex to the
+/// edge's start). MeshTopology::kNone on a boundary side.
+struct EdgeWing {
+    VertexId third;
+    EdgeId after, before;
+};
+using EdgeWings = EdgeData<std::array<EdgeWing, 2>>;
+
+std::shared_ptr<const EdgeWings> make_edge_wings(const MeshTopology& topo) {
+    auto wings = std::make_shared<EdgeWings>(topo.n_edges());
+    for (const FaceId f : topo.faces()) {
+        const auto& fv = topo.face_vertices()[f];
+        const auto& fe = topo.face_edges()[f];
+        for (int k = 0; k < 3; ++k) {
+            const EdgeId e = fe[k];
+            const int side = topo.edge_vertices()[e][0] == fv[k] ? 0 : 1;
+            (*wings)[e][side] = EdgeWing{fv[(k + 2) % 3], fe[(k + 1) % 3], fe[(k + 2) % 3]};
+        }
+    }
+    return wings;
+}
+
+} // namespace
 
 Fronts extract_fronts(const MeshTopology& topo, const VertexData<std::uint8_t>& inside) {
     std::vector<EdgeId> crossing;
@@ -37,24 +70,24 @@ Fronts extract_fronts(const MeshTopology& topo, const VertexData<std::uint8_t>& 
     // one iteration each, so the iterations run in parallel. (The two faces
     // of an edge run it in opposite directions, as the halfedge mesh it was
     // built from guarantees, so a snaxel leaves one and enters the other.)
+    //
+    // The face a snaxel leaves is the one in which its edge runs from the
+    // inside vertex to the outside one; of its other two edges the front
+    // enters across the one from the outside vertex to the third vertex
+    // when the third is inside, else across the one from the third vertex
+    // back to the inside one.
+    const std::shared_ptr<const EdgeWings> wings = topo.connectivity()->quantities.require<EdgeWings>(
+        "edge wings", [&] { return make_edge_wings(topo); });
     parallel_for(n, [&](std::size_t i) {
         const EdgeId e = crossing_edges[i];
-        for (const FaceId f : topo.edge_faces()[e]) {
-            if (f == MeshTopology::kNone) continue;
-            const auto& fv = topo.face_vertices()[f];
-            const auto& fe = topo.face_edges()[f];
-            EdgeId leave_edge, enter_edge;
-            for (int k = 0; k < 3; ++k) {
-                const bool here = inside[fv[k]], there = inside[fv[(k + 1) % 3]];
-                if (here && !there) leave_edge = fe[k];
-                if (!here && there) enter_edge = fe[k];
-            }
-            if (leave_edge != e || enter_edge == MeshTopology::kNone) continue;
-            const std::int32_t enter = fronts.edge_snaxel[enter_edge];
-            if (enter == kNoSnaxel) continue; // (an incomplete edge list: check_fronts says so)
-            fronts.snaxels[i].next = enter;
-            fronts.snaxels[enter].prev = static_cast<std::int32_t>(i);
-        }
+        const Snaxel& s = fronts.snaxels[i];
+        const EdgeWing& wing = (*wings)[e][topo.edge_vertices()[e][0] == s.inside ? 0 : 1];
+        if (wing.third == MeshTopology::kNone) return; // the front leaves the mesh here
+        const EdgeId enter_edge = inside[wing.third] ? wing.after : wing.before;
+        const std::int32_t enter = fronts.edge_snaxel[enter_edge];
+        if (enter == kNoSnaxel) return; // (an incomplete edge list: check_fronts says so)
+        fronts.snaxels[i].next = enter;
+        fronts.snaxels[enter].prev = static_cast<std::int32_t>(i);
     }, 1024);
     // Loops: open chains from their start, then the remaining cycles.
     auto trace = [&](std::int32_t start, bool closed) {

@@ -139,17 +139,23 @@ class Sweep {
 
 double polish_root(const MeshTopology& topo, const ContourFunction& f, VertexId inside,
                    VertexId outside, double f_inside, double f_outside, double tolerance,
-                   int scan_samples) {
-    const glm::dvec3 pa = topo.positions()[inside], pb = topo.positions()[outside];
-    const glm::dvec3 na = topo.normals()[inside], nb = topo.normals()[outside];
+                   int scan_samples, NormalArc* arc) {
     if (f.linear_on_edge()) // vertex values, linear along the edge
         return f_inside > 0.0 ? std::clamp(f_inside / (f_inside - f_outside), 0.0, 1.0) : 0.0;
+    // (Each end's normal and position is read where it is needed: the
+    // reads are most of the cost of the closed forms.)
+    if (f.linear_in_normal() && f_inside <= 0.0) return 0.0;
+    const glm::dvec3 na = topo.normals()[inside], nb = topo.normals()[outside];
+    NormalArc own;
+    if (!arc) arc = &own;
+    if ((f.linear_in_normal() || f.closed_form()) && !arc->known()) *arc = normal_arc(na, nb);
     if (f.linear_in_normal()) // N.v on a slerp: one sinusoid, solved exactly
-        return slerp_dot_root(na, nb, f_inside, f_outside);
+        return slerp_dot_root(*arc, f_inside, f_outside);
     if (f.closed_form()) // sinusoids: the first crossing, exactly (no scan needed)
-        if (const double t = f.first_zero(na, nb, f_inside, f_outside); !std::isnan(t)) return t;
-    const SlerpArc arc(na, nb);
-    auto g = [&](double t) { return f((1.0 - t) * pa + t * pb, arc(t)); };
+        if (const double t = f.first_zero(na, nb, *arc, f_inside, f_outside); !std::isnan(t)) return t;
+    const glm::dvec3 pa = topo.positions()[inside], pb = topo.positions()[outside];
+    const SlerpArc slerp = arc->known() ? SlerpArc(na, nb, *arc) : SlerpArc(na, nb);
+    auto g = [&](double t) { return f((1.0 - t) * pa + t * pb, slerp(t)); };
     double t0 = 0.0, t1 = 1.0, g0 = f_inside, g1 = f_outside;
     // f may cross zero more than once on an edge (isophotes and gleams are
     // minima of sinusoids): bracket the crossing nearest the inside end.
@@ -186,15 +192,19 @@ double polish_root(const MeshTopology& topo, const ContourFunction& f, VertexId 
 }
 
 void polish_snaxels(const MeshTopology& topology, const ContourFunction& f, const EngineOptions& options,
-                    ContourResult& result) {
+                    ContourResult& result, std::vector<glm::dvec3>* positions, std::vector<NormalArc>* arcs) {
     // N.V along a slerp is one sinusoid over less than half a period: a
     // single crossing, so only the other kinds need the bracketing scan.
     const int scan = result.spec.kind == ContourKind::Visual ? 1 : options.polish_scan_samples;
     std::vector<Snaxel>& snaxels = result.fronts.snaxels;
+    if (positions) positions->resize(snaxels.size());
+    if (arcs) arcs->resize(snaxels.size());
+    const SnaxelEngine engine(topology);
     parallel_for(snaxels.size(), [&](std::size_t i) {
         Snaxel& s = snaxels[i];
         s.t = polish_root(topology, f, s.inside, s.outside, result.vertex_f[s.inside],
-                          result.vertex_f[s.outside], options.polish_tolerance, scan);
+                          result.vertex_f[s.outside], options.polish_tolerance, scan, arcs ? &(*arcs)[i] : nullptr);
+        if (positions) (*positions)[i] = engine.position(s);
     }, 1024);
 }
 

@@ -69,9 +69,13 @@ struct ContourResult {
 ContourResult lines_of(const ContourResult& result);
 
 /// Puts every snaxel of @p result.fronts at the root of @p f on its edge
-/// (polish_root, from @p result.vertex_f, the frame's f; in parallel).
+/// (polish_root, from @p result.vertex_f, the frame's f; in parallel), and
+/// with @p positions where each snaxel then is (SnaxelEngine::position).
+/// With @p arcs (one per snaxel) the arcs known there are used and the
+/// others are set where a root needs them (polish_root).
 void polish_snaxels(const MeshTopology& topology, const ContourFunction& f, const EngineOptions& options,
-                    ContourResult& result);
+                    ContourResult& result, std::vector<glm::dvec3>* positions = nullptr,
+                    std::vector<NormalArc>* arcs = nullptr);
 
 /// Fills @p result.snaxel_margin for its fronts, as its kind needs (see
 /// ContourResult::snaxel_margin; @p result.vertex_f must be the frame's f).
@@ -101,8 +105,11 @@ class SnaxelEngine {
 /// f(outside): the first sign change among @p scan_samples equal steps from
 /// the inside end, polished by the Illinois variant of regula falsi with the
 /// slerped normal until its bracket is below @p tolerance in t.
+/// @p arc, where given and known, is the arc between the edge's normals
+/// (normal_arc) and saves working it out; where given and not known, it
+/// is set to that arc when the root needs it.
 double polish_root(const MeshTopology& topology, const ContourFunction& f, VertexId inside,
                    VertexId outside, double f_inside, double f_outside, double tolerance,
-                   int scan_samples);
+                   int scan_samples, NormalArc* arc = nullptr);
 
 } // namespace snaxels

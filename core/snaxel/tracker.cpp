@@ -126,22 +126,24 @@ void ContourTracker::start(const Camera& camera, const Light& light) {
 
 void ContourTracker::track(const Camera& camera, const Light& light) {
     const auto t0 = std::chrono::steady_clock::now();
-    const SnaxelEngine engine(topo_);
     const ContourFunction f(spec_, camera, light);
     TrackedFrame prev = std::move(frame_);
     const Fronts& old = prev.contour.fronts;
     const std::vector<glm::dvec3> old_position = std::move(snaxel_position_);
+    const std::vector<NormalArc> old_arc = std::move(snaxel_arc_);
     frame_ = TrackedFrame{};
     frame_.frame = frame_number_;
     ContourResult& result = frame_.contour;
     result.spec = spec_;
 
-    // 1. f everywhere (new regions may appear anywhere) and what changed side.
+    // 1. f everywhere (new regions may appear anywhere) and what changed side,
+    // written over the frame before's (every vertex is written).
+    result.vertex_f = std::move(prev.contour.vertex_f);
     f.evaluate_vertices(topo_, result.vertex_f);
     const std::vector<VertexId> changed = flip_changed_vertices();
     sweep_parents(old, changed);
     result.fronts = extract_fronts(topo_, inside_, crossing_edges(old, changed), std::move(spare_edge_snaxel_));
-    place_snaxels(engine, f);
+    place_snaxels(f, old, old_arc);
     set_snaxel_margins(topo_, camera, result);
     if (options_.check_invariants) {
         if (const std::string problem = check_fronts(topo_, result.fronts, inside_); !problem.empty())
@@ -235,11 +237,20 @@ std::vector<EdgeId> ContourTracker::crossing_edges(const Fronts& old, const std:
 }
 
 /// Every new snaxel at its function's root on its edge, and where that is.
-void ContourTracker::place_snaxels(const SnaxelEngine& engine, const ContourFunction& f) {
-    polish_snaxels(topo_, f, options_, frame_.contour);
-    const std::vector<Snaxel>& snaxels = frame_.contour.fronts.snaxels;
-    snaxel_position_.resize(snaxels.size());
-    parallel_for(snaxels.size(), [&](std::size_t s) { snaxel_position_[s] = engine.position(snaxels[s]); }, 4096);
+void ContourTracker::place_snaxels(const ContourFunction& f, const Fronts& old, const std::vector<NormalArc>& old_arc) {
+    snaxel_arc_.clear();
+    if (f.linear_in_normal() || f.closed_form()) {
+        // The roots' closed forms start from the arc of the edge's normals;
+        // in the same pose a snaxel on the same edge has it already.
+        const std::vector<Snaxel>& snaxels = frame_.contour.fronts.snaxels;
+        snaxel_arc_.resize(snaxels.size());
+        const bool same_pose = !arc_pose_.owner_before(topo_.pose()) && !topo_.pose().owner_before(arc_pose_);
+        if (same_pose && old_arc.size() == old.snaxels.size() && old.edge_snaxel.size() == topo_.n_edges())
+            for (std::size_t i = 0; i < snaxels.size(); ++i)
+                if (const std::int32_t o = old.edge_snaxel[snaxels[i].edge]; o != kNoSnaxel) snaxel_arc_[i] = old_arc[std::size_t(o)];
+        arc_pose_ = topo_.pose();
+    }
+    polish_snaxels(topo_, f, options_, frame_.contour, &snaxel_position_, snaxel_arc_.empty() ? nullptr : &snaxel_arc_);
 }
 
 /// 4. Identities. Returns per new snaxel the old snaxel it continues or was

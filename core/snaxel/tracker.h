@@ -10,6 +10,7 @@
 /// the visual events: creation, annihilation, split and merge.
 
 #include <cstdint>
+#include <memory>
 #include <vector>
 
 #include "snaxels/snaxel/snaxel_engine.h"
@@ -64,7 +65,7 @@ class ContourTracker {
     std::vector<VertexId> flip_changed_vertices();
     void sweep_parents(const Fronts& old, const std::vector<VertexId>& changed);
     std::vector<EdgeId> crossing_edges(const Fronts& old, const std::vector<VertexId>& changed);
-    void place_snaxels(const SnaxelEngine& engine, const ContourFunction& f);
+    void place_snaxels(const ContourFunction& f, const Fronts& old, const std::vector<NormalArc>& old_arc);
     std::vector<std::int32_t> assign_identities(const TrackedFrame& prev, const std::vector<glm::dvec3>& old_position);
     void match_loops(const TrackedFrame& prev, const std::vector<glm::dvec3>& old_position,
                      const std::vector<std::int32_t>& source);
@@ -77,6 +78,11 @@ class ContourTracker {
     std::uint64_t next_id_ = 1, next_sequence_ = 1;
     VertexData<std::uint8_t> inside_;
     std::vector<glm::dvec3> snaxel_position_; ///< of the current frame's snaxels
+    /// The arcs between the normals of the current frame's snaxels' edges
+    /// (unknown where the root did not need one), and the pose they are of:
+    /// a snaxel that stays on its edge in that pose takes its arc on.
+    std::vector<NormalArc> snaxel_arc_;
+    std::weak_ptr<const MeshPose> arc_pose_;
     // Scratch, kept between frames to avoid reallocation.
     VertexData<std::int32_t> vertex_parent_; ///< the old snaxel that passed each vertex, or kNoSnaxel
     std::vector<VertexId> parented_;          ///< the vertices vertex_parent_ holds a snaxel for

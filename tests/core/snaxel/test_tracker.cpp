@@ -112,3 +112,53 @@ TEST(Tracking, SmallMotionKeepsIdentitiesAndSequences) {
     for (const auto id : second.snaxel_id) kept += before.count(id);
     EXPECT_GT(kept, second.snaxel_id.size() * 8 / 10);
 }
+
+// A tracked snaxel that stays on its edge takes on the arc between the
+// edge's normals from the frame before (its root's closed form starts
+// from it) while the mesh keeps its pose, and works it out again in a new
+// pose. Either way every root is, to the bit, the one a computation from
+// scratch finds: with an orthographic camera and a directional light, for
+// each kind that has a closed form, through a turntable in one pose and
+// then through poses whose normals differ.
+TEST(ContourTracker, TrackedRootsAreTheRootsComputedFromScratchToTheBit) {
+    const LoadedMesh m = load("spot.obj");
+    const MeshTopology rest = build_topology(m.mesh);
+    EngineOptions options;
+    options.check_invariants = false;
+    const std::vector<ContourSpec> kinds{ContourSpec{}, {ContourKind::Shadow, 0.0}, {ContourKind::Isophote, 0.5},
+                                         {ContourKind::Gleam, 0.9}};
+    std::vector<ContourTracker> trackers;
+    for (const ContourSpec& k : kinds) trackers.emplace_back(rest, k, options);
+    MeshTopology topo = rest;
+    std::size_t compared = 0;
+    for (int frame = 0; frame < 60; ++frame) {
+        if (frame >= 40) { // a new pose every frame: the normals turn a little, differently per vertex
+            auto pose = std::make_shared<MeshPose>(*rest.pose());
+            for (const VertexId v : rest.vertices()) {
+                const glm::dvec3 p = rest.positions()[v];
+                const glm::dvec3 lean(0.02 * (frame - 39) * std::sin(7.0 * p.y), 0.0, 0.02 * std::cos(5.0 * p.x));
+                pose->normals[v] = glm::normalize(rest.normals()[v] + lean);
+            }
+            topo = rest.posed(pose);
+        }
+        const Camera cam = turntable_camera(frame, 1.5);
+        Light light;
+        light.dir = glm::normalize(glm::dvec3(-0.4, 0.8, 0.6));
+        const SnaxelEngine engine(topo);
+        for (std::size_t k = 0; k < kinds.size(); ++k) {
+            const TrackedFrame& tracked = frame >= 40 ? trackers[k].step(topo, cam, light) : trackers[k].step(cam, light);
+            const ContourResult fresh = engine.compute(kinds[k], cam, light, options);
+            std::map<std::int32_t, const Snaxel*> by_edge;
+            for (const Snaxel& s : fresh.fronts.snaxels) by_edge[s.edge.index()] = &s;
+            ASSERT_EQ(tracked.contour.fronts.snaxels.size(), fresh.fronts.snaxels.size()) << "frame " << frame << ", kind " << k;
+            for (const Snaxel& s : tracked.contour.fronts.snaxels) {
+                const auto it = by_edge.find(s.edge.index());
+                ASSERT_NE(it, by_edge.end()) << "frame " << frame << ", kind " << k;
+                ASSERT_EQ(s.inside, it->second->inside);
+                ASSERT_EQ(s.t, it->second->t) << "frame " << frame << ", kind " << k << ", edge " << s.edge.index();
+                ++compared;
+            }
+        }
+    }
+    EXPECT_GT(compared, 10000u);
+}
