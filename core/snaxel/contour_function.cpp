@@ -153,11 +153,8 @@ double first_downward(double c0, double a, double b, double span) {
 } // namespace
 
 NormalArc normal_arc(const glm::dvec3& na, const glm::dvec3& nb) {
-    NormalArc arc;
-    arc.c = std::clamp(glm::dot(na, nb), -1.0, 1.0);
-    arc.w = std::acos(arc.c);
-    arc.s = std::sin(arc.w);
-    return arc;
+    const double c = std::clamp(glm::dot(na, nb), -1.0, 1.0), w = std::acos(c);
+    return NormalArc{c, w, std::sin(w)};
 }
 
 double ContourFunction::first_zero(const glm::dvec3& na, const glm::dvec3& nb, double f_a, double f_b) const {
@@ -283,6 +280,8 @@ double ContourFunction::evaluate(const glm::dvec3& p, const glm::dvec3& n) const
     }
     return nv;
 }
+
+SlerpArc::SlerpArc(const glm::dvec3& na, const glm::dvec3& nb) : na_(na), nb_(nb), arc_(normal_arc(na, nb)) {}
 
 glm::dvec3 SlerpArc::operator()(double t) const {
     if (arc_.s < 1e-9) {

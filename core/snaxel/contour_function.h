@@ -191,7 +191,7 @@ glm::dvec3 slerp_normal(const glm::dvec3& na, const glm::dvec3& nb, double t);
 /// sin calls).
 class SlerpArc {
   public:
-    SlerpArc(const glm::dvec3& na, const glm::dvec3& nb) : SlerpArc(na, nb, normal_arc(na, nb)) {}
+    SlerpArc(const glm::dvec3& na, const glm::dvec3& nb);
     /// With the arc between them known (normal_arc(na, nb)).
     SlerpArc(const glm::dvec3& na, const glm::dvec3& nb, const NormalArc& arc) : na_(na), nb_(nb), arc_(arc) {}
     glm::dvec3 operator()(double t) const;
