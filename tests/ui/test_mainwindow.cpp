@@ -898,6 +898,32 @@ class TestMainWindow : public QObject {
             }
     }
 
+    // As the window goes (the robot's defect 5, found by UBSan): QWidget's
+    // destructor deletes the document while the window is no longer a
+    // MainWindow, and the undo stack, cleared as it goes, called the
+    // window's updateTitle. No signal of the document or of its undo stack
+    // may reach the window by then.
+    void noDocumentSignalReachesTheWindowAsItGoes() {
+        auto* window = new MainWindow;
+        QVERIFY(showWithMesh(*window, QString(SNAXELS_TEST_ASSETS) + "/spot.obj"));
+        snaxels::OrbitView v = window->document()->view();
+        v.yaw += 0.5;
+        window->document()->setView(v, "Turn"); // an edit: the stack has a step to clear
+        QVERIFY(window->isModified());
+        QObject* document = window->document();
+        QObject* stack = window->undoStack();
+        const QObject* asObject = window;
+        bool checked = false, reached = false;
+        QObject::connect(document, &QObject::destroyed, [&] {
+            checked = true;
+            reached = QObject::disconnect(stack, nullptr, asObject, nullptr);
+            reached = QObject::disconnect(document, nullptr, asObject, nullptr) || reached;
+        });
+        delete window;
+        QVERIFY(checked); // the document went with the window
+        QVERIFY2(!reached, "the document or its undo stack was still connected to the window as it went");
+    }
+
     // Typing the editor has not applied yet (it waits for a pause) is an
     // edit like any other: Undo takes it back first, and closing asks about it.
     void typingNotYetAppliedIsUndoneFirstAndNeverLost() {
