@@ -141,12 +141,20 @@ constexpr double kHalfPi = 1.5707963267948966192313216916398; // std::acos(0.0),
 /// The first y in [0, span] where c0 + a cos y + b sin y turns negative
 /// (it is >= 0 at y = 0), or +inf when it does not.
 double first_downward(double c0, double a, double b, double span) {
-    const double r = std::hypot(a, b);
-    if (!(r > std::abs(c0))) return c0 < 0.0 ? 0.0 : std::numeric_limits<double>::infinity();
-    // Zeros at y = phi +- alpha; the one with phi + alpha goes down. (With
-    // no constant term, N.V's and the shadow's, alpha is acos(0): pi/2, the
-    // double acos returns for it, without the call.)
-    const double alpha = c0 == 0.0 ? kHalfPi : std::acos(-c0 / r), phi = std::atan2(b, a);
+    // Zeros at y = phi +- alpha, alpha = acos(-c0 / r); the one with phi +
+    // alpha goes down. With no constant term (N.V's and the shadow's) there
+    // are zeros unless a = b = 0 (r = hypot(a, b) > 0 otherwise, and a NaN
+    // gives no zero either way), and alpha is acos(0): pi/2, the double acos
+    // returns for it, without the calls.
+    double alpha = kHalfPi;
+    if (c0 == 0.0) {
+        if (a == 0.0 && b == 0.0) return std::numeric_limits<double>::infinity();
+    } else {
+        const double r = std::hypot(a, b);
+        if (!(r > std::abs(c0))) return c0 < 0.0 ? 0.0 : std::numeric_limits<double>::infinity();
+        alpha = std::acos(-c0 / r);
+    }
+    const double phi = std::atan2(b, a);
     double y = std::fmod(phi + alpha, kTwoPi);
     if (y < 0.0) y += kTwoPi;
     if (y > kTwoPi - 1e-12) y = 0.0; // at the start itself
