@@ -117,6 +117,7 @@ void ContourTracker::start(const Camera& camera, const Light& light) {
     frame_.snaxel_id.resize(fronts.snaxels.size());
     frame_.born_from.assign(fronts.snaxels.size(), 0);
     snaxel_position_.resize(fronts.snaxels.size());
+    snaxel_arc_.clear(); // worked out anew as the next frame's roots need them
     for (std::size_t s = 0; s < fronts.snaxels.size(); ++s) {
         frame_.snaxel_id[s] = next_id_++;
         snaxel_position_[s] = engine.position(fronts.snaxels[s]);
