@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <memory>
+#include <optional>
 #include <stdexcept>
 
 #include "snaxels/error.h"
@@ -120,10 +121,22 @@ StillOutput render_still(const LoadedMesh& mesh, const MeshTopology& topology, c
             if (std::none_of(specs.begin(), specs.end(), [&](const ContourSpec& s) { return s.line().same_as(spec); }))
                 specs.push_back(spec);
     }
+    std::unique_ptr<RayScene> own_rays;
+    if (!rays && (scene.visibility || map)) rays = (own_rays = std::make_unique<RayScene>(topology)).get();
+    // The snaxel map's rays from the vertices need only the visual
+    // contour's function, not its fronts: they are cast beside the contours.
+    std::optional<VertexSight> sight;
+    const auto visual = std::find_if(needed.begin(), needed.end(), [](const ContourSpec& s) { return s.kind == ContourKind::Visual; });
+    auto see = [&] {
+        if (map && scene.map_kind == PlanarMapKind::Snaxel && visual != needed.end())
+            sight = see_vertices(topology, *rays, scene.camera, scene.light, *visual);
+    };
     std::vector<ContourResult> all;
-    if (tracking) {
-        all = tracking->compute(topology, specs, scene.camera, scene.light, scene.engine, centre, map);
-    } else {
+    auto find_contours = [&] {
+        if (tracking) {
+            all = tracking->compute(topology, specs, scene.camera, scene.light, scene.engine, centre, map);
+            return;
+        }
         // Line sets of one line (other parts) share its computation.
         std::vector<std::size_t> first(specs.size());
         for (std::size_t i = 0; i < specs.size(); ++i)
@@ -137,13 +150,12 @@ StillOutput render_still(const LoadedMesh& mesh, const MeshTopology& topology, c
                 all[i] = all[first[i]];
                 all[i].spec = specs[i];
             }
-    }
+    };
+    parallel_invoke(find_contours, see);
     out.results.assign(std::make_move_iterator(all.begin()), std::make_move_iterator(all.begin() + std::ptrdiff_t(scene.kinds.size())));
     const std::vector<ContourResult> fill_results(std::make_move_iterator(all.begin() + std::ptrdiff_t(scene.kinds.size())),
                                                   std::make_move_iterator(all.end()));
 
-    std::unique_ptr<RayScene> own_rays;
-    if (!rays && (scene.visibility || map)) rays = (own_rays = std::make_unique<RayScene>(topology)).get();
     const ImageProjection projection(scene.camera, centre, radius, scene.style.width, scene.style.height, scene.style.margin);
     // The lines (hidden lines of every kind at once, the drawing) and the
     // planar map are made at once: they share only what they read.
@@ -176,7 +188,8 @@ StillOutput render_still(const LoadedMesh& mesh, const MeshTopology& topology, c
         };
         std::vector<const ContourResult*> contours;
         for (const ContourSpec& spec : needed) contours.push_back(result_of(spec));
-        out.regions = build_planar_map(scene.map_kind, engine, contours, rays, projection, scene.camera, scene.light).regions;
+        out.regions = build_planar_map(scene.map_kind, engine, contours, rays, projection, scene.camera, scene.light,
+                                       sight ? &*sight : nullptr).regions;
     };
     parallel_invoke(lines, fills);
     out.svg = to_svg(out.drawing, scene.style, out.regions.empty() ? nullptr : &out.regions);

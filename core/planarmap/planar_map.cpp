@@ -20,7 +20,7 @@ const char* planar_map_kind_name(PlanarMapKind kind) { return kind == PlanarMapK
 
 PlanarMap build_planar_map(PlanarMapKind kind, const SnaxelEngine& engine, const std::vector<const ContourResult*>& contours,
                            const RayScene* rays, const ImageProjection& projection, const Camera& camera,
-                           const Light& light) {
+                           const Light& light, const VertexSight* sight) {
     const ContourResult* visual = nullptr;
     const ContourResult* shadow = nullptr;
     std::vector<const ContourResult*> isophotes, gleams;
@@ -47,6 +47,7 @@ PlanarMap build_planar_map(PlanarMapKind kind, const SnaxelEngine& engine, const
     in.shadow = shadow;
     in.isophotes = isophotes;
     in.gleams = gleams;
+    in.sight = sight;
     SnaxelMap built = build_snaxel_map(engine, in, *rays, projection, camera, light);
     map.regions = std::move(built.regions);
     map.vertex_region = std::move(built.vertex_region);

@@ -28,9 +28,11 @@ struct PlanarMap {
 /// one throws snaxels::Error). The map is a partition of the image: nearer
 /// regions (by depth, then by index) are subtracted from farther ones, so
 /// no two regions cover the same point and paint order does not matter.
+/// A snaxel map takes its vertices' rays from @p sight where given
+/// (see_vertices, cast beforehand).
 PlanarMap build_planar_map(PlanarMapKind kind, const SnaxelEngine& engine, const std::vector<const ContourResult*>& contours,
                            const RayScene* rays, const ImageProjection& projection, const Camera& camera,
-                           const Light& light);
+                           const Light& light, const VertexSight* sight = nullptr);
 
 /// The snaxel-defined @p map (a partition) completed where its regions
 /// leave part of a large face (16 px2 or more) uncovered: where a corner is

@@ -10,6 +10,7 @@
 #include <unordered_map>
 
 #include "snaxels/planarmap/detail/polygon_cut.h"
+#include "snaxels/snaxel/contour_function.h"
 #include "snaxels/util/detail/parallel.h"
 #include "snaxels/visibility/visibility.h"
 
@@ -126,6 +127,32 @@ double linear_root(double fa, double fb) {
     return std::clamp(fa / (fa - fb), 0.0, 1.0);
 }
 
+/// Labels are decided at the refined mesh's own scale: a vertex near a fold
+/// of a large face is hidden by the refined faces next to it.
+VisibilityOptions refined_scale() {
+    VisibilityOptions options;
+    options.original_neighbourhood = false;
+    return options;
+}
+
+/// Whether @p topology has a mesh-boundary edge: on a closed mesh a point
+/// turned away is always behind the surface (rays from the fold's far side
+/// only graze it), so no ray is cast from it.
+bool is_open(const MeshTopology& topology) {
+    const auto edges = topology.edges();
+    return std::any_of(edges.begin(), edges.end(), [&](EdgeId e) { return topology.is_boundary_edge(e); });
+}
+
+/// The ray from vertex @p v (from its back side when @p turned_away), as
+/// VertexSight codes it.
+std::uint8_t sight_of(const RayScene& rays, const VisibilitySampler& sampler, VertexId v, bool turned_away, bool open) {
+    std::uint8_t code = turned_away ? VertexSight::kTurnedAway : 0;
+    if (!open && turned_away) return code;
+    code |= VertexSight::kCast;
+    if (rays.occluded(sampler.vertex_ray(v, turned_away))) code |= VertexSight::kBlocked;
+    return code;
+}
+
 /// The visual contour's segments in the image, bucketed on a grid, with
 /// their depth: what an edge's image collides with (rule 2).
 class ContourImage {
@@ -235,14 +262,6 @@ class SnaxelMapBuilder {
         for (const ContourResult* iso : in.isophotes) l.push_back(iso->spec.k);
         return l;
     }
-    /// Labels are decided at the refined mesh's own scale: a vertex near a
-    /// fold of a large face is hidden by the refined faces next to it.
-    static VisibilityOptions refined_scale() {
-        VisibilityOptions options;
-        options.original_neighbourhood = false;
-        return options;
-    }
-
     /// The shading class of a point on the far side of the surface from N.L alone.
     int class_of(double nl) const { return classes_.from_nl(nl); }
     const glm::dvec3& position(VertexId v) const { return topo_.positions()[v]; }
@@ -265,20 +284,26 @@ class SnaxelMapBuilder {
     void label_vertices() {
         label_.assign(topo_.n_vertices(), VertexLabel::occluded());
         nl_.assign(topo_.n_vertices(), 0.0);
-        // On a closed mesh a point turned away is always behind the surface
-        // (rays from the fold's far side only graze it): no ray is needed.
-        const auto edges = topo_.edges();
-        const bool open = std::any_of(edges.begin(), edges.end(), [&](EdgeId e) { return topo_.is_boundary_edge(e); });
-        parallel_for(topo_.vertices(), [&](VertexId v) { label_[v] = label_vertex(v, open); }, 256);
+        const bool open = is_open(topo_);
+        // The rays cast beforehand, if cast in this pose and camera.
+        const VertexSight* sight = in_.sight && in_.sight->pose == topo_.pose() && in_.sight->camera == camera_ &&
+                                           in_.sight->code.size() == topo_.n_vertices()
+                                       ? in_.sight
+                                       : nullptr;
+        parallel_for(topo_.vertices(), [&](VertexId v) { label_[v] = label_vertex(v, open, sight); }, 256);
         // N.L of the vertices turned away too, which the walk past the contour uses.
         for (const VertexId v : topo_.vertices())
             if (label(v).is_away()) nl_[v] = glm::dot(topo_.normals()[v], light_.to_light(position(v)));
     }
 
-    VertexLabel label_vertex(VertexId v, bool open) {
+    VertexLabel label_vertex(VertexId v, bool open, const VertexSight* sight) {
         const bool turned_away = visual_.vertex_f[v] < 0.0;
-        if (!open && turned_away) return VertexLabel::away();
-        if (rays_.occluded(sampler_.vertex_ray(v, turned_away))) {
+        // The ray cast beforehand where it was cast from this side.
+        const bool same_side =
+            sight && bool(sight->code[v] & VertexSight::kTurnedAway) == turned_away;
+        const std::uint8_t code = same_side ? sight->code[v] : sight_of(rays_, sampler_, v, turned_away, open);
+        if (!(code & VertexSight::kCast)) return VertexLabel::away();
+        if (code & VertexSight::kBlocked) {
             // Hidden; one turned away is hidden by its own fold as often as
             // not, and faces past the contour may still be seen whole.
             return turned_away ? VertexLabel::away() : VertexLabel::occluded();
@@ -938,6 +963,20 @@ class SnaxelMapBuilder {
 };
 
 } // namespace
+
+VertexSight see_vertices(const MeshTopology& topology, const RayScene& rays, const Camera& camera, const Light& light,
+                         const ContourSpec& visual) {
+    VertexData<double> f;
+    ContourFunction(visual, camera, light).evaluate_vertices(topology, f);
+    const bool open = is_open(topology);
+    const VisibilitySampler sampler(rays, camera, refined_scale());
+    VertexSight sight;
+    sight.code.assign(topology.n_vertices(), 0);
+    sight.pose = topology.pose();
+    sight.camera = camera;
+    parallel_for(topology.vertices(), [&](VertexId v) { sight.code[v] = sight_of(rays, sampler, v, f[v] < 0.0, open); }, 256);
+    return sight;
+}
 
 SnaxelMap build_snaxel_map(const SnaxelEngine& engine, const SnaxelMapInput& in, const RayScene& rays,
                            const ImageProjection& projection, const Camera& camera, const Light& light) {

@@ -31,6 +31,7 @@
 /// polygon clipping of separately discretized contours produces, cannot
 /// arise.
 
+#include <memory>
 #include <vector>
 
 #include "snaxels/planarmap/region.h"
@@ -39,6 +40,29 @@
 #include "snaxels/visibility/ray_scene.h"
 
 namespace snaxels {
+
+/// What a ray to the viewer finds from each vertex, cast before the
+/// contours are known (they need only the pose, the camera and the visual
+/// contour's function at the vertices, which every tracker of it computes
+/// the same way), so that the rays run beside the tracking. The map takes a
+/// vertex's result only where the side it was cast from is the side the
+/// visual contour's own vertex values give; it casts the others itself.
+struct VertexSight {
+    /// Per vertex: kTurnedAway when cast from the back side (the visual
+    /// contour's function below 0 there), kCast when a ray was cast,
+    /// kBlocked when it was blocked.
+    static constexpr std::uint8_t kTurnedAway = 1, kCast = 2, kBlocked = 4;
+    VertexData<std::uint8_t> code;
+    /// What they were cast in: a map of another pose or camera casts its own.
+    std::shared_ptr<const MeshPose> pose;
+    Camera camera;
+};
+
+/// The rays of @p topology's vertices to @p camera's viewer against
+/// @p rays (of the same pose), as build_snaxel_map casts them, for the
+/// visual contour @p visual.
+VertexSight see_vertices(const MeshTopology& topology, const RayScene& rays, const Camera& camera, const Light& light,
+                         const ContourSpec& visual);
 
 struct SnaxelMapInput {
     const ContourResult* visual = nullptr;       ///< required: the two sides of the surface
@@ -56,6 +80,8 @@ struct SnaxelMapInput {
     /// span a large, real region.
     int min_unsupported_vertices = 6;
     double min_fleck_area_px = 16.0;
+    /// The vertices' rays, when cast beforehand (see_vertices); else the map casts them.
+    const VertexSight* sight = nullptr;
 };
 
 struct SnaxelMapStats {

@@ -188,3 +188,58 @@ TEST(PlanarMaps, EveryBandAndHighlightLevelFills) {
         EXPECT_TRUE(lo95.x > lo8.x && lo95.y > lo8.y && hi95.x < hi8.x && hi95.y < hi8.y) << which;
     }
 }
+
+// The vertices' rays cast beside the contours (see_vertices) make the map
+// the map casts itself, on a closed mesh and on one with holes, in
+// perspective and orthographic views; rays cast for another camera are not
+// taken, and the map does take the given ones (all of them flipped, it
+// comes out otherwise).
+TEST(SnaxelMap, RaysCastBeforehandMakeTheSameMap) {
+    auto same = [](const SnaxelMap& a, const SnaxelMap& b) {
+        if (a.vertex_region.values() != b.vertex_region.values() || a.regions.size() != b.regions.size()) return false;
+        for (std::size_t r = 0; r < a.regions.size(); ++r)
+            if (a.regions[r].polygons != b.regions[r].polygons || a.regions[r].depth != b.regions[r].depth ||
+                a.regions[r].cls != b.regions[r].cls)
+                return false;
+        return true;
+    };
+    for (const std::string file : {"spot.obj", "stanford-bunny.obj"}) {
+        const Scene s(file);
+        const SnaxelEngine engine(s.topo);
+        const RayScene rays(s.topo);
+        std::mt19937 rng(41);
+        for (int view = 0; view < 4; ++view) {
+            Camera cam = random_camera(rng);
+            if (view % 2) {
+                cam.projection = Camera::Projection::Perspective;
+                cam.target = s.centre;
+                cam.eye = s.centre - 3.0 * s.radius * cam.view_dir;
+            }
+            const Light light = random_light(rng, cam);
+            const ImageProjection proj(cam, s.centre, s.radius, 400, 400);
+            const ContourResult visual = engine.compute({}, cam, light);
+            const ContourResult shadow = engine.compute({ContourKind::Shadow, 0.0}, cam, light);
+            SnaxelMapInput in;
+            in.visual = &visual;
+            in.shadow = &shadow;
+            const SnaxelMap cast_within = build_snaxel_map(engine, in, rays, proj, cam, light);
+
+            const VertexSight sight = see_vertices(s.topo, rays, cam, light, ContourSpec{});
+            in.sight = &sight;
+            EXPECT_TRUE(same(build_snaxel_map(engine, in, rays, proj, cam, light), cast_within)) << file << " view " << view;
+
+            Camera other = cam;
+            other.view_dir = glm::normalize(cam.view_dir + glm::dvec3(0.3, -0.2, 0.1));
+            if (other.projection == Camera::Projection::Perspective) other.eye = s.centre - 3.0 * s.radius * other.view_dir;
+            const VertexSight elsewhere = see_vertices(s.topo, rays, other, light, ContourSpec{});
+            in.sight = &elsewhere;
+            EXPECT_TRUE(same(build_snaxel_map(engine, in, rays, proj, cam, light), cast_within)) << file << " view " << view;
+
+            VertexSight flipped = sight;
+            for (std::uint8_t& c : flipped.code)
+                if (c & VertexSight::kCast) c ^= VertexSight::kBlocked;
+            in.sight = &flipped;
+            EXPECT_FALSE(same(build_snaxel_map(engine, in, rays, proj, cam, light), cast_within)) << file << " view " << view;
+        }
+    }
+}
