@@ -5,6 +5,7 @@
 #include <array>
 #include <map>
 #include <cmath>
+#include <limits>
 
 namespace snaxels {
 namespace {
@@ -14,10 +15,30 @@ glm::dvec2 cubic(const glm::dvec2& p0, const glm::dvec2& c1, const glm::dvec2& c
     return s * s * s * p0 + 3.0 * s * s * t * c1 + 3.0 * s * t * t * c2 + t * t * t * p1;
 }
 
-double distance_to_polyline(const glm::dvec2& p, const std::vector<glm::dvec2>& line) {
-    double best = 1e300;
-    for (std::size_t i = 0; i + 1 < line.size(); ++i) best = std::min(best, point_segment(p, line[i], line[i + 1]));
-    return line.size() == 1 ? glm::length(p - line[0]) : best;
+/// Whether @p p lies farther than @p worst from the polyline of @p size
+/// points (two or more) at @p line, and if so, in @p d, how far: the least
+/// distance to its segments (1e300 when none has one). Segments are
+/// visited from segment @p near outward, so a point close to the line stops
+/// after a few; the distance is the square root of the least square, which
+/// is the least of the square roots to the bit.
+bool farther_than(const glm::dvec2& p, const glm::dvec2* line, std::size_t size, std::size_t near, double worst,
+                  double& d) {
+    const std::size_t segments = size - 1;
+    near = std::min(near, segments - 1);
+    double best = std::numeric_limits<double>::infinity();
+    auto closer = [&](std::size_t i) { // a nearer segment within worst
+        const double sq = point_segment_squared(p, line[i], line[i + 1]);
+        if (!(sq < best)) return false;
+        best = sq;
+        return std::sqrt(best) <= worst;
+    };
+    if (closer(near)) return false;
+    for (std::size_t step = 1; step <= near || near + step < segments; ++step) {
+        if (step <= near && closer(near - step)) return false;
+        if (near + step < segments && closer(near + step)) return false;
+    }
+    d = best < std::numeric_limits<double>::infinity() ? std::sqrt(best) : 1e300;
+    return d > worst;
 }
 
 } // namespace
@@ -117,6 +138,8 @@ std::vector<std::size_t> fit_knots(const std::vector<std::vector<glm::dvec2>>& f
         std::size_t point;
     };
     std::map<std::array<std::size_t, 4>, Found> found;
+    constexpr std::size_t kCurvePoints = 17; // a segment's curve, sampled at sixteenths
+    std::vector<glm::dvec2> poly;            // a segment's stretch of the polyline
     for (;;) {
         std::vector<std::size_t> knots;
         for (std::size_t i = 0; i < n; ++i)
@@ -136,22 +159,20 @@ std::vector<std::size_t> fit_knots(const std::vector<std::vector<glm::dvec2>>& f
                     glm::dvec2 c1, c2;
                     segment_controls(pts, knots, closed, s, c1, c2);
                     const glm::dvec2 p0 = pts[a], p1 = pts[b];
-                    std::vector<glm::dvec2> curve;
-                    for (int i = 0; i <= 16; ++i) curve.push_back(cubic(p0, c1, c2, p1, i / 16.0));
-                    std::vector<glm::dvec2> poly;
+                    std::array<glm::dvec2, kCurvePoints> curve;
+                    for (std::size_t i = 0; i < kCurvePoints; ++i) curve[i] = cubic(p0, c1, c2, p1, double(i) / 16.0);
+                    poly.clear();
                     for (std::size_t k = 0; k <= count; ++k) poly.push_back(pts[(a + k) % n]);
-                    for (std::size_t k = 1; k < count; ++k) {
-                        const double d = distance_to_polyline(poly[k], curve);
-                        if (d > f.worst) f.worst = d, f.point = (a + k) % n;
-                    }
+                    double d = 0.0;
+                    for (std::size_t k = 1; k < count; ++k)
+                        if (farther_than(poly[k], curve.data(), kCurvePoints, k * 16 / count, f.worst, d))
+                            f.worst = d, f.point = (a + k) % n;
                     // The curve's own bulge away from the polyline.
-                    for (const glm::dvec2& c : curve) {
-                        const double d = distance_to_polyline(c, poly);
-                        if (d > f.worst) {
+                    for (std::size_t i = 0; i < kCurvePoints; ++i)
+                        if (farther_than(curve[i], poly.data(), poly.size(), i * count / 16, f.worst, d)) {
                             f.worst = d;
                             f.point = (a + count / 2) % n;
                         }
-                    }
                 }
             }
             if (f.point < n && !keep[f.point]) keep[f.point] = 1, added = true;

@@ -2,6 +2,7 @@
 // Internal to core/export: small polyline helpers shared by the exporters.
 
 #include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <vector>
 
@@ -9,12 +10,19 @@
 
 namespace snaxels {
 
-/// Distance from @p p to the segment from @p a to @p b.
-inline double point_segment(const glm::dvec2& p, const glm::dvec2& a, const glm::dvec2& b) {
+/// The square of the distance from @p p to the segment from @p a to @p b
+/// (point_segment is its square root, to the bit).
+inline double point_segment_squared(const glm::dvec2& p, const glm::dvec2& a, const glm::dvec2& b) {
     const glm::dvec2 ab = b - a;
     const double len2 = glm::dot(ab, ab);
     const double t = len2 > 0.0 ? std::clamp(glm::dot(p - a, ab) / len2, 0.0, 1.0) : 0.0;
-    return glm::length(p - (a + t * ab));
+    const glm::dvec2 d = p - (a + t * ab);
+    return glm::dot(d, d);
+}
+
+/// Distance from @p p to the segment from @p a to @p b.
+inline double point_segment(const glm::dvec2& p, const glm::dvec2& a, const glm::dvec2& b) {
+    return std::sqrt(point_segment_squared(p, a, b));
 }
 
 /// Douglas-Peucker over several frames of one polyline at once: marks in
