@@ -33,12 +33,17 @@ inline void douglas_peucker_joint(const std::vector<std::vector<glm::dvec2>>& fr
                                   double tolerance, std::vector<std::uint8_t>& keep) {
     if (j <= i + 1) return;
     const std::size_t n = frames[0].size();
-    double worst = -1.0;
+    // The farthest vertex (the first of equals) by its distance, which is
+    // the square root of its greatest square: a square no greater than the
+    // worst's cannot make a greater distance, so only the others take a root.
+    double worst = -1.0, worst_square = -1.0;
     std::size_t at = i;
     for (std::size_t k = i + 1; k < j; ++k) {
-        double d = 0.0;
-        for (const auto& f : frames) d = std::max(d, point_segment(f[k % n], f[i % n], f[j % n]));
-        if (d > worst) worst = d, at = k;
+        double square = 0.0;
+        for (const auto& f : frames) square = std::max(square, point_segment_squared(f[k % n], f[i % n], f[j % n]));
+        if (!(square > worst_square)) continue;
+        const double d = std::sqrt(square);
+        if (d > worst) worst = d, worst_square = square, at = k;
     }
     if (worst <= tolerance) return;
     keep[at % n] = 1;
