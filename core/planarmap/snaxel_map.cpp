@@ -284,16 +284,17 @@ class SnaxelMapBuilder {
     void label_vertices() {
         label_.assign(topo_.n_vertices(), VertexLabel::occluded());
         nl_.assign(topo_.n_vertices(), 0.0);
-        const bool open = is_open(topo_);
         // The rays cast beforehand, if cast in this pose and camera.
         const VertexSight* sight = in_.sight && in_.sight->pose == topo_.pose() && in_.sight->camera == camera_ &&
                                            in_.sight->code.size() == topo_.n_vertices()
                                        ? in_.sight
                                        : nullptr;
-        parallel_for(topo_.vertices(), [&](VertexId v) { label_[v] = label_vertex(v, open, sight); }, 256);
-        // N.L of the vertices turned away too, which the walk past the contour uses.
-        for (const VertexId v : topo_.vertices())
-            if (label(v).is_away()) nl_[v] = glm::dot(topo_.normals()[v], light_.to_light(position(v)));
+        const bool open = sight ? sight->open : is_open(topo_);
+        parallel_for(topo_.vertices(), [&](VertexId v) {
+            label_[v] = label_vertex(v, open, sight);
+            // N.L of the vertices turned away too, which the walk past the contour uses.
+            if (label_[v].is_away()) nl_[v] = glm::dot(topo_.normals()[v], light_.to_light(position(v)));
+        }, 256);
     }
 
     VertexLabel label_vertex(VertexId v, bool open, const VertexSight* sight) {
@@ -462,9 +463,18 @@ class SnaxelMapBuilder {
 
     /// Where fronts stop on edges whose labels differ (rules 3 and 4).
     void place_edge_points() {
-        for (const EdgeId e : topo_.edges())
-            if (label(topo_.edge_vertices()[e][0]) != label(topo_.edge_vertices()[e][1]))
-                cut_edges_.push_back(e); // both hidden: a junction may still use its middle
+        // Found in parallel stretches of the edges, joined in edge order.
+        constexpr std::size_t kStretches = 64;
+        std::vector<std::vector<EdgeId>> cut(kStretches);
+        const std::size_t n_edges = topo_.n_edges();
+        parallel_for(kStretches, [&](std::size_t k) {
+            for (std::size_t i = k * n_edges / kStretches; i < (k + 1) * n_edges / kStretches; ++i) {
+                const EdgeId e{std::int32_t(i)};
+                if (label(topo_.edge_vertices()[e][0]) != label(topo_.edge_vertices()[e][1]))
+                    cut[k].push_back(e); // both hidden: a junction may still use its middle
+            }
+        }, 1);
+        for (const std::vector<EdgeId>& stretch : cut) cut_edges_.insert(cut_edges_.end(), stretch.begin(), stretch.end());
         edge_point_.assign(topo_.n_edges(), glm::dvec3(0.0));
         // Which faces are turned to the viewer (by their own winding).
         front_face_.assign(topo_.n_faces(), 0);
@@ -974,6 +984,7 @@ VertexSight see_vertices(const MeshTopology& topology, const RayScene& rays, con
     sight.code.assign(topology.n_vertices(), 0);
     sight.pose = topology.pose();
     sight.camera = camera;
+    sight.open = open;
     parallel_for(topology.vertices(), [&](VertexId v) { sight.code[v] = sight_of(rays, sampler, v, f[v] < 0.0, open); }, 256);
     return sight;
 }

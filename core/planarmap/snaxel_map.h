@@ -56,6 +56,7 @@ struct VertexSight {
     /// What they were cast in: a map of another pose or camera casts its own.
     std::shared_ptr<const MeshPose> pose;
     Camera camera;
+    bool open = false; ///< whether the mesh has a boundary edge (else no ray from a vertex turned away)
 };
 
 /// The rays of @p topology's vertices to @p camera's viewer against
