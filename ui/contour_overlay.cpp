@@ -25,6 +25,7 @@ const char* view_colour(ContourKind kind) {
     case ContourKind::Suggestive: return "#ff9a3c";
     case ContourKind::Material: return "#7ad7ff";
     case ContourKind::Object: return "#ffe45c";
+    case ContourKind::Intersection: return "#ff5c8a";
     }
     return "#e8402a";
 }

@@ -23,6 +23,7 @@ std::string ContourSpec::kind_name() const {
     case ContourKind::Suggestive: return "suggestive";
     case ContourKind::Material: return "material";
     case ContourKind::Object: return "object";
+    case ContourKind::Intersection: return "intersection";
     }
     return "visual";
 }
@@ -30,7 +31,8 @@ std::string ContourSpec::kind_name() const {
 std::string ContourSpec::label() const {
     const std::string selector = parts.empty() ? "" : " " + parts.text();
     if (kind == ContourKind::Visual || kind == ContourKind::Shadow || kind == ContourKind::Parabolic ||
-        kind == ContourKind::Border || kind == ContourKind::Material || kind == ContourKind::Object)
+        kind == ContourKind::Border || kind == ContourKind::Material || kind == ContourKind::Object ||
+        kind == ContourKind::Intersection)
         return kind_name() + selector;
     char buf[96];
     if (kind == ContourKind::Suggestive && test == SuggestiveTest::Rtsc) std::snprintf(buf, sizeof buf, "suggestive:rtsc:%g", k);
@@ -60,7 +62,7 @@ ContourSpec ContourSpec::parse(const std::string& text) {
     const std::string name = text.substr(0, colon);
     ContourSpec spec;
     if (name == "visual" || name == "shadow" || name == "parabolic" || name == "border" || name == "material" ||
-        name == "object") {
+        name == "object" || name == "intersection") {
         if (colon != std::string::npos)
             throw Error("contour kind '" + text + "': " + name + " takes no value");
         spec.kind = name == "visual"     ? ContourKind::Visual
@@ -68,6 +70,7 @@ ContourSpec ContourSpec::parse(const std::string& text) {
                     : name == "border"   ? ContourKind::Border
                     : name == "material" ? ContourKind::Material
                     : name == "object"   ? ContourKind::Object
+                    : name == "intersection" ? ContourKind::Intersection
                                          : ContourKind::Parabolic;
         return spec;
     }
@@ -110,7 +113,7 @@ ContourSpec ContourSpec::parse(const std::string& text) {
     if (name != "isophote" && name != "gleam")
         throw Error("unknown contour kind '" + text +
                     "' (expected visual, shadow, isophote:K, gleam:K, parabolic, crease[:DEG], border, "
-                    "suggestive[:D[:DEG]], suggestive:rtsc[:T], material or object)");
+                    "suggestive[:D[:DEG]], suggestive:rtsc[:T], material, object or intersection)");
     spec.kind = name == "isophote" ? ContourKind::Isophote : ContourKind::Gleam;
     if (colon == std::string::npos)
         throw Error("contour kind '" + text + "' needs a value, for example " + name +
@@ -280,6 +283,7 @@ double ContourFunction::evaluate(const glm::dvec3& p, const glm::dvec3& n) const
     case ContourKind::Border:
     case ContourKind::Material:
     case ContourKind::Object:
+    case ContourKind::Intersection:
     case ContourKind::Suggestive: return nv; // not a function of the point alone; see ContourKind
     case ContourKind::Shadow: return std::min(glm::dot(n, light_.to_light(p)), nv);
     case ContourKind::Isophote: return std::min(glm::dot(n, light_.to_light(p)) - spec_.k, nv);

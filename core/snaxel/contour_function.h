@@ -16,7 +16,9 @@
 
 namespace snaxels {
 
-enum class ContourKind { Visual, Shadow, Isophote, Gleam, Parabolic, Crease, Border, Suggestive, Material, Object };
+enum class ContourKind {
+    Visual, Shadow, Isophote, Gleam, Parabolic, Crease, Border, Suggestive, Material, Object, Intersection
+};
 
 /// On a mesh with split sharp edges, f within this of zero at a vertex is a
 /// face seen edge-on (some 0.0006 degrees: ten times the rounding of a
@@ -55,7 +57,10 @@ constexpr double kDefaultRtscThreshold = 0.01;
 /// views (core/parabolic); creases are the edges whose faces meet at more
 /// than k degrees, borders the edges with one face, material lines the
 /// edges between faces of two materials, object lines the edges between
-/// faces of two objects (core/snaxel/feature_edges.h). Suggestive
+/// faces of two objects (core/snaxel/feature_edges.h). Intersection
+/// lines are where two surfaces pass through each other (two objects, or
+/// one object through itself: core/snaxel/intersections.h); they move with
+/// the surfaces and change where the objects move apart. Suggestive
 /// contours are the zeros of the radial curvature kappa_r (a function of
 /// the vertices, from the pose's curvature: core/snaxel/curvature.h),
 /// linear along an edge; the drawing keeps the parts where kappa_r grows
@@ -83,11 +88,11 @@ struct ContourSpec {
     PartSelector parts{};
 
     /// "visual", "shadow", "isophote", "gleam", "parabolic", "crease",
-    /// "border", "suggestive", "material" or "object".
+    /// "border", "suggestive", "material", "object" or "intersection".
     std::string kind_name() const;
     /// "visual", "shadow", "isophote:0.5", "gleam:0.9", "parabolic",
     /// "crease:30", "border", "suggestive:0.5:15" (the derivative test),
-    /// "suggestive:rtsc:0.01" (rtsc's), "material", "object":
+    /// "suggestive:rtsc:0.01" (rtsc's), "material", "object", "intersection":
     /// what parse() reads; followed by the part selector's text when it has
     /// one ("visual object=wheel*").
     std::string label() const;
@@ -99,9 +104,12 @@ struct ContourSpec {
         return out;
     }
     /// A line of the mesh itself (parabolic, crease, border, material,
-    /// object), not the zero set of a function of the view and light: fixed
-    /// on the surface, the same snaxels every frame, bounding no region.
-    bool on_surface() const { return kind == ContourKind::Parabolic || along_edges(); }
+    /// object, intersection), not the zero set of a function of the view
+    /// and light: fixed on the surface while the mesh keeps its pose,
+    /// bounding no region of its own.
+    bool on_surface() const {
+        return kind == ContourKind::Parabolic || kind == ContourKind::Intersection || along_edges();
+    }
     /// A line made of whole mesh edges (crease, border, material, object):
     /// feature_fronts finds it.
     bool along_edges() const {

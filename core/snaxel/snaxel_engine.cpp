@@ -2,6 +2,7 @@
 
 #include "snaxels/snaxel/curvature.h"
 #include "snaxels/snaxel/feature_edges.h"
+#include "snaxels/snaxel/intersections.h"
 #include "snaxels/snaxel/parabolic.h"
 
 #include <algorithm>
@@ -223,6 +224,7 @@ ContourResult lines_of(const ContourResult& result) {
     out.fronts.snaxels = result.fronts.snaxels;
     out.fronts.loops = result.fronts.loops;
     out.snaxel_margin = result.snaxel_margin;
+    out.snaxel_pierced = result.snaxel_pierced;
     out.stats = result.stats;
     return out;
 }
@@ -238,6 +240,10 @@ ContourResult SnaxelEngine::compute(const ContourSpec& spec, const Camera& camer
         if (spec.kind == ContourKind::Parabolic) {
             const std::shared_ptr<const ParabolicResult> curves = require_parabolic(topo_);
             result.fronts = parabolic_fronts(topo_, *curves);
+        } else if (spec.kind == ContourKind::Intersection) {
+            const std::shared_ptr<const IntersectionCurves> curves = require_intersections(topo_);
+            result.fronts = curves->fronts;
+            result.snaxel_pierced = curves->pierced;
         } else {
             result.fronts = feature_fronts(topo_, spec);
         }

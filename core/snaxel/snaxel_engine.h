@@ -58,6 +58,10 @@ struct ContourResult {
     /// (suggestive contours: suggestive_margins): >= 0 where drawn. Empty
     /// for the other kinds: every snaxel is drawn.
     std::vector<double> snaxel_margin;
+    /// Per snaxel of an intersection line: the face of the other surface
+    /// its edge pierces (IntersectionCurves::pierced). Empty for the other
+    /// kinds.
+    std::vector<FaceId> snaxel_pierced;
     ContourStats stats;
 };
 

@@ -3,9 +3,11 @@
 #include <algorithm>
 #include <chrono>
 #include <limits>
+#include <map>
 #include <stdexcept>
 
 #include "snaxels/error.h"
+#include "snaxels/snaxel/intersections.h"
 #include "snaxels/util/detail/float_mode.h"
 #include "snaxels/util/detail/parallel.h"
 
@@ -91,6 +93,8 @@ const TrackedFrame& ContourTracker::step(const Camera& camera, const Light& ligh
         throw InternalError("fault injected in the tracker at frame " + std::to_string(frame_number_) + " (SNAXELS_FAULT)");
     if (frame_number_ == 0) {
         start(camera, light);
+    } else if (spec_.kind == ContourKind::Intersection && require_intersections(topo_) != curves_) {
+        track_intersections(); // the surfaces moved: where they meet moved too
     } else if (spec_.on_surface()) {
         // The mesh's own lines: the same snaxels on the same edges every
         // frame (they move with a moving mesh), no events.
@@ -110,6 +114,7 @@ void ContourTracker::start(const Camera& camera, const Light& light) {
     frame_ = TrackedFrame{};
     frame_.frame = frame_number_;
     frame_.contour = engine.compute(spec_, camera, light, options_);
+    if (spec_.kind == ContourKind::Intersection) curves_ = require_intersections(topo_);
     const Fronts& fronts = frame_.contour.fronts;
     inside_.assign(topo_.n_vertices(), 0);
     if (frame_.contour.vertex_f.size() == inside_.size()) // (parabolic curves bound no vertex set)
@@ -163,6 +168,89 @@ void ContourTracker::track(const Camera& camera, const Light& light) {
         if (e.kind == EventKind::Creation) ++result.stats.seeds;
     }
     result.stats.ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+}
+
+void ContourTracker::track_intersections() {
+    const auto t0 = std::chrono::steady_clock::now();
+    curves_ = require_intersections(topo_);
+    TrackedFrame prev = std::move(frame_);
+    const Fronts& old = prev.contour.fronts;
+    const std::vector<glm::dvec3> old_position = std::move(snaxel_position_);
+    frame_ = TrackedFrame{};
+    frame_.frame = frame_number_;
+    frame_.contour.spec = spec_;
+    frame_.contour.fronts = curves_->fronts;
+    frame_.contour.snaxel_pierced = curves_->pierced;
+    const Fronts& fronts = frame_.contour.fronts;
+    const SnaxelEngine engine(topo_);
+    const std::size_t n = fronts.snaxels.size();
+    snaxel_position_.resize(n);
+    for (std::size_t s = 0; s < n; ++s) snaxel_position_[s] = engine.position(fronts.snaxels[s]);
+
+    // The old snaxels by (edge, pierced face), and in cells of a grid for
+    // the nearest one.
+    std::map<std::pair<EdgeId, FaceId>, std::int32_t> by_key;
+    for (std::size_t o = 0; o < old.snaxels.size(); ++o)
+        by_key.emplace(std::pair{old.snaxels[o].edge, prev.contour.snaxel_pierced[o]}, std::int32_t(o));
+    const double reach = 4.0 * topo_.mean_edge_length();
+    auto cell = [&](const glm::dvec3& p) {
+        return std::array<std::int64_t, 3>{std::int64_t(std::floor(p.x / reach)), std::int64_t(std::floor(p.y / reach)),
+                                           std::int64_t(std::floor(p.z / reach))};
+    };
+    std::map<std::array<std::int64_t, 3>, std::vector<std::int32_t>> grid;
+    for (std::size_t o = 0; o < old.snaxels.size(); ++o) grid[cell(old_position[o])].push_back(std::int32_t(o));
+    auto nearest_old = [&](const glm::dvec3& p) {
+        std::int32_t best = kNone;
+        double best_d = reach * reach;
+        const auto c = cell(p);
+        for (std::int64_t dx = -1; dx <= 1; ++dx)
+            for (std::int64_t dy = -1; dy <= 1; ++dy)
+                for (std::int64_t dz = -1; dz <= 1; ++dz) {
+                    const auto it = grid.find({c[0] + dx, c[1] + dy, c[2] + dz});
+                    if (it == grid.end()) continue;
+                    for (const std::int32_t o : it->second) {
+                        const glm::dvec3 gap = old_position[std::size_t(o)] - p;
+                        const double d = glm::dot(gap, gap);
+                        if (d < best_d || (d == best_d && o < best)) best_d = d, best = o;
+                    }
+                }
+        return best;
+    };
+    frame_.snaxel_id.assign(n, 0);
+    frame_.born_from.assign(n, 0);
+    std::vector<std::int32_t> source(n, kNone);
+    std::vector<std::uint8_t> continued(old.snaxels.size(), 0);
+    for (std::size_t s = 0; s < n; ++s) {
+        const auto it = by_key.find({fronts.snaxels[s].edge, frame_.contour.snaxel_pierced[s]});
+        if (it == by_key.end()) continue;
+        source[s] = it->second;
+        frame_.snaxel_id[s] = prev.snaxel_id[std::size_t(it->second)];
+        continued[std::size_t(it->second)] = 1;
+    }
+    // The rest: the nearest old snaxel's nearest new one takes its identity
+    // on where no snaxel continued it; the others are born from it.
+    std::vector<std::int32_t> best_child(old.snaxels.size(), kNone);
+    for (std::size_t s = 0; s < n; ++s) {
+        if (source[s] != kNone) continue;
+        source[s] = nearest_old(snaxel_position_[s]);
+        if (source[s] == kNone || continued[std::size_t(source[s])]) continue;
+        std::int32_t& best = best_child[std::size_t(source[s])];
+        const glm::dvec3 at = old_position[std::size_t(source[s])];
+        if (best == kNone || glm::length(snaxel_position_[s] - at) < glm::length(snaxel_position_[std::size_t(best)] - at))
+            best = std::int32_t(s);
+    }
+    for (std::size_t s = 0; s < n; ++s) {
+        if (frame_.snaxel_id[s]) continue;
+        const std::int32_t parent = source[s];
+        if (parent != kNone && best_child[std::size_t(parent)] == std::int32_t(s)) {
+            frame_.snaxel_id[s] = prev.snaxel_id[std::size_t(parent)];
+        } else {
+            frame_.snaxel_id[s] = next_id_++;
+            if (parent != kNone) frame_.born_from[s] = prev.snaxel_id[std::size_t(parent)];
+        }
+    }
+    match_loops(prev, old_position, source);
+    frame_.contour.stats.ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
 }
 
 /// The vertices whose side of the contour differs from inside_ (ascending),

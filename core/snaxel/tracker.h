@@ -17,6 +17,8 @@
 
 namespace snaxels {
 
+struct IntersectionCurves;
+
 enum class EventKind { Creation, Annihilation, Split, Merge };
 
 const char* event_name(EventKind kind);
@@ -61,6 +63,10 @@ class ContourTracker {
   private:
     void start(const Camera& camera, const Light& light);
     void track(const Camera& camera, const Light& light);
+    /// An intersection line in a new pose: found anew, each snaxel going
+    /// on from the one on the same edge through the same face, else born
+    /// from the nearest of the frame before.
+    void track_intersections();
     // The stages of track(), in order.
     std::vector<VertexId> flip_changed_vertices();
     void sweep_parents(const Fronts& old, const std::vector<VertexId>& changed);
@@ -83,6 +89,8 @@ class ContourTracker {
     /// a snaxel that stays on its edge in that pose takes its arc on.
     std::vector<NormalArc> snaxel_arc_;
     std::weak_ptr<const MeshPose> arc_pose_;
+    /// An intersection line's curves in the current frame's pose.
+    std::shared_ptr<const IntersectionCurves> curves_;
     // Scratch, kept between frames to avoid reallocation.
     VertexData<std::int32_t> vertex_parent_; ///< the old snaxel that passed each vertex, or kNoSnaxel
     std::vector<VertexId> parented_;          ///< the vertices vertex_parent_ holds a snaxel for

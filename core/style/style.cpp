@@ -86,7 +86,7 @@ const std::vector<StyleElement>& style_vocabulary() {
              {{"sharp-angle", {"file"}, "edges whose faces meet at more than this angle are sharp"}}},
             {"contour",
              "which contour to find and how to draw it",
-             {{"kind", {"visual", "shadow", "isophote", "gleam", "parabolic", "crease", "border", "suggestive", "material", "object"},
+             {{"kind", {"visual", "shadow", "isophote", "gleam", "parabolic", "crease", "border", "suggestive", "material", "object", "intersection"},
                "the contour function"},
               {"k", {}, "the isophote level N.L = k, or the gleam threshold V.R = k"},
               {"angle", {}, "the crease angle"},
@@ -447,7 +447,7 @@ struct Parser {
                     fail(child, "only crease, border, material and object contours take a min-length");
                 spec.min_length = number(child, "min-length", 0.0, 0.0, 1.0);
                 if (kind == "visual" || kind == "shadow" || kind == "parabolic" || kind == "border" || kind == "material" ||
-                    kind == "object") {
+                    kind == "object" || kind == "intersection") {
                     if (child.attribute("k")) fail(child, "a " + kind + " contour takes no k");
                     spec.kind = ContourSpec::parse(kind).kind;
                 } else if (kind == "crease") {
@@ -550,6 +550,7 @@ const char* default_stroke(ContourKind kind) {
     case ContourKind::Suggestive: return "#5a4632";
     case ContourKind::Material: return "#333333";
     case ContourKind::Object: return "#111111";
+    case ContourKind::Intersection: return "#111111";
     }
     return "#111111";
 }

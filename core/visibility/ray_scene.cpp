@@ -10,6 +10,7 @@
 
 #include "snaxels/error.h"
 #include "snaxels/mesh/refine.h"
+#include "snaxels/util/detail/embree_device.h"
 
 namespace snaxels {
 
@@ -105,17 +106,6 @@ RTCRay make_ray(const VisibilityRay& r, const glm::dvec3& shift) {
 
 } // namespace
 
-namespace {
-
-// One Embree device for the process: creating one starts a thread pool.
-RTCDevice shared_device() {
-    static const RTCDevice device = rtcNewDevice(nullptr);
-    if (!device) throw Error("cannot start the ray tracer (Embree device)");
-    return device;
-}
-
-} // namespace
-
 RayScene::RayScene(MeshTopology topology) : topo_(std::move(topology)) {
     if (!topo_.positions().empty()) {
         glm::dvec3 lo = topo_.positions().values().front(), hi = lo;
@@ -125,7 +115,7 @@ RayScene::RayScene(MeshTopology topology) : topo_(std::move(topology)) {
         }
         origin_ = 0.5 * (lo + hi);
     }
-    RTCDevice device = shared_device();
+    RTCDevice device = detail::embree_device();
     RTCScene scene = rtcNewScene(device);
     scene_ = scene;
     rtcSetSceneFlags(scene, RTC_SCENE_FLAG_CONTEXT_FILTER_FUNCTION | RTC_SCENE_FLAG_ROBUST |

@@ -34,6 +34,7 @@ std::vector<std::uint8_t> selected_stretches(const MeshTopology& topo, const Con
     const Fronts& fronts = contour.fronts;
     std::vector<std::uint8_t> out(fronts.snaxels.size(), 1);
     const bool along_edges = contour.spec.along_edges();
+    const bool meeting = contour.spec.kind == ContourKind::Intersection;
     auto on_edge = [&](const Snaxel& s) {
         const auto faces = along_edges ? faces_beside(topo, s.edge) : topo.edge_faces()[s.edge];
         return matcher.face(faces[0]) || matcher.face(faces[1]);
@@ -48,6 +49,14 @@ std::vector<std::uint8_t> selected_stretches(const MeshTopology& topo, const Con
             if (along_edges || n == 1) {
                 // A chain's snaxel lies on the edge of its stretch (chain_fronts).
                 out[order[k]] = on_edge(s);
+                continue;
+            }
+            if (meeting) {
+                // Where two surfaces meet: on both (its edge's and the face it pierces).
+                const auto pierced = std::size_t(order[k]) < contour.snaxel_pierced.size()
+                                         ? contour.snaxel_pierced[std::size_t(order[k])]
+                                         : FaceId();
+                out[order[k]] = on_edge(s) || (pierced.valid() && matcher.face(pierced));
                 continue;
             }
             const bool last = k + 1 == n && !loop.closed;
@@ -115,6 +124,14 @@ VisibilityRay VisibilitySampler::edge_ray(EdgeId e, double t) const {
     const glm::dvec3 n = slerp_normal(topo.normals()[a], topo.normals()[b], t);
     VisibilityRay ray = make_ray(p, n, glm::length(topo.positions()[a] - topo.positions()[b]));
     ray.ignore = {a, b, VertexId()};
+    return ray;
+}
+
+VisibilityRay VisibilitySampler::meeting_ray(const glm::dvec3& p, double scale) const {
+    VisibilityRay ray = make_ray(p, glm::dvec3(0.0), scale);
+    const double lift = 1e-3 * std::max(scale, scene_.topology().mean_edge_length());
+    ray.origin += lift * ray.dir;
+    if (!std::isinf(ray.tfar)) ray.tfar = std::max(0.0, ray.tfar - lift);
     return ray;
 }
 
@@ -345,7 +362,9 @@ ContourVisibility VisibilitySampler::classify(const SnaxelEngine& engine, const 
         for (std::size_t i = 0; i < over.size(); ++i) selected[i] = selected[i] && over[i];
     }
     std::vector<int> snaxel_qi(fronts.snaxels.size());
-    const bool where_seen = levels == HiddenLevels::WhereSeen;
+    const bool meeting = contour.spec.kind == ContourKind::Intersection;
+    const bool where_seen = levels == HiddenLevels::WhereSeen && !meeting;
+    auto edge_length = [&](const Snaxel& s) { return glm::length(topo.positions()[s.inside] - topo.positions()[s.outside]); };
     parallel_for(fronts.snaxels.size(), [&](std::size_t i) {
         const Snaxel& s = fronts.snaxels[i];
         if ((margins && contour.snaxel_margin[i] < 0.0) || (!selected.empty() && !selected[i])) {
@@ -353,6 +372,10 @@ ContourVisibility VisibilitySampler::classify(const SnaxelEngine& engine, const 
             return;
         }
         const glm::dvec3 p = engine.position(s);
+        if (meeting) {
+            snaxel_qi[i] = qi(meeting_ray(p, edge_length(s)));
+            return;
+        }
         const VisibilityRay ray = snaxel_ray(s, p, engine.normal(s));
         const std::int64_t object = snaxel_object(topo, s);
         if (where_seen && object < 0) snaxel_qi[i] = scene_.occluded(ray) ? kUncounted : 0;
@@ -368,6 +391,16 @@ ContourVisibility VisibilitySampler::classify(const SnaxelEngine& engine, const 
         const Snaxel& a = fronts.snaxels[ia];
         const Snaxel& b = fronts.snaxels[ib];
         const glm::dvec3 pa = engine.position(a), pb = engine.position(b);
+        if (meeting) { // the segment lies on both surfaces
+            const double scale = 0.5 * (edge_length(a) + edge_length(b));
+            double lo = 0.0, hi = 1.0;
+            for (int step = 0; step < options_.bisection_steps; ++step) {
+                const double mid = 0.5 * (lo + hi);
+                (qi(meeting_ray((1.0 - mid) * pa + mid * pb, scale)) == from ? lo : hi) = mid;
+            }
+            const double u = 0.5 * (lo + hi);
+            return (1.0 - u) * pa + u * pb;
+        }
         const glm::dvec3 na = engine.normal(a), nb = engine.normal(b);
         const FaceId face = common_face(topo, a, b);
         double lo = 0.0, hi = 1.0;

@@ -70,6 +70,12 @@ class VisibilitySampler {
     /// The ray from the point at @p t along edge @p e (0 at its first
     /// vertex): the faces around both ends are ignored.
     VisibilityRay edge_ray(EdgeId e, double t) const;
+    /// The ray from point @p p of an intersection line, where two surfaces
+    /// meet: nothing is ignored, and it starts a thousandth of @p scale
+    /// (the local edge length) toward the viewer, so that where the view
+    /// passes into either surface that surface's far side is counted, and
+    /// where it passes between them nothing near p is.
+    VisibilityRay meeting_ray(const glm::dvec3& p, double scale) const;
     /// QI along a ray: crossings of front- and back-facing layers (the larger
     /// count, so open sheets seen from behind count too).
     int qi(const VisibilityRay& ray) const;
@@ -143,7 +149,8 @@ ContourVisibility drawn_parts(const SnaxelEngine& engine, const ContourResult& c
 /// next snaxel (an open loop's last snaxel: from the one before) lies on a
 /// part of the scene its spec's selector takes (ContourSpec::parts). A
 /// stretch across a face lies on that face's part; a stretch along an edge
-/// (creases, borders, material and object lines) on either face's. Empty
+/// (creases, borders, material and object lines) on either face's; a
+/// stretch of an intersection line on the parts of both surfaces. Empty
 /// when the selector takes every part: nothing is left out. Where a loop
 /// passes from one part to another the cut is at the snaxel on the edge
 /// between them, exactly.
