@@ -133,11 +133,11 @@ std::vector<PointKey> segment_of(const MeshTopology& topo, FaceId f, FaceId g) {
     auto edges_through = [&](FaceId a, FaceId b) {
         const auto& av = topo.face_vertices()[a];
         std::array<int, 3> s{};
-        for (int k = 0; k < 3; ++k) s[std::size_t(k)] = side(topo, av[std::size_t(k)], b);
+        for (int k = 0; k < 3; ++k) s[k] = side(topo, av[k], b);
         if (s[0] == s[1] && s[1] == s[2]) return false;
         for (int k = 0; k < 3; ++k) {
-            if (s[std::size_t(k)] == s[std::size_t((k + 1) % 3)]) continue;
-            const EdgeId e = topo.face_edges()[a][std::size_t(k)];
+            if (s[k] == s[(k + 1) % 3]) continue;
+            const EdgeId e = topo.face_edges()[a][k];
             if (pierces(topo, e, b)) out.emplace_back(e, b);
         }
         return true;
@@ -195,23 +195,23 @@ std::vector<std::pair<std::vector<std::int32_t>, bool>> chain_segments(
     std::vector<std::array<std::int32_t, 2>> next(n_points, {-1, -1});
     std::vector<std::uint8_t> degree(n_points, 0);
     for (const auto& [a, b] : segments) {
-        if (degree[std::size_t(a)] < 2 && degree[std::size_t(b)] < 2) {
-            next[std::size_t(a)][degree[std::size_t(a)]++] = b;
-            next[std::size_t(b)][degree[std::size_t(b)]++] = a;
+        if (degree[a] < 2 && degree[b] < 2) {
+            next[a][degree[a]++] = b;
+            next[b][degree[b]++] = a;
         }
     }
     std::vector<std::uint8_t> used(n_points, 0);
     std::vector<std::pair<std::vector<std::int32_t>, bool>> out;
     auto walk = [&](std::int32_t start, bool closed) {
         std::vector<std::int32_t> chain{start};
-        used[std::size_t(start)] = 1;
+        used[start] = 1;
         std::int32_t prev = -1, at = start;
         for (;;) {
             std::int32_t go = -1;
-            for (const std::int32_t w : next[std::size_t(at)])
-                if (w >= 0 && w != prev && !used[std::size_t(w)]) go = w;
+            for (const std::int32_t w : next[at])
+                if (w >= 0 && w != prev && !used[w]) go = w;
             if (go < 0) break;
-            used[std::size_t(go)] = 1;
+            used[go] = 1;
             chain.push_back(go);
             prev = at, at = go;
         }
@@ -234,7 +234,7 @@ std::vector<std::pair<std::vector<std::int32_t>, bool>> chain_segments(
 void join_coincident_ends(std::vector<std::pair<std::vector<std::int32_t>, bool>>& chains,
                           const std::vector<glm::dvec3>& at, double tolerance,
                           const std::function<bool(std::int32_t, std::int32_t)>& gap) {
-    auto near = [&](std::int32_t a, std::int32_t b) { return glm::length(at[std::size_t(a)] - at[std::size_t(b)]) <= tolerance; };
+    auto near = [&](std::int32_t a, std::int32_t b) { return glm::length(at[a] - at[b]) <= tolerance; };
     auto joins = [&](std::int32_t a, std::int32_t b) { return near(a, b) || gap(a, b); };
     bool joined = true;
     while (joined) {
@@ -310,8 +310,8 @@ IntersectionCurves find_intersections(const MeshTopology& topo) {
     // within a few edges.
     const double reach = 4.0 * topo.mean_edge_length();
     auto gap_between = [&](std::int32_t a, std::int32_t b) {
-        return !topo.is_boundary_edge(points[std::size_t(a)].first) && !topo.is_boundary_edge(points[std::size_t(b)].first) &&
-               glm::length(at[std::size_t(a)] - at[std::size_t(b)]) <= reach;
+        return !topo.is_boundary_edge(points[a].first) && !topo.is_boundary_edge(points[b].first) &&
+               glm::length(at[a] - at[b]) <= reach;
     };
     join_coincident_ends(chains, at, 1e-9 * (2.0 * bounding_radius(topo)) + 1e-300, gap_between);
     for (const auto& [chain, closed] : chains) {
@@ -319,7 +319,7 @@ IntersectionCurves find_intersections(const MeshTopology& topo) {
         std::vector<EdgeId> edges;
         std::vector<double> t;
         for (const std::int32_t p : chain) {
-            const auto& [e, g] = points[std::size_t(p)];
+            const auto& [e, g] = points[p];
             edges.push_back(e);
             t.push_back(crossing_t(topo, e, g));
             out.pierced.push_back(g);

@@ -209,7 +209,7 @@ void ContourTracker::track_intersections() {
                     const auto it = grid.find({c[0] + dx, c[1] + dy, c[2] + dz});
                     if (it == grid.end()) continue;
                     for (const std::int32_t o : it->second) {
-                        const glm::dvec3 gap = old_position[std::size_t(o)] - p;
+                        const glm::dvec3 gap = old_position[o] - p;
                         const double d = glm::dot(gap, gap);
                         if (d < best_d || (d == best_d && o < best)) best_d = d, best = o;
                     }
@@ -224,8 +224,8 @@ void ContourTracker::track_intersections() {
         const auto it = by_key.find({fronts.snaxels[s].edge, frame_.contour.snaxel_pierced[s]});
         if (it == by_key.end()) continue;
         source[s] = it->second;
-        frame_.snaxel_id[s] = prev.snaxel_id[std::size_t(it->second)];
-        continued[std::size_t(it->second)] = 1;
+        frame_.snaxel_id[s] = prev.snaxel_id[it->second];
+        continued[it->second] = 1;
     }
     // The rest: the nearest old snaxel's nearest new one takes its identity
     // on where no snaxel continued it; the others are born from it.
@@ -233,20 +233,20 @@ void ContourTracker::track_intersections() {
     for (std::size_t s = 0; s < n; ++s) {
         if (source[s] != kNone) continue;
         source[s] = nearest_old(snaxel_position_[s]);
-        if (source[s] == kNone || continued[std::size_t(source[s])]) continue;
-        std::int32_t& best = best_child[std::size_t(source[s])];
-        const glm::dvec3 at = old_position[std::size_t(source[s])];
-        if (best == kNone || glm::length(snaxel_position_[s] - at) < glm::length(snaxel_position_[std::size_t(best)] - at))
+        if (source[s] == kNone || continued[source[s]]) continue;
+        std::int32_t& best = best_child[source[s]];
+        const glm::dvec3 at = old_position[source[s]];
+        if (best == kNone || glm::length(snaxel_position_[s] - at) < glm::length(snaxel_position_[best] - at))
             best = std::int32_t(s);
     }
     for (std::size_t s = 0; s < n; ++s) {
         if (frame_.snaxel_id[s]) continue;
         const std::int32_t parent = source[s];
-        if (parent != kNone && best_child[std::size_t(parent)] == std::int32_t(s)) {
-            frame_.snaxel_id[s] = prev.snaxel_id[std::size_t(parent)];
+        if (parent != kNone && best_child[parent] == std::int32_t(s)) {
+            frame_.snaxel_id[s] = prev.snaxel_id[parent];
         } else {
             frame_.snaxel_id[s] = next_id_++;
-            if (parent != kNone) frame_.born_from[s] = prev.snaxel_id[std::size_t(parent)];
+            if (parent != kNone) frame_.born_from[s] = prev.snaxel_id[parent];
         }
     }
     match_loops(prev, old_position, source);

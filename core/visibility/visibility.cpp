@@ -53,9 +53,8 @@ std::vector<std::uint8_t> selected_stretches(const MeshTopology& topo, const Con
             }
             if (meeting) {
                 // Where two surfaces meet: on both (its edge's and the face it pierces).
-                const auto pierced = std::size_t(order[k]) < contour.snaxel_pierced.size()
-                                         ? contour.snaxel_pierced[std::size_t(order[k])]
-                                         : FaceId();
+                const std::int32_t at = order[k];
+                const FaceId pierced = at < std::int32_t(contour.snaxel_pierced.size()) ? contour.snaxel_pierced[at] : FaceId();
                 out[order[k]] = on_edge(s) || (pierced.valid() && matcher.face(pierced));
                 continue;
             }

@@ -82,13 +82,13 @@ inline int orient3d_exact(const glm::dvec3& a, const glm::dvec3& b, const glm::d
                 const std::array<int, 4> perm{p0, p1, p2, p3};
                 int inversions = 0;
                 for (int i = 0; i < 4; ++i)
-                    for (int j = i + 1; j < 4; ++j) inversions += perm[std::size_t(i)] > perm[std::size_t(j)];
+                    for (int j = i + 1; j < 4; ++j) inversions += perm[i] > perm[j];
                 const double s = inversions % 2 ? -1.0 : 1.0;
                 // Row i takes column perm[i]; the row taking column 3 gives 1.
                 double f[3];
                 int n = 0;
                 for (int i = 0; i < 4; ++i)
-                    if (perm[std::size_t(i)] != 3) f[n++] = (*row[std::size_t(i)])[perm[std::size_t(i)]];
+                    if (perm[i] != 3) f[n++] = (*row[i])[perm[i]];
                 sum.add_product(f[0], f[1], f[2], -s);
             }
     return sum.sign();
