@@ -24,6 +24,20 @@ constexpr double kGapWidth = 0.5;
 
 } // namespace
 
+int shading_class_at(const MeshTopology& topo, const RayHit& hit, const ShadingClasses& classes, const Camera& camera,
+                     const Light& light) {
+    const auto& fv = topo.face_vertices()[hit.face];
+    const double w0 = 1.0 - hit.u - hit.v;
+    const glm::dvec3 p = w0 * topo.positions()[fv[0]] + hit.u * topo.positions()[fv[1]] + hit.v * topo.positions()[fv[2]];
+    glm::dvec3 n = w0 * topo.normals()[fv[0]] + hit.u * topo.normals()[fv[1]] + hit.v * topo.normals()[fv[2]];
+    if (const double len = glm::length(n); len > 0.0) n /= len;
+    const glm::dvec3 l = light.to_light(p);
+    const double nl = glm::dot(n, l);
+    const double rv = glm::dot(camera.to_viewer(p), 2.0 * nl * n - l);
+    return classes.classify(nl < 0.0, [&](int b) { return nl >= classes.level(2 + b); },
+                            [&](int h) { return rv >= classes.level(classes.first_highlight() + h); });
+}
+
 void fill_snaxel_map_gaps(PlanarMap& map, const SnaxelEngine& engine, const SnaxelMapInput& input, const RayScene& rays,
                           const ImageProjection& projection, const Camera& camera, const Light& light) {
     const MeshTopology& topo = engine.topology();
@@ -96,16 +110,7 @@ void fill_snaxel_map_gaps(PlanarMap& map, const SnaxelEngine& engine, const Snax
             ray.tfar = std::numeric_limits<double>::infinity();
             const RayHit hit = rays.nearest(ray);
             if (!hit.hit()) continue;
-            const auto& fv = topo.face_vertices()[hit.face];
-            const double w0 = 1.0 - hit.u - hit.v;
-            const glm::dvec3 p = w0 * topo.positions()[fv[0]] + hit.u * topo.positions()[fv[1]] + hit.v * topo.positions()[fv[2]];
-            glm::dvec3 n = w0 * topo.normals()[fv[0]] + hit.u * topo.normals()[fv[1]] + hit.v * topo.normals()[fv[2]];
-            if (const double len = glm::length(n); len > 0.0) n /= len;
-            const glm::dvec3 l = light.to_light(p);
-            const double nl = glm::dot(n, l);
-            const double rv = glm::dot(camera.to_viewer(p), 2.0 * nl * n - l);
-            const int cls = classes.classify(nl < 0.0, [&](int b) { return nl >= classes.level(2 + b); },
-                                             [&](int h) { return rv >= classes.level(classes.first_highlight() + h); });
+            const int cls = shading_class_at(topo, hit, classes, camera, light);
             auto& vote = votes.try_emplace(cls, 0.0, hit.face).first->second;
             vote.first += point.width;
         }

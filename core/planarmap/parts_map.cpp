@@ -12,6 +12,7 @@
 #include "snaxels/planarmap/detail/clip.h"
 #include "snaxels/planarmap/planar_map.h"
 #include "snaxels/snaxel/feature_edges.h"
+#include "snaxels/snaxel/intersections.h"
 #include "snaxels/util/detail/parallel.h"
 #include "snaxels/visibility/visibility.h"
 
@@ -50,7 +51,8 @@ std::shared_ptr<const std::vector<Fronts>> boundary_fronts(const SnaxelEngine& e
 } // namespace
 
 void split_regions_by_part(PlanarMap& map, const SnaxelEngine& engine, const RayScene& rays,
-                           const ImageProjection& projection) {
+                           const ImageProjection& projection, const ContourResult& visual,
+                           const ShadingClasses& classes, const Camera& camera, const Light& light) {
     const MeshTopology& topo = engine.topology();
     const FaceParts* parts = topo.parts();
     if (!parts || parts->objects.empty() || parts->materials.empty()) return;
@@ -59,12 +61,49 @@ void split_regions_by_part(PlanarMap& map, const SnaxelEngine& engine, const Ray
         return;
     }
     // The boundaries between parts, seen or not: the material and object
-    // lines, in the image. A boundary that does not show cuts a region of
-    // one part into pieces that all see that part, and they join again.
+    // lines, in the image; and where one object may show in front of
+    // another or enter it: every object's outline (the visual contour)
+    // and the intersection curves. A boundary that does not show cuts a
+    // region of one part into pieces that all see that part, and they join
+    // again.
     clip::Paths cuts;
     const std::shared_ptr<const std::vector<Fronts>> lines = boundary_fronts(engine);
-    for (const Fronts& fronts : *lines)
-        for (const FrontLoop& loop : fronts.loops) {
+    std::vector<const Fronts*> cutting;
+    for (const Fronts& fronts : *lines) cutting.push_back(&fronts);
+    cutting.push_back(&visual.fronts);
+    std::shared_ptr<const IntersectionCurves> meeting;
+    if (parts->objects.size() > 1) {
+        meeting = require_intersections(topo);
+        cutting.push_back(&meeting->fronts);
+    }
+    // The faceted outline too: the edges between a face turned to the
+    // viewer and one turned away (across a split sharp edge's strip, the
+    // faces it parts), and the borders. Where a file's normals round an
+    // edge the rays see (a cylinder whose smooth sides take its flat caps'
+    // normals at the rims), the visual contour runs elsewhere.
+    clip::Paths outline_edges;
+    if (parts->objects.size() > 1) {
+        const glm::dvec3 eye_dir = camera.orthographic() ? camera.to_viewer(glm::dvec3(0.0)) : glm::dvec3(0.0);
+        auto facing = [&](FaceId f) {
+            const auto& fv = topo.face_vertices()[f];
+            const glm::dvec3 a = topo.positions()[fv[0]];
+            const glm::dvec3 n = glm::cross(topo.positions()[fv[1]] - a, topo.positions()[fv[2]] - a);
+            return glm::dot(n, camera.orthographic() ? eye_dir : camera.eye - a) > 0.0;
+        };
+        for (const EdgeId e : topo.edges()) {
+            if (topo.has_strips() && edge_in_strip(topo, e)) continue;
+            const auto faces = faces_beside(topo, e);
+            if (faces[0].valid() && faces[1].valid() && facing(faces[0]) == facing(faces[1])) continue;
+            ClipperLib::Path path;
+            for (const VertexId v : topo.edge_vertices()[e]) {
+                const glm::dvec2 q = projection.project(topo.positions()[v]);
+                path.push_back({ClipperLib::cInt(std::llround(q.x * clip::kScale)), ClipperLib::cInt(std::llround(q.y * clip::kScale))});
+            }
+            outline_edges.push_back(std::move(path));
+        }
+    }
+    for (const Fronts* cut : cutting)
+        for (const Fronts& fronts = *cut; const FrontLoop& loop : fronts.loops) {
             ClipperLib::Path path;
             fronts.for_each_in_loop(loop, [&](std::int32_t sn) {
                 const glm::dvec2 q = projection.project(engine.position(fronts.snaxels[sn]));
@@ -79,15 +118,35 @@ void split_regions_by_part(PlanarMap& map, const SnaxelEngine& engine, const Ray
         offset.AddPaths(cuts, ClipperLib::jtSquare, ClipperLib::etOpenButt);
         offset.Execute(strips, kHalfStrip);
     }
-    // The part seen through an image point: the nearest face on its ray.
+    if (!outline_edges.empty()) {
+        // Each edge on its own, its ends squared past its vertices, so the
+        // strips of two edges that meet at an angle leave no gap between.
+        clip::Paths more;
+        ClipperLib::ClipperOffset offset;
+        offset.AddPaths(outline_edges, ClipperLib::jtSquare, ClipperLib::etOpenSquare);
+        offset.Execute(more, kHalfStrip);
+        strips.insert(strips.end(), more.begin(), more.end());
+    }
+    // The part seen through an image point: the nearest face on its ray,
+    // with the shading class there.
     const double back = 4.0 * bounding_radius(topo) + 1.0;
-    auto part_at = [&](const glm::dvec2& pixel) -> std::optional<std::pair<std::uint32_t, std::uint32_t>> {
+    using Part = std::pair<std::uint32_t, std::uint32_t>;
+    auto seen_at = [&](const glm::dvec2& pixel) -> std::optional<std::pair<Part, int>> {
         VisibilityRay ray;
         projection.pixel_ray(pixel, back, ray.origin, ray.dir);
         ray.tfar = std::numeric_limits<double>::infinity();
         const RayHit hit = rays.nearest(ray);
         if (!hit.hit()) return std::nullopt;
-        return std::pair(parts->object[hit.face], parts->material[hit.face]);
+        return std::pair(Part(parts->object[hit.face], parts->material[hit.face]), shading_class_at(topo, hit, classes, camera, light));
+    };
+    auto part_at = [&](const glm::dvec2& pixel) -> std::optional<Part> {
+        const auto seen = seen_at(pixel);
+        return seen ? std::optional<Part>(seen->first) : std::nullopt;
+    };
+    auto class_index = [&](const MapRegion& r) {
+        for (int c = 0; c < classes.count(); ++c)
+            if (classes.region_class(c) == r.cls && classes.level(c) == r.k) return c;
+        return -1;
     };
     // Each region cut by the strips; its pieces take the part seen inside
     // them, those of one part joined, the strips' share going to the largest.
@@ -106,8 +165,13 @@ void split_regions_by_part(PlanarMap& map, const SnaxelEngine& engine, const Ray
         ClipperLib::PolyTree tree;
         clip::difference_tree(whole, near, tree);
         std::vector<clip::Paths> pieces = clip::pieces_of(tree);
-        std::map<std::pair<std::uint32_t, std::uint32_t>, clip::Paths> by_part;
-        std::pair<std::uint32_t, std::uint32_t> largest_part{0, 0};
+        const int own_class = class_index(region);
+        // Pieces by (part, class): a piece keeps its region's class where
+        // a fair share of its rays see that class on its part; a piece of
+        // another object's image (the region was ranked nearer than what
+        // hides it) takes the class seen there.
+        std::map<std::pair<Part, int>, clip::Paths> by_part;
+        std::pair<Part, int> largest_part{{0, 0}, own_class};
         double largest = -1.0;
         for (const clip::Paths& piece : pieces) {
             // The part seen through the piece: the one the rays through its
@@ -115,11 +179,15 @@ void split_regions_by_part(PlanarMap& map, const SnaxelEngine& engine, const Ray
             // slip past a thin piece's edge, and a piece that reaches over
             // another part's image, where a map's region strays past an
             // outline, is still seen as the part most of it shows).
-            std::optional<std::pair<std::uint32_t, std::uint32_t>> part;
+            std::optional<Part> part;
             const std::vector<clip::InsidePoint> points = clip::inside_points(piece);
-            std::map<std::pair<std::uint32_t, std::uint32_t>, double> votes;
+            std::map<Part, double> votes;
+            std::map<std::pair<Part, int>, double> class_votes;
             for (const clip::InsidePoint& point : points)
-                if (const auto seen = part_at(point.at)) votes[*seen] += point.width;
+                if (const auto seen = seen_at(point.at)) {
+                    votes[seen->first] += point.width;
+                    class_votes[*seen] += point.width;
+                }
             double most = 0.0;
             for (const auto& [seen, width] : votes)
                 if (width > most) most = width, part = seen;
@@ -128,7 +196,13 @@ void split_regions_by_part(PlanarMap& map, const SnaxelEngine& engine, const Ray
             for (double reach = 0.5; !part && !points.empty() && reach <= 4.0; reach *= 2.0)
                 for (int a = 0; a < 8 && !part; ++a)
                     part = part_at(points.front().at + reach * glm::dvec2(std::cos(a * 0.785398), std::sin(a * 0.785398)));
-            const auto key = part.value_or(std::pair<std::uint32_t, std::uint32_t>(~0u, ~0u));
+            int cls = own_class;
+            if (part && class_votes[{*part, own_class}] < 0.25 * most) {
+                double best = 0.0;
+                for (const auto& [seen, width] : class_votes)
+                    if (seen.first == *part && width > best) best = width, cls = seen.second;
+            }
+            const std::pair<Part, int> key{part.value_or(Part(~0u, ~0u)), part ? cls : own_class};
             clip::Paths& into = by_part[key];
             into.insert(into.end(), piece.begin(), piece.end());
             const double a = clip::area(piece);
@@ -136,7 +210,7 @@ void split_regions_by_part(PlanarMap& map, const SnaxelEngine& engine, const Ray
         }
         // Pieces no ray found a part for (slivers at the edge of the
         // surface) join the largest piece, as do the strips' share.
-        if (const auto none = by_part.find({~0u, ~0u}); none != by_part.end()) {
+        if (const auto none = by_part.find({Part(~0u, ~0u), own_class}); none != by_part.end()) {
             if (largest >= 0.0) {
                 clip::Paths& into = by_part[largest_part];
                 into.insert(into.end(), none->second.begin(), none->second.end());
@@ -148,10 +222,12 @@ void split_regions_by_part(PlanarMap& map, const SnaxelEngine& engine, const Ray
             clip::Paths& into = by_part.count(largest_part) ? by_part[largest_part] : by_part.begin()->second;
             into = clip::op(into, share, ClipperLib::ctUnion);
         }
-        for (auto& [part, paths] : by_part) {
+        for (auto& [key, paths] : by_part) {
+            const auto& [part, cls] = key;
             MapRegion piece = region;
             piece.polygons = clip::from_paths(paths);
             piece.area = clip::area(paths);
+            if (cls >= 0) piece.cls = classes.region_class(cls), piece.k = classes.level(cls);
             if (part.first != ~0u) piece.object = std::int32_t(part.first), piece.material = std::int32_t(part.second);
             if (piece.area > 0.0) split[i].push_back(std::move(piece));
         }

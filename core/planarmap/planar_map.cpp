@@ -36,24 +36,25 @@ PlanarMap build_planar_map(PlanarMapKind kind, const SnaxelEngine& engine, const
     std::sort(gleams.begin(), gleams.end(), by_k);
     PlanarMap map;
     if (!rays) throw Error("a planar map needs the ray-tracing scene");
-    if (kind == PlanarMapKind::Post) {
-        map.regions = build_post_map(engine, {visual, shadow, isophotes, gleams}, *rays, projection, camera, light);
-        subtract_nearer_regions(map);
-        split_regions_by_part(map, engine, *rays, projection);
-        return map;
-    }
     SnaxelMapInput in;
     in.visual = visual;
     in.shadow = shadow;
     in.isophotes = isophotes;
     in.gleams = gleams;
     in.sight = sight;
+    const ShadingClasses classes = shading_classes(in);
+    if (kind == PlanarMapKind::Post) {
+        map.regions = build_post_map(engine, {visual, shadow, isophotes, gleams}, *rays, projection, camera, light);
+        subtract_nearer_regions(map);
+        split_regions_by_part(map, engine, *rays, projection, *visual, classes, camera, light);
+        return map;
+    }
     SnaxelMap built = build_snaxel_map(engine, in, *rays, projection, camera, light);
     map.regions = std::move(built.regions);
     map.vertex_region = std::move(built.vertex_region);
     subtract_nearer_regions(map);
     fill_snaxel_map_gaps(map, engine, in, *rays, projection, camera, light);
-    split_regions_by_part(map, engine, *rays, projection);
+    split_regions_by_part(map, engine, *rays, projection, *visual, classes, camera, light);
     return map;
 }
 
