@@ -332,3 +332,157 @@ TEST(Intersections, AnObjectThroughItselfMeetsItself) {
             EXPECT_TRUE(std::abs(q.x - 0.3) < 1e-6 || std::abs(q.x - 0.7) < 1e-6 || std::abs(q.y - 0.3) < 1e-6 || std::abs(q.y - 0.7) < 1e-6) << q.x << " " << q.y << " " << q.z;
         }
 }
+
+namespace {
+
+/// The second method, sharing nothing with the product: every pair of
+/// triangles of the file (the tests' own Collada reader) whose boxes
+/// overlap, of two objects or of one object without a shared corner,
+/// intersected in long double: each triangle's crossing of the other's
+/// plane (where its corners lie strictly on both sides) as a segment on
+/// the planes' common line, the two segments overlapped along it.
+std::vector<std::array<glm::dvec3, 2>> reference_segments(const ref::SceneMesh& scene) {
+    using LV = std::array<long double, 3>;
+    auto lv = [](const glm::dvec3& p) { return LV{p.x, p.y, p.z}; };
+    auto sub = [](const LV& a, const LV& b) { return LV{a[0] - b[0], a[1] - b[1], a[2] - b[2]}; };
+    auto cross = [](const LV& a, const LV& b) { return LV{a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]}; };
+    auto dot = [](const LV& a, const LV& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; };
+    const std::size_t n = scene.faces.size();
+    std::vector<std::array<glm::dvec3, 2>> box(n);
+    for (std::size_t f = 0; f < n; ++f) {
+        box[f] = {glm::dvec3(1e300), glm::dvec3(-1e300)};
+        for (const int v : scene.faces[f]) {
+            box[f][0] = glm::min(box[f][0], scene.positions[std::size_t(v)]);
+            box[f][1] = glm::max(box[f][1], scene.positions[std::size_t(v)]);
+        }
+    }
+    std::vector<std::size_t> order(n);
+    for (std::size_t i = 0; i < n; ++i) order[i] = i;
+    std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return box[a][0].x < box[b][0].x; });
+    double scale = 0.0;
+    for (const glm::dvec3& p : scene.positions) scale = std::max(scale, glm::length(p));
+    const long double eps = 1e-12L * scale;
+    // The piece of triangle a's plane crossing by triangle t: the two points
+    // where t's edges cross plane (n, d0); false when t does not strictly
+    // straddle it.
+    auto crossing = [&](const std::array<int, 3>& t, const LV& normal, const LV& origin, std::array<LV, 2>& out) {
+        std::array<long double, 3> d{};
+        std::array<LV, 3> p{};
+        for (int k = 0; k < 3; ++k) {
+            p[std::size_t(k)] = lv(scene.positions[std::size_t(t[std::size_t(k)])]);
+            d[std::size_t(k)] = dot(sub(p[std::size_t(k)], origin), normal);
+        }
+        const long double len = std::sqrt(dot(normal, normal));
+        bool above = false, below = false;
+        for (const long double v : d) above |= v > eps * len, below |= v < -eps * len;
+        if (!above || !below) return false;
+        int found = 0;
+        for (int k = 0; k < 3 && found < 2; ++k) {
+            const std::size_t i = std::size_t(k), j = std::size_t((k + 1) % 3);
+            if ((d[i] > 0) == (d[j] > 0)) continue;
+            const long double u = d[i] / (d[i] - d[j]);
+            out[std::size_t(found++)] = {p[i][0] + u * (p[j][0] - p[i][0]), p[i][1] + u * (p[j][1] - p[i][1]), p[i][2] + u * (p[j][2] - p[i][2])};
+        }
+        return found == 2;
+    };
+    // An edge lying in the other triangle's plane is on the curve where the
+    // surface passes through that plane there: its two faces' third
+    // corners lie strictly on either side (a ball's equator in a tabletop
+    // that its lower half sinks into). Its part inside the triangle counts.
+    std::map<std::pair<int, int>, std::vector<int>> third; // edge -> the faces' third corners
+    for (const auto& f : scene.faces)
+        for (int k = 0; k < 3; ++k) {
+            const int u = f[std::size_t(k)], w = f[std::size_t((k + 1) % 3)];
+            third[{std::min(u, w), std::max(u, w)}].push_back(f[std::size_t((k + 2) % 3)]);
+        }
+    auto edge_in_plane = [&](const std::array<int, 3>& t, const std::array<int, 3>& other, const LV& normal, const LV& origin,
+                             std::vector<std::array<glm::dvec3, 2>>& into) {
+        const long double len = std::sqrt(dot(normal, normal));
+        auto dist = [&](int v) { return dot(sub(lv(scene.positions[std::size_t(v)]), origin), normal) / len; };
+        for (int k = 0; k < 3; ++k) {
+            const int u = t[std::size_t(k)], w = t[std::size_t((k + 1) % 3)];
+            if (std::abs(dist(u)) > eps || std::abs(dist(w)) > eps) continue;
+            const auto& thirds = third[{std::min(u, w), std::max(u, w)}];
+            if (thirds.size() != 2 || !((dist(thirds[0]) > eps && dist(thirds[1]) < -eps) || (dist(thirds[0]) < -eps && dist(thirds[1]) > eps)))
+                continue;
+            if (std::min(u, w) != u) continue; // each edge once (from the face where it runs up)
+            // The edge clipped to the other triangle, in its plane.
+            const LV p0 = lv(scene.positions[std::size_t(u)]), p1 = lv(scene.positions[std::size_t(w)]);
+            long double lo = 0, hi = 1;
+            for (int j = 0; j < 3 && lo < hi; ++j) {
+                const LV a = lv(scene.positions[std::size_t(other[std::size_t(j)])]), b = lv(scene.positions[std::size_t(other[std::size_t((j + 1) % 3)])]);
+                const LV inward = cross(normal, sub(b, a)); // toward the triangle's inside
+                const long double s0 = dot(sub(p0, a), inward), s1 = dot(sub(p1, a), inward);
+                if (s0 < 0 && s1 < 0) lo = 1, hi = 0;
+                else if (s0 < 0) lo = std::max(lo, s0 / (s0 - s1));
+                else if (s1 < 0) hi = std::min(hi, s0 / (s0 - s1));
+            }
+            if (lo >= hi) continue;
+            auto at = [&](long double u2) { return glm::dvec3(double(p0[0] + u2 * (p1[0] - p0[0])), double(p0[1] + u2 * (p1[1] - p0[1])), double(p0[2] + u2 * (p1[2] - p0[2]))); };
+            into.push_back({at(lo), at(hi)});
+        }
+    };
+    std::vector<std::array<glm::dvec3, 2>> out;
+    for (std::size_t ia = 0; ia < n; ++ia) {
+        const std::size_t a = order[ia];
+        for (std::size_t ib = ia + 1; ib < n && box[order[ib]][0].x <= box[a][1].x; ++ib) {
+            const std::size_t b = order[ib];
+            if (box[b][0].y > box[a][1].y || box[a][0].y > box[b][1].y || box[b][0].z > box[a][1].z || box[a][0].z > box[b][1].z) continue;
+            bool shared = false;
+            for (const int u : scene.faces[a])
+                for (const int w : scene.faces[b]) shared |= u == w;
+            if (shared) continue;
+            const auto& fa = scene.faces[a];
+            const auto& fb = scene.faces[b];
+            const LV a0 = lv(scene.positions[std::size_t(fa[0])]), b0 = lv(scene.positions[std::size_t(fb[0])]);
+            const LV na = cross(sub(lv(scene.positions[std::size_t(fa[1])]), a0), sub(lv(scene.positions[std::size_t(fa[2])]), a0));
+            const LV nb = cross(sub(lv(scene.positions[std::size_t(fb[1])]), b0), sub(lv(scene.positions[std::size_t(fb[2])]), b0));
+            edge_in_plane(fa, fb, nb, b0, out);
+            edge_in_plane(fb, fa, na, a0, out);
+            std::array<LV, 2> sa{}, sb{};
+            if (!crossing(fb, na, a0, sb) || !crossing(fa, nb, b0, sa)) continue;
+            const LV dir = cross(na, nb);
+            long double a_lo = dot(sa[0], dir), a_hi = dot(sa[1], dir), b_lo = dot(sb[0], dir), b_hi = dot(sb[1], dir);
+            if (a_lo > a_hi) std::swap(a_lo, a_hi), std::swap(sa[0], sa[1]);
+            if (b_lo > b_hi) std::swap(b_lo, b_hi), std::swap(sb[0], sb[1]);
+            const LV& from = a_lo > b_lo ? sa[0] : sb[0];
+            const LV& to = a_hi < b_hi ? sa[1] : sb[1];
+            if (std::max(a_lo, b_lo) >= std::min(a_hi, b_hi)) continue;
+            out.push_back({glm::dvec3(double(from[0]), double(from[1]), double(from[2])), glm::dvec3(double(to[0]), double(to[1]), double(to[2]))});
+        }
+    }
+    return out;
+}
+
+} // namespace
+
+// Done-when 2 on general scenes: the Blender scenes' intersection lines
+// against the second method above, the same figures as the closed forms.
+TEST(Intersections, AgreeWithASecondMethodOnBlenderScenes) {
+    for (const std::string name : {"meet/still-life.dae", "meet/sunk.dae", "meet/crossing.dae"}) {
+        const std::string file = test::asset(name);
+        const ref::SceneMesh scene = ref::read_collada(file);
+        const std::vector<std::array<glm::dvec3, 2>> truth = reference_segments(scene);
+        ASSERT_FALSE(truth.empty()) << name;
+        const ProductLines p(file);
+        const double tolerance = 0.002 * diagonal(p.topo);
+        auto distance = [&](const glm::dvec3& q) {
+            double best = 1e300;
+            for (const auto& s : truth) best = std::min(best, test::segment_distance(q, s[0], s[1]));
+            return best;
+        };
+        std::vector<glm::dvec3> samples; // along the reference's segments, every 1/10 of the tolerance
+        for (const auto& s : truth) {
+            const int steps = std::max(1, int(std::ceil(glm::length(s[1] - s[0]) / (0.1 * tolerance))));
+            for (int k = 0; k < steps; ++k) samples.push_back(glm::mix(s[0], s[1], (k + 0.5) / steps));
+        }
+ for (const auto& pl : p.polylines()) {
+            const CurveFit one = fit({pl}, distance, {}, tolerance);
+            if (one.within < 0.98)
+                std::printf("  a loop of %zu points at %.3f %.3f %.3f: %.1f%% within\n", pl.size(), pl[0].x, pl[0].y, pl[0].z, 100 * one.within);
+        }
+ const CurveFit tight = fit(p.polylines(), distance, samples, 1e-5 * diagonal(p.topo));
+        std::printf("%s at 0.001%% of the diagonal: %.2f%% within, %.2f%% covered\n", name.c_str(), 100 * tight.within, 100 * tight.covered);
+        expect_fit(fit(p.polylines(), distance, samples, tolerance), name + " against the second method (" + std::to_string(truth.size()) + " segments)");
+    }
+}
