@@ -16,12 +16,14 @@
 
 #include <glm/glm.hpp>
 
+#include "snaxels/animation/frame_driver.h"
 #include "snaxels/mesh/import.h"
 #include "snaxels/mesh/refine.h"
 #include "snaxels/mesh/sharp_edges.h"
 #include "snaxels/scene/camera.h"
 #include "snaxels/snaxel/intersections.h"
 #include "snaxels/snaxel/snaxel_engine.h"
+#include "snaxels/snaxel/tracker.h"
 #include "snaxels/visibility/ray_scene.h"
 #include "snaxels/visibility/visibility.h"
 #include "tests/support/assets.h"
@@ -485,4 +487,50 @@ TEST(Intersections, AgreeWithASecondMethodOnBlenderScenes) {
         std::printf("%s at 0.001%% of the diagonal: %.2f%% within, %.2f%% covered\n", name.c_str(), 100 * tight.within, 100 * tight.covered);
         expect_fit(fit(p.polylines(), distance, samples, tolerance), name + " against the second method (" + std::to_string(truth.size()) + " segments)");
     }
+}
+
+// Done-when 4: as objects pass through each other (a ball entering a box
+// through its wall, running half sunk in its top, leaving through the far
+// wall), the tracked intersection lines and visual contour equal those
+// found from scratch in every frame's pose, and the intersection loop is
+// born, carried and ends as one sequence while it lasts.
+TEST(Intersections, TrackedThroughAClipAsFromScratch) {
+    const std::string path = test::asset("meet/rolling.gltf");
+    const LoadedMesh mesh = import_mesh(path);
+    const MeshTopology rest = engine_topology(mesh);
+    AnimationSpec spec;
+    spec.kind = AnimationSpec::Kind::Clip;
+    spec.frames = 97;
+    spec.fps = 24.0;
+    Camera camera;
+    camera.view_dir = glm::normalize(glm::dvec3(0.4, -0.6, -1.0));
+    FrameDriver driver(spec, mesh, rest, camera, default_light(camera), glm::dvec3(0.0), path);
+    ASSERT_TRUE(driver.mesh_moves());
+    EngineOptions options;
+    options.check_invariants = false;
+    ContourTracker meeting(rest, {ContourKind::Intersection}, options), visual(rest, ContourSpec{}, options);
+    std::map<std::uint64_t, int> frames_of_sequence;
+    std::size_t frames_with_lines = 0;
+    for (int k = 0; k < spec.frames; ++k) {
+        const FramePose pose = driver.pose(k);
+        const SnaxelEngine engine(pose.mesh);
+        for (ContourTracker* tracker : {&meeting, &visual}) {
+            const TrackedFrame& tracked = tracker->step(pose.mesh, pose.camera, pose.light);
+            const ContourResult fresh = engine.compute(tracked.contour.spec, pose.camera, pose.light, options);
+            ASSERT_EQ(tracked.contour.fronts.snaxels.size(), fresh.fronts.snaxels.size()) << "frame " << k << " " << tracked.contour.spec.label();
+            ASSERT_EQ(tracked.contour.fronts.loops.size(), fresh.fronts.loops.size()) << "frame " << k;
+            for (std::size_t s = 0; s < fresh.fronts.snaxels.size(); ++s) {
+                EXPECT_EQ(tracked.contour.fronts.snaxels[s].edge, fresh.fronts.snaxels[s].edge) << "frame " << k;
+                EXPECT_NEAR(tracked.contour.fronts.snaxels[s].t, fresh.fronts.snaxels[s].t, 1e-9) << "frame " << k;
+            }
+        }
+        frames_with_lines += !meeting.current().contour.fronts.loops.empty();
+        for (const std::uint64_t sequence : meeting.current().loop_sequence) ++frames_of_sequence[sequence];
+    }
+    int longest = 0;
+    for (const auto& [sequence, frames] : frames_of_sequence) longest = std::max(longest, frames);
+    std::printf("rolling: intersection lines in %zu of %d frames, %zu loop sequences, the longest %d frames\n", frames_with_lines,
+                spec.frames, frames_of_sequence.size(), longest);
+    EXPECT_GT(frames_with_lines, 80u);
+    EXPECT_GE(longest, 60);
 }
