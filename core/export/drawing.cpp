@@ -59,14 +59,17 @@ Drawing make_drawing(const SnaxelEngine& engine, const std::vector<ContourResult
                 const FaceParts& parts = *drawing.parts;
                 const bool along_edges = r.spec.along_edges();
                 std::vector<std::uint32_t> count(parts.objects.size() + 1, 0);
+                auto on_face = [&](FaceId f) {
+                    drawn.objects.push_back(parts.object[f]);
+                    drawn.materials.push_back(parts.material[f]);
+                    ++count[std::min<std::size_t>(parts.object[f], parts.objects.size())];
+                };
                 r.fronts.for_each_in_loop(loop, [&](std::int32_t s) {
                     const EdgeId e = r.fronts.snaxels[s].edge;
                     for (const FaceId f : along_edges ? faces_beside(topo, e) : topo.edge_faces()[e])
-                        if (f.valid()) {
-                            drawn.objects.push_back(parts.object[f]);
-                            drawn.materials.push_back(parts.material[f]);
-                            ++count[std::min<std::size_t>(parts.object[f], parts.objects.size())];
-                        }
+                        if (f.valid()) on_face(f);
+                    // An intersection line lies on the surface it pierces too.
+                    if (s < std::int32_t(r.snaxel_pierced.size()) && r.snaxel_pierced[s].valid()) on_face(r.snaxel_pierced[s]);
                 });
                 const auto most = std::max_element(count.begin(), count.end() - 1);
                 if (most != count.end() - 1 && *most > 0) drawn.object = std::int32_t(most - count.begin());
