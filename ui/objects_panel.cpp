@@ -45,6 +45,19 @@ const QStringList& state_names() {
     return names;
 }
 
+/// @p text with @p line (an element and its newline) before </style>, on
+/// a line of its own; the built-in style and the element where the text
+/// has no </style>.
+QString with_element(QString text, const QString& line) {
+    const qsizetype end = text.lastIndexOf("</style>");
+    if (end < 0) return "<style>\n  <contour kind=\"visual\"/>\n" + line + "</style>\n";
+    // At the start of the closing tag's line, so the element gets a line of its own.
+    qsizetype at = end;
+    while (at > 0 && (text[at - 1] == ' ' || text[at - 1] == '\t')) --at;
+    if (at > 0 && text[at - 1] != '\n') return text.insert(end, "\n" + line);
+    return text.insert(at, line);
+}
+
 } // namespace
 
 ObjectState object_state(const Style& style, const std::string& name, const std::string& path) {
@@ -60,15 +73,25 @@ QString with_object_state(const QString& text, const QString& name, ObjectState 
                                      "\"[^>]*/>[ \\t]*\\n?");
     out.remove(element);
     if (state == ObjectState::Drawn) return out;
-    const QString line = "  <object name=\"" + xml_escaped(name) + "\" " +
-                         (state == ObjectState::Hidden ? "hide=\"true\"" : "draw=\"false\"") + "/>\n";
-    const qsizetype end = out.lastIndexOf("</style>");
-    if (end < 0) return "<style>\n  <contour kind=\"visual\"/>\n" + line + "</style>\n"; // the built-in style, and the part
-    // At the start of the closing tag's line, so the element gets a line of its own.
-    qsizetype at = end;
-    while (at > 0 && (out[at - 1] == ' ' || out[at - 1] == '\t')) --at;
-    if (at > 0 && out[at - 1] != '\n') return out.insert(end, "\n" + line);
-    return out.insert(at, line);
+    return with_element(out, "  <object name=\"" + xml_escaped(name) + "\" " +
+                                 (state == ObjectState::Hidden ? "hide=\"true\"" : "draw=\"false\"") + "/>\n");
+}
+
+QString with_intersection_lines(const QString& text, const QString& name, bool on) {
+    QString out = text;
+    const QRegularExpression element("[ \\t]*<contour\\s+kind\\s*=\\s*\"intersection\"\\s+object\\s*=\\s*\"" +
+                                     QRegularExpression::escape(xml_escaped(name)) + "\"\\s*/>[ \\t]*\\n?");
+    out.remove(element);
+    if (!on) return out;
+    return with_element(out, "  <contour kind=\"intersection\" object=\"" + xml_escaped(name) + "\"/>\n");
+}
+
+bool draws_intersections(const Style& style, const FaceParts& parts, std::uint32_t index) {
+    for (const ContourSpec& spec : style_kinds(style)) {
+        if (spec.kind != ContourKind::Intersection) continue;
+        if (PartMatcher(spec.parts, &parts).object(index)) return true;
+    }
+    return false;
 }
 
 ObjectsPanel::ObjectsPanel(QWidget* parent) : QWidget(parent), tree_(new QTreeWidget(this)) {
@@ -76,14 +99,31 @@ ObjectsPanel::ObjectsPanel(QWidget* parent) : QWidget(parent), tree_(new QTreeWi
     layout->setContentsMargins(0, 0, 0, 0);
     layout->addWidget(tree_);
     tree_->setObjectName("objectsTree");
-    tree_->setColumnCount(4);
+    tree_->setColumnCount(5);
     // The name first, elided in a narrow dock; how it is drawn beside it.
-    tree_->setHeaderLabels({tr("Part"), tr("Drawn as"), tr("Faces"), tr("Line sets")});
+    tree_->setHeaderLabels({tr("Part"), tr("Drawn as"), tr("Faces"), tr("Line sets"), tr("Meets")});
+    tree_->headerItem()->setToolTip(4, tr("Draw the object's intersection lines: where it passes into another object or "
+                                          "into itself"));
     tree_->header()->setSectionResizeMode(0, QHeaderView::Interactive);
     tree_->header()->resizeSection(0, 160);
     tree_->header()->setSectionResizeMode(1, QHeaderView::ResizeToContents);
     tree_->header()->setSectionResizeMode(2, QHeaderView::ResizeToContents);
     tree_->header()->setSectionResizeMode(3, QHeaderView::ResizeToContents);
+    tree_->header()->setSectionResizeMode(4, QHeaderView::ResizeToContents);
+    connect(tree_, &QTreeWidget::itemChanged, this, [this](QTreeWidgetItem* item, int column) {
+        if (updating_ || column != 4 || !mesh_ || !parts_ || !item->data(0, kIsObjectRole).toBool()) return;
+        const auto o = std::uint32_t(item->data(0, kPartRole).toInt());
+        const SceneObject& obj = mesh_->objects[o];
+        const bool on = item->checkState(4) == Qt::Checked;
+        const QString name = QString::fromStdString(obj.name);
+        emit styleEdited(with_intersection_lines(text_, name, on),
+                         on ? tr("Draw %1's Intersection Lines").arg(name) : tr("Leave Out %1's Intersection Lines").arg(name));
+        // A line set that takes it among others (every object's) may still draw them.
+        if (!on && draws_intersections(style_, *parts_, o)) {
+            emit notice(tr("%1's intersection lines are still drawn: a line set in the style takes it").arg(name));
+            refreshStyle();
+        }
+    });
     tree_->setTextElideMode(Qt::ElideMiddle);
     tree_->setRootIsDecorated(true);
     tree_->setToolTip(tr("The scene's objects and materials. Choose how an object is drawn: its lines drawn, kept as "
@@ -126,6 +166,9 @@ void ObjectsPanel::rebuild() {
         item->setData(0, kPartRole, int(o));
         item->setData(0, kIsObjectRole, true);
         item->setTextAlignment(2, Qt::AlignRight | Qt::AlignVCenter);
+        item->setFlags(item->flags() | Qt::ItemIsUserCheckable);
+        item->setCheckState(4, Qt::Unchecked);
+        item->setToolTip(4, tr("Draw where %1 passes into another object or into itself").arg(QString::fromStdString(object.name)));
         auto* state = new QComboBox(tree_);
         state->setObjectName("state:" + QString::fromStdString(object.path));
         state->addItems(state_names());
@@ -206,6 +249,7 @@ void ObjectsPanel::refreshStyle() {
                 const SceneObject& object = parts->objects[index];
                 const ObjectState state = object_state(style_, object.name, object.path);
                 if (auto* combo = qobject_cast<QComboBox*>(tree_->itemWidget(item, 1))) combo->setCurrentIndex(int(state));
+                item->setCheckState(4, draws_intersections(style_, *parts, index) ? Qt::Checked : Qt::Unchecked);
                 if (state != ObjectState::Drawn) taking.clear();
             }
             item->setText(3, taking.isEmpty() ? tr("none") : taking.join(", "));

@@ -1,8 +1,9 @@
 #pragma once
 // The Objects panel: the scene's objects and materials with their face
 // counts; for each object how the style draws it (drawn, occluder only,
-// hidden: its <object> elements) and which of the style's line sets take
-// it. Choosing a state edits the style text (one undo step, saved with the
+// hidden: its <object> elements), whether its intersection lines (where
+// it meets another object or itself) are drawn, and which of the style's
+// line sets take it. Choosing a state edits the style text (one undo step, saved with the
 // project); selecting a row asks the 3-D view to highlight the part.
 
 #include <cstdint>
@@ -35,6 +36,16 @@ ObjectState object_state(const Style& style, const std::string& name, const std:
 /// one goes before </style>. Patterns that match it among others are left
 /// as they are.
 QString with_object_state(const QString& text, const QString& name, ObjectState state);
+
+/// @p text with the line set that draws @p name's intersection lines
+/// (`<contour kind="intersection" object="NAME"/>`, where it meets anything)
+/// added before </style> when @p on, or every such element naming exactly
+/// it removed when not.
+QString with_intersection_lines(const QString& text, const QString& name, bool on);
+
+/// Whether a line set of @p style draws intersection lines on object
+/// @p index of @p parts.
+bool draws_intersections(const Style& style, const FaceParts& parts, std::uint32_t index);
 
 class ObjectsPanel : public QWidget {
     Q_OBJECT

@@ -45,6 +45,7 @@
 #include <cmath>
 #include <QUndoStack>
 #include <QComboBox>
+#include <QHeaderView>
 #include <QTreeWidget>
 #include <QDoubleSpinBox>
 #include <QPlainTextEdit>
@@ -1293,6 +1294,58 @@ class TestMainWindow : public QObject {
         QVERIFY2(status->text().contains("2:1: warning: object \"Trailer*\" matches none") &&
                      status->text().contains("meshInst962Node"),
                  qPrintable(status->text()));
+    }
+
+    // Where objects meet (#55): a click on an object's Meets box in the
+    // Objects panel draws its intersection lines in the SVG pane (one
+    // undo step, a line set in the style); a second click leaves them out
+    // again.
+    void objectsPanelDrawsIntersectionLines() {
+        const QString sunk = QString(SNAXELS_TEST_ASSETS) + "/meet/sunk.gltf";
+        MainWindow window;
+        QVERIFY(showWithMesh(window, sunk));
+        QTest::qWait(300);
+        auto* dock = window.findChild<QDockWidget*>("objectsDock");
+        QVERIFY(dock);
+        dock->show();
+        dock->raise();
+        QTreeWidget* tree = window.objectsPanel()->tree();
+        QTreeWidgetItem* objects = tree->topLevelItem(0);
+        QTreeWidgetItem* ball = nullptr;
+        for (int i = 0; i < objects->childCount(); ++i)
+            if (objects->child(i)->text(0) == "Ball") ball = objects->child(i);
+        QVERIFY(ball);
+        QCOMPARE(ball->checkState(4), Qt::Unchecked);
+        QVERIFY(!window.currentSvg().contains("data-kind=\"intersection\""));
+        const int steps = window.undoStack()->count();
+        QSignalSpy contours(&window, &MainWindow::contoursUpdated);
+        // Clicks the check box at the left of the Meets cell (where it is
+        // now: the Line sets column beside it grows as line sets are added).
+        auto click_meets = [&] {
+            tree->scrollToItem(ball);
+            tree->scrollTo(tree->model()->index(objects->indexOfChild(ball), 4, tree->model()->index(0, 0)));
+            const QRect cell = tree->visualItemRect(ball).intersected(QRect(tree->header()->sectionViewportPosition(4), 0,
+                                                                            tree->header()->sectionSize(4), 1 << 20));
+            QVERIFY(cell.isValid() && tree->viewport()->rect().contains(cell.center()));
+            QTest::mouseClick(tree->viewport(), Qt::LeftButton, {}, QPoint(cell.left() + 10, cell.center().y()));
+        };
+        click_meets();
+        QCOMPARE(ball->checkState(4), Qt::Checked);
+        QVERIFY2(window.styleEditor()->text().contains("intersection"), qPrintable(window.styleEditor()->text()));
+        // (The pane may have its drawing before the click returns.)
+        QVERIFY(contours.count() > 0 || contours.wait(30000));
+        QTest::qWait(300);
+        QCOMPARE(window.undoStack()->count(), steps + 1);
+        QVERIFY(window.styleEditor()->text().contains("<contour kind=\"intersection\" object=\"Ball\"/>"));
+        QVERIFY2(window.currentSvg().contains("data-kind=\"intersection\""), "no intersection lines in the SVG pane");
+        contours.clear();
+        QTest::qWait(QApplication::doubleClickInterval() + 100); // a second click, not a double click
+        click_meets();
+        QVERIFY(contours.count() > 0 || contours.wait(30000));
+        QTest::qWait(300);
+        QCOMPARE(ball->checkState(4), Qt::Unchecked);
+        QVERIFY(!window.styleEditor()->text().contains("kind=\"intersection\""));
+        QVERIFY(!window.currentSvg().contains("data-kind=\"intersection\""));
     }
 
     // A style given on the command line is where the session starts, not an
