@@ -149,10 +149,13 @@ void ObjectsPanel::setStyleText(const QString& text) {
 }
 
 void ObjectsPanel::rebuild() {
+    // Items made here (their check boxes set) are no user's edit.
     updating_ = true;
     tree_->clear();
-    updating_ = false;
-    if (!mesh_ || mesh_->face_object.size() != mesh_->mesh.n_faces()) return;
+    if (!mesh_ || mesh_->face_object.size() != mesh_->mesh.n_faces()) {
+        updating_ = false;
+        return;
+    }
     std::vector<std::size_t> object_faces(mesh_->objects.size(), 0), material_faces(mesh_->materials.size(), 0);
     for (const std::uint32_t o : mesh_->face_object)
         if (o < object_faces.size()) ++object_faces[o];
@@ -209,6 +212,7 @@ void ObjectsPanel::rebuild() {
                                 .arg(material.colour.a, 0, 'g', 3));
     }
     tree_->expandAll();
+    updating_ = false;
     refreshStyle();
 }
 

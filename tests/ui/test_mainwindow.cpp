@@ -1317,6 +1317,9 @@ class TestMainWindow : public QObject {
         QVERIFY(ball);
         QCOMPARE(ball->checkState(4), Qt::Unchecked);
         QVERIFY(!window.currentSvg().contains("data-kind=\"intersection\""));
+        // Listing the objects edits nothing.
+        QVERIFY(!window.isModified());
+        QVERIFY2(!window.statusBar()->currentMessage().contains("intersection"), qPrintable(window.statusBar()->currentMessage()));
         const int steps = window.undoStack()->count();
         QSignalSpy contours(&window, &MainWindow::contoursUpdated);
         // Clicks the check box at the left of the Meets cell (where it is
