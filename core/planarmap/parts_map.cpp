@@ -24,6 +24,25 @@ namespace {
 /// units (1/1024 px): the strips are 1/64 px wide.
 constexpr double kHalfStrip = 8.0;
 
+/// Points of a cut per strip: a long line is cut as several strips, so
+/// that a region meets only the strips that pass near it.
+constexpr std::size_t kStripPoints = 24;
+
+/// The side of the tiles whose cuts are widened together, in pixels.
+constexpr double kTilePixels = 32.0;
+
+/// An object and a material.
+using Part = std::pair<std::uint32_t, std::uint32_t>;
+/// A part and a shading class (as ShadingClasses numbers them).
+using PartClass = std::pair<Part, int>;
+constexpr Part kNoPart{~0u, ~0u};
+
+/// Pieces narrower than kSliverWidth on average (twice the area over the
+/// perimeter), in pixels, and smaller than kSliverArea square pixels are
+/// slivers.
+constexpr double kSliverWidth = 0.5;
+constexpr double kSliverArea = 4.0;
+
 /// The material and object lines of @p engine's mesh: lines of the
 /// surface, the same in every pose of its connectivity, so found once per
 /// mesh (the last mesh's are kept; maps of other meshes find their own).
@@ -48,192 +67,345 @@ std::shared_ptr<const std::vector<Fronts>> boundary_fronts(const SnaxelEngine& e
     return cached;
 }
 
-} // namespace
+/// The lines a map's regions are cut along, in the image, as strips
+/// 1/64 px wide, each with its box.
+class Strips {
+  public:
+    explicit Strips(const ImageProjection& projection) : projection_(projection) {}
 
-void split_regions_by_part(PlanarMap& map, const SnaxelEngine& engine, const RayScene& rays,
-                           const ImageProjection& projection, const ContourResult& visual,
-                           const ShadingClasses& classes, const Camera& camera, const Light& light) {
-    const MeshTopology& topo = engine.topology();
-    const FaceParts* parts = topo.parts();
-    if (!parts || parts->objects.empty() || parts->materials.empty()) return;
-    if (!parts->several()) {
-        for (MapRegion& r : map.regions) r.object = 0, r.material = 0;
-        return;
+    /// Adds the polyline through @p points (world space); @p known_seen:
+    /// it is seen all along (widen() does not ask).
+    void add(std::vector<glm::dvec3> points, bool known_seen = false) {
+        lines_.push_back(std::move(points));
+        known_seen_.push_back(known_seen);
     }
-    // The boundaries between parts, seen or not: the material and object
-    // lines, in the image; and where one object may show in front of
-    // another or enter it: every object's outline (the visual contour)
-    // and the intersection curves. A boundary that does not show cuts a
-    // region of one part into pieces that all see that part, and they join
-    // again.
-    clip::Paths cuts;
+
+    /// Widens the lines into strips where they may be seen (the segments
+    /// with an end @p seen, or some point between that @p seen_along
+    /// finds; a line hidden all along parts nothing that shows), each end
+    /// squared a
+    /// little past its last point, so that cuts that meet at an angle
+    /// (chains broken at a strip or a junction) leave no gap between their
+    /// strips.
+    template <class Seen, class SeenAlong> void widen(Seen&& seen, SeenAlong&& seen_along) {
+        std::vector<std::vector<ClipperLib::Path>> cuts(lines_.size());
+        parallel_for(lines_.size(), [&](std::size_t i) {
+            const std::vector<glm::dvec3>& points = lines_[i];
+            std::vector<bool> at(points.size());
+            for (std::size_t k = 0; k < points.size(); ++k) at[k] = known_seen_[i] || seen(points[k]);
+            std::size_t start = 0;
+            for (std::size_t k = 0; k + 1 <= points.size(); ++k) {
+                const bool on = k + 1 < points.size() && (at[k] || at[k + 1] || seen_along(points[k], points[k + 1]));
+                if (!on) {
+                    cut(points, start, k + 1, cuts[i]);
+                    start = k + 1;
+                }
+            }
+        }, 16);
+        // Cuts are widened together tile by tile (by where each starts), so
+        // that strips that overlap (an outline along a material line, the
+        // ends of a line's pieces) are one polygon, while a region meets
+        // only the tiles' polygons near it.
+        std::map<std::pair<ClipperLib::cInt, ClipperLib::cInt>, ClipperLib::ClipperOffset> tiles;
+        const ClipperLib::cInt tile = ClipperLib::cInt(kTilePixels * clip::kScale);
+        for (const std::vector<ClipperLib::Path>& line : cuts)
+            for (const ClipperLib::Path& path : line) {
+                const ClipperLib::IntPoint& p = path.front();
+                const auto key = std::pair(p.X >= 0 ? p.X / tile : p.X / tile - 1, p.Y >= 0 ? p.Y / tile : p.Y / tile - 1);
+                tiles[key].AddPath(path, ClipperLib::jtSquare, ClipperLib::etOpenSquare);
+            }
+        for (auto& [key, offset] : tiles) {
+            clip::Paths strip;
+            offset.Execute(strip, kHalfStrip);
+            for (ClipperLib::Path& path : strip) {
+                boxes_.emplace_back().add(path);
+                strips_.push_back(std::move(path));
+            }
+        }
+        lines_.clear();
+        known_seen_.clear();
+    }
+
+    /// The strips whose boxes meet @p box.
+    clip::Paths over(const clip::Box& box) const {
+        clip::Paths near;
+        for (std::size_t k = 0; k < strips_.size(); ++k)
+            if (boxes_[k].meets(box)) near.push_back(strips_[k]);
+        return near;
+    }
+
+  private:
+    /// @p points from @p begin to @p end (past the last), in the image, in
+    /// pieces of kStripPoints, into @p out.
+    void cut(const std::vector<glm::dvec3>& points, std::size_t begin, std::size_t end, std::vector<ClipperLib::Path>& out) const {
+        for (std::size_t start = begin; start + 1 < end; start += kStripPoints - 1) {
+            ClipperLib::Path& path = out.emplace_back();
+            for (std::size_t k = start; k < std::min(end, start + kStripPoints); ++k) {
+                const glm::dvec2 q = projection_.project(points[k]);
+                path.push_back({ClipperLib::cInt(std::llround(q.x * clip::kScale)), ClipperLib::cInt(std::llround(q.y * clip::kScale))});
+            }
+        }
+    }
+
+    const ImageProjection& projection_;
+    std::vector<std::vector<glm::dvec3>> lines_;
+    std::vector<bool> known_seen_;
+    clip::Paths strips_;
+    std::vector<clip::Box> boxes_;
+};
+
+/// What the rays through image points see: the nearest face's object and
+/// material, and the shading class there.
+class PartProbe {
+  public:
+    PartProbe(const MeshTopology& topo, const RayScene& rays, const ImageProjection& projection, const ShadingClasses& classes,
+              const Camera& camera, const Light& light)
+        : topo_(topo), parts_(*topo.parts()), rays_(rays), projection_(projection), classes_(classes), camera_(camera), light_(light),
+          back_(4.0 * bounding_radius(topo) + 1.0), depth_slack_(0.01 * bounding_radius(topo)) {}
+
+    /// Whether @p p may be seen: nothing on the ray through it lies more
+    /// than 1% of the scene's radius nearer.
+    bool may_see(const glm::dvec3& p) const {
+        VisibilityRay ray;
+        projection_.pixel_ray(projection_.project(p), back_, ray.origin, ray.dir);
+        ray.tfar = std::numeric_limits<double>::infinity();
+        const RayHit hit = rays_.nearest(ray);
+        return !hit.hit() || hit.t >= glm::dot(p - ray.origin, ray.dir) - depth_slack_;
+    }
+
+    std::optional<PartClass> seen_at(const glm::dvec2& pixel) const {
+        const RayHit hit = nearest(pixel);
+        if (!hit.hit()) return std::nullopt;
+        return PartClass(part_of(hit.face), shading_class_at(topo_, hit, classes_, camera_, light_));
+    }
+
+    /// The part seen nearest @p pixel, up to 4 px away (a speck whose rays
+    /// all slip past the surface takes the part seen right beside it).
+    std::optional<Part> part_near(const glm::dvec2& pixel) const {
+        for (double reach = 0.5; reach <= 4.0; reach *= 2.0)
+            for (int a = 0; a < 8; ++a) {
+                const RayHit hit = nearest(pixel + reach * glm::dvec2(std::cos(a * 0.785398), std::sin(a * 0.785398)));
+                if (hit.hit()) return part_of(hit.face);
+            }
+        return std::nullopt;
+    }
+
+    /// Whether some point of the segment from @p a to @p b may be seen,
+    /// asked at its ends and every 4 px between them.
+    bool may_see_along(const glm::dvec3& a, const glm::dvec3& b) const {
+        if (may_see(a) || may_see(b)) return true;
+        const double pixels = glm::length(projection_.project(b) - projection_.project(a));
+        const int steps = int(std::clamp(std::ceil(pixels / 4.0), 2.0, 64.0));
+        for (int k = 1; k < steps; ++k)
+            if (may_see(a + (b - a) * (double(k) / steps))) return true;
+        return false;
+    }
+
+  private:
+    RayHit nearest(const glm::dvec2& pixel) const {
+        VisibilityRay ray;
+        projection_.pixel_ray(pixel, back_, ray.origin, ray.dir);
+        ray.tfar = std::numeric_limits<double>::infinity();
+        return rays_.nearest(ray);
+    }
+    Part part_of(FaceId f) const { return {parts_.object[f], parts_.material[f]}; }
+
+    const MeshTopology& topo_;
+    const FaceParts& parts_;
+    const RayScene& rays_;
+    const ImageProjection& projection_;
+    const ShadingClasses& classes_;
+    const Camera& camera_;
+    const Light& light_;
+    double back_;
+    double depth_slack_;
+};
+
+/// The material and object lines (the same in every pose) and, on a scene
+/// of several objects, the intersection curves, cut into @p strips.
+void add_part_lines(const SnaxelEngine& engine, const FaceParts& parts, Strips& strips) {
     const std::shared_ptr<const std::vector<Fronts>> lines = boundary_fronts(engine);
     std::vector<const Fronts*> cutting;
     for (const Fronts& fronts : *lines) cutting.push_back(&fronts);
-    cutting.push_back(&visual.fronts);
     std::shared_ptr<const IntersectionCurves> meeting;
-    if (parts->objects.size() > 1) {
-        meeting = require_intersections(topo);
+    if (parts.objects.size() > 1) {
+        meeting = require_intersections(engine.topology());
         cutting.push_back(&meeting->fronts);
     }
-    // The faceted outline too: the edges between a face turned to the
-    // viewer and one turned away (across a split sharp edge's strip, the
-    // faces it parts), and the borders. Where a file's normals round an
-    // edge the rays see (a cylinder whose smooth sides take its flat caps'
-    // normals at the rims), the visual contour runs elsewhere.
-    clip::Paths outline_edges;
-    if (parts->objects.size() > 1) {
-        const glm::dvec3 eye_dir = camera.orthographic() ? camera.to_viewer(glm::dvec3(0.0)) : glm::dvec3(0.0);
-        auto facing = [&](FaceId f) {
-            const auto& fv = topo.face_vertices()[f];
-            const glm::dvec3 a = topo.positions()[fv[0]];
-            const glm::dvec3 n = glm::cross(topo.positions()[fv[1]] - a, topo.positions()[fv[2]] - a);
-            return glm::dot(n, camera.orthographic() ? eye_dir : camera.eye - a) > 0.0;
-        };
-        for (const EdgeId e : topo.edges()) {
-            if (topo.has_strips() && edge_in_strip(topo, e)) continue;
-            const auto faces = faces_beside(topo, e);
-            if (faces[0].valid() && faces[1].valid() && facing(faces[0]) == facing(faces[1])) continue;
-            ClipperLib::Path path;
-            for (const VertexId v : topo.edge_vertices()[e]) {
-                const glm::dvec2 q = projection.project(topo.positions()[v]);
-                path.push_back({ClipperLib::cInt(std::llround(q.x * clip::kScale)), ClipperLib::cInt(std::llround(q.y * clip::kScale))});
-            }
-            outline_edges.push_back(std::move(path));
+    std::vector<glm::dvec3> line;
+    for (const Fronts* fronts : cutting)
+        for (const FrontLoop& loop : fronts->loops) {
+            line.clear();
+            fronts->for_each_in_loop(loop, [&](std::int32_t sn) { line.push_back(engine.position(fronts->snaxels[sn])); });
+            if (loop.closed && !line.empty()) line.push_back(line.front());
+            strips.add(line);
         }
+}
+
+/// The faceted outline where it may be seen: the edges between a face
+/// turned to the viewer and one turned away (across a split sharp edge's
+/// strip, the faces it parts), and the borders, chained. It is where the rays'
+/// answer changes from one object to another (the visual contour of a
+/// file's rounded normals can run well inside it: a cylinder whose smooth
+/// sides take its flat caps' normals at the rims).
+void add_faceted_outline(const MeshTopology& topo, const Camera& camera, const PartProbe& probe, Strips& strips) {
+    const glm::dvec3 eye_dir = camera.orthographic() ? camera.to_viewer(glm::dvec3(0.0)) : glm::dvec3(0.0);
+    FaceData<std::uint8_t> facing(topo.n_faces(), 0);
+    parallel_for(topo.faces(), [&](FaceId f) {
+        const auto& fv = topo.face_vertices()[f];
+        const glm::dvec3 a = topo.positions()[fv[0]];
+        const glm::dvec3 n = glm::cross(topo.positions()[fv[1]] - a, topo.positions()[fv[2]] - a);
+        facing[f] = glm::dot(n, camera.orthographic() ? eye_dir : camera.eye - a) > 0.0;
+    });
+    EdgeData<std::uint8_t> on(topo.n_edges(), 0);
+    parallel_for(topo.edges(), [&](EdgeId e) {
+        if (topo.has_strips() && edge_in_strip(topo, e)) return;
+        const auto faces = faces_beside(topo, e);
+        const bool border = !faces[0].valid() || !faces[1].valid();
+        if (!border && facing[faces[0]] == facing[faces[1]]) return;
+        const auto [a, b] = topo.edge_vertices()[e];
+        on[e] = probe.may_see_along(topo.positions()[a], topo.positions()[b]);
+    });
+    std::vector<EdgeId> outline;
+    for (const EdgeId e : topo.edges())
+        if (on[e]) outline.push_back(e);
+    std::vector<glm::dvec3> line;
+    for (const EdgeChain& chain : chain_edges(topo, outline)) {
+        line.clear();
+        for (const VertexId v : chain.vertices) line.push_back(topo.positions()[v]);
+        strips.add(line, true);
     }
-    for (const Fronts* cut : cutting)
-        for (const Fronts& fronts = *cut; const FrontLoop& loop : fronts.loops) {
-            ClipperLib::Path path;
-            fronts.for_each_in_loop(loop, [&](std::int32_t sn) {
-                const glm::dvec2 q = projection.project(engine.position(fronts.snaxels[sn]));
-                path.push_back({ClipperLib::cInt(std::llround(q.x * clip::kScale)), ClipperLib::cInt(std::llround(q.y * clip::kScale))});
-            });
-            if (loop.closed && !path.empty()) path.push_back(path.front());
-            if (path.size() >= 2) cuts.push_back(std::move(path));
+}
+
+/// The part and class a piece of a region shows: the part the rays through
+/// its inside points meet over most of the spans' width (a ray may slip
+/// past a thin piece's edge, and a piece that reaches over another part's
+/// image, where a map's region strays past an outline, is still seen as
+/// the part most of it shows). The piece keeps its region's class
+/// (@p own_class) where a fair share of its rays see that class on its
+/// part; a piece of another object's image (the region was ranked nearer
+/// than what hides it) takes the class seen there. No part when no ray
+/// near it meets the surface.
+std::pair<std::optional<Part>, int> seen_in(const clip::Paths& piece, const PartProbe& probe, int own_class) {
+    const std::vector<clip::InsidePoint> points = clip::inside_points(piece);
+    std::map<Part, double> votes;
+    std::map<PartClass, double> class_votes;
+    for (const clip::InsidePoint& point : points)
+        if (const auto seen = probe.seen_at(point.at)) {
+            votes[seen->first] += point.width;
+            class_votes[*seen] += point.width;
         }
-    clip::Paths strips;
-    if (!cuts.empty()) {
-        ClipperLib::ClipperOffset offset;
-        offset.AddPaths(cuts, ClipperLib::jtSquare, ClipperLib::etOpenButt);
-        offset.Execute(strips, kHalfStrip);
+    std::optional<Part> part;
+    double most = 0.0;
+    for (const auto& [seen, width] : votes)
+        if (width > most) most = width, part = seen;
+    if (!part && !points.empty()) part = probe.part_near(points.front().at);
+    int cls = own_class;
+    if (part && class_votes[{*part, own_class}] < 0.25 * most) {
+        double best = 0.0;
+        for (const auto& [seen, width] : class_votes)
+            if (seen.first == *part && width > best) best = width, cls = seen.second;
     }
-    if (!outline_edges.empty()) {
-        // Each edge on its own, its ends squared past its vertices, so the
-        // strips of two edges that meet at an angle leave no gap between.
-        clip::Paths more;
-        ClipperLib::ClipperOffset offset;
-        offset.AddPaths(outline_edges, ClipperLib::jtSquare, ClipperLib::etOpenSquare);
-        offset.Execute(more, kHalfStrip);
-        strips.insert(strips.end(), more.begin(), more.end());
-    }
-    // The part seen through an image point: the nearest face on its ray,
-    // with the shading class there.
-    const double back = 4.0 * bounding_radius(topo) + 1.0;
-    using Part = std::pair<std::uint32_t, std::uint32_t>;
-    auto seen_at = [&](const glm::dvec2& pixel) -> std::optional<std::pair<Part, int>> {
-        VisibilityRay ray;
-        projection.pixel_ray(pixel, back, ray.origin, ray.dir);
-        ray.tfar = std::numeric_limits<double>::infinity();
-        const RayHit hit = rays.nearest(ray);
-        if (!hit.hit()) return std::nullopt;
-        return std::pair(Part(parts->object[hit.face], parts->material[hit.face]), shading_class_at(topo, hit, classes, camera, light));
-    };
-    auto part_at = [&](const glm::dvec2& pixel) -> std::optional<Part> {
-        const auto seen = seen_at(pixel);
-        return seen ? std::optional<Part>(seen->first) : std::nullopt;
-    };
-    auto class_index = [&](const MapRegion& r) {
-        for (int c = 0; c < classes.count(); ++c)
-            if (classes.region_class(c) == r.cls && classes.level(c) == r.k) return c;
-        return -1;
-    };
-    // Each region cut by the strips; its pieces take the part seen inside
-    // them, those of one part joined, the strips' share going to the largest.
-    std::vector<clip::Box> strip_box(strips.size());
-    for (std::size_t k = 0; k < strips.size(); ++k) strip_box[k].add(strips[k]);
-    std::vector<std::vector<MapRegion>> split(map.regions.size());
-    parallel_for(map.regions.size(), [&](std::size_t i) {
-        const MapRegion& region = map.regions[i];
-        const clip::Paths whole = clip::to_paths(region.polygons);
-        clip::Box box;
-        for (const auto& path : whole) box.add(path);
-        // Only the strips over the region cut it.
-        clip::Paths near;
-        for (std::size_t k = 0; k < strips.size(); ++k)
-            if (strip_box[k].meets(box)) near.push_back(strips[k]);
-        ClipperLib::PolyTree tree;
-        clip::difference_tree(whole, near, tree);
-        std::vector<clip::Paths> pieces = clip::pieces_of(tree);
-        const int own_class = class_index(region);
-        // Pieces by (part, class): a piece keeps its region's class where
-        // a fair share of its rays see that class on its part; a piece of
-        // another object's image (the region was ranked nearer than what
-        // hides it) takes the class seen there.
-        std::map<std::pair<Part, int>, clip::Paths> by_part;
-        std::pair<Part, int> largest_part{{0, 0}, own_class};
-        double largest = -1.0;
-        for (const clip::Paths& piece : pieces) {
-            // The part seen through the piece: the one the rays through its
-            // inside points meet over most of the spans' width (a ray may
-            // slip past a thin piece's edge, and a piece that reaches over
-            // another part's image, where a map's region strays past an
-            // outline, is still seen as the part most of it shows).
-            std::optional<Part> part;
-            const std::vector<clip::InsidePoint> points = clip::inside_points(piece);
-            std::map<Part, double> votes;
-            std::map<std::pair<Part, int>, double> class_votes;
-            for (const clip::InsidePoint& point : points)
-                if (const auto seen = seen_at(point.at)) {
-                    votes[seen->first] += point.width;
-                    class_votes[*seen] += point.width;
+    return {part, cls};
+}
+
+/// Whether a point of @p piece lies on an edge of @p whole (within 1/512 px).
+bool touches(const clip::Paths& piece, const clip::Paths& whole) {
+    for (const auto& path : piece)
+        for (const auto& p : path)
+            for (const auto& outline : whole)
+                for (std::size_t i = 0; i < outline.size(); ++i) {
+                    const glm::dvec2 a(outline[i].X, outline[i].Y), b(outline[(i + 1) % outline.size()].X, outline[(i + 1) % outline.size()].Y);
+                    const glm::dvec2 q(p.X, p.Y), ab = b - a;
+                    const double t = glm::dot(ab, ab) > 0.0 ? std::clamp(glm::dot(q - a, ab) / glm::dot(ab, ab), 0.0, 1.0) : 0.0;
+                    if (glm::length(q - (a + t * ab)) <= 2.0) return true;
                 }
-            double most = 0.0;
-            for (const auto& [seen, width] : votes)
-                if (width > most) most = width, part = seen;
-            // A speck whose rays all slip past the surface takes the part
-            // seen right beside it.
-            for (double reach = 0.5; !part && !points.empty() && reach <= 4.0; reach *= 2.0)
-                for (int a = 0; a < 8 && !part; ++a)
-                    part = part_at(points.front().at + reach * glm::dvec2(std::cos(a * 0.785398), std::sin(a * 0.785398)));
-            int cls = own_class;
-            if (part && class_votes[{*part, own_class}] < 0.25 * most) {
-                double best = 0.0;
-                for (const auto& [seen, width] : class_votes)
-                    if (seen.first == *part && width > best) best = width, cls = seen.second;
-            }
-            const std::pair<Part, int> key{part.value_or(Part(~0u, ~0u)), part ? cls : own_class};
-            clip::Paths& into = by_part[key];
-            into.insert(into.end(), piece.begin(), piece.end());
-            const double a = clip::area(piece);
-            if (a > largest && part) largest = a, largest_part = key;
-        }
-        // Pieces no ray found a part for (slivers at the edge of the
-        // surface) join the largest piece, as do the strips' share.
-        if (const auto none = by_part.find({Part(~0u, ~0u), own_class}); none != by_part.end()) {
-            if (largest >= 0.0) {
-                clip::Paths& into = by_part[largest_part];
-                into.insert(into.end(), none->second.begin(), none->second.end());
-                by_part.erase(none);
-            }
-        }
-        if (!near.empty() && by_part.size() > 0) {
-            const clip::Paths share = clip::op(whole, near, ClipperLib::ctIntersection);
-            clip::Paths& into = by_part.count(largest_part) ? by_part[largest_part] : by_part.begin()->second;
-            into = clip::op(into, share, ClipperLib::ctUnion);
-        }
-        for (auto& [key, paths] : by_part) {
-            const auto& [part, cls] = key;
-            MapRegion piece = region;
-            piece.polygons = clip::from_paths(paths);
-            piece.area = clip::area(paths);
-            if (cls >= 0) piece.cls = classes.region_class(cls), piece.k = classes.level(cls);
-            if (part.first != ~0u) piece.object = std::int32_t(part.first), piece.material = std::int32_t(part.second);
-            if (piece.area > 0.0) split[i].push_back(std::move(piece));
-        }
-    }, 1);
-    // The regions in their order, each replaced by its pieces; each vertex
-    // goes with the piece of its faces' material.
+    return false;
+}
+
+/// The shading class of @p region as @p classes numbers them (-1: none).
+int class_index(const ShadingClasses& classes, const MapRegion& region) {
+    for (int c = 0; c < classes.count(); ++c)
+        if (classes.region_class(c) == region.cls && classes.level(c) == region.k) return c;
+    return -1;
+}
+
+/// @p region cut by the strips over it; its pieces take the part seen
+/// inside them, those of one part and class joined, the strips' share and
+/// the pieces no ray found a part for going to the largest.
+std::vector<MapRegion> split_region(const MapRegion& region, const Strips& strips, const PartProbe& probe, const ShadingClasses& classes) {
+    const clip::Paths whole = clip::to_paths(region.polygons);
+    clip::Box box;
+    for (const auto& path : whole) box.add(path);
+    const clip::Paths near = strips.over(box);
+    ClipperLib::PolyTree tree;
+    clip::difference_tree(whole, near, tree);
+    const int own_class = class_index(classes, region);
+    std::vector<clip::Paths> pieces = clip::pieces_of(tree);
+    if (pieces.empty()) {
+        // All strip (under 1/64 px across): the region as a whole shows a
+        // part, or it is left out.
+        const auto [part, cls] = seen_in(whole, probe, own_class);
+        if (!part) return {};
+        pieces.push_back(whole);
+    }
+    // Slivers inside the region (small, on average under half a pixel
+    // across, clear of its outline: between cuts that run side by side)
+    // are not asked what they show unless the region is all slivers; they
+    // go with the largest piece. Those along its outline are asked (where
+    // the outline and a cut beside it part two objects, the slivers add up
+    // to whole pixels).
+    std::vector<bool> thin(pieces.size());
+    for (std::size_t k = 0; k < pieces.size(); ++k) {
+        const double a = clip::area(pieces[k]);
+        thin[k] = a < kSliverArea && 2.0 * a < kSliverWidth * clip::perimeter(pieces[k]) && !touches(pieces[k], whole);
+    }
+    const bool all_thin = std::all_of(thin.begin(), thin.end(), [](bool t) { return t; });
+    std::map<PartClass, clip::Paths> by_part;
+    PartClass largest_part{{0, 0}, own_class};
+    double largest = -1.0;
+    for (std::size_t k = 0; k < pieces.size(); ++k) {
+        const clip::Paths& piece = pieces[k];
+        const auto [part, cls] = thin[k] && !all_thin ? std::pair<std::optional<Part>, int>() : seen_in(piece, probe, own_class);
+        const PartClass key{part.value_or(kNoPart), part ? cls : own_class};
+        clip::Paths& into = by_part[key];
+        into.insert(into.end(), piece.begin(), piece.end());
+        const double a = clip::area(piece);
+        if (a > largest && part) largest = a, largest_part = key;
+    }
+    if (const auto none = by_part.find({kNoPart, own_class}); none != by_part.end() && largest >= 0.0) {
+        clip::Paths& into = by_part[largest_part];
+        into.insert(into.end(), none->second.begin(), none->second.end());
+        by_part.erase(none);
+    }
+    if (by_part.size() == 1) {
+        // One part and class seen all over: the region stays whole.
+        by_part.begin()->second = whole;
+    } else if (by_part.count(largest_part)) {
+        // The largest piece takes the strips' share: all that the others
+        // leave of the region.
+        clip::Paths others;
+        for (const auto& [key, paths] : by_part)
+            if (key != largest_part) others.insert(others.end(), paths.begin(), paths.end());
+        by_part[largest_part] = clip::op(whole, others, ClipperLib::ctDifference);
+    }
+    std::vector<MapRegion> out;
+    for (auto& [key, paths] : by_part) {
+        const auto& [part, cls] = key;
+        MapRegion piece = region;
+        piece.polygons = clip::from_paths(paths);
+        piece.area = clip::area(paths);
+        if (cls >= 0) piece.cls = classes.region_class(cls), piece.k = classes.level(cls);
+        if (part != kNoPart) piece.object = std::int32_t(part.first), piece.material = std::int32_t(part.second);
+        if (piece.area > 0.0) out.push_back(std::move(piece));
+    }
+    return out;
+}
+
+/// @p map's regions in their order, each replaced by its pieces
+/// (@p split); each vertex goes with the piece of its faces' material.
+void replace_regions(PlanarMap& map, std::vector<std::vector<MapRegion>>&& split, const MeshTopology& topo) {
+    const FaceParts& parts = *topo.parts();
     std::vector<MapRegion> out;
     std::vector<std::vector<std::int32_t>> index(split.size());
     for (std::size_t i = 0; i < split.size(); ++i)
@@ -245,10 +417,37 @@ void split_regions_by_part(PlanarMap& map, const SnaxelEngine& engine, const Ray
         std::int32_t chosen = candidates.empty() ? -1 : candidates.front();
         for (const FaceCorner corner : topo.faces_around(v))
             for (const std::int32_t c : candidates)
-                if (out[c].material == std::int32_t(parts->material[corner.face])) chosen = c;
+                if (out[c].material == std::int32_t(parts.material[corner.face])) chosen = c;
         r = chosen;
     }
     map.regions = std::move(out);
+}
+
+} // namespace
+
+void split_regions_by_part(PlanarMap& map, const SnaxelEngine& engine, const RayScene& rays,
+                           const ImageProjection& projection, const ShadingClasses& classes, const Camera& camera, const Light& light) {
+    const MeshTopology& topo = engine.topology();
+    const FaceParts* parts = topo.parts();
+    if (!parts || parts->objects.empty() || parts->materials.empty()) return;
+    if (!parts->several()) {
+        for (MapRegion& r : map.regions) r.object = 0, r.material = 0;
+        return;
+    }
+    // The boundaries between parts, seen or not: the material and object
+    // lines, in the image; and where one object may show in front of
+    // another or enter it: the intersection curves and every object's
+    // faceted outline. Only where they may be seen: a hidden boundary
+    // parts nothing that shows.
+    const PartProbe probe(topo, rays, projection, classes, camera, light);
+    Strips strips(projection);
+    add_part_lines(engine, *parts, strips);
+    if (parts->objects.size() > 1) add_faceted_outline(topo, camera, probe, strips);
+    strips.widen(
+        [&](const glm::dvec3& p) { return probe.may_see(p); }, [&](const glm::dvec3& a, const glm::dvec3& b) { return probe.may_see_along(a, b); });
+    std::vector<std::vector<MapRegion>> split(map.regions.size());
+    parallel_for(map.regions.size(), [&](std::size_t i) { split[i] = split_region(map.regions[i], strips, probe, classes); }, 1);
+    replace_regions(map, std::move(split), topo);
 }
 
 } // namespace snaxels

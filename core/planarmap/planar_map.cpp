@@ -46,7 +46,7 @@ PlanarMap build_planar_map(PlanarMapKind kind, const SnaxelEngine& engine, const
     if (kind == PlanarMapKind::Post) {
         map.regions = build_post_map(engine, {visual, shadow, isophotes, gleams}, *rays, projection, camera, light);
         subtract_nearer_regions(map);
-        split_regions_by_part(map, engine, *rays, projection, *visual, classes, camera, light);
+        split_regions_by_part(map, engine, *rays, projection, classes, camera, light);
         return map;
     }
     SnaxelMap built = build_snaxel_map(engine, in, *rays, projection, camera, light);
@@ -54,7 +54,7 @@ PlanarMap build_planar_map(PlanarMapKind kind, const SnaxelEngine& engine, const
     map.vertex_region = std::move(built.vertex_region);
     subtract_nearer_regions(map);
     fill_snaxel_map_gaps(map, engine, in, *rays, projection, camera, light);
-    split_regions_by_part(map, engine, *rays, projection, *visual, classes, camera, light);
+    split_regions_by_part(map, engine, *rays, projection, classes, camera, light);
     return map;
 }
 

@@ -48,23 +48,25 @@ void fill_snaxel_map_gaps(PlanarMap& map, const SnaxelEngine& engine, const Snax
 
 /// On a mesh with parts, cuts @p map's regions where the parts meet in the
 /// image and where one object may show in front of another: along the
-/// material and object lines, the visual contour's loops (@p visual: the
-/// outline of every object, seen or not) and the intersection curves
-/// (where one surface enters another), all cut out as strips 1/64 px wide.
+/// material and object lines, every object's faceted outline (edges
+/// between a face turned to the viewer and one turned away, and borders)
+/// and the intersection curves (where one surface enters another), where
+/// they may be seen, all cut out as strips 1/64 px wide.
 /// Each piece takes the object, material and shading class seen through
 /// it (the nearest face on the rays through its inside points, over most
 /// of their width; the class by the shading at the hit, as @p classes
 /// numbers them), so a region ranked nearer than the object that really
 /// hides part of it (a tabletop's one region round a box standing on it)
 /// gives that part up. The pieces of a region that show one part in one
-/// class stay one region, the strips' share goes to its largest piece, so
+/// class stay one region (a region that shows one part all over stays
+/// whole), the strips' share goes to its largest piece, so
 /// the map stays a partition of the image and no region spans two
 /// materials. vertex_region follows (a vertex goes with the piece of its
 /// faces' material). A mesh of one object and one material keeps its
 /// regions as they are, object and material 0. build_planar_map calls it.
 void split_regions_by_part(PlanarMap& map, const SnaxelEngine& engine, const RayScene& rays,
-                           const ImageProjection& projection, const ContourResult& visual,
-                           const ShadingClasses& classes, const Camera& camera, const Light& light);
+                           const ImageProjection& projection, const ShadingClasses& classes, const Camera& camera,
+                           const Light& light);
 
 /// The shading class (as @p classes numbers them) of the surface at @p hit:
 /// N.L and V.R of the normalized interpolated normal there, as the

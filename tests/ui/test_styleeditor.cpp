@@ -57,7 +57,7 @@ class TestStyleEditor : public QObject {
         QCOMPARE(value.kind, StyleCompletion::Kind::Value);
         QCOMPARE(value.prefix, QString("sug"));
         QCOMPARE(value.candidates, (QStringList{"visual", "shadow", "isophote", "gleam", "parabolic", "crease", "border",
-                                                "suggestive", "material", "object"}));
+                                                "suggestive", "material", "object", "intersection"}));
         QCOMPARE(at_end("<hidden cap=\"").candidates, (QStringList{"butt", "round", "square"}));
         QCOMPARE(at_end("<region class=\"").candidates, (QStringList{"shadow", "lit", "band", "highlight"}));
 

@@ -42,6 +42,17 @@ double area(const Paths& paths) {
     return std::abs(a) / (kScale * kScale);
 }
 
+double perimeter(const Paths& paths) {
+    double length = 0.0;
+    for (const auto& path : paths)
+        for (std::size_t i = 0; i < path.size(); ++i) {
+            const auto& a = path[i];
+            const auto& b = path[(i + 1) % path.size()];
+            length += std::hypot(double(b.X - a.X), double(b.Y - a.Y));
+        }
+    return length / kScale;
+}
+
 void difference_tree(const Paths& a, const Paths& b, ClipperLib::PolyTree& out) {
     ClipperLib::Clipper c;
     c.AddPaths(a, ClipperLib::ptSubject, true);

@@ -23,6 +23,8 @@ std::vector<std::vector<glm::dvec2>> from_paths(const Paths& paths);
 Paths op(const Paths& a, const Paths& b, ClipperLib::ClipType type);
 /// Square pixels covered (signed areas add up: holes wind the other way).
 double area(const Paths& paths);
+/// Pixels around every path (outlines and holes).
+double perimeter(const Paths& paths);
 
 /// A bounding box on Clipper's grid, for skipping paths that cannot meet.
 struct Box {
