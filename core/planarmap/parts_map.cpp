@@ -191,11 +191,11 @@ class PartProbe {
     }
 
     /// Whether some point of the segment from @p a to @p b may be seen,
-    /// asked at its ends and every 4 px between them.
+    /// asked at its ends, its middle and every 16 px between them.
     bool may_see_along(const glm::dvec3& a, const glm::dvec3& b) const {
         if (may_see(a) || may_see(b)) return true;
         const double pixels = glm::length(projection_.project(b) - projection_.project(a));
-        const int steps = int(std::clamp(std::ceil(pixels / 4.0), 2.0, 64.0));
+        const int steps = 2 * int(std::clamp(std::ceil(pixels / 32.0), 1.0, 32.0));
         for (int k = 1; k < steps; ++k)
             if (may_see(a + (b - a) * (double(k) / steps))) return true;
         return false;
@@ -250,17 +250,23 @@ void add_part_lines(const SnaxelEngine& engine, const FaceParts& parts, Strips& 
 /// sides take its flat caps' normals at the rims).
 void add_faceted_outline(const MeshTopology& topo, const Camera& camera, const PartProbe& probe, Strips& strips) {
     const glm::dvec3 eye_dir = camera.orthographic() ? camera.to_viewer(glm::dvec3(0.0)) : glm::dvec3(0.0);
-    FaceData<std::uint8_t> facing(topo.n_faces(), 0);
+    FaceData<std::uint8_t> facing(topo.n_faces(), 0), area(topo.n_faces(), 1);
     parallel_for(topo.faces(), [&](FaceId f) {
         const auto& fv = topo.face_vertices()[f];
         const glm::dvec3 a = topo.positions()[fv[0]];
         const glm::dvec3 n = glm::cross(topo.positions()[fv[1]] - a, topo.positions()[fv[2]] - a);
         facing[f] = glm::dot(n, camera.orthographic() ? eye_dir : camera.eye - a) > 0.0;
+        if (topo.has_strips()) area[f] = face_has_area(topo, f);
     });
     EdgeData<std::uint8_t> on(topo.n_edges(), 0);
     parallel_for(topo.edges(), [&](EdgeId e) {
-        if (topo.has_strips() && edge_in_strip(topo, e)) return;
-        const auto faces = faces_beside(topo, e);
+        // A strip's edge parts nothing; across a sharp edge's strip the
+        // faces beside it are those it parts (faces_beside), asked only
+        // where one face has area and the other has not.
+        std::array<FaceId, 2> faces = topo.edge_faces()[e];
+        const bool with_area[2] = {faces[0].valid() && area[faces[0]], faces[1].valid() && area[faces[1]]};
+        if (!with_area[0] && !with_area[1]) return;
+        if (faces[0].valid() && faces[1].valid() && with_area[0] != with_area[1]) faces = faces_beside(topo, e);
         const bool border = !faces[0].valid() || !faces[1].valid();
         if (!border && facing[faces[0]] == facing[faces[1]]) return;
         const auto [a, b] = topo.edge_vertices()[e];
@@ -338,10 +344,15 @@ std::vector<MapRegion> split_region(const MapRegion& region, const Strips& strip
     clip::Box box;
     for (const auto& path : whole) box.add(path);
     const clip::Paths near = strips.over(box);
-    ClipperLib::PolyTree tree;
-    clip::difference_tree(whole, near, tree);
     const int own_class = class_index(classes, region);
-    std::vector<clip::Paths> pieces = clip::pieces_of(tree);
+    std::vector<clip::Paths> pieces;
+    if (near.empty()) {
+        pieces.push_back(whole);
+    } else {
+        ClipperLib::PolyTree tree;
+        clip::difference_tree(whole, near, tree);
+        pieces = clip::pieces_of(tree);
+    }
     if (pieces.empty()) {
         // All strip (under 1/64 px across): the region as a whole shows a
         // part, or it is left out.
