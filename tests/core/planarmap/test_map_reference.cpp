@@ -94,11 +94,20 @@ struct ViewSeries {
         : rng(seed), centre(framed.first), radius(framed.second) {}
     template <class Accept> std::pair<ref::View, glm::dvec3> next(int view, Accept&& accept) {
         ref::View v;
-        do v.dir = glm::normalize(glm::dvec3(normal(rng), normal(rng), normal(rng)));
+        do v.dir = glm::normalize(draw());
         while (!accept(v.dir));
         frame_view(v, view % 2 == 0, centre, radius);
-        const glm::dvec3 to_light = glm::normalize(-v.dir + glm::dvec3(normal(rng), normal(rng), normal(rng)));
+        const glm::dvec3 to_light = glm::normalize(-v.dir + draw());
         return {v, to_light};
+    }
+    /// Three draws, z first (the order GCC gave the arguments of a
+    /// constructor call these views were first drawn with; the order of
+    /// such arguments is unspecified, and Clang's drew other views).
+    glm::dvec3 draw() {
+        const double z = normal(rng);
+        const double y = normal(rng);
+        const double x = normal(rng);
+        return {x, y, z};
     }
 };
 
