@@ -81,12 +81,11 @@ class Strips {
     }
 
     /// Widens the lines into strips where they may be seen (the segments
-    /// with an end @p seen, or some point between that @p seen_along
-    /// finds; a line hidden all along parts nothing that shows), each end
-    /// squared a
-    /// little past its last point, so that cuts that meet at an angle
-    /// (chains broken at a strip or a junction) leave no gap between their
-    /// strips.
+    /// with an end @p seen, or, both ends hidden, some point between that
+    /// @p seen_along finds; a line hidden all along parts nothing that
+    /// shows), each end squared a little past its last point, so that cuts
+    /// that meet at an angle (chains broken at a strip or a junction) leave
+    /// no gap between their strips.
     template <class Seen, class SeenAlong> void widen(Seen&& seen, SeenAlong&& seen_along) {
         std::vector<std::vector<ClipperLib::Path>> cuts(lines_.size());
         parallel_for(lines_.size(), [&](std::size_t i) {
@@ -191,9 +190,13 @@ class PartProbe {
     }
 
     /// Whether some point of the segment from @p a to @p b may be seen,
-    /// asked at its ends, its middle and every 16 px between them.
+    /// asked at its ends, then (may_see_between) its middle and every 16 px
+    /// between them.
     bool may_see_along(const glm::dvec3& a, const glm::dvec3& b) const {
-        if (may_see(a) || may_see(b)) return true;
+        return may_see(a) || may_see(b) || may_see_between(a, b);
+    }
+    /// As may_see_along, the ends not asked (known hidden).
+    bool may_see_between(const glm::dvec3& a, const glm::dvec3& b) const {
         const double pixels = glm::length(projection_.project(b) - projection_.project(a));
         const int steps = 2 * int(std::clamp(std::ceil(pixels / 32.0), 1.0, 32.0));
         for (int k = 1; k < steps; ++k)
@@ -353,13 +356,10 @@ std::vector<MapRegion> split_region(const MapRegion& region, const Strips& strip
         clip::difference_tree(whole, near, tree);
         pieces = clip::pieces_of(tree);
     }
-    if (pieces.empty()) {
-        // All strip (under 1/64 px across): the region as a whole shows a
-        // part, or it is left out.
-        const auto [part, cls] = seen_in(whole, probe, own_class);
-        if (!part) return {};
-        pieces.push_back(whole);
-    }
+    // All strip (under 1/64 px across): the region as a whole shows a part,
+    // or it is left out.
+    const bool all_strip = pieces.empty();
+    if (all_strip) pieces.push_back(whole);
     // Slivers inside the region (small, on average under half a pixel
     // across, clear of its outline: between cuts that run side by side)
     // are not asked what they show unless the region is all slivers; they
@@ -384,6 +384,7 @@ std::vector<MapRegion> split_region(const MapRegion& region, const Strips& strip
         const double a = clip::area(piece);
         if (a > largest && part) largest = a, largest_part = key;
     }
+    if (all_strip && largest < 0.0) return {};
     if (const auto none = by_part.find({kNoPart, own_class}); none != by_part.end() && largest >= 0.0) {
         clip::Paths& into = by_part[largest_part];
         into.insert(into.end(), none->second.begin(), none->second.end());
@@ -455,7 +456,7 @@ void split_regions_by_part(PlanarMap& map, const SnaxelEngine& engine, const Ray
     add_part_lines(engine, *parts, strips);
     if (parts->objects.size() > 1) add_faceted_outline(topo, camera, probe, strips);
     strips.widen(
-        [&](const glm::dvec3& p) { return probe.may_see(p); }, [&](const glm::dvec3& a, const glm::dvec3& b) { return probe.may_see_along(a, b); });
+        [&](const glm::dvec3& p) { return probe.may_see(p); }, [&](const glm::dvec3& a, const glm::dvec3& b) { return probe.may_see_between(a, b); });
     std::vector<std::vector<MapRegion>> split(map.regions.size());
     parallel_for(map.regions.size(), [&](std::size_t i) { split[i] = split_region(map.regions[i], strips, probe, classes); }, 1);
     replace_regions(map, std::move(split), topo);
