@@ -9,6 +9,7 @@
 #include <mutex>
 #include <optional>
 
+#include "snaxels/mesh/refine.h"
 #include "snaxels/planarmap/detail/clip.h"
 #include "snaxels/planarmap/planar_map.h"
 #include "snaxels/snaxel/feature_edges.h"
@@ -125,11 +126,23 @@ class Strips {
         known_seen_.clear();
     }
 
-    /// The strips whose boxes meet @p box.
+    /// The strips whose boxes meet @p box, cut to it widened by a pixel (a
+    /// strip reaches over many regions; what lies past a region's box
+    /// cannot cut it).
     clip::Paths over(const clip::Box& box) const {
+        const ClipperLib::cInt margin = ClipperLib::cInt(clip::kScale);
+        clip::Box wide = box;
+        wide.x0 -= margin, wide.y0 -= margin, wide.x1 += margin, wide.y1 += margin;
         clip::Paths near;
-        for (std::size_t k = 0; k < strips_.size(); ++k)
-            if (boxes_[k].meets(box)) near.push_back(strips_[k]);
+        for (std::size_t k = 0; k < strips_.size(); ++k) {
+            if (!boxes_[k].meets(box)) continue;
+            const clip::Box& b = boxes_[k];
+            if (b.x0 >= wide.x0 && b.y0 >= wide.y0 && b.x1 <= wide.x1 && b.y1 <= wide.y1) {
+                near.push_back(strips_[k]);
+            } else if (ClipperLib::Path part = clip::crop(strips_[k], {wide.x0, wide.y0}, {wide.x1, wide.y1}); !part.empty()) {
+                near.push_back(std::move(part));
+            }
+        }
         return near;
     }
 
@@ -167,9 +180,8 @@ class PartProbe {
     bool may_see(const glm::dvec3& p) const {
         VisibilityRay ray;
         projection_.pixel_ray(projection_.project(p), back_, ray.origin, ray.dir);
-        ray.tfar = std::numeric_limits<double>::infinity();
-        const RayHit hit = rays_.nearest(ray);
-        return !hit.hit() || hit.t >= glm::dot(p - ray.origin, ray.dir) - depth_slack_;
+        ray.tfar = glm::dot(p - ray.origin, ray.dir) - depth_slack_;
+        return ray.tfar <= 0.0 || !rays_.occluded(ray);
     }
 
     std::optional<PartClass> seen_at(const glm::dvec2& pixel) const {
@@ -245,6 +257,36 @@ void add_part_lines(const SnaxelEngine& engine, const FaceParts& parts, Strips& 
         }
 }
 
+/// An edge that may lie on a faceted outline and the faces it parts.
+struct OutlineCandidate {
+    EdgeId edge;
+    std::array<FaceId, 2> faces; ///< a border's second is not valid
+};
+
+/// The edges that may lie on a faceted outline in some pose of @p topo's
+/// connectivity, with the faces they part: on a refined mesh only those
+/// between faces of different original faces (the faces of one original
+/// face stay in its plane) and borders; an edge of a split sharp edge's
+/// strip parts nothing, and across the strip the faces beside it are those
+/// it parts (faces_beside). Found once: a strip has no area in any pose.
+std::shared_ptr<const std::vector<OutlineCandidate>> outline_candidates(const MeshTopology& topo) {
+    return topo.connectivity()->quantities.require<std::vector<OutlineCandidate>>("faceted outline candidates", [&] {
+        std::vector<OutlineCandidate> edges;
+        const std::shared_ptr<const MeshRefinement>& refinement = topo.refinement();
+        auto with_area = [&](FaceId f) { return f.valid() && (!topo.has_strips() || face_has_area(topo, f)); };
+        for (const EdgeId e : topo.edges()) {
+            std::array<FaceId, 2> faces = topo.edge_faces()[e];
+            const bool border = !faces[0].valid() || !faces[1].valid();
+            if (refinement && !border && refinement->face_origin[faces[0]] == refinement->face_origin[faces[1]]) continue;
+            const bool area[2] = {with_area(faces[0]), with_area(faces[1])};
+            if (!area[0] && !area[1]) continue;
+            if (!border && area[0] != area[1]) faces = faces_beside(topo, e);
+            edges.push_back({e, faces});
+        }
+        return edges;
+    });
+}
+
 /// The faceted outline where it may be seen: the edges between a face
 /// turned to the viewer and one turned away (across a split sharp edge's
 /// strip, the faces it parts), and the borders, chained. It is where the rays'
@@ -253,31 +295,39 @@ void add_part_lines(const SnaxelEngine& engine, const FaceParts& parts, Strips& 
 /// sides take its flat caps' normals at the rims).
 void add_faceted_outline(const MeshTopology& topo, const Camera& camera, const PartProbe& probe, Strips& strips) {
     const glm::dvec3 eye_dir = camera.orthographic() ? camera.to_viewer(glm::dvec3(0.0)) : glm::dvec3(0.0);
-    FaceData<std::uint8_t> facing(topo.n_faces(), 0), area(topo.n_faces(), 1);
-    parallel_for(topo.faces(), [&](FaceId f) {
+    auto facing = [&](FaceId f) {
         const auto& fv = topo.face_vertices()[f];
         const glm::dvec3 a = topo.positions()[fv[0]];
         const glm::dvec3 n = glm::cross(topo.positions()[fv[1]] - a, topo.positions()[fv[2]] - a);
-        facing[f] = glm::dot(n, camera.orthographic() ? eye_dir : camera.eye - a) > 0.0;
-        if (topo.has_strips()) area[f] = face_has_area(topo, f);
-    });
-    EdgeData<std::uint8_t> on(topo.n_edges(), 0);
-    parallel_for(topo.edges(), [&](EdgeId e) {
-        // A strip's edge parts nothing; across a sharp edge's strip the
-        // faces beside it are those it parts (faces_beside), asked only
-        // where one face has area and the other has not.
-        std::array<FaceId, 2> faces = topo.edge_faces()[e];
-        const bool with_area[2] = {faces[0].valid() && area[faces[0]], faces[1].valid() && area[faces[1]]};
-        if (!with_area[0] && !with_area[1]) return;
-        if (faces[0].valid() && faces[1].valid() && with_area[0] != with_area[1]) faces = faces_beside(topo, e);
-        const bool border = !faces[0].valid() || !faces[1].valid();
-        if (!border && facing[faces[0]] == facing[faces[1]]) return;
-        const auto [a, b] = topo.edge_vertices()[e];
-        on[e] = probe.may_see_along(topo.positions()[a], topo.positions()[b]);
-    });
+        return glm::dot(n, camera.orthographic() ? eye_dir : camera.eye - a) > 0.0;
+    };
+    // The candidates where facing changes, then one ray per vertex of
+    // theirs, then, for an edge whose ends are both hidden, rays between.
+    const std::shared_ptr<const std::vector<OutlineCandidate>> candidates = outline_candidates(topo);
+    std::vector<std::uint8_t> on(candidates->size(), 0);
+    parallel_for(candidates->size(), [&](std::size_t i) {
+        const auto& faces = (*candidates)[i].faces;
+        on[i] = !faces[0].valid() || !faces[1].valid() || facing(faces[0]) != facing(faces[1]);
+    }, 1024);
     std::vector<EdgeId> outline;
-    for (const EdgeId e : topo.edges())
-        if (on[e]) outline.push_back(e);
+    for (std::size_t i = 0; i < candidates->size(); ++i)
+        if (on[i]) outline.push_back((*candidates)[i].edge);
+    // Per vertex: 0 not asked, 1 hidden, 2 may be seen.
+    VertexData<std::uint8_t> seen(topo.n_vertices(), 0);
+    std::vector<VertexId> ends;
+    for (const EdgeId e : outline)
+        for (const VertexId v : topo.edge_vertices()[e])
+            if (!seen[v]) seen[v] = 1, ends.push_back(v);
+    parallel_for(ends.size(), [&](std::size_t i) { seen[ends[i]] = probe.may_see(topo.positions()[ends[i]]) ? 2 : 1; }, 64);
+    std::vector<std::uint8_t> shown(outline.size(), 0);
+    parallel_for(outline.size(), [&](std::size_t i) {
+        const auto [a, b] = topo.edge_vertices()[outline[i]];
+        shown[i] = seen[a] == 2 || seen[b] == 2 || probe.may_see_between(topo.positions()[a], topo.positions()[b]);
+    }, 16);
+    std::size_t kept = 0;
+    for (std::size_t i = 0; i < outline.size(); ++i)
+        if (shown[i]) outline[kept++] = outline[i];
+    outline.resize(kept);
     std::vector<glm::dvec3> line;
     for (const EdgeChain& chain : chain_edges(topo, outline)) {
         line.clear();
@@ -384,8 +434,9 @@ std::vector<MapRegion> split_region(const MapRegion& region, const Strips& strip
         const double a = clip::area(piece);
         if (a > largest && part) largest = a, largest_part = key;
     }
-    if (all_strip && largest < 0.0) return {};
-    if (const auto none = by_part.find({kNoPart, own_class}); none != by_part.end() && largest >= 0.0) {
+    // No ray near any piece meets the surface: the region shows nothing.
+    if (largest < 0.0) return {};
+    if (const auto none = by_part.find({kNoPart, own_class}); none != by_part.end()) {
         clip::Paths& into = by_part[largest_part];
         into.insert(into.end(), none->second.begin(), none->second.end());
         by_part.erase(none);
@@ -427,6 +478,10 @@ void replace_regions(PlanarMap& map, std::vector<std::vector<MapRegion>>&& split
         if (r < 0) continue;
         const auto& candidates = index[r];
         std::int32_t chosen = candidates.empty() ? -1 : candidates.front();
+        if (candidates.size() < 2) {
+            r = chosen;
+            continue;
+        }
         for (const FaceCorner corner : topo.faces_around(v))
             for (const std::int32_t c : candidates)
                 if (out[c].material == std::int32_t(parts.material[corner.face])) chosen = c;

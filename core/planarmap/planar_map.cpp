@@ -58,35 +58,6 @@ PlanarMap build_planar_map(PlanarMapKind kind, const SnaxelEngine& engine, const
     return map;
 }
 
-namespace {
-
-/// @p path cut to the box [lo, hi] (Sutherland-Hodgman): under non-zero
-/// fill the result covers exactly the part of the path's area in the box.
-ClipperLib::Path crop(const ClipperLib::Path& path, const ClipperLib::IntPoint& lo, const ClipperLib::IntPoint& hi) {
-    ClipperLib::Path in = path, out;
-    for (int side = 0; side < 4; ++side) {
-        out.clear();
-        const bool x_axis = side < 2;
-        const ClipperLib::cInt bound = side == 0 ? lo.X : side == 1 ? hi.X : side == 2 ? lo.Y : hi.Y;
-        auto value = [&](const ClipperLib::IntPoint& p) { return x_axis ? p.X : p.Y; };
-        auto inside = [&](const ClipperLib::IntPoint& p) { return side % 2 == 0 ? value(p) >= bound : value(p) <= bound; };
-        for (std::size_t i = 0; i < in.size(); ++i) {
-            const ClipperLib::IntPoint& a = in[i];
-            const ClipperLib::IntPoint& b = in[(i + 1) % in.size()];
-            if (inside(a)) out.push_back(a);
-            if (inside(a) == inside(b)) continue;
-            const double t = double(bound - value(a)) / double(value(b) - value(a));
-            const auto other = [&](ClipperLib::cInt u, ClipperLib::cInt v) { return ClipperLib::cInt(std::llround(double(u) + t * double(v - u))); };
-            out.push_back(x_axis ? ClipperLib::IntPoint(bound, other(a.Y, b.Y)) : ClipperLib::IntPoint(other(a.X, b.X), bound));
-        }
-        std::swap(in, out);
-        if (in.size() < 3) return {};
-    }
-    return in;
-}
-
-} // namespace
-
 void subtract_nearer_regions(PlanarMap& map) {
     const std::size_t n = map.regions.size();
     std::vector<std::size_t> order(n);
@@ -137,7 +108,7 @@ void subtract_nearer_regions(PlanarMap& map) {
                 if (!boxes[q][k].meets(wide)) continue;
                 const Box& b = boxes[q][k];
                 const bool within = b.lo.X >= wide.lo.X && b.lo.Y >= wide.lo.Y && b.hi.X <= wide.hi.X && b.hi.Y <= wide.hi.Y;
-                ClipperLib::Path part = within ? paths[q][k] : crop(paths[q][k], wide.lo, wide.hi);
+                ClipperLib::Path part = within ? paths[q][k] : clip::crop(paths[q][k], wide.lo, wide.hi);
                 if (part.size() >= 3) nearer.push_back(std::move(part));
             }
         }

@@ -26,6 +26,10 @@ double area(const Paths& paths);
 /// Pixels around every path (outlines and holes).
 double perimeter(const Paths& paths);
 
+/// @p path cut to the box [lo, hi] (Sutherland-Hodgman): under non-zero
+/// fill the result covers exactly the part of the path's area in the box.
+ClipperLib::Path crop(const ClipperLib::Path& path, const ClipperLib::IntPoint& lo, const ClipperLib::IntPoint& hi);
+
 /// A bounding box on Clipper's grid, for skipping paths that cannot meet.
 struct Box {
     ClipperLib::cInt x0 = std::numeric_limits<ClipperLib::cInt>::max(), y0 = x0;
