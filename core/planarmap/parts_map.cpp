@@ -336,27 +336,6 @@ void add_faceted_outline(const MeshTopology& topo, const Camera& camera, const P
     }
 }
 
-/// Whether two of the scene's objects may touch or pass through each
-/// other: their boxes in this pose meet (within 1% of the scene's radius).
-/// Where none does, no surface rests on or enters another, and the map's
-/// own outlines part the objects.
-bool objects_may_meet(const MeshTopology& topo, const FaceParts& parts) {
-    if (parts.objects.size() < 2) return false;
-    std::vector<std::array<glm::dvec3, 2>> box(parts.objects.size(), {glm::dvec3(std::numeric_limits<double>::infinity()),
-                                                                       glm::dvec3(-std::numeric_limits<double>::infinity())});
-    for (const FaceId f : topo.faces())
-        for (const VertexId v : topo.face_vertices()[f]) {
-            auto& b = box[parts.object[f]];
-            b[0] = glm::min(b[0], topo.positions()[v]), b[1] = glm::max(b[1], topo.positions()[v]);
-        }
-    const double slack = 0.01 * bounding_radius(topo);
-    for (std::size_t i = 0; i < box.size(); ++i)
-        for (std::size_t j = i + 1; j < box.size(); ++j)
-            if (glm::all(glm::lessThanEqual(box[i][0] - slack, box[j][1])) && glm::all(glm::lessThanEqual(box[j][0] - slack, box[i][1])))
-                return true;
-    return false;
-}
-
 /// The part and class a piece of a region shows: the part the rays through
 /// its inside points meet over most of the spans' width (a ray may slip
 /// past a thin piece's edge, and a piece that reaches over another part's
@@ -530,7 +509,7 @@ void split_regions_by_part(PlanarMap& map, const SnaxelEngine& engine, const Ray
     const PartProbe probe(topo, rays, projection, classes, camera, light);
     Strips strips(projection);
     add_part_lines(engine, *parts, strips);
-    if (objects_may_meet(topo, *parts)) add_faceted_outline(topo, camera, probe, strips);
+    if (parts->objects.size() > 1) add_faceted_outline(topo, camera, probe, strips);
     strips.widen(
         [&](const glm::dvec3& p) { return probe.may_see(p); }, [&](const glm::dvec3& a, const glm::dvec3& b) { return probe.may_see_between(a, b); });
     std::vector<std::vector<MapRegion>> split(map.regions.size());
