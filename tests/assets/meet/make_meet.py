@@ -15,6 +15,10 @@
 #   crossing     two spheres through each other, a rod through a third, a
 #                torus through a box, and one object that passes through
 #                itself (two boxes in one mesh); six materials.
+#   apart        objects that do not meet, one in front of another from
+#                most views: two balls, a cylinder with flat caps, a box, a
+#                torus, at different depths, no floor; five materials (the
+#                case where the maps' own outlines part every object).
 #   rolling      a ball that rolls into a box through its wall, runs half
 #                sunk in its top and leaves through the far wall (frames
 #                1-96 at 24 fps); two materials. glTF only (node
@@ -164,6 +168,20 @@ bpy.ops.mesh.primitive_plane_add(size=8, location=(0, 0, 0.0))
 finish(bpy.context.object, "Floor", floor, False)
 camera("ShotCam", (4.0, -5.0, 3.2), (0, 0, 0.6))
 export("crossing")
+
+# Objects apart.
+reset()
+red, blue, steel = material("Red", (0.8, 0.08, 0.06, 1)), material("Blue", (0.1, 0.2, 0.8, 1)), material("Steel", (0.45, 0.47, 0.5, 1))
+gold, card = material("Gold", (0.9, 0.7, 0.2, 1)), material("Cardboard", (0.7, 0.55, 0.3, 1))
+sphere("BallA", red, 0.6, (-1.0, 0, 0.8))
+sphere("BallB", blue, 0.35, (0.4, 1.4, 1.2))
+cylinder("Can", steel, 0.3, 1.2, (0.9, -0.6, 0.7), rotation=(math.radians(20), 0, 0))
+box("Crate", card, (0.6, 0.6, 0.6), (-0.4, -1.5, 0.4))
+bpy.ops.mesh.primitive_torus_add(major_radius=0.45, minor_radius=0.1, location=(1.6, 1.0, 0.5),
+                                 rotation=(math.radians(60), 0, 0))
+finish(bpy.context.object, "Torus", gold, True)
+camera("ShotCam", (4.0, -5.0, 3.2), (0, 0, 0.6))
+export("apart")
 
 # A ball rolling through a box: it enters through one wall, half sunk in
 # the box's top, runs along it and leaves through the far wall.
