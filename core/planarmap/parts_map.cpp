@@ -201,13 +201,8 @@ class PartProbe {
         return std::nullopt;
     }
 
-    /// Whether some point of the segment from @p a to @p b may be seen,
-    /// asked at its ends, then (may_see_between) its middle and every 16 px
-    /// between them.
-    bool may_see_along(const glm::dvec3& a, const glm::dvec3& b) const {
-        return may_see(a) || may_see(b) || may_see_between(a, b);
-    }
-    /// As may_see_along, the ends not asked (known hidden).
+    /// Whether some point strictly between @p a and @p b (both known
+    /// hidden) may be seen: asked at the middle and every 16 px.
     bool may_see_between(const glm::dvec3& a, const glm::dvec3& b) const {
         const double pixels = glm::length(projection_.project(b) - projection_.project(a));
         const int steps = 2 * int(std::clamp(std::ceil(pixels / 32.0), 1.0, 32.0));
@@ -408,8 +403,7 @@ std::vector<MapRegion> split_region(const MapRegion& region, const Strips& strip
     }
     // All strip (under 1/64 px across): the region as a whole shows a part,
     // or it is left out.
-    const bool all_strip = pieces.empty();
-    if (all_strip) pieces.push_back(whole);
+    if (pieces.empty()) pieces.push_back(whole);
     // Slivers inside the region (small, on average under half a pixel
     // across, clear of its outline: between cuts that run side by side)
     // are not asked what they show unless the region is all slivers; they
