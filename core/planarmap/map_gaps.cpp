@@ -2,6 +2,7 @@
 // partly hidden (see fill_snaxel_map_gaps in planar_map.h).
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <map>
@@ -18,9 +19,16 @@ namespace {
 /// Faces smaller than this in the image (square pixels) leave no gap worth
 /// filling: a dense mesh's occlusion fronts cut them within a pixel.
 constexpr double kGapFacePixels = 16.0;
-/// Pieces of the gap thinner than this (pixels, across) are the seams
-/// between a region's outline and a face's edge, not surface left out.
+/// Nor, among several objects, faces shorter than this (pixels, their
+/// longest side in the image) with a corner no region holds.
+constexpr double kGapFaceLength = 6.0;
+/// Pieces of the gap thinner than this on average (pixels, across) are
+/// mostly the seams between a region's outline and a face's edge, not
+/// surface left out; what of them is wider than kSeamWidth is kept.
 constexpr double kGapWidth = 0.5;
+constexpr double kSeamWidth = 0.2;
+/// Pieces smaller than this (square pixels) are left out.
+constexpr double kGapPiecePixels = 0.5;
 
 } // namespace
 
@@ -51,6 +59,17 @@ void fill_snaxel_map_gaps(PlanarMap& map, const SnaxelEngine& engine, const Snax
     // mesh no face passes it).
     VertexData<glm::dvec2> image(topo.n_vertices());
     parallel_for(topo.vertices(), [&](VertexId v) { image[v] = projection.project(topo.positions()[v]); }, 4096);
+    // Among several objects, also a long face with a corner no region
+    // holds (hidden, or turned away): the straight cut across it leaves a
+    // wedge as long as the face, through which the object behind shows
+    // (a thin rod through a ball, its sides' long faces running from a
+    // rim turned away to a ring inside the ball).
+    const bool long_faces_matter = topo.parts() && topo.parts()->several();
+    auto long_and_cut = [&](const std::array<VertexId, 3>& fv, glm::dvec2 pa, glm::dvec2 pb, glm::dvec2 pc) {
+        if (map.vertex_region[fv[0]] >= 0 && map.vertex_region[fv[1]] >= 0 && map.vertex_region[fv[2]] >= 0) return false;
+        const double longest2 = std::max({glm::dot(pb - pa, pb - pa), glm::dot(pc - pb, pc - pb), glm::dot(pa - pc, pa - pc)});
+        return longest2 >= kGapFaceLength * kGapFaceLength;
+    };
     // Their union as an outline (faces turned to the viewer all wind one
     // way in the image: the edges two of them share cancel).
     clip::Outline outline;
@@ -59,7 +78,7 @@ void fill_snaxel_map_gaps(PlanarMap& map, const SnaxelEngine& engine, const Snax
         const auto& fv = topo.face_vertices()[f];
         const glm::dvec2 pa = image[fv[0]], pb = image[fv[1]], pc = image[fv[2]];
         const double pixels = 0.5 * std::abs((pb.x - pa.x) * (pc.y - pa.y) - (pc.x - pa.x) * (pb.y - pa.y));
-        if (pixels < kGapFacePixels) continue;
+        if (pixels < kGapFacePixels && !(long_faces_matter && long_and_cut(fv, pa, pb, pc))) continue;
         const glm::dvec3 &a = topo.positions()[fv[0]], &b = topo.positions()[fv[1]], &c = topo.positions()[fv[2]];
         if (glm::dot(glm::cross(b - a, c - a), camera.to_viewer((a + b + c) / 3.0)) <= 0.0) continue;
         if (topo.has_strips() && !face_has_area(topo, f)) continue;
@@ -90,19 +109,23 @@ void fill_snaxel_map_gaps(PlanarMap& map, const SnaxelEngine& engine, const Snax
     const double back = 4.0 * bounding_radius(topo) + 1.0;
     int deepest = 0;
     for (const MapRegion& region : map.regions) deepest = std::max(deepest, region.depth);
-    for (const ClipperLib::Paths& piece : clip::pieces_of(tree)) {
-        // Seams between a region's outline and a face's edge are left out:
-        // pieces under a pixel, or thinner than kGapWidth (twice the area
-        // over the perimeter is a strip's width).
+    // Seams between a region's outline and a face's edge are left out:
+    // pieces under half a pixel, and what of a piece thinner than kGapWidth
+    // on average (twice the area over the perimeter is a strip's width)
+    // an opening by kSeamWidth / 2 takes away (a seam can join a wedge of
+    // real surface left on a long thin face, which the opening keeps).
+    std::vector<ClipperLib::Paths> pieces;
+    for (ClipperLib::Paths& piece : clip::pieces_of(tree)) {
         const double pixels = clip::area(piece);
-        double perimeter = 0.0;
-        for (const ClipperLib::Path& path : piece)
-            for (std::size_t i = 0; i < path.size(); ++i) {
-                const auto& p = path[i];
-                const auto& q = path[(i + 1) % path.size()];
-                perimeter += std::hypot(double(q.X - p.X), double(q.Y - p.Y)) / clip::kScale;
-            }
-        if (pixels < 1.0 || 2.0 * pixels < kGapWidth * perimeter) continue;
+        if (pixels < kGapPiecePixels) continue;
+        if (2.0 * pixels >= kGapWidth * clip::perimeter(piece)) {
+            pieces.push_back(std::move(piece));
+            continue;
+        }
+        for (ClipperLib::Paths& part : clip::pieces_of_opened(piece, 0.5 * kSeamWidth))
+            if (clip::area(part) >= kGapPiecePixels) pieces.push_back(std::move(part));
+    }
+    for (const ClipperLib::Paths& piece : pieces) {
         std::map<int, std::pair<double, FaceId>> votes; // class: width, a face seen
         for (const clip::InsidePoint& point : clip::inside_points(piece)) {
             VisibilityRay ray;

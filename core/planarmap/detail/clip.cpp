@@ -102,6 +102,21 @@ std::vector<Paths> pieces_of(const ClipperLib::PolyTree& tree) {
     return out;
 }
 
+std::vector<Paths> pieces_of_opened(const Paths& piece, double radius) {
+    // Mitred joins (limit 2): an opening of a polygon keeps its corners
+    // within the limit as they were.
+    ClipperLib::ClipperOffset in(2.0);
+    in.AddPaths(piece, ClipperLib::jtMiter, ClipperLib::etClosedPolygon);
+    Paths shrunk;
+    in.Execute(shrunk, -radius * kScale);
+    if (shrunk.empty()) return {};
+    ClipperLib::ClipperOffset out(2.0);
+    out.AddPaths(shrunk, ClipperLib::jtMiter, ClipperLib::etClosedPolygon);
+    ClipperLib::PolyTree tree;
+    out.Execute(tree, radius * kScale);
+    return pieces_of(tree);
+}
+
 ClipperLib::Path crop(const ClipperLib::Path& path, const ClipperLib::IntPoint& lo, const ClipperLib::IntPoint& hi) {
     ClipperLib::Path in = path, out;
     for (int side = 0; side < 4; ++side) {

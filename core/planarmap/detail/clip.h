@@ -58,6 +58,11 @@ void difference_tree(const Paths& a, const Paths& b, ClipperLib::PolyTree& out);
 /// The pieces of a normalized polygon set: each outline with its holes.
 std::vector<Paths> pieces_of(const ClipperLib::PolyTree& tree);
 
+/// The pieces of @p piece (an outline and its holes) opened by @p radius
+/// pixels (shrunk, then grown back): what is thinner than twice the
+/// radius is gone, the rest keeps its outline.
+std::vector<Paths> pieces_of_opened(const Paths& piece, double radius);
+
 /// The outline of a set of polygons that all wind one way in the image,
 /// walked step by step between point ids: a step walked back along one
 /// already taken cancels it (an edge two pieces of the set share), so what
