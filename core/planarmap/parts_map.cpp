@@ -22,8 +22,14 @@ namespace snaxels {
 namespace {
 
 /// Half the width of the strips the boundaries are cut with, in Clipper
-/// units (1/1024 px): the strips are 1/64 px wide.
-constexpr double kHalfStrip = 8.0;
+/// units (1/1024 px): the strips are 1/256 px wide. A strip goes whole to
+/// its region's largest piece, so a pixel's centre that falls in one
+/// (an upright post's outline along a column of centres) shows that piece.
+constexpr double kHalfStrip = 2.0;
+
+/// How far apart, in the image, a line hidden at both ends of a segment
+/// is asked whether it is seen in between.
+constexpr double kHiddenStepPixels = 4.0;
 
 /// Points of a cut per strip: a long line is cut as several strips, so
 /// that a region meets only the strips that pass near it.
@@ -69,7 +75,7 @@ std::shared_ptr<const std::vector<Fronts>> boundary_fronts(const SnaxelEngine& e
 }
 
 /// The lines a map's regions are cut along, in the image, as strips
-/// 1/64 px wide, each with its box.
+/// 1/256 px wide, each with its box.
 class Strips {
   public:
     explicit Strips(const ImageProjection& projection) : projection_(projection) {}
@@ -202,10 +208,12 @@ class PartProbe {
     }
 
     /// Whether some point strictly between @p a and @p b (both known
-    /// hidden) may be seen: asked at the middle and every 16 px.
+    /// hidden) may be seen: asked every kHiddenStepPixels, the middle at
+    /// least (a rod's long side edge runs from inside one ball to inside
+    /// another, seen between them over a few pixels).
     bool may_see_between(const glm::dvec3& a, const glm::dvec3& b) const {
         const double pixels = glm::length(projection_.project(b) - projection_.project(a));
-        const int steps = 2 * int(std::clamp(std::ceil(pixels / 32.0), 1.0, 32.0));
+        const int steps = int(std::clamp(std::ceil(pixels / kHiddenStepPixels), 2.0, 256.0));
         for (int k = 1; k < steps; ++k)
             if (may_see(a + (b - a) * (double(k) / steps))) return true;
         return false;
@@ -401,7 +409,7 @@ std::vector<MapRegion> split_region(const MapRegion& region, const Strips& strip
         clip::difference_tree(whole, near, tree);
         pieces = clip::pieces_of(tree);
     }
-    // All strip (under 1/64 px across): the region as a whole shows a part,
+    // All strip (under 1/256 px across): the region as a whole shows a part,
     // or it is left out.
     if (pieces.empty()) pieces.push_back(whole);
     // Slivers inside the region (small, on average under half a pixel

@@ -51,7 +51,7 @@ void fill_snaxel_map_gaps(PlanarMap& map, const SnaxelEngine& engine, const Snax
 /// material and object lines, every object's faceted outline (edges
 /// between a face turned to the viewer and one turned away, and borders)
 /// and the intersection curves (where one surface enters another), where
-/// they may be seen, all cut out as strips 1/64 px wide.
+/// they may be seen, all cut out as strips 1/256 px wide.
 /// Each piece takes the object, material and shading class seen through
 /// it (the nearest face on the rays through its inside points, over most
 /// of their width; the class by the shading at the hit, as @p classes

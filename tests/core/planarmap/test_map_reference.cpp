@@ -376,11 +376,13 @@ namespace {
 // Where objects meet (#55, done-when 1): on Blender scenes of objects
 // resting on, sunk into and passing through each other (five to seven
 // materials each), and one of objects apart (where the maps' own outlines
-// alone part them), in 10 views from above, in both maps, every object
-// covering at least 200 pixels has at least 97% of its pixels in regions
-// of its own material, by the reference rasterizer's z-buffer (its own
-// Collada reader). The figure is per object, the worst first: an image's
-// average hides a small object filled with its neighbour's colour.
+// alone part them), in 10 views from above of each of two series, in both
+// maps, every object covering at least 200 pixels has at least 97% of its
+// pixels in regions of its own material, by the reference rasterizer's
+// z-buffer (its own Collada reader). The figure is per object, the worst
+// first: an image's average hides a small object filled with its
+// neighbour's colour. (Over 160 views of each scene from other series the
+// worst object read 97.5%: a ring sunk into a slab, in the post map.)
 TEST(PlanarMaps, EveryObjectShowsItsOwnMaterial) {
     constexpr int kSize = 512;
     const double k = 0.75;
@@ -395,54 +397,59 @@ TEST(PlanarMaps, EveryObjectShowsItsOwnMaterial) {
         const ProductScene product_scene(file, SurfaceOptions{});
         const MeshTopology& topo = product_scene.topo;
         ASSERT_TRUE(topo.parts() && topo.parts()->several()) << name;
-        ViewSeries series(55, framing(reference.positions));
         double worst[2] = {1.0, 1.0};
         std::string worst_what[2];
-        for (int view = 0; view < views; ++view) {
-            const auto [v, to_light] = series.next(view, [](const glm::dvec3& dir) { return dir.y < -0.2; });
-            std::vector<int> faces;
-            const std::vector<int> truth = ref::class_image(reference, v, to_light, {k}, &scene.normals, &faces);
-            const ProductView product(product_scene.engine, v, to_light, k);
-            for (const PlanarMapKind kind : {PlanarMapKind::Snaxel, PlanarMapKind::Post}) {
-                const PlanarMap map = product.map(kind, product_scene.engine, product_scene.rays);
-                const std::vector<int> image = test::rasterize_regions(map.regions, kSize, kSize);
-                std::map<std::string, std::pair<std::size_t, std::size_t>> per_object; // pixels, own material
-                // With SNAXELS_DEBUG_MAP_DIR: the misses in red (another
-                // material) and black (no region), the rest grey by class.
-                std::vector<unsigned char> debug(std::size_t(kSize) * kSize * 3, 255);
-                for (std::size_t at = 0; at < truth.size(); ++at) {
-                    if (truth[at] < 0) continue;
-                    debug[at * 3] = debug[at * 3 + 1] = debug[at * 3 + 2] = 0;
-                    auto& [pixels, own] = per_object[scene.face_object[std::size_t(faces[at])]];
-                    ++pixels;
-                    const int r = image[at];
-                    if (r < 0 || map.regions[std::size_t(r)].material < 0) continue;
-                    const std::string& got = topo.parts()->materials[std::size_t(map.regions[std::size_t(r)].material)].name;
-                    own += got == scene.face_material[std::size_t(faces[at])];
-                    if (got == scene.face_material[std::size_t(faces[at])])
-                        debug[at * 3] = debug[at * 3 + 1] = debug[at * 3 + 2] = (unsigned char)(90 + 50 * truth[at]);
-                    else
-                        debug[at * 3] = 255;
-                }
-                if (const char* dir = getenv("SNAXELS_DEBUG_MAP_DIR")) {
-                    const std::string out_path = std::string(dir) + "/" + test::test_name(name) + "-objects-" + std::to_string(view) +
-                                                 "-" + planar_map_kind_name(kind) + ".ppm";
-                    if (FILE* out = std::fopen(out_path.c_str(), "wb")) {
-                        std::fprintf(out, "P6 %d %d 255\n", kSize, kSize);
-                        std::fwrite(debug.data(), 1, debug.size(), out);
-                        std::fclose(out);
+        for (const unsigned seed : {55u, 58u}) {
+            ViewSeries series(seed, framing(reference.positions));
+            for (int view = 0; view < views; ++view) {
+                const auto [v, to_light] = series.next(view, [](const glm::dvec3& dir) { return dir.y < -0.2; });
+                std::vector<int> faces;
+                const std::vector<int> truth = ref::class_image(reference, v, to_light, {k}, &scene.normals, &faces);
+                const ProductView product(product_scene.engine, v, to_light, k);
+                for (const PlanarMapKind kind : {PlanarMapKind::Snaxel, PlanarMapKind::Post}) {
+                    const PlanarMap map = product.map(kind, product_scene.engine, product_scene.rays);
+                    const std::vector<int> image = test::rasterize_regions(map.regions, kSize, kSize);
+                    std::map<std::string, std::pair<std::size_t, std::size_t>> per_object; // pixels, own material
+                    // With SNAXELS_DEBUG_MAP_DIR: the misses in red (another
+                    // material) and black (no region), the rest grey by class.
+                    std::vector<unsigned char> debug(std::size_t(kSize) * kSize * 3, 255);
+                    for (std::size_t at = 0; at < truth.size(); ++at) {
+                        if (truth[at] < 0) continue;
+                        debug[at * 3] = debug[at * 3 + 1] = debug[at * 3 + 2] = 0;
+                        auto& [pixels, own] = per_object[scene.face_object[std::size_t(faces[at])]];
+                        ++pixels;
+                        const int r = image[at];
+                        if (r < 0 || map.regions[std::size_t(r)].material < 0) continue;
+                        const std::string& got = topo.parts()->materials[std::size_t(map.regions[std::size_t(r)].material)].name;
+                        own += got == scene.face_material[std::size_t(faces[at])];
+                        if (got == scene.face_material[std::size_t(faces[at])])
+                            debug[at * 3] = debug[at * 3 + 1] = debug[at * 3 + 2] = (unsigned char)(90 + 50 * truth[at]);
+                        else
+                            debug[at * 3] = 255;
                     }
-                }
-                const int which = kind == PlanarMapKind::Snaxel ? 0 : 1;
-                for (const auto& [object, counts] : per_object) {
-                    if (counts.first < 200) continue;
-                    const double share = double(counts.second) / double(counts.first);
-                    if (share < worst[which]) {
-                        worst[which] = share;
-                        worst_what[which] = object + " in view " + std::to_string(view) + " (" + std::to_string(counts.first) + " px)";
+                    if (const char* dir = getenv("SNAXELS_DEBUG_MAP_DIR")) {
+                        const std::string out_path = std::string(dir) + "/" + test::test_name(name) + "-objects-" +
+                                                     std::to_string(seed) + "-" + std::to_string(view) + "-" +
+                                                     planar_map_kind_name(kind) + ".ppm";
+                        if (FILE* out = std::fopen(out_path.c_str(), "wb")) {
+                            std::fprintf(out, "P6 %d %d 255\n", kSize, kSize);
+                            std::fwrite(debug.data(), 1, debug.size(), out);
+                            std::fclose(out);
+                        }
                     }
-                    EXPECT_GE(share, 0.97) << name << " " << object << " view " << view << " " << planar_map_kind_name(kind)
-                                           << ": " << counts.second << " of " << counts.first << " px";
+                    const int which = kind == PlanarMapKind::Snaxel ? 0 : 1;
+                    for (const auto& [object, counts] : per_object) {
+                        if (counts.first < 200) continue;
+                        const double share = double(counts.second) / double(counts.first);
+                        if (share < worst[which]) {
+                            worst[which] = share;
+                            worst_what[which] = object + " in view " + std::to_string(seed) + "/" + std::to_string(view) +
+                                                " (" + std::to_string(counts.first) + " px)";
+                        }
+                        EXPECT_GE(share, 0.97) << name << " " << object << " view " << seed << "/" << view << " "
+                                               << planar_map_kind_name(kind) << ": " << counts.second << " of " << counts.first
+                                               << " px";
+                    }
                 }
             }
         }
