@@ -263,9 +263,28 @@ std::vector<std::uint8_t> VisibilitySampler::over_other_objects(const SnaxelEngi
     return out;
 }
 
+int VisibilitySampler::enclosed_qi(const VisibilityRay& ray, const glm::dvec3& p, std::int64_t object) const {
+    const double offset = glm::length(ray.origin - p);
+    if (!(offset > 0.0)) return 0;
+    VisibilityRay along = ray;
+    along.origin = p;
+    along.dir = (ray.origin - p) / offset;
+    along.tfar = offset;
+    const RayHit hit = scene_.nearest(along);
+    if (!hit.hit() || object_of(scene_.topology(), hit.face) == object || hit.t <= 0.05 * offset) return 0;
+    VisibilityRay inner = ray;
+    inner.origin = p + 0.5 * hit.t * along.dir;
+    if (!camera_.orthographic()) {
+        inner.tfar = glm::length(camera_.eye - inner.origin);
+        inner.dir = inner.tfar > 0.0 ? (camera_.eye - inner.origin) / inner.tfar : ray.dir;
+    }
+    return qi(inner);
+}
+
 int VisibilitySampler::contact_qi(const VisibilityRay& ray, const glm::dvec3& p, std::int64_t object) const {
     const int q = qi(ray);
-    if (q == 0 || object < 0) return q;
+    if (object < 0) return q;
+    if (q == 0) return enclosed_qi(ray, p, object);
     const MeshTopology& topo = scene_.topology();
     const RayHit hit = scene_.nearest(ray);
     const double offset = glm::length(ray.origin - p);

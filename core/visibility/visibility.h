@@ -119,6 +119,11 @@ class VisibilitySampler {
     /// floor, and the offset dips under it), that surface does not hide p:
     /// QI from as far off toward the viewer instead.
     int contact_qi(const VisibilityRay& ray, const glm::dvec3& p, std::int64_t object) const;
+    /// QI 0 of @p ray checked: where its start, off the surface, left
+    /// another object that p lies inside (a thin rod's contour just inside
+    /// the ball it passes through, lifted by a long face's offset past the
+    /// ball's surface), the QI from between p and that surface.
+    int enclosed_qi(const VisibilityRay& ray, const glm::dvec3& p, std::int64_t object) const;
     /// Whether contact_qi(ray, p, object) is @p q, casting no more than it
     /// needs to tell (a point that is not seen, asked whether its QI is 0,
     /// needs no count of its layers).
