@@ -136,18 +136,11 @@ class Strips {
     /// strip reaches over many regions; what lies past a region's box
     /// cannot cut it).
     clip::Paths over(const clip::Box& box) const {
-        const ClipperLib::cInt margin = ClipperLib::cInt(clip::kScale);
-        clip::Box wide = box;
-        wide.x0 -= margin, wide.y0 -= margin, wide.x1 += margin, wide.y1 += margin;
+        const clip::Box wide = box.widened(ClipperLib::cInt(clip::kScale));
         clip::Paths near;
         for (std::size_t k = 0; k < strips_.size(); ++k) {
             if (!boxes_[k].meets(box)) continue;
-            const clip::Box& b = boxes_[k];
-            if (b.x0 >= wide.x0 && b.y0 >= wide.y0 && b.x1 <= wide.x1 && b.y1 <= wide.y1) {
-                near.push_back(strips_[k]);
-            } else if (ClipperLib::Path part = clip::crop(strips_[k], {wide.x0, wide.y0}, {wide.x1, wide.y1}); !part.empty()) {
-                near.push_back(std::move(part));
-            }
+            if (ClipperLib::Path part = clip::cropped(strips_[k], boxes_[k], wide); !part.empty()) near.push_back(std::move(part));
         }
         return near;
     }

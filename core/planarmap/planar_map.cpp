@@ -64,27 +64,18 @@ void subtract_nearer_regions(PlanarMap& map) {
     for (std::size_t i = 0; i < n; ++i) order[i] = i;
     std::stable_sort(order.begin(), order.end(),
                      [&](std::size_t a, std::size_t b) { return map.regions[a].depth < map.regions[b].depth; });
-    struct Box {
-        ClipperLib::IntPoint lo{std::numeric_limits<ClipperLib::cInt>::max(), std::numeric_limits<ClipperLib::cInt>::max()};
-        ClipperLib::IntPoint hi{std::numeric_limits<ClipperLib::cInt>::min(), std::numeric_limits<ClipperLib::cInt>::min()};
-        void add(const ClipperLib::IntPoint& p) {
-            lo = {std::min(lo.X, p.X), std::min(lo.Y, p.Y)};
-            hi = {std::max(hi.X, p.X), std::max(hi.Y, p.Y)};
-        }
-        bool meets(const Box& o) const { return lo.X <= o.hi.X && o.lo.X <= hi.X && lo.Y <= o.hi.Y && o.lo.Y <= hi.Y; }
-    };
     std::vector<clip::Paths> paths(n);
-    std::vector<std::vector<Box>> boxes(n); // per polygon
-    std::vector<Box> box(n);                // per region
+    std::vector<std::vector<clip::Box>> boxes(n); // per polygon
+    std::vector<clip::Box> box(n);                // per region
     // Each region's loops filled on their own (non-zero) first: loops of two
     // regions winding opposite ways would cancel in one clip set.
     parallel_for(n, [&](std::size_t i) { paths[i] = clip::op(clip::to_paths(map.regions[i].polygons), {}, ClipperLib::ctUnion); }, 1);
     for (std::size_t i = 0; i < n; ++i) {
         for (const auto& path : paths[i]) {
-            Box b;
-            for (const auto& p : path) b.add(p);
+            clip::Box b;
+            b.add(path);
             boxes[i].push_back(b);
-            box[i].add(b.lo), box[i].add(b.hi);
+            box[i].add(b);
         }
     }
     // Each region against the nearer ones as they were (their union is the
@@ -97,18 +88,14 @@ void subtract_nearer_regions(PlanarMap& map) {
             keep[r] = 0;
             return;
         }
-        Box wide = box[r];
-        wide.lo = {wide.lo.X - 2, wide.lo.Y - 2};
-        wide.hi = {wide.hi.X + 2, wide.hi.Y + 2};
+        const clip::Box wide = box[r].widened(2);
         clip::Paths nearer;
         for (std::size_t before = 0; before < at; ++before) {
             const std::size_t q = order[before];
             if (!box[q].meets(wide)) continue;
             for (std::size_t k = 0; k < paths[q].size(); ++k) {
                 if (!boxes[q][k].meets(wide)) continue;
-                const Box& b = boxes[q][k];
-                const bool within = b.lo.X >= wide.lo.X && b.lo.Y >= wide.lo.Y && b.hi.X <= wide.hi.X && b.hi.Y <= wide.hi.Y;
-                ClipperLib::Path part = within ? paths[q][k] : clip::crop(paths[q][k], wide.lo, wide.hi);
+                ClipperLib::Path part = clip::cropped(paths[q][k], boxes[q][k], wide);
                 if (part.size() >= 3) nearer.push_back(std::move(part));
             }
         }

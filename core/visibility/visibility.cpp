@@ -263,6 +263,16 @@ std::vector<std::uint8_t> VisibilitySampler::over_other_objects(const SnaxelEngi
     return out;
 }
 
+int VisibilitySampler::qi_from(const VisibilityRay& ray, const glm::dvec3& origin) const {
+    VisibilityRay moved = ray;
+    moved.origin = origin;
+    if (!camera_.orthographic()) {
+        moved.tfar = glm::length(camera_.eye - origin);
+        moved.dir = moved.tfar > 0.0 ? (camera_.eye - origin) / moved.tfar : ray.dir;
+    }
+    return qi(moved);
+}
+
 int VisibilitySampler::enclosed_qi(const VisibilityRay& ray, const glm::dvec3& p, std::int64_t object) const {
     const double offset = glm::length(ray.origin - p);
     if (!(offset > 0.0)) return 0;
@@ -272,13 +282,7 @@ int VisibilitySampler::enclosed_qi(const VisibilityRay& ray, const glm::dvec3& p
     along.tfar = offset;
     const RayHit hit = scene_.nearest(along);
     if (!hit.hit() || object_of(scene_.topology(), hit.face) == object || hit.t <= 0.05 * offset) return 0;
-    VisibilityRay inner = ray;
-    inner.origin = p + 0.5 * hit.t * along.dir;
-    if (!camera_.orthographic()) {
-        inner.tfar = glm::length(camera_.eye - inner.origin);
-        inner.dir = inner.tfar > 0.0 ? (camera_.eye - inner.origin) / inner.tfar : ray.dir;
-    }
-    return qi(inner);
+    return qi_from(ray, p + 0.5 * hit.t * along.dir);
 }
 
 int VisibilitySampler::contact_qi(const VisibilityRay& ray, const glm::dvec3& p, std::int64_t object) const {
@@ -298,13 +302,7 @@ int VisibilitySampler::contact_qi(const VisibilityRay& ray, const glm::dvec3& p,
     const glm::dvec3 at = ray.origin + hit.t * ray.dir;
     // The crossing's surface passes through p, near p: a contact.
     if (std::abs(glm::dot(p - a, normal)) > 0.05 * offset || glm::length(at - p) > 10.0 * offset) return q;
-    VisibilityRay lifted = ray;
-    lifted.origin = p + offset * camera_.to_viewer(p);
-    if (!camera_.orthographic()) {
-        lifted.tfar = glm::length(camera_.eye - lifted.origin);
-        lifted.dir = lifted.tfar > 0.0 ? (camera_.eye - lifted.origin) / lifted.tfar : ray.dir;
-    }
-    return qi(lifted);
+    return qi_from(ray, p + offset * camera_.to_viewer(p));
 }
 
 bool VisibilitySampler::qi_is(const VisibilityRay& ray, const glm::dvec3& p, std::int64_t object, int q) const {

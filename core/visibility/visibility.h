@@ -119,6 +119,8 @@ class VisibilitySampler {
     /// floor, and the offset dips under it), that surface does not hide p:
     /// QI from as far off toward the viewer instead.
     int contact_qi(const VisibilityRay& ray, const glm::dvec3& p, std::int64_t object) const;
+    /// QI of @p ray started at @p origin instead, toward the viewer from there.
+    int qi_from(const VisibilityRay& ray, const glm::dvec3& origin) const;
     /// QI 0 of @p ray checked: where its start, off the surface, left
     /// another object that p lies inside (a thin rod's contour just inside
     /// the ball it passes through, lifted by a long face's offset past the

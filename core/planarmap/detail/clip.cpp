@@ -102,6 +102,10 @@ std::vector<Paths> pieces_of(const ClipperLib::PolyTree& tree) {
     return out;
 }
 
+ClipperLib::Path cropped(const ClipperLib::Path& path, const Box& path_box, const Box& to) {
+    return path_box.within(to) ? path : crop(path, {to.x0, to.y0}, {to.x1, to.y1});
+}
+
 std::vector<Paths> pieces_of_opened(const Paths& piece, double radius) {
     // Mitred joins (limit 2): an opening of a polygon keeps its corners
     // within the limit as they were.

@@ -37,8 +37,16 @@ struct Box {
     void add(const ClipperLib::Path& path) {
         for (const auto& p : path) x0 = std::min(x0, p.X), y0 = std::min(y0, p.Y), x1 = std::max(x1, p.X), y1 = std::max(y1, p.Y);
     }
+    void add(const Box& o) { x0 = std::min(x0, o.x0), y0 = std::min(y0, o.y0), x1 = std::max(x1, o.x1), y1 = std::max(y1, o.y1); }
     bool meets(const Box& o) const { return x0 <= o.x1 && o.x0 <= x1 && y0 <= o.y1 && o.y0 <= y1; }
+    bool within(const Box& o) const { return x0 >= o.x0 && y0 >= o.y0 && x1 <= o.x1 && y1 <= o.y1; }
+    /// Wider by @p units on every side.
+    Box widened(ClipperLib::cInt units) const { return {x0 - units, y0 - units, x1 + units, y1 + units}; }
 };
+
+/// @p path (whose box is @p path_box) as it is where it lies within
+/// @p to, else cut to it (crop).
+ClipperLib::Path cropped(const ClipperLib::Path& path, const Box& path_box, const Box& to);
 
 /// A point inside a polygon set and the width of the span it is the
 /// middle of.
