@@ -118,10 +118,12 @@ std::vector<EdgeId> border_edges(const MeshTopology& topo) {
 std::vector<EdgeChain> chain_edges(const MeshTopology& topo, const std::vector<EdgeId>& edges) {
     EdgeData<std::uint8_t> chosen(topo.n_edges(), 0), used(topo.n_edges(), 0);
     for (const EdgeId e : edges) chosen[e] = 1;
+    std::vector<EdgeId> order = edges;
+    std::sort(order.begin(), order.end());
+    order.erase(std::unique(order.begin(), order.end()), order.end());
     VertexData<std::int32_t> degree(topo.n_vertices(), 0);
-    for (const EdgeId e : topo.edges())
-        if (chosen[e])
-            for (const VertexId v : topo.edge_vertices()[e]) ++degree[v];
+    for (const EdgeId e : order)
+        for (const VertexId v : topo.edge_vertices()[e]) ++degree[v];
     // The next chosen, unused edge at v.
     auto next_edge = [&](VertexId v) -> EdgeId {
         for (const EdgeId e : topo.vertex_edges(v))
@@ -134,9 +136,6 @@ std::vector<EdgeChain> chain_edges(const MeshTopology& topo, const std::vector<E
             if (c != e && chosen[c]) return c;
         return e;
     };
-    std::vector<EdgeId> order = edges;
-    std::sort(order.begin(), order.end());
-    order.erase(std::unique(order.begin(), order.end()), order.end());
     std::vector<EdgeChain> chains;
     for (const EdgeId first : order) {
         if (used[first]) continue;

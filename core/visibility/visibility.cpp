@@ -280,6 +280,8 @@ int VisibilitySampler::enclosed_qi(const VisibilityRay& ray, const glm::dvec3& p
     along.origin = p;
     along.dir = (ray.origin - p) / offset;
     along.tfar = offset;
+    // Nearly always nothing lies between: the any-hit query says so cheaply.
+    if (!scene_.occluded(along)) return 0;
     const RayHit hit = scene_.nearest(along);
     if (!hit.hit() || object_of(scene_.topology(), hit.face) == object || hit.t <= 0.05 * offset) return 0;
     return qi_from(ray, p + 0.5 * hit.t * along.dir);
