@@ -15,6 +15,7 @@
 #include "snaxels/snaxel/feature_edges.h"
 #include "snaxels/snaxel/intersections.h"
 #include "snaxels/util/detail/parallel.h"
+#include "snaxels/util/detail/segment.h"
 #include "snaxels/visibility/visibility.h"
 
 namespace snaxels {
@@ -34,6 +35,10 @@ constexpr double kHiddenStepPixels = 4.0;
 /// Points of a cut per strip: a long line is cut as several strips, so
 /// that a region meets only the strips that pass near it.
 constexpr std::size_t kStripPoints = 24;
+
+/// How far from the straight line between its neighbours, in Clipper
+/// units, a point of a cut may lie and be left out (1/256 px).
+constexpr double kStraight = 4.0;
 
 /// The side of the tiles whose cuts are widened together, in pixels.
 constexpr double kTilePixels = 32.0;
@@ -120,14 +125,15 @@ class Strips {
                 const auto key = std::pair(p.X >= 0 ? p.X / tile : p.X / tile - 1, p.Y >= 0 ? p.Y / tile : p.Y / tile - 1);
                 tiles[key].AddPath(path, ClipperLib::jtSquare, ClipperLib::etOpenSquare);
             }
-        for (auto& [key, offset] : tiles) {
-            clip::Paths strip;
-            offset.Execute(strip, kHalfStrip);
+        std::vector<ClipperLib::ClipperOffset*> offsets;
+        for (auto& [key, offset] : tiles) offsets.push_back(&offset);
+        std::vector<clip::Paths> widened(offsets.size());
+        parallel_for(offsets.size(), [&](std::size_t i) { offsets[i]->Execute(widened[i], kHalfStrip); }, 4);
+        for (clip::Paths& strip : widened)
             for (ClipperLib::Path& path : strip) {
                 boxes_.emplace_back().add(path);
                 strips_.push_back(std::move(path));
             }
-        }
         lines_.clear();
         known_seen_.clear();
     }
@@ -149,12 +155,36 @@ class Strips {
     /// @p points from @p begin to @p end (past the last), in the image, in
     /// pieces of kStripPoints, into @p out.
     void cut(const std::vector<glm::dvec3>& points, std::size_t begin, std::size_t end, std::vector<ClipperLib::Path>& out) const {
-        for (std::size_t start = begin; start + 1 < end; start += kStripPoints - 1) {
-            ClipperLib::Path& path = out.emplace_back();
-            for (std::size_t k = start; k < std::min(end, start + kStripPoints); ++k) {
-                const glm::dvec2 q = projection_.project(points[k]);
-                path.push_back({ClipperLib::cInt(std::llround(q.x * clip::kScale)), ClipperLib::cInt(std::llround(q.y * clip::kScale))});
+        // The points in the image, a point that lies on the straight line
+        // between its neighbours kept (within kStraight) left out: a refined
+        // mesh's outline runs along its faces as loaded, many of its points
+        // in a row.
+        std::vector<glm::dvec2> kept;
+        std::size_t run_start = 0; // in kept: the last point kept for good
+        std::vector<glm::dvec2> skipped;
+        for (std::size_t k = begin; k < end; ++k) {
+            const glm::dvec2 q = projection_.project(points[k]) * clip::kScale;
+            if (kept.size() >= 2) {
+                // Try leaving the last point out: it and those left out
+                // before it must lie near the line from the run's start to q.
+                const glm::dvec2 a = kept[run_start];
+                bool straight_on = true;
+                skipped.push_back(kept.back());
+                for (const glm::dvec2& m : skipped)
+                    if (point_segment(m, a, q) > kStraight) { straight_on = false; break; }
+                if (straight_on) {
+                    kept.back() = q;
+                    continue;
+                }
+                skipped.clear();
+                run_start = kept.size() - 1;
             }
+            kept.push_back(q);
+        }
+        for (std::size_t start = 0; start + 1 < kept.size(); start += kStripPoints - 1) {
+            ClipperLib::Path& path = out.emplace_back();
+            for (std::size_t k = start; k < std::min(kept.size(), start + kStripPoints); ++k)
+                path.push_back({ClipperLib::cInt(std::llround(kept[k].x)), ClipperLib::cInt(std::llround(kept[k].y))});
         }
     }
 
@@ -205,11 +235,28 @@ class PartProbe {
     /// least (a rod's long side edge runs from inside one ball to inside
     /// another, seen between them over a few pixels).
     bool may_see_between(const glm::dvec3& a, const glm::dvec3& b) const {
-        const double pixels = glm::length(projection_.project(b) - projection_.project(a));
-        const int steps = int(std::clamp(std::ceil(pixels / kHiddenStepPixels), 2.0, 256.0));
+        const int steps = int(std::clamp(std::ceil(pixels_between(a, b) / kHiddenStepPixels), 2.0, 256.0));
         for (int k = 1; k < steps; ++k)
             if (may_see(a + (b - a) * (double(k) / steps))) return true;
         return false;
+    }
+
+    /// Whether some surface lies behind @p p on the ray through it (the
+    /// faces around @p ignore skipped: the outline's own).
+    bool behind(const glm::dvec3& p, const std::array<VertexId, 3>& ignore) const {
+        VisibilityRay ray;
+        projection_.pixel_ray(projection_.project(p), back_, ray.origin, ray.dir);
+        // From a little in front of the point: a surface the object rests
+        // on, through the point, is behind it too.
+        ray.origin = p - 0.1 * depth_slack_ * ray.dir;
+        ray.tfar = std::numeric_limits<double>::infinity();
+        ray.ignore = ignore;
+        return rays_.nearest(ray).hit();
+    }
+
+    /// How far apart @p a and @p b lie in the image, in pixels.
+    double pixels_between(const glm::dvec3& a, const glm::dvec3& b) const {
+        return glm::length(projection_.project(b) - projection_.project(a));
     }
 
   private:
@@ -283,53 +330,93 @@ std::shared_ptr<const std::vector<OutlineCandidate>> outline_candidates(const Me
     });
 }
 
-/// The faceted outline where it may be seen: the edges between a face
-/// turned to the viewer and one turned away (across a split sharp edge's
-/// strip, the faces it parts), and the borders, chained. It is where the rays'
-/// answer changes from one object to another (the visual contour of a
-/// file's rounded normals can run well inside it: a cylinder whose smooth
-/// sides take its flat caps' normals at the rims).
+/// The stretches of @p chain (an outline of one object) that part that
+/// object from another where they may be seen, as polylines in @p out.
+/// First, at points about kHiddenStepPixels apart in the image (vertices,
+/// and points between on a longer edge), whether some surface lies behind
+/// the outline (past an outline the viewer sees what lies behind it; where
+/// nothing does, the outline parts the object from nothing). Then, on each
+/// edge next to such a point, whether it may be seen: at its ends, or, both
+/// hidden, between them.
+void outline_stretches(const MeshTopology& topo, const EdgeChain& chain, const PartProbe& probe,
+                       std::vector<std::vector<glm::dvec3>>& out) {
+    const auto& vs = chain.vertices;
+    const std::size_t n = vs.size() - 1; // edges
+    auto at = [&](std::size_t k) { return topo.positions()[vs[k]]; };
+    // Per edge: whether something lies behind an asked point on it or at
+    // the asked points on either side of it.
+    std::vector<std::uint8_t> backed(n, 0);
+    std::size_t last_edge = 0; // the first edge after the last asked point
+    bool last_backed = probe.behind(at(0), {vs[0], VertexId(), VertexId()});
+    double since = 0.0;
+    for (std::size_t k = 0; k < n; ++k) {
+        const double pixels = probe.pixels_between(at(k), at(k + 1));
+        const int steps = int(std::min(std::floor(pixels / kHiddenStepPixels), 256.0));
+        for (int s = 1; s <= steps; ++s) {
+            const bool b = probe.behind(at(k) + (at(k + 1) - at(k)) * (double(s) / (steps + 1)), {vs[k], vs[k + 1], VertexId()});
+            if (b || last_backed)
+                for (std::size_t e = last_edge; e <= k; ++e) backed[e] = 1;
+            last_edge = k, last_backed = b;
+        }
+        since = steps > 0 ? pixels / (steps + 1) : since + pixels;
+        if (since >= kHiddenStepPixels || k + 1 == n) {
+            const bool b = probe.behind(at(k + 1), {vs[k + 1], VertexId(), VertexId()});
+            if (b || last_backed)
+                for (std::size_t e = last_edge; e <= k; ++e) backed[e] = 1;
+            last_edge = k + 1, last_backed = b, since = 0.0;
+        }
+    }
+    // Per vertex: 0 not asked, 1 hidden, 2 may be seen.
+    std::vector<std::uint8_t> seen(vs.size(), 0);
+    auto seen_at = [&](std::size_t k) {
+        if (!seen[k]) seen[k] = probe.may_see(at(k)) ? 2 : 1;
+        return seen[k] == 2;
+    };
+    std::vector<glm::dvec3>* line = nullptr;
+    for (std::size_t k = 0; k < n; ++k) {
+        // Between two hidden ends, a longer edge is asked along it (a
+        // rod's side edge from inside one ball to inside another, seen
+        // between them); a shorter one is as finely asked as its ends are.
+        const bool cut = backed[k] && (seen_at(k) || seen_at(k + 1) ||
+                                       (probe.pixels_between(at(k), at(k + 1)) > kHiddenStepPixels && probe.may_see_between(at(k), at(k + 1))));
+        if (!cut) {
+            line = nullptr;
+            continue;
+        }
+        if (!line) line = &out.emplace_back(1, at(k));
+        line->push_back(at(k + 1));
+    }
+}
+
+/// The faceted outline where it parts two objects and may be seen: the
+/// edges between a face turned to the viewer and one turned away (across a
+/// split sharp edge's strip, the faces it parts), and the borders, chained.
+/// It is where the rays' answer changes from one object to another (the
+/// visual contour of a file's rounded normals can run well inside it: a
+/// cylinder whose smooth sides take its flat caps' normals at the rims).
 void add_faceted_outline(const MeshTopology& topo, const Camera& camera, const PartProbe& probe, Strips& strips) {
     const glm::dvec3 eye_dir = camera.orthographic() ? camera.to_viewer(glm::dvec3(0.0)) : glm::dvec3(0.0);
-    auto facing = [&](FaceId f) {
+    FaceData<std::uint8_t> facing(topo.n_faces(), 0);
+    parallel_for(topo.faces(), [&](FaceId f) {
         const auto& fv = topo.face_vertices()[f];
         const glm::dvec3 a = topo.positions()[fv[0]];
         const glm::dvec3 n = glm::cross(topo.positions()[fv[1]] - a, topo.positions()[fv[2]] - a);
-        return glm::dot(n, camera.orthographic() ? eye_dir : camera.eye - a) > 0.0;
-    };
-    // The candidates where facing changes, then one ray per vertex of
-    // theirs, then, for an edge whose ends are both hidden, rays between.
+        facing[f] = glm::dot(n, camera.orthographic() ? eye_dir : camera.eye - a) > 0.0;
+    }, 4096);
     const std::shared_ptr<const std::vector<OutlineCandidate>> candidates = outline_candidates(topo);
     std::vector<std::uint8_t> on(candidates->size(), 0);
     parallel_for(candidates->size(), [&](std::size_t i) {
         const auto& faces = (*candidates)[i].faces;
-        on[i] = !faces[0].valid() || !faces[1].valid() || facing(faces[0]) != facing(faces[1]);
-    }, 1024);
+        on[i] = !faces[0].valid() || !faces[1].valid() || facing[faces[0]] != facing[faces[1]];
+    }, 4096);
     std::vector<EdgeId> outline;
     for (std::size_t i = 0; i < candidates->size(); ++i)
         if (on[i]) outline.push_back((*candidates)[i].edge);
-    // Per vertex: 0 not asked, 1 hidden, 2 may be seen.
-    VertexData<std::uint8_t> seen(topo.n_vertices(), 0);
-    std::vector<VertexId> ends;
-    for (const EdgeId e : outline)
-        for (const VertexId v : topo.edge_vertices()[e])
-            if (!seen[v]) seen[v] = 1, ends.push_back(v);
-    parallel_for(ends.size(), [&](std::size_t i) { seen[ends[i]] = probe.may_see(topo.positions()[ends[i]]) ? 2 : 1; }, 64);
-    std::vector<std::uint8_t> shown(outline.size(), 0);
-    parallel_for(outline.size(), [&](std::size_t i) {
-        const auto [a, b] = topo.edge_vertices()[outline[i]];
-        shown[i] = seen[a] == 2 || seen[b] == 2 || probe.may_see_between(topo.positions()[a], topo.positions()[b]);
-    }, 16);
-    std::size_t kept = 0;
-    for (std::size_t i = 0; i < outline.size(); ++i)
-        if (shown[i]) outline[kept++] = outline[i];
-    outline.resize(kept);
-    std::vector<glm::dvec3> line;
-    for (const EdgeChain& chain : chain_edges(topo, outline)) {
-        line.clear();
-        for (const VertexId v : chain.vertices) line.push_back(topo.positions()[v]);
-        strips.add(line, true);
-    }
+    const std::vector<EdgeChain> chains = chain_edges(topo, outline);
+    std::vector<std::vector<std::vector<glm::dvec3>>> lines(chains.size());
+    parallel_for(chains.size(), [&](std::size_t i) { outline_stretches(topo, chains[i], probe, lines[i]); }, 4);
+    for (auto& chain_lines : lines)
+        for (auto& line : chain_lines) strips.add(std::move(line), true);
 }
 
 /// The part and class a piece of a region shows: the part the rays through
@@ -385,14 +472,15 @@ int class_index(const ShadingClasses& classes, const MapRegion& region) {
     return -1;
 }
 
-/// @p region cut by the strips over it; its pieces take the part seen
-/// inside them, those of one part and class joined, the strips' share and
-/// the pieces no ray found a part for going to the largest.
+/// @p region cut by the strips over it (a region under kSliverArea square
+/// pixels is not cut: it shows what most of it shows); its pieces take the
+/// part seen inside them, those of one part and class joined, the strips'
+/// share and the pieces no ray found a part for going to the largest.
 std::vector<MapRegion> split_region(const MapRegion& region, const Strips& strips, const PartProbe& probe, const ShadingClasses& classes) {
     const clip::Paths whole = clip::to_paths(region.polygons);
     clip::Box box;
     for (const auto& path : whole) box.add(path);
-    const clip::Paths near = strips.over(box);
+    const clip::Paths near = region.area < kSliverArea ? clip::Paths() : strips.over(box);
     const int own_class = class_index(classes, region);
     std::vector<clip::Paths> pieces;
     if (near.empty()) {
@@ -468,20 +556,17 @@ void replace_regions(PlanarMap& map, std::vector<std::vector<MapRegion>>&& split
     std::vector<std::vector<std::int32_t>> index(split.size());
     for (std::size_t i = 0; i < split.size(); ++i)
         for (MapRegion& piece : split[i]) index[i].push_back(std::int32_t(out.size())), out.push_back(std::move(piece));
-    for (const VertexId v : map.vertex_region.ids()) {
+    parallel_for(map.vertex_region.ids(), [&](VertexId v) {
         std::int32_t& r = map.vertex_region[v];
-        if (r < 0) continue;
+        if (r < 0) return;
         const auto& candidates = index[r];
         std::int32_t chosen = candidates.empty() ? -1 : candidates.front();
-        if (candidates.size() < 2) {
-            r = chosen;
-            continue;
-        }
-        for (const FaceCorner corner : topo.faces_around(v))
-            for (const std::int32_t c : candidates)
-                if (out[c].material == std::int32_t(parts.material[corner.face])) chosen = c;
+        if (candidates.size() >= 2)
+            for (const FaceCorner corner : topo.faces_around(v))
+                for (const std::int32_t c : candidates)
+                    if (out[c].material == std::int32_t(parts.material[corner.face])) chosen = c;
         r = chosen;
-    }
+    }, 4096);
     map.regions = std::move(out);
 }
 
