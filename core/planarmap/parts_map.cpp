@@ -251,7 +251,7 @@ class PartProbe {
         ray.origin = p - 0.1 * depth_slack_ * ray.dir;
         ray.tfar = std::numeric_limits<double>::infinity();
         ray.ignore = ignore;
-        return rays_.nearest(ray).hit();
+        return rays_.occluded(ray);
     }
 
     /// How far apart @p a and @p b lie in the image, in pixels.
