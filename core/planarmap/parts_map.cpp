@@ -457,10 +457,9 @@ bool touches(const clip::Paths& piece, const clip::Paths& whole) {
         for (const auto& p : path)
             for (const auto& outline : whole)
                 for (std::size_t i = 0; i < outline.size(); ++i) {
-                    const glm::dvec2 a(outline[i].X, outline[i].Y), b(outline[(i + 1) % outline.size()].X, outline[(i + 1) % outline.size()].Y);
-                    const glm::dvec2 q(p.X, p.Y), ab = b - a;
-                    const double t = glm::dot(ab, ab) > 0.0 ? std::clamp(glm::dot(q - a, ab) / glm::dot(ab, ab), 0.0, 1.0) : 0.0;
-                    if (glm::length(q - (a + t * ab)) <= 2.0) return true;
+                    const auto& a = outline[i];
+                    const auto& b = outline[(i + 1) % outline.size()];
+                    if (point_segment(glm::dvec2(p.X, p.Y), glm::dvec2(a.X, a.Y), glm::dvec2(b.X, b.Y)) <= 2.0) return true;
                 }
     return false;
 }
