@@ -1,5 +1,6 @@
 #include "snaxels/mesh/sharp_edges.h"
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <numeric>
@@ -13,6 +14,10 @@ namespace snaxels {
 namespace {
 
 using Halfedge = Mesh::HalfedgeHandle;
+
+/// How far past its wedge's faces a file's normal at a split vertex may
+/// lean before the wedge's own normal replaces it (leans_across).
+constexpr double kLeanDegrees = 20.0;
 
 glm::dvec3 face_normal(const Mesh& mesh, Mesh::FaceHandle fh) {
     auto it = mesh.cfv_iter(fh);
@@ -96,6 +101,29 @@ std::optional<LoadedMesh> with_file_normals(const LoadedMesh& loaded, const Surf
     for (const auto vh : out.mesh.vertices())
         if (const glm::dvec3& n = file[slot(vh)]; glm::dot(n, n) > 0.0) out.mesh.set_normal(vh, to_om(n));
     return out;
+}
+
+/// Whether the file's normal @p n at vertex @p v of a split mesh leans out
+/// of the faces of v's wedge by more than kLeanDegrees beyond the widest of
+/// them: an exporter that averages over every face at a vertex (Blender's
+/// normals of a smooth cylinder with flat caps) turns the side's rim
+/// normals 45 degrees toward the cap, so the side would shade, and its
+/// contour run, as if it rounded into the cap, and the cap's rim, the
+/// object's outline there, would draw nothing. Such a copy keeps its
+/// wedge's own normal.
+bool leans_across(const Mesh& m, Mesh::VertexHandle v, const glm::dvec3& n) {
+    const glm::dvec3 own = to_glm(m.normal(v));
+    double widest = 1.0; // the least cosine between the wedge's normal and its faces'
+    bool any = false;
+    for (const auto fh : m.vf_range(v)) {
+        const glm::dvec3 f = face_normal(m, fh);
+        if (glm::dot(f, f) == 0.0) continue; // a strip face: no area
+        widest = std::min(widest, glm::dot(f, own));
+        any = true;
+    }
+    if (!any) return false;
+    const double spread = std::acos(std::clamp(widest, -1.0, 1.0));
+    return std::acos(std::clamp(glm::dot(n, own), -1.0, 1.0)) > spread + glm::radians(kLeanDegrees);
 }
 
 } // namespace
@@ -221,8 +249,10 @@ std::optional<LoadedMesh> split_sharp_edges(const LoadedMesh& loaded, const Surf
         for (const auto h : mesh.halfedges())
             if (!mesh.is_boundary(h))
                 file[corner_vertex[slot(h)]] += corner_normal(loaded, mesh.face_handle(h), mesh.to_vertex_handle(h));
-        for (const auto vh : m.vertices())
-            if (const double len = glm::length(file[slot(vh)]); len > 0.0) m.set_normal(vh, to_om(file[slot(vh)] / len));
+        for (const auto vh : m.vertices()) {
+            const double len = glm::length(file[slot(vh)]);
+            if (len > 0.0 && !leans_across(m, vh, file[slot(vh)] / len)) m.set_normal(vh, to_om(file[slot(vh)] / len));
+        }
     }
     if (what) *what = split;
     return out;

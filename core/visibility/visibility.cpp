@@ -84,11 +84,45 @@ VisibilityRay VisibilitySampler::make_ray(const glm::dvec3& p, const glm::dvec3&
     return ray;
 }
 
+namespace {
+
+/// The length across which the faces beside edge @p e leave the smooth
+/// surface: the edge's length, but no more than twice the least height of
+/// a face beside it (the long edges of a cylinder's side run where the
+/// facets follow the surface; across them its faces are narrow), and no
+/// less than a tenth of the edge (a sliver says little); a face with no
+/// area (a split sharp edge's strip) says nothing.
+double facet_scale(const MeshTopology& topo, EdgeId e) {
+    const auto [a, b] = topo.edge_vertices()[e];
+    const double len = glm::length(topo.positions()[a] - topo.positions()[b]);
+    if (!(len > 0.0)) {
+        // A rung of a split sharp edge's strip, between two copies of one
+        // vertex: a tenth of the mean length of the edges round it. The
+        // faces there are the surface's own crease (no facet to clear), but
+        // the start must leave the point: where another surface passes
+        // through it (a leg's rim on the floor), contact_qi looks past it.
+        double sum = 0.0;
+        int n = 0;
+        for (const VertexId w : topo.neighbours(a))
+            if (const double l = glm::length(topo.positions()[w] - topo.positions()[a]); l > 0.0) sum += l, ++n;
+        return 0.1 * (n > 0 ? sum / n : topo.mean_edge_length());
+    }
+    double across = len;
+    for (const FaceId f : topo.edge_faces()[e]) {
+        if (!f.valid() || !face_has_area(topo, f)) continue; // a sharp edge's strip
+        const auto& fv = topo.face_vertices()[f];
+        const glm::dvec3 p0 = topo.positions()[fv[0]], p1 = topo.positions()[fv[1]], p2 = topo.positions()[fv[2]];
+        const double longest = std::max({glm::length(p1 - p0), glm::length(p2 - p1), glm::length(p0 - p2)});
+        if (longest > 0.0) across = std::min(across, glm::length(glm::cross(p1 - p0, p2 - p0)) / longest); // its height
+    }
+    return std::clamp(2.0 * across, 0.1 * len, len);
+}
+
+} // namespace
+
 VisibilityRay VisibilitySampler::snaxel_ray(const Snaxel& s, const glm::dvec3& p,
                                             const glm::dvec3& n) const {
-    const MeshTopology& topo = scene_.topology();
-    const double len = glm::length(topo.positions()[s.inside] - topo.positions()[s.outside]);
-    VisibilityRay ray = make_ray(p, n, len);
+    VisibilityRay ray = make_ray(p, n, facet_scale(scene_.topology(), s.edge));
     ray.ignore = {s.inside, s.outside, VertexId()};
     return ray;
 }

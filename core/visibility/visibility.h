@@ -15,6 +15,10 @@ struct VisibilityOptions {
     /// A sample's ray starts this many local edge lengths off the surface,
     /// along its smooth normal: on the visual contour the ray grazes the
     /// surface, and the mesh's facets must not hide their own silhouette.
+    /// A snaxel's local length is its edge's, but no more than twice the
+    /// least height of the faces beside it (a long, narrow face leaves
+    /// the surface only across its width); on a rung of a split sharp
+    /// edge's strip (no length), a tenth of the edges' round it.
     double normal_offset = 0.2;
     /// Bisection steps that locate a QI change between two samples
     /// (10 steps: 1/1024 of the segment, far below a pixel).

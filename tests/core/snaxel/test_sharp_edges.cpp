@@ -294,11 +294,11 @@ TEST(SharpEdges, VisualContourTracesTheFacetedOutline) {
                     total.precision(), total.agreement());
         EXPECT_GE(total.coverage(), 0.95) << path;
         EXPECT_GE(total.precision(), 0.95) << path;
-        // The issue asks 95%. The house reaches 94.6%: it is loose panels
-        // some 25 micrometres apart in a model 1.6 cm tall, and where a panel in
-        // front shares the contour's corner the ray leaves it out as the
-        // contour's own surface (two views of ten fall to 82-85%) (#35).
-        EXPECT_GE(total.agreement(), model.file.find("house") != std::string::npos ? 0.94 : 0.95) << path;
+        // The house is loose panels some 25 micrometres apart in a model
+        // 1.6 cm tall; where a panel in front shares the contour's corner the
+        // ray leaves it out as the contour's own surface (two views of ten
+        // read 85-88%).
+        EXPECT_GE(total.agreement(), 0.95) << path;
     }
 }
 
@@ -388,13 +388,102 @@ TEST(SharpEdges, SmoothFilesShadeWithTheirOwnNormals) {
     std::filesystem::remove(away);
 }
 
+namespace {
+
+/// A closed cylinder along z (radius 1, height 4, @p sides sides, flat
+/// caps) as an OBJ whose side corners carry the normals an exporter that
+/// averages every face at a vertex writes (Blender 3.4's smooth side with
+/// flat caps): at the rims, the mean of the side's and the cap's, 45
+/// degrees up or down; the caps' corners the cap's own normal. With
+/// @p tilt_degrees other than 45, the rims' side normals lean that far.
+std::string cylinder_with_averaged_normals(const std::string& name, int sides, double tilt_degrees) {
+    const std::string path = (std::filesystem::temp_directory_path() / (name + "-" + std::to_string(::getpid()) + ".obj")).string();
+    std::ofstream out(path);
+    const double pi = std::acos(-1.0), tilt = glm::radians(tilt_degrees);
+    for (int z = 0; z < 2; ++z)
+        for (int i = 0; i < sides; ++i)
+            out << "v " << std::cos(2 * pi * i / sides) << ' ' << std::sin(2 * pi * i / sides) << ' ' << 4 * z << '\n';
+    out << "v 0 0 0\nv 0 0 4\n";
+    // Normals 1..sides: bottom rim's side corners; sides+1..2 sides: top
+    // rim's; then the caps' (down, up).
+    for (int z = 0; z < 2; ++z)
+        for (int i = 0; i < sides; ++i)
+            out << "vn " << std::cos(tilt) * std::cos(2 * pi * i / sides) << ' ' << std::cos(tilt) * std::sin(2 * pi * i / sides)
+                << ' ' << (z ? 1 : -1) * std::sin(tilt) << '\n';
+    out << "vn 0 0 -1\nvn 0 0 1\n";
+    const int bottom_centre = 2 * sides + 1, top_centre = 2 * sides + 2, down = 2 * sides + 1, up = 2 * sides + 2;
+    for (int i = 0; i < sides; ++i) {
+        const int a = 1 + i, b = 1 + (i + 1) % sides, c = b + sides, d = a + sides;
+        out << "f " << a << "//" << a << ' ' << b << "//" << b << ' ' << c << "//" << c << '\n';
+        out << "f " << a << "//" << a << ' ' << c << "//" << c << ' ' << d << "//" << d << '\n';
+        out << "f " << bottom_centre << "//" << down << ' ' << b << "//" << down << ' ' << a << "//" << down << '\n';
+        out << "f " << top_centre << "//" << up << ' ' << d << "//" << up << ' ' << c << "//" << up << '\n';
+    }
+    return path;
+}
+
+} // namespace
+
+// A smooth side with flat caps whose file normals lean 45 degrees across
+// the rims into the caps: each rim copy on the side takes its own faces'
+// normal, square to the axis, so the side does not shade as if it rounded
+// into the cap and the cap's rim stays the outline where the side turns
+// away. A lean within reach of the side's own faces is the file's to keep.
+TEST(SharpEdges, NormalsLeaningAcrossASharpEdgeGiveWay) {
+    for (const double tilt : {45.0, 10.0}) {
+        const std::string file = cylinder_with_averaged_normals("leaning-normals", 24, tilt);
+        const LoadedMesh loaded = import_mesh(file);
+        std::filesystem::remove(file);
+        SharpSplit what;
+        const std::optional<LoadedMesh> shaded = split_sharp_edges(loaded, SurfaceOptions{}, &what);
+        ASSERT_TRUE(shaded.has_value());
+        EXPECT_EQ(what.sharp_edges, 48u); // the two rims
+        std::size_t side_rim = 0;
+        for (const auto vh : shaded->mesh.vertices()) {
+            const glm::dvec3 p = to_glm(shaded->mesh.point(vh)), n = to_glm(shaded->mesh.normal(vh));
+            const bool on_axis = std::hypot(p.x, p.y) < 1e-9;
+            if (on_axis || std::abs(n.z) > 0.999) continue; // a cap's corner
+            ++side_rim;
+            // 45: the side's own normal, square to the axis; 10: the file's.
+            const double expected = tilt > 20.0 ? 0.0 : std::sin(glm::radians(tilt));
+            EXPECT_NEAR(std::abs(n.z), expected, 1e-6) << "tilt " << tilt << " at " << p.x << ' ' << p.y << ' ' << p.z;
+        }
+        EXPECT_EQ(side_rim, 48u) << "tilt " << tilt;
+    }
+    // Drawn from beside and a little above, the top rim is the outline on
+    // the far side: the visual contour runs along it, seen.
+    const std::string file = cylinder_with_averaged_normals("leaning-outline", 24, 45.0);
+    const LoadedMesh loaded = import_mesh(file);
+    std::filesystem::remove(file);
+    std::optional<LoadedMesh> split;
+    const LoadedMesh& surface = with_sharp_edges(loaded, SurfaceOptions{}, split);
+    const MeshTopology topo = build_topology(surface.mesh);
+    const SnaxelEngine engine(topo);
+    const RayScene rays(topo);
+    Camera cam;
+    cam.view_dir = glm::normalize(glm::dvec3(0.0, 1.0, -2.0)); // from -y, well above
+    cam.up = glm::dvec3(0, 0, 1);
+    const ContourResult visual = engine.compute(ContourSpec{}, cam, Light{});
+    const ContourVisibility vis = VisibilitySampler(rays, cam).classify(engine, visual);
+    std::size_t far_rim = 0;
+    for (std::size_t l = 0; l < visual.fronts.loops.size(); ++l) {
+        std::size_t k = 0;
+        visual.fronts.for_each_in_loop(visual.fronts.loops[l], [&](std::int32_t i) {
+            const glm::dvec3 p = engine.position(visual.fronts.snaxels[std::size_t(i)]);
+            const int qi = vis.loops[l].snaxel_qi[k++];
+            far_rim += qi == 0 && p.z > 4.0 - 1e-6 && p.y > 0.5;
+        });
+    }
+    EXPECT_GT(far_rim, 8u) << "the top rim's far half is no visible outline";
+}
+
 // Where objects meet (#55, done-when 3): on the Blender scenes of objects
 // resting on, sunk into and passing through each other, the visible
 // outlines cover the faceted silhouette (at least 95% within 2 px, with 95%
 // precision) where objects rest on others, and the QI of the visual
 // contour and of the intersection lines agrees with the z-buffer, where it
-// is clear, on at least 95% of their snaxels. Views from above, where a
-// scene is seen; the worst view is reported.
+// is clear, on at least 95% of their snaxels, in every view from above
+// (where a scene is seen): the worst view is held to it.
 TEST(SharpEdges, OutlinesAndMeetingLinesWhereObjectsMeet) {
     for (const std::string name : {"meet/still-life.dae", "meet/sunk.dae", "meet/crossing.dae"}) {
         const std::string path = test::asset(name);
@@ -439,9 +528,9 @@ TEST(SharpEdges, OutlinesAndMeetingLinesWhereObjectsMeet) {
                     "intersection QI agreement %.4f over %zu snaxels\n",
                     name.c_str(), total.coverage(), worst_coverage, total.precision(), worst_precision, total.agreement(), worst_qi,
                     meeting_share, meeting_snaxels);
-        EXPECT_GE(total.coverage(), 0.95) << name;
-        EXPECT_GE(total.precision(), 0.95) << name;
-        EXPECT_GE(total.agreement(), 0.95) << name;
+        EXPECT_GE(worst_coverage, 0.95) << name;
+        EXPECT_GE(worst_precision, 0.95) << name;
+        EXPECT_GE(worst_qi, 0.95) << name;
         EXPECT_GE(meeting_share, 0.95) << name;
         EXPECT_GT(meeting_snaxels, 500u) << name;
     }
