@@ -79,6 +79,14 @@ void count_filter(const RTCFilterFunctionNArguments* args) {
         const glm::dvec3 normal = glm::cross(c->topo->positions()[fv[1]] - a, c->topo->positions()[fv[2]] - a);
         if (glm::dot(normal, c->ray->dir) > 0.0) ++c->crossings.front;
         else ++c->crossings.back;
+        RayHit& nearest = c->crossings.nearest;
+        const float t = RTCRayN_tfar(args->ray, args->N, i);
+        if (!nearest.hit() || t < nearest.t) {
+            nearest.face = face;
+            nearest.u = RTCHitN_u(args->hit, args->N, i);
+            nearest.v = RTCHitN_v(args->hit, args->N, i);
+            nearest.t = t;
+        }
     }
 }
 

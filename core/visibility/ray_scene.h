@@ -25,19 +25,21 @@ struct VisibilityRay {
     bool original_neighbourhood = false;
 };
 
-/// Crossings of a ray with faces facing along it (front: the face's normal
-/// points toward the viewer) and against it.
-struct Crossings {
-    int front = 0;
-    int back = 0;
-};
-
 /// The nearest surface a ray meets: its face, barycentric coordinates
 /// (point = (1-u-v) a + u b + v c over the face's corners) and distance.
 struct RayHit {
     FaceId face;
     double u = 0.0, v = 0.0, t = 0.0;
     bool hit() const { return face != MeshTopology::kNone; }
+};
+
+/// Crossings of a ray with faces facing along it (front: the face's normal
+/// points toward the viewer) and against it, and the nearest of them (the
+/// one RayScene::nearest finds).
+struct Crossings {
+    int front = 0;
+    int back = 0;
+    RayHit nearest;
 };
 
 struct CountContext;

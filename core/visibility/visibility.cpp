@@ -322,11 +322,14 @@ int VisibilitySampler::enclosed_qi(const VisibilityRay& ray, const glm::dvec3& p
 }
 
 int VisibilitySampler::contact_qi(const VisibilityRay& ray, const glm::dvec3& p, std::int64_t object) const {
-    const int q = qi(ray);
-    if (object < 0) return q;
+    if (object < 0) return qi(ray);
+    // As qi(), keeping the count's nearest crossing.
+    if (!scene_.occluded(ray)) return enclosed_qi(ray, p, object);
+    const Crossings c = scene_.count(ray);
+    const int q = std::max(c.front, c.back);
     if (q == 0) return enclosed_qi(ray, p, object);
     const MeshTopology& topo = scene_.topology();
-    const RayHit hit = scene_.nearest(ray);
+    const RayHit& hit = c.nearest;
     const double offset = glm::length(ray.origin - p);
     if (!hit.hit() || !(offset > 0.0) || object_of(topo, hit.face) == object) return q;
     const auto& fv = topo.face_vertices()[hit.face];
