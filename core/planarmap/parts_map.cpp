@@ -9,6 +9,7 @@
 #include <mutex>
 #include <optional>
 
+#include "snaxels/error.h"
 #include "snaxels/mesh/refine.h"
 #include "snaxels/planarmap/detail/clip.h"
 #include "snaxels/planarmap/planar_map.h"
@@ -394,14 +395,14 @@ void outline_stretches(const MeshTopology& topo, const EdgeChain& chain, const P
 /// It is where the rays' answer changes from one object to another (the
 /// visual contour of a file's rounded normals can run well inside it: a
 /// cylinder whose smooth sides take its flat caps' normals at the rims).
-void add_faceted_outline(const MeshTopology& topo, const Camera& camera, const PartProbe& probe, Strips& strips) {
+void add_faceted_outline(const MeshTopology& topo, const RayScene& rays, const Camera& camera, const PartProbe& probe, Strips& strips) {
     const glm::dvec3 eye_dir = camera.orthographic() ? camera.to_viewer(glm::dvec3(0.0)) : glm::dvec3(0.0);
+    const FaceData<RayScene::FacePlane>& planes = rays.face_planes();
+    if (planes.size() != topo.n_faces()) throw InternalError("add_faceted_outline: the ray scene has no face planes");
     FaceData<std::uint8_t> facing(topo.n_faces(), 0);
     parallel_for(topo.faces(), [&](FaceId f) {
-        const auto& fv = topo.face_vertices()[f];
-        const glm::dvec3 a = topo.positions()[fv[0]];
-        const glm::dvec3 n = glm::cross(topo.positions()[fv[1]] - a, topo.positions()[fv[2]] - a);
-        facing[f] = glm::dot(n, camera.orthographic() ? eye_dir : camera.eye - a) > 0.0;
+        const RayScene::FacePlane& plane = planes[f];
+        facing[f] = glm::dot(plane.normal, camera.orthographic() ? eye_dir : camera.eye - plane.corner) > 0.0;
     }, 4096);
     const std::shared_ptr<const std::vector<OutlineCandidate>> candidates = outline_candidates(topo);
     std::vector<std::uint8_t> on(candidates->size(), 0);
@@ -588,7 +589,7 @@ void split_regions_by_part(PlanarMap& map, const SnaxelEngine& engine, const Ray
     const PartProbe probe(topo, rays, projection, classes, camera, light);
     Strips strips(projection);
     add_part_lines(engine, *parts, strips);
-    if (parts->objects.size() > 1) add_faceted_outline(topo, camera, probe, strips);
+    if (parts->objects.size() > 1) add_faceted_outline(topo, rays, camera, probe, strips);
     strips.widen(
         [&](const glm::dvec3& p) { return probe.may_see(p); }, [&](const glm::dvec3& a, const glm::dvec3& b) { return probe.may_see_between(a, b); });
     std::vector<std::vector<MapRegion>> split(map.regions.size());

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <limits>
 #include <span>
 #include <stdexcept>
@@ -9,6 +10,7 @@
 #include <embree3/rtcore.h>
 
 #include "snaxels/error.h"
+#include "snaxels/mesh/parts.h"
 #include "snaxels/mesh/refine.h"
 #include "snaxels/util/detail/embree_device.h"
 
@@ -147,9 +149,43 @@ RayScene::RayScene(MeshTopology topology) : topo_(std::move(topology)) {
         for (const VertexId v : corners) *index++ = std::uint32_t((strip ? corners[0] : v).index());
     }
     upload_positions();
+    measure_object_boxes();
     rtcCommitGeometry(geom);
     rtcAttachGeometry(scene, geom);
     rtcCommitScene(scene);
+}
+
+void RayScene::measure_object_boxes() {
+    const FaceParts* parts = topo_.parts();
+    if (!parts || parts->objects.size() < 2 || parts->object.size() != topo_.n_faces()) return;
+    const double inf = std::numeric_limits<double>::infinity();
+    object_boxes_.assign(parts->objects.size(), {glm::dvec3(inf), glm::dvec3(-inf)});
+    face_planes_ = FaceData<FacePlane>(topo_.n_faces());
+    for (const FaceId f : topo_.faces()) {
+        auto& [lo, hi] = object_boxes_[parts->object[f]];
+        const auto& fv = topo_.face_vertices()[f];
+        for (const VertexId v : fv) {
+            lo = glm::min(lo, topo_.positions()[v]);
+            hi = glm::max(hi, topo_.positions()[v]);
+        }
+        const glm::dvec3 a = topo_.positions()[fv[0]];
+        face_planes_[f] = {glm::cross(topo_.positions()[fv[1]] - a, topo_.positions()[fv[2]] - a), a};
+    }
+    double extent = 0.0;
+    for (const glm::dvec3& p : topo_.positions()) extent = std::max(extent, glm::length(p - origin_));
+    box_slack_ = 1e-5 * extent; // well past float's rounding of a hit (6e-8 of the extent)
+}
+
+bool RayScene::near_other_object(const glm::dvec3& p, std::int64_t object, double reach) const {
+    if (object_boxes_.empty()) return true;
+    const double r = reach + box_slack_;
+    for (std::size_t o = 0; o < object_boxes_.size(); ++o) {
+        if (std::int64_t(o) == object) continue;
+        const auto& [lo, hi] = object_boxes_[o];
+        const glm::dvec3 gap = glm::max(glm::max(lo - p, p - hi), glm::dvec3(0.0));
+        if (glm::dot(gap, gap) <= r * r) return true;
+    }
+    return false;
 }
 
 RayScene::~RayScene() {
@@ -170,6 +206,7 @@ void RayScene::refit(const MeshTopology& pose) {
     auto geom = static_cast<RTCGeometry>(geometry_);
     rtcSetGeometryBuildQuality(geom, RTC_BUILD_QUALITY_REFIT);
     upload_positions();
+    measure_object_boxes();
     rtcUpdateGeometryBuffer(geom, RTC_BUFFER_TYPE_VERTEX, 0);
     rtcCommitGeometry(geom);
     rtcCommitScene(static_cast<RTCScene>(scene_));

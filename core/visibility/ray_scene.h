@@ -5,6 +5,7 @@
 
 #include <array>
 #include <cstdint>
+#include <utility>
 #include <vector>
 
 #include <glm/glm.hpp>
@@ -66,8 +67,22 @@ class RayScene {
 
     const MeshTopology& topology() const { return topo_; }
 
+    /// On a scene of several objects, whether @p p lies within @p reach of
+    /// the box of an object other than @p object (in this pose): a ray
+    /// segment from p no longer than reach can meet no other object
+    /// otherwise. True on a mesh of one object.
+    bool near_other_object(const glm::dvec3& p, std::int64_t object, double reach) const;
+    /// On a scene of several objects (else empty), per face in this pose:
+    /// cross(b - a, c - a) over its corners a, b, c, and a. Which way a face
+    /// turns is asked of every face each frame; these lie in one array.
+    struct FacePlane {
+        glm::dvec3 normal, corner;
+    };
+    const FaceData<FacePlane>& face_planes() const { return face_planes_; }
+
   private:
     void upload_positions();
+    void measure_object_boxes();
     void init_context(CountContext& context, const VisibilityRay& ray, bool counting) const;
 
     MeshTopology topo_;
@@ -78,6 +93,10 @@ class RayScene {
     void* scene_ = nullptr;  // RTCScene
     void* geometry_ = nullptr; // RTCGeometry
     float* vertices_ = nullptr; // Embree-owned vertex buffer
+    /// Per object of a scene of several (else empty): its box in this pose.
+    std::vector<std::pair<glm::dvec3, glm::dvec3>> object_boxes_;
+    double box_slack_ = 0.0; ///< how far Embree's single precision may place a hit
+    FaceData<FacePlane> face_planes_;
 };
 
 } // namespace snaxels

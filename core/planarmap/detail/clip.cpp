@@ -129,6 +129,7 @@ ClipperLib::Path crop(const ClipperLib::Path& path, const ClipperLib::IntPoint& 
         const ClipperLib::cInt bound = side == 0 ? lo.X : side == 1 ? hi.X : side == 2 ? lo.Y : hi.Y;
         auto value = [&](const ClipperLib::IntPoint& p) { return x_axis ? p.X : p.Y; };
         auto inside = [&](const ClipperLib::IntPoint& p) { return side % 2 == 0 ? value(p) >= bound : value(p) <= bound; };
+        if (std::all_of(in.begin(), in.end(), inside)) continue; // nothing past this side: as it is
         for (std::size_t i = 0; i < in.size(); ++i) {
             const ClipperLib::IntPoint& a = in[i];
             const ClipperLib::IntPoint& b = in[(i + 1) % in.size()];

@@ -2,10 +2,13 @@
 
 #include <cmath>
 #include <cstdio>
+#include <limits>
 #include <random>
 
 #include "snaxels/error.h"
 #include "snaxels/mesh/import.h"
+#include "snaxels/mesh/parts.h"
+#include "snaxels/mesh/refine.h"
 #include "snaxels/mesh/procedural.h"
 #include "snaxels/visibility/visibility.h"
 #include "tests/support/assets.h"
@@ -296,4 +299,58 @@ TEST(Visibility, RefitMatchesRebuild) {
         for (const int qi : a.loops[l].snaxel_qi) hidden += qi > 0;
     }
     EXPECT_GT(hidden, 0u);
+}
+
+// A scene of several objects: the ray scene keeps each object's box and
+// each face's plane in its pose. A point of one object is near every other
+// object whose box holds it, and near no object whose box lies farther than
+// the reach; after a refit both follow the new pose.
+TEST(Visibility, ObjectBoxesAndFacePlanesFollowThePose) {
+    const MeshTopology rest = engine_topology(import_mesh(test::asset("meet/apart.dae")));
+    const FaceParts* parts = rest.parts();
+    ASSERT_TRUE(parts != nullptr);
+    ASSERT_GE(parts->objects.size(), 5u);
+    RayScene rays(rest);
+    auto check = [&](const MeshTopology& topo) {
+        ASSERT_EQ(rays.face_planes().size(), topo.n_faces());
+        // The test's own boxes, from the faces.
+        const double inf = std::numeric_limits<double>::infinity();
+        std::vector<std::pair<glm::dvec3, glm::dvec3>> boxes(parts->objects.size(), {glm::dvec3(inf), glm::dvec3(-inf)});
+        for (const FaceId f : topo.faces())
+            for (const VertexId v : topo.face_vertices()[f]) {
+                boxes[parts->object[f]].first = glm::min(boxes[parts->object[f]].first, topo.positions()[v]);
+                boxes[parts->object[f]].second = glm::max(boxes[parts->object[f]].second, topo.positions()[v]);
+            }
+        std::size_t apart = 0;
+        for (const FaceId f : topo.faces()) {
+            if (f.index() % 7 != 0) continue;
+            const auto& fv = topo.face_vertices()[f];
+            const glm::dvec3 a = topo.positions()[fv[0]], b = topo.positions()[fv[1]], c = topo.positions()[fv[2]];
+            const RayScene::FacePlane& plane = rays.face_planes()[f];
+            EXPECT_LT(glm::length(plane.normal - glm::cross(b - a, c - a)), 1e-12 * (1.0 + glm::length(plane.normal)));
+            EXPECT_EQ(plane.corner, a);
+            const glm::dvec3 p = (a + b + c) / 3.0;
+            const std::int64_t own = parts->object[f];
+            // The distance to the nearest other box.
+            double gap = inf;
+            for (std::size_t o = 0; o < boxes.size(); ++o) {
+                if (std::int64_t(o) == own) continue;
+                const glm::dvec3 d = glm::max(glm::max(boxes[o].first - p, p - boxes[o].second), glm::dvec3(0.0));
+                gap = std::min(gap, glm::length(d));
+            }
+            EXPECT_TRUE(rays.near_other_object(p, own, gap * 1.01 + 1e-9));
+            if (gap > 0.01) {
+                EXPECT_FALSE(rays.near_other_object(p, own, 0.5 * gap));
+                ++apart;
+            }
+            EXPECT_TRUE(rays.near_other_object(p, (own + 1) % std::int64_t(boxes.size()), 0.0)); // its own object's box
+        }
+        EXPECT_GT(apart, 50u);
+    };
+    check(rest);
+    auto moved = std::make_shared<MeshPose>(*rest.pose());
+    for (auto& p : moved->positions) p = glm::dvec3(p.y, -p.x, 2.0 * p.z) + glm::dvec3(0.3, 0.0, 0.1);
+    const MeshTopology posed = rest.posed(moved);
+    rays.refit(posed);
+    check(posed);
 }
