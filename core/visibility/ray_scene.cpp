@@ -171,9 +171,7 @@ void RayScene::measure_object_boxes() {
         const glm::dvec3 a = topo_.positions()[fv[0]];
         face_planes_[f] = {glm::cross(topo_.positions()[fv[1]] - a, topo_.positions()[fv[2]] - a), a};
     }
-    double extent = 0.0;
-    for (const glm::dvec3& p : topo_.positions()) extent = std::max(extent, glm::length(p - origin_));
-    box_slack_ = 1e-5 * extent; // well past float's rounding of a hit (6e-8 of the extent)
+    box_slack_ = 1e-5 * bounding_radius(topo_); // well past float's rounding of a hit (6e-8 of the extent)
 }
 
 bool RayScene::near_other_object(const glm::dvec3& p, std::int64_t object, double reach) const {

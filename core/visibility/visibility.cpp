@@ -109,13 +109,11 @@ double facet_scale(const MeshTopology& topo, EdgeId e) {
     }
     double across = len;
     for (const FaceId f : topo.edge_faces()[e]) {
-        if (!f.valid()) continue;
+        if (!f.valid() || !face_has_area(topo, f)) continue; // a sharp edge's strip
         const auto& fv = topo.face_vertices()[f];
         const glm::dvec3 p0 = topo.positions()[fv[0]], p1 = topo.positions()[fv[1]], p2 = topo.positions()[fv[2]];
-        const double longest2 = std::max({glm::dot(p1 - p0, p1 - p0), glm::dot(p2 - p1, p2 - p1), glm::dot(p0 - p2, p0 - p2)});
-        const double area2 = glm::length(glm::cross(p1 - p0, p2 - p0));
-        // A face with no area (as face_has_area tells it): a sharp edge's strip.
-        if (area2 > 1e-12 * longest2) across = std::min(across, area2 / std::sqrt(longest2)); // its height
+        const double longest = std::sqrt(std::max({glm::dot(p1 - p0, p1 - p0), glm::dot(p2 - p1, p2 - p1), glm::dot(p0 - p2, p0 - p2)}));
+        across = std::min(across, glm::length(glm::cross(p1 - p0, p2 - p0)) / longest); // its height
     }
     return std::clamp(2.0 * across, 0.1 * len, len);
 }
