@@ -463,7 +463,11 @@ ContourVisibility VisibilitySampler::classify(const SnaxelEngine& engine, const 
         double lo = 0.0, hi = 1.0;
         for (int step = 0; step < options_.bisection_steps && face != MeshTopology::kNone; ++step) {
             const double mid = 0.5 * (lo + hi);
-            const glm::dvec3 n = glm::normalize((1.0 - mid) * na + mid * nb);
+            // Opposite normals (a sheet seen from both sides) blend to
+            // nothing half way: the nearer end's normal stands in.
+            const glm::dvec3 blend = (1.0 - mid) * na + mid * nb;
+            const double blend_length = glm::length(blend);
+            const glm::dvec3 n = blend_length > 1e-9 ? blend / blend_length : (mid < 0.5 ? na : nb);
             const glm::dvec3 p = (1.0 - mid) * pa + mid * pb;
             if (qi_is(face_ray(face, p, n), p, object_of(topo, face), from)) lo = mid;
             else hi = mid;
