@@ -103,7 +103,7 @@ std::vector<OptionSpec> scene_option_specs() {
              "refined to at least that)"},
             {"sharp-angle", "DEG|file",
              "edges whose faces meet at more than DEG degrees are drawn sharp (hard-edged shading; 180: none); "
-             "file (default): where the file's own normals part, else none"},
+             "file (default): where the file's own normals part; without normals, past 30 degrees along feature lines"},
             {"check", "", "check the snaxel invariants after every iteration (slower)"}};
 }
 

@@ -37,17 +37,23 @@ glm::dvec3 corner_normal(const LoadedMesh& loaded, Mesh::FaceHandle fh, Mesh::Ve
     return glm::dvec3(0.0);
 }
 
+// Whether the file has no normals and the angle between faces decides
+// (kNoNormalsSharpAngle, feature lines only).
+bool by_default_angle(const LoadedMesh& loaded, const SurfaceOptions& options) {
+    return options.sharp_angle < 0.0 && loaded.corner_normals.empty();
+}
+
 // Whether the edge of halfedge @p h (and its twin) is sharp.
 bool is_sharp(const LoadedMesh& loaded, Halfedge h, const SurfaceOptions& options) {
     const Mesh& mesh = loaded.mesh;
     const Halfedge t = mesh.opposite_halfedge_handle(h);
     const auto left = mesh.face_handle(h), right = mesh.face_handle(t);
     if (!left.is_valid() || !right.is_valid()) return false; // a border has one side
-    if (options.sharp_angle >= 0.0) {
-        const double cos_limit = std::cos(glm::radians(std::min(options.sharp_angle, 180.0)));
+    const double angle = by_default_angle(loaded, options) ? kNoNormalsSharpAngle : options.sharp_angle;
+    if (angle >= 0.0) {
+        const double cos_limit = std::cos(glm::radians(std::min(angle, 180.0)));
         return glm::dot(face_normal(mesh, left), face_normal(mesh, right)) < cos_limit;
     }
-    if (loaded.corner_normals.empty()) return false;
     const double same = std::cos(glm::radians(kSameNormalDegrees));
     for (const auto v : {mesh.from_vertex_handle(h), mesh.to_vertex_handle(h)}) {
         const glm::dvec3 a = corner_normal(loaded, left, v), b = corner_normal(loaded, right, v);
@@ -66,6 +72,43 @@ struct Corners {
     }
     void unite(Halfedge a, Halfedge b) { parent[find(slot(a))] = find(slot(b)); }
 };
+
+/// Clears the sharp edges of @p sharp that make no feature line. Sharp
+/// edges joined at shared vertices make a set; a set's runs are what lies
+/// between its ends and branchings (vertices with other than two of its
+/// edges). A set is a feature line when its runs are kFeatureLineShare of
+/// the bounding box's diagonal long on the average (its length over its
+/// ends and branchings, at least one): a box's edges, a cylinder's rims, a
+/// part's crease lines, any coarse mesh's edges. A scanner's noise or a
+/// fine mesh's tight spots make short runs, short loops and networks that
+/// branch at nearly every vertex.
+void keep_feature_lines(const LoadedMesh& loaded, std::vector<std::uint8_t>& sharp) {
+    const Mesh& mesh = loaded.mesh;
+    std::vector<std::size_t> parent(mesh.n_vertices());
+    std::iota(parent.begin(), parent.end(), std::size_t{0});
+    auto find = [&](std::size_t x) {
+        while (parent[x] != x) x = parent[x] = parent[parent[x]];
+        return x;
+    };
+    std::vector<int> degree(mesh.n_vertices(), 0);
+    for (const auto eh : mesh.edges())
+        if (sharp[slot(eh)]) {
+            const Halfedge h = mesh.halfedge_handle(eh, 0);
+            ++degree[slot(mesh.from_vertex_handle(h))], ++degree[slot(mesh.to_vertex_handle(h))];
+            parent[find(slot(mesh.from_vertex_handle(h)))] = find(slot(mesh.to_vertex_handle(h)));
+        }
+    std::vector<double> length(mesh.n_vertices(), 0.0), joints(mesh.n_vertices(), 0.0);
+    for (const auto eh : mesh.edges())
+        if (sharp[slot(eh)]) length[find(slot(mesh.from_vertex_handle(mesh.halfedge_handle(eh, 0))))] += mesh.calc_edge_length(eh);
+    for (const auto vh : mesh.vertices())
+        if (degree[slot(vh)] > 0 && degree[slot(vh)] != 2) joints[find(slot(vh))] += 1.0;
+    const double least = kFeatureLineShare * glm::length(loaded.report.bbox_max - loaded.report.bbox_min);
+    for (const auto eh : mesh.edges()) {
+        if (!sharp[slot(eh)]) continue;
+        const std::size_t set = find(slot(mesh.from_vertex_handle(mesh.halfedge_handle(eh, 0))));
+        if (length[set] / std::max(1.0, joints[set]) < least) sharp[slot(eh)] = 0;
+    }
+}
 
 /// A smooth mesh (no sharp edge) whose file's normals decide: @p loaded
 /// with each vertex taking the mean of the file's normals at its corners
@@ -134,12 +177,16 @@ std::optional<LoadedMesh> split_sharp_edges(const LoadedMesh& loaded, const Surf
     // A face's corner at a vertex is the face's halfedge pointing to it.
     // Corners at one vertex in faces joined by a smooth edge are one wedge.
     std::vector<std::uint8_t> sharp(mesh.n_edges(), 0);
+    for (const auto eh : mesh.edges()) {
+        const Halfedge h0 = mesh.halfedge_handle(eh, 0), h1 = mesh.halfedge_handle(eh, 1);
+        if (!mesh.is_boundary(h0) && !mesh.is_boundary(h1)) sharp[slot(eh)] = is_sharp(loaded, h0, options);
+    }
+    if (by_default_angle(loaded, options)) keep_feature_lines(loaded, sharp);
     Corners wedges(mesh.n_halfedges());
     for (const auto eh : mesh.edges()) {
         const Halfedge h0 = mesh.halfedge_handle(eh, 0), h1 = mesh.halfedge_handle(eh, 1);
         if (mesh.is_boundary(h0) || mesh.is_boundary(h1)) continue;
-        if (is_sharp(loaded, h0, options)) {
-            sharp[slot(eh)] = 1;
+        if (sharp[slot(eh)]) {
             ++split.sharp_edges;
             continue;
         }
@@ -242,7 +289,7 @@ std::optional<LoadedMesh> split_sharp_edges(const LoadedMesh& loaded, const Surf
     }
     omerr().enable();
     compute_vertex_normals(m); // zero-area faces weigh nothing: each copy takes its wedge's normal
-    if (options.sharp_angle < 0.0) {
+    if (options.sharp_angle < 0.0 && !loaded.corner_normals.empty()) {
         // Where the file gave the edges, its own normals shade the surface:
         // each vertex takes the mean of the file's normals at its corners.
         std::vector<glm::dvec3> file(points.size(), glm::dvec3(0.0));

@@ -24,13 +24,26 @@ inline constexpr double kFileNormals = -1.0;
 /// How a surface's sharp edges are found.
 struct SurfaceOptions {
     /// Degrees: an edge whose faces meet at more than this angle is sharp (an
-    /// auto-smooth angle; 180 makes every edge smooth). kFileNormals: the
-    /// edges where the file's corner normals part, and none when the file has
-    /// no normals (the default).
+    /// auto-smooth angle; 180 makes every edge smooth). kFileNormals (the
+    /// default): the edges where the file's corner normals part; when the
+    /// file has no normals, the edges whose faces meet at more than
+    /// kNoNormalsSharpAngle, where they make feature lines (see there).
     double sharp_angle = kFileNormals;
 
     bool operator==(const SurfaceOptions&) const = default;
 };
+
+/// A mesh without normals (a CAD export, a subdivision cage, a scan) is
+/// shaded as Blender's smooth-by-angle default shades it: an edge whose
+/// faces meet at more than this many degrees is sharp. Only sharp edges
+/// that make feature lines count: sets of joined sharp edges whose runs
+/// (between ends and branchings) are on the average at least
+/// kFeatureLineShare of the bounding box's diagonal long (a box's edges, a
+/// cylinder's rims, a part's creases, any coarse mesh's edges); the short
+/// runs and branching networks of a scanner's noise or a fine mesh's tight
+/// spots stay smooth.
+inline constexpr double kNoNormalsSharpAngle = 30.0;
+inline constexpr double kFeatureLineShare = 0.05;
 
 /// Two of a file's normals at one vertex closer than this many degrees are
 /// the same normal (exporters round normals to single precision, and some

@@ -12,6 +12,7 @@
 
 #include <glm/glm.hpp>
 
+#include "snaxels/snaxel/detail/corner_areas.h"
 #include "snaxels/util/detail/parallel.h"
 
 namespace snaxels {
@@ -26,29 +27,6 @@ struct FaceForm {
     double ku = 0.0, kuv = 0.0, kv = 0.0;
     std::array<double, 3> corner{0.0, 0.0, 0.0}; ///< 0 for a face of no area: it then counts nowhere
 };
-
-/// The parts of a triangle's area nearest each corner (Meyer et al. 2003's
-/// mixed Voronoi areas: a corner's Voronoi cell, or for an obtuse triangle
-/// half the area at the obtuse corner and a quarter at the others).
-std::array<double, 3> corner_areas(const std::array<glm::dvec3, 3>& e, double area) {
-    const std::array<double, 3> l2{glm::dot(e[0], e[0]), glm::dot(e[1], e[1]), glm::dot(e[2], e[2])};
-    // Barycentric weights of the circumcentre (times a common factor).
-    const std::array<double, 3> bcw{l2[0] * (l2[1] + l2[2] - l2[0]), l2[1] * (l2[2] + l2[0] - l2[1]),
-                                    l2[2] * (l2[0] + l2[1] - l2[2])};
-    std::array<double, 3> c{};
-    for (std::size_t a = 0; a < 3; ++a) {
-        if (bcw[a] > 0.0) continue;
-        // Obtuse at corner a: the circumcentre lies outside, past the edge opposite a.
-        const std::size_t n = (a + 1) % 3, p = (a + 2) % 3;
-        c[n] = -0.25 * l2[p] * area / glm::dot(e[a], e[p]);
-        c[p] = -0.25 * l2[n] * area / glm::dot(e[a], e[n]);
-        c[a] = area - c[n] - c[p];
-        return c;
-    }
-    const double scale = 0.5 * area / (bcw[0] + bcw[1] + bcw[2]);
-    for (std::size_t j = 0; j < 3; ++j) c[j] = scale * (bcw[(j + 1) % 3] + bcw[(j + 2) % 3]);
-    return c;
-}
 
 /// A vertex's unit tangent frame (u, v) and u x v (its normal, the axis
 /// the frame is turned about).
@@ -418,7 +396,7 @@ template <std::size_t W>
         form.kuv = kuv[l];
         form.kv = kv[l];
         form.n = tb.lane(l);
-        form.corner = corner_areas({e[0].lane(l), e[1].lane(l), e[2].lane(l)}, 0.5 * twice_area[l]);
+        form.corner = detail::corner_areas({e[0].lane(l), e[1].lane(l), e[2].lane(l)}, 0.5 * twice_area[l]);
     }
 }
 
@@ -537,6 +515,7 @@ constexpr std::size_t kBlock = 256;
 /// its neighbours' forms (each in its principal frame) weighted by area.
 struct SmoothPass {
     const MeshTopology& topo;
+    bool strips; ///< topo.has_strips(), asked once
     const CurvatureField& field;
     const VertexData<TangentFrame>& frames;
     const VertexData<glm::dvec3>& principal_normal;
@@ -560,8 +539,11 @@ struct SmoothPass {
             const TangentFrame& frame = frames[v];
             lanes::FormSum<W, SmoothPass> sum(*this, frame);
             sum.add(i, field.area[v]);
-            for (const VertexId j : topo.neighbours(v))
-                if (field.area[j] > 0.0) sum.add(j.index(), field.area[j]);
+            // Not across a split sharp edge: its strip joins two sides whose
+            // curvatures have nothing to do with each other (a cylinder's
+            // side and its flat cap).
+            for (const auto [j, e] : topo.ring_of(v))
+                if (field.area[j] > 0.0 && !(strips && edge_in_strip(topo, e))) sum.add(j.index(), field.area[j]);
             sum.finish();
             pending[waiting++] = {v, sum.ku / sum.total, sum.kuv / sum.total, sum.kv / sum.total};
         }
@@ -674,7 +656,7 @@ CurvatureField smoothed(const MeshTopology& topo, const CurvatureField& field, c
     // Each vertex's principal frame as a form's frame, with its normal.
     VertexData<glm::dvec3> principal_normal(topo.n_vertices());
     parallel_for(topo.vertices(), [&](VertexId v) { principal_normal[v] = glm::cross(field.dir1[v], field.dir2[v]); }, 4096);
-    run_blocks(topo.n_vertices(), SmoothPass{topo, field, frames, principal_normal, out});
+    run_blocks(topo.n_vertices(), SmoothPass{topo, topo.has_strips(), field, frames, principal_normal, out});
     return out;
 }
 
@@ -852,16 +834,17 @@ std::vector<double> strength_where(const MeshTopology& topo, const CurvatureFiel
                 ends.push_back(v);
             }
     }
-    std::vector<double> derivative(ends.size());
-    parallel_for(ends.size(), [&](std::size_t k) {
-        // kappa_r itself at every vertex (suggestive_function holds a
-        // stand-in past the last ring; it is recomputed there, and a true
-        // kappa_r of the stand-in's value is recomputed to itself).
-        auto radial = [&](VertexId j) { return radial_at(field, j, to_viewer(P[j])); };
-        derivative[k] = vertex_derivative_along_view(topo, field, radial, ends[k], to_viewer);
-    }, 1024);
     std::vector<double> out(n, -std::numeric_limits<double>::infinity());
     if (spec.test == SuggestiveTest::Derivative) {
+        // The derivative along the view, from kappa_r at the vertex's neighbours.
+        std::vector<double> derivative(ends.size());
+        parallel_for(ends.size(), [&](std::size_t k) {
+            // kappa_r itself at every vertex (suggestive_function holds a
+            // stand-in past the last ring; it is recomputed there, and a true
+            // kappa_r of the stand-in's value is recomputed to itself).
+            auto radial = [&](VertexId j) { return radial_at(field, j, to_viewer(P[j])); };
+            derivative[k] = vertex_derivative_along_view(topo, field, radial, ends[k], to_viewer);
+        }, 1024);
         const double typical = field.typical, scale = typical > 0.0 ? 1.0 / (typical * typical) : 0.0;
         for (std::size_t i = 0; i < n; ++i) {
             if (!wanted[i]) continue;
@@ -872,14 +855,16 @@ std::vector<double> strength_where(const MeshTopology& topo, const CurvatureFiel
         return out;
     }
     // rtsc's test: feature_size^2 sin(theta) D_w kappa_r and cos(theta) at
-    // each end, interpolated apart along the edge, their ratio against k.
+    // each end, interpolated apart along the edge, their ratio against k;
+    // D_w kappa_r from the derivative of curvature, as rtsc computes it.
     const double fs = require_feature_size(topo), fs2 = fs * fs;
+    const std::shared_ptr<const CurvatureDerivative> dc = require_curvature_derivative(topo, field);
     std::vector<double> num(ends.size()), den(ends.size());
     parallel_for(ends.size(), [&](std::size_t k) {
         const VertexId v = ends[k];
-        const double c = glm::dot(to_viewer(P[v]), N[v]);
-        den[k] = c;
-        num[k] = fs2 * std::sqrt(std::max(0.0, 1.0 - c * c)) * derivative[k];
+        const glm::dvec3 view = to_viewer(P[v]);
+        den[k] = glm::dot(view, N[v]);
+        num[k] = fs2 * radial_derivative_term(field, *dc, v, N[v], view);
     }, 4096);
     for (std::size_t i = 0; i < n; ++i) {
         if (!wanted[i]) continue;
@@ -953,6 +938,26 @@ double derivative_along_view(const MeshTopology& topo, const VertexData<double>&
     const glm::dvec3 w = view - glm::dot(view, n) * n;
     const double len = glm::length(w);
     return len > 0.0 ? glm::dot(gradient, w) / len : 0.0;
+}
+
+std::array<double, 3> detail::corner_areas(const std::array<glm::dvec3, 3>& e, double area) {
+    const std::array<double, 3> l2{glm::dot(e[0], e[0]), glm::dot(e[1], e[1]), glm::dot(e[2], e[2])};
+    // Barycentric weights of the circumcentre (times a common factor).
+    const std::array<double, 3> bcw{l2[0] * (l2[1] + l2[2] - l2[0]), l2[1] * (l2[2] + l2[0] - l2[1]),
+                                    l2[2] * (l2[0] + l2[1] - l2[2])};
+    std::array<double, 3> c{};
+    for (std::size_t a = 0; a < 3; ++a) {
+        if (bcw[a] > 0.0) continue;
+        // Obtuse at corner a: the circumcentre lies outside, past the edge opposite a.
+        const std::size_t n = (a + 1) % 3, p = (a + 2) % 3;
+        c[n] = -0.25 * l2[p] * area / glm::dot(e[a], e[p]);
+        c[p] = -0.25 * l2[n] * area / glm::dot(e[a], e[n]);
+        c[a] = area - c[n] - c[p];
+        return c;
+    }
+    const double scale = 0.5 * area / (bcw[0] + bcw[1] + bcw[2]);
+    for (std::size_t j = 0; j < 3; ++j) c[j] = scale * (bcw[(j + 1) % 3] + bcw[(j + 2) % 3]);
+    return c;
 }
 
 } // namespace snaxels

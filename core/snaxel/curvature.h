@@ -10,6 +10,7 @@
 /// Curvature is positive where the surface bends away from its normal, as
 /// on a sphere with outward normals (1/radius there).
 
+#include <array>
 #include <memory>
 #include <vector>
 
@@ -125,6 +126,27 @@ double suggestive_away_value(const CurvatureField& field);
 /// normal or the face has no area).
 double derivative_along_view(const MeshTopology& topology, const VertexData<double>& f, FaceId face,
                              const glm::dvec3& p, const Camera& camera);
+
+/// The derivative of curvature at every vertex (Rusinkiewicz 2004): the
+/// symmetric tensor C of how the second fundamental form changes across
+/// the surface, in the vertex's principal frame (dir1, dir2): C111, C112,
+/// C122, C222 (core/snaxel/curvature_derivative.cpp).
+struct CurvatureDerivative {
+    VertexData<std::array<double, 4>> c;
+};
+
+/// @p field's derivative, kept with the pose when @p field is its default
+/// curvature (require_curvature's).
+std::shared_ptr<const CurvatureDerivative> require_curvature_derivative(const MeshTopology& topology,
+                                                                       const CurvatureField& field);
+
+/// sin(theta) times the derivative of kappa_r along the view at vertex
+/// @p v, as DeCarlo et al.'s rtsc computes it from C: C(w, w, w) / |w|^2
+/// minus 2 cos(theta) tau_r^2, with w the unit @p view toward the viewer
+/// projected onto the tangent plane (|w| = sin theta), theta its angle to
+/// @p normal and tau_r the geodesic torsion along w.
+double radial_derivative_term(const CurvatureField& field, const CurvatureDerivative& derivative, VertexId v,
+                              const glm::dvec3& normal, const glm::dvec3& view);
 
 /// The feature size of @p topology's pose: its median edge length (rtsc's
 /// measure), which makes the rtsc test's threshold free of the mesh's scale.

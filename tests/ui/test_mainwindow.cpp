@@ -464,7 +464,7 @@ class TestMainWindow : public QObject {
         // A coarse mesh is refined for the contours, and the status bar says so.
         const auto* meshLabel = window.findChild<QLabel*>("meshLabel");
         QVERIFY(meshLabel);
-        QVERIFY2(meshLabel->text().contains("5856 faces") && meshLabel->text().contains("refined to 23424 faces"),
+        QVERIFY2(meshLabel->text().contains("5856 faces") && meshLabel->text().contains("refined to 23792 faces"),
                  qPrintable(meshLabel->text()));
         QSignalSpy contours(&window, &MainWindow::contoursUpdated);
         const QByteArray first = window.currentSvg();

@@ -141,8 +141,8 @@ struct ProductLines {
     MeshTopology topo;
     SnaxelEngine engine;
     ContourResult lines;
-    explicit ProductLines(const std::string& file)
-        : loaded(import_mesh(file)), topo(engine_topology(with_sharp_edges(loaded, SurfaceOptions{}, split))), engine(topo),
+    explicit ProductLines(const std::string& file, const SurfaceOptions& surface = {})
+        : loaded(import_mesh(file)), topo(engine_topology(with_sharp_edges(loaded, surface, split))), engine(topo),
           lines(engine.compute({ContourKind::Intersection}, Camera{}, Light{})) {}
     /// Each loop's points in order (closed loops repeat their first).
     std::vector<std::vector<glm::dvec3>> polylines() const {
@@ -317,22 +317,36 @@ TEST(Intersections, AnEquatorLyingInThePlaneStillClosesItsLoop) {
     expect_fit(fit(p.polylines(), distance, samples, 0.002 * diagonal(p.topo)), "equator in the plane");
 }
 
-// One object through itself: two boxes joined into one mesh.
+// One object through itself: two boxes joined into one mesh, a bar through
+// a cube's two opposite faces: two square loops. Shaded smooth (the bar's
+// corners lie on the diagonals of the cube's faces: a degenerate meeting),
+// and split along their edges, as a mesh without normals is by default
+// (the bar off the diagonals).
 TEST(Intersections, AnObjectThroughItselfMeetsItself) {
-    TestObject a = box("Cross", {0, 0, 0}, {1, 1, 1});
-    const TestObject b = box("", {0.3, 0.3, -0.5}, {0.7, 0.7, 1.5});
-    const int base = int(a.positions.size());
-    a.positions.insert(a.positions.end(), b.positions.begin(), b.positions.end());
-    for (auto f : b.faces) a.faces.push_back({f[0] + base, f[1] + base, f[2] + base});
-    const ProductLines p(write_scene("meet-self.obj", {a}));
-    // A bar through a cube's two opposite faces: two square loops.
-    ASSERT_EQ(p.lines.fronts.loops.size(), 2u);
-    for (const FrontLoop& loop : p.lines.fronts.loops) EXPECT_TRUE(loop.closed);
-    for (const auto& pl : p.polylines())
-        for (const glm::dvec3& q : pl) {
-            EXPECT_TRUE(std::abs(q.z) < 1e-6 || std::abs(q.z - 1.0) < 1e-6) << q.z;
-            EXPECT_TRUE(std::abs(q.x - 0.3) < 1e-6 || std::abs(q.x - 0.7) < 1e-6 || std::abs(q.y - 0.3) < 1e-6 || std::abs(q.y - 0.7) < 1e-6) << q.x << " " << q.y << " " << q.z;
-        }
+    struct Case {
+        glm::dvec3 lo, hi;
+        double sharp_angle;
+    };
+    for (const Case& c : {Case{{0.3, 0.3, -0.5}, {0.7, 0.7, 1.5}, 180.0}, Case{{0.3, 0.22, -0.5}, {0.71, 0.63, 1.5}, kFileNormals}}) {
+        TestObject a = box("Cross", {0, 0, 0}, {1, 1, 1});
+        const TestObject b = box("", c.lo, c.hi);
+        const int base = int(a.positions.size());
+        a.positions.insert(a.positions.end(), b.positions.begin(), b.positions.end());
+        for (auto f : b.faces) a.faces.push_back({f[0] + base, f[1] + base, f[2] + base});
+        SurfaceOptions surface;
+        surface.sharp_angle = c.sharp_angle;
+        const ProductLines p(write_scene("meet-self.obj", {a}), surface);
+        EXPECT_EQ(p.split.has_value(), c.sharp_angle < 180.0);
+        ASSERT_EQ(p.lines.fronts.loops.size(), 2u) << c.sharp_angle;
+        for (const FrontLoop& loop : p.lines.fronts.loops) EXPECT_TRUE(loop.closed) << c.sharp_angle;
+        for (const auto& pl : p.polylines())
+            for (const glm::dvec3& q : pl) {
+                EXPECT_TRUE(std::abs(q.z) < 1e-6 || std::abs(q.z - 1.0) < 1e-6) << q.z;
+                EXPECT_TRUE(std::abs(q.x - c.lo.x) < 1e-6 || std::abs(q.x - c.hi.x) < 1e-6 || std::abs(q.y - c.lo.y) < 1e-6 ||
+                            std::abs(q.y - c.hi.y) < 1e-6)
+                    << q.x << " " << q.y << " " << q.z;
+            }
+    }
 }
 
 namespace {

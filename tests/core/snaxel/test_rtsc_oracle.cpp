@@ -21,19 +21,11 @@
 #include "snaxels/snaxel/snaxel_engine.h"
 #include "snaxels/visibility/visibility.h"
 #include "tests/support/assets.h"
-#include "tests/support/rtsc_oracle.h"
+#include "tests/support/rtsc_compare.h"
 
 using namespace snaxels;
 
 namespace {
-
-test::RtscMesh oracle_mesh(const MeshTopology& topo) {
-    test::RtscMesh m;
-    m.p.assign(topo.positions().begin(), topo.positions().end());
-    m.n.assign(topo.normals().begin(), topo.normals().end());
-    for (const auto& f : topo.face_vertices()) m.f.push_back({f[0].index(), f[1].index(), f[2].index()});
-    return m;
-}
 
 /// The bundled meshes.
 constexpr const char* kMeshes[] = {"spot.obj", "teapot.obj", "fandisk.obj", "suzanne.obj", "stanford-bunny.obj", "horse.ply"};
@@ -42,7 +34,7 @@ constexpr const char* kMeshes[] = {"spot.obj", "teapot.obj", "fandisk.obj", "suz
 /// test's mesh and curvature (two smoothing passes, as the product's).
 struct Case {
     explicit Case(const char* name)
-        : loaded(load_mesh(test::asset(name))), topo(engine_topology(loaded)), engine(topo), rm(oracle_mesh(topo)),
+        : loaded(load_mesh(test::asset(name))), topo(engine_topology(loaded)), engine(topo), rm(test::rtsc_mesh_of(topo)),
           k(test::rtsc_curvature(rm, 2)), centre(loaded.report.centre()),
           diag(glm::length(loaded.report.bbox_max - loaded.report.bbox_min)) {}
     LoadedMesh loaded;
@@ -67,19 +59,6 @@ struct Views {
     }
 };
 
-/// The drawn runs of a suggestive contour (margins >= 0) as segments.
-std::vector<test::RtscSegment> drawn_segments(const SnaxelEngine& engine, const ContourResult& r) {
-    std::vector<test::RtscSegment> out;
-    const ContourVisibility parts = drawn_parts(engine, r);
-    for (const LoopVisibility& loop : parts.loops)
-        for (const VisibilityRun& run : loop.runs) {
-            if (run.qi != 0) continue;
-            for (std::size_t i = 0; i + 1 < run.points.size(); ++i) out.push_back({run.points[i], run.points[i + 1]});
-            if (run.closed && run.points.size() > 2) out.push_back({run.points.back(), run.points.front()});
-        }
-    return out;
-}
-
 } // namespace
 
 TEST(RtscOracle, ProductDrawsWhatDeCarloEtAlDraw) {
@@ -93,7 +72,7 @@ TEST(RtscOracle, ProductDrawsWhatDeCarloEtAlDraw) {
         for (int view = 0; view < 10; ++view) {
             const Camera cam = views.next(centre, diag);
             const std::vector<test::RtscSegment> oracle = test::rtsc_suggestive(rm, k, cam.eye, spec.k);
-            const std::vector<test::RtscSegment> product = drawn_segments(engine, engine.compute(spec, cam, Light{}));
+            const std::vector<test::RtscSegment> product = test::drawn_suggestive_segments(engine, engine.compute(spec, cam, Light{}));
             const test::SegmentIndex oracle_index(oracle, reach), product_index(product, reach);
             const auto [np, tp] = test::length_near(product, oracle_index, reach);
             const auto [no, to] = test::length_near(oracle, product_index, reach);
@@ -105,8 +84,10 @@ TEST(RtscOracle, ProductDrawsWhatDeCarloEtAlDraw) {
         }
         std::printf("%s: precision %.1f%% (worst view %.1f%%), coverage %.1f%% (worst view %.1f%%)\n", name,
                     100.0 * near_p / total_p, 100.0 * worst_p, 100.0 * near_o / total_o, 100.0 * worst_o);
-        EXPECT_GE(near_p / total_p, 0.9) << name;
-        EXPECT_GE(near_o / total_o, 0.8) << name;
+        // Every view (#56, done-when 3): D_w kappa_r from the derivative of
+        // curvature, as rtsc computes it, on both sides.
+        EXPECT_GE(worst_p, 0.9) << name;
+        EXPECT_GE(worst_o, 0.8) << name;
     }
 }
 
