@@ -5,6 +5,10 @@
 # tests/players/fetch.sh refreshes them from npm.)
 #   scripts/install-deps.sh          install the packages that are missing
 #   scripts/install-deps.sh --list   print the package list, one a line
+#   scripts/install-deps.sh --quality  also what the quality corpus's full run
+#                                      needs (scripts/quality.sh): Blender, which
+#                                      writes the corpus's scenes, and numpy for
+#                                      its glTF exporter
 # The test deps.packages checks that every system file the build reads comes
 # from these packages or their dependencies.
 set -euo pipefail
@@ -21,7 +25,13 @@ PACKAGES=(
   librlottie-dev python3-jsonschema
   clang libclang-rt-14-dev llvm
   dpkg-dev file desktop-file-utils
+  assimp-testmodels
 )
+# scripts/quality.sh's full run only (not CI's ratchet).
+QUALITY_PACKAGES=(blender python3-numpy)
+if [ "${1:-}" = --quality ]; then
+  PACKAGES+=("${QUALITY_PACKAGES[@]}")
+fi
 
 if [ "${1:-}" = --list ]; then
   printf '%s\n' "${PACKAGES[@]}"

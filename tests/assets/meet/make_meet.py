@@ -31,62 +31,10 @@ import sys
 
 import bpy
 
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "support"))
+from blender_scene import box, camera, cylinder, finish, material, reset, sphere  # noqa: E402
+
 out = sys.argv[sys.argv.index("--") + 1] if "--" in sys.argv else os.path.dirname(os.path.abspath(__file__))
-
-
-def reset():
-    bpy.ops.wm.read_factory_settings(use_empty=True)
-
-
-def material(name, rgba):
-    m = bpy.data.materials.get(name) or bpy.data.materials.new(name)
-    m.diffuse_color = rgba
-    m.use_nodes = True
-    m.node_tree.nodes["Principled BSDF"].inputs["Base Color"].default_value = rgba
-    return m
-
-
-def finish(obj, name, mat, smooth):
-    obj.name = name
-    obj.data.name = name + "Mesh"
-    obj.data.materials.append(mat)
-    for p in obj.data.polygons:
-        p.use_smooth = smooth
-    return obj
-
-
-def box(name, mat, size, location):
-    bpy.ops.mesh.primitive_cube_add(size=1.0, location=location)
-    o = bpy.context.object
-    o.scale = size
-    bpy.ops.object.transform_apply(location=False, rotation=False, scale=True)
-    return finish(o, name, mat, False)
-
-
-def sphere(name, mat, radius, location, segments=48, rings=24):
-    bpy.ops.mesh.primitive_uv_sphere_add(segments=segments, ring_count=rings, radius=radius, location=location)
-    return finish(bpy.context.object, name, mat, True)
-
-
-def cylinder(name, mat, radius, depth, location, rotation=(0, 0, 0), vertices=40):
-    bpy.ops.mesh.primitive_cylinder_add(vertices=vertices, radius=radius, depth=depth, location=location,
-                                        rotation=rotation)
-    o = finish(bpy.context.object, name, mat, True)
-    for p in o.data.polygons:
-        p.use_smooth = len(p.vertices) == 4  # the side smooth, the caps flat
-    return o
-
-
-def camera(name, location, target, lens=40):
-    bpy.ops.object.camera_add(location=location)
-    cam = bpy.context.object
-    cam.name = name
-    cam.data.lens = lens
-    direction = [t - l for t, l in zip(target, location)]
-    import mathutils
-    cam.rotation_euler = mathutils.Vector(direction).to_track_quat('-Z', 'Y').to_euler()
-    bpy.context.scene.camera = cam
-    return cam
 
 
 def export(name, collada=True):
