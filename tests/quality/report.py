@@ -381,8 +381,11 @@ def report(root, corpus_path, results_dir, tool, out):
 
 RATCHET = "tests/quality/ratchet.json"
 # How far a check may move without failing the ratchet: the checks are
-# deterministic for one build; this covers rounding across compilers.
-SLACK = 0.002
+# deterministic for one build and machine, but Embree picks its kernels by
+# the processor (AVX2, AVX-512), and a ray that grazes an edge may then
+# decide a snaxel's QI the other way; a point of a percentage is a few
+# snaxels of a view.
+SLACK = 0.01
 
 
 def ci_corpus(root):
