@@ -30,7 +30,8 @@ inline BruteForceContour marching_triangles(const MeshTopology& topo, const Cont
     for (const VertexId v : topo.vertices()) fv[v] = f(topo.positions()[v], topo.normals()[v]);
     out.crossing_of_edge.assign(topo.n_edges(), -1);
     for (const EdgeId e : topo.edges()) {
-        auto [a, b] = topo.edge_vertices()[e];
+        // Named apart (not a structured binding): clang 14's lambdas cannot capture those.
+        VertexId a = topo.edge_vertices()[e][0], b = topo.edge_vertices()[e][1];
         if ((fv[a] >= 0.0) == (fv[b] >= 0.0)) continue;
         if (fv[a] < 0.0) std::swap(a, b); // a positive, b negative
         auto g = [&](double t) {
