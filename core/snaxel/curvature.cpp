@@ -913,7 +913,11 @@ std::vector<double> suggestive_margins(const MeshTopology& topo, const Curvature
         // smooth patches only).
         // (The rtsc test has no least angle: its tan(theta) falls to 0 where
         // the surface faces the viewer.)
-        margin[i] = rim || (topo.has_strips() && edge_in_strip(topo, s.edge)) ? -1.0
+        // A snaxel at a vertex where kappa_r is exactly 0 (a flat patch,
+        // whose curvature vanishes) marks no sign change: rtsc draws a zero
+        // only where one corner's kappa_r is positive and another's negative.
+        const bool flat = kr[s.inside] == 0.0 || kr[s.outside] == 0.0;
+        margin[i] = rim || flat || (topo.has_strips() && edge_in_strip(topo, s.edge)) ? -1.0
                     : rtsc                                                   ? nv
                                                                              : std::min(most_facing - nv, nv);
     }, 4096);
