@@ -31,144 +31,11 @@
 
 #include <pugixml.hpp>
 
+#include "tests/support/svg_player.h"
+
 namespace {
 
-struct Token {
-    char cmd = 0; // a command letter, or 0 for a number
-    double v = 0.0;
-};
-
-std::vector<Token> tokenize(const std::string& d) {
-    std::vector<Token> out;
-    const char* s = d.c_str();
-    while (*s) {
-        if (std::strchr("MmLlHhVvCcSsQqTtZzAa", *s)) {
-            out.push_back({*s, 0.0});
-            ++s;
-        } else if (std::strchr("+-.0123456789", *s)) {
-            char* end = nullptr;
-            const double v = std::strtod(s, &end);
-            if (end == s) { ++s; continue; }
-            out.push_back({0, v});
-            s = end;
-        } else {
-            ++s;
-        }
-    }
-    return out;
-}
-
-bool compatible(const std::vector<Token>& a, const std::vector<Token>& b) {
-    if (a.size() != b.size()) return false;
-    for (std::size_t i = 0; i < a.size(); ++i)
-        if (a[i].cmd != b[i].cmd) return false;
-    return true;
-}
-
-struct Pt {
-    double x = 0, y = 0;
-};
-
-// Subpaths of the path, curves flattened.
-std::vector<std::vector<Pt>> flatten(const std::vector<Token>& t) {
-    std::vector<std::vector<Pt>> subs;
-    Pt cur, start, last_ctrl;
-    char cmd = 0, prev_cmd = 0;
-    std::size_t i = 0;
-    auto num = [&]() { return i < t.size() && t[i].cmd == 0 ? t[i++].v : 0.0; };
-    auto line_to = [&](Pt p) {
-        if (subs.empty()) subs.push_back({cur});
-        subs.back().push_back(p);
-        cur = p;
-    };
-    auto cubic = [&](Pt c1, Pt c2, Pt p) {
-        const Pt p0 = cur;
-        for (int k = 1; k <= 16; ++k) {
-            const double u = k / 16.0, w = 1 - u;
-            line_to({w * w * w * p0.x + 3 * w * w * u * c1.x + 3 * w * u * u * c2.x + u * u * u * p.x,
-                     w * w * w * p0.y + 3 * w * w * u * c1.y + 3 * w * u * u * c2.y + u * u * u * p.y});
-        }
-        last_ctrl = c2;
-    };
-    while (i < t.size()) {
-        if (t[i].cmd) cmd = t[i++].cmd;
-        else if (cmd == 'M') cmd = 'L';
-        else if (cmd == 'm') cmd = 'l';
-        const bool rel = std::islower(static_cast<unsigned char>(cmd));
-        const Pt base = rel ? cur : Pt{};
-        switch (std::toupper(static_cast<unsigned char>(cmd))) {
-        case 'M': {
-            const double x = num(), y = num();
-            cur = start = {base.x + x, base.y + y};
-            subs.push_back({cur});
-            break;
-        }
-        case 'L': { const double x = num(), y = num(); line_to({base.x + x, base.y + y}); break; }
-        case 'H': { const double x = num(); line_to({base.x + x, cur.y}); break; }
-        case 'V': { const double y = num(); line_to({cur.x, base.y + y}); break; }
-        case 'C': {
-            const double a = num(), b = num(), c = num(), d = num(), e = num(), f = num();
-            cubic({base.x + a, base.y + b}, {base.x + c, base.y + d}, {base.x + e, base.y + f});
-            break;
-        }
-        case 'S': {
-            const bool smooth = std::strchr("CcSs", prev_cmd) != nullptr;
-            const Pt c1 = smooth ? Pt{2 * cur.x - last_ctrl.x, 2 * cur.y - last_ctrl.y} : cur;
-            const double c = num(), d = num(), e = num(), f = num();
-            cubic(c1, {base.x + c, base.y + d}, {base.x + e, base.y + f});
-            break;
-        }
-        case 'Q': {
-            const double a = num(), b = num(), e = num(), f = num();
-            const Pt q{base.x + a, base.y + b}, p{base.x + e, base.y + f}, p0 = cur;
-            cubic({p0.x + 2.0 / 3 * (q.x - p0.x), p0.y + 2.0 / 3 * (q.y - p0.y)},
-                  {p.x + 2.0 / 3 * (q.x - p.x), p.y + 2.0 / 3 * (q.y - p.y)}, p);
-            break;
-        }
-        case 'Z':
-            if (!subs.empty()) subs.back().push_back(start);
-            cur = start;
-            break;
-        default: // arcs are not written by the exporter: take their end point
-            if (std::toupper(static_cast<unsigned char>(cmd)) == 'A') {
-                for (int k = 0; k < 5; ++k) num();
-                const double x = num(), y = num();
-                line_to({base.x + x, base.y + y});
-            } else {
-                ++i;
-            }
-        }
-        prev_cmd = cmd;
-    }
-    return subs;
-}
-
-double length_of(const std::vector<std::vector<Pt>>& subs) {
-    double l = 0;
-    for (const auto& s : subs)
-        for (std::size_t k = 1; k < s.size(); ++k) l += std::hypot(s[k].x - s[k - 1].x, s[k].y - s[k - 1].y);
-    return l;
-}
-
-double area_of(const std::vector<std::vector<Pt>>& subs) {
-    double a = 0; // signed: holes wound the other way subtract (non-zero rule)
-    for (const auto& s : subs)
-        for (std::size_t k = 0; k < s.size(); ++k) {
-            const Pt& p = s[k];
-            const Pt& q = s[(k + 1) % s.size()];
-            a += p.x * q.y - q.x * p.y;
-        }
-    return std::abs(a) / 2;
-}
-
-std::vector<std::string> split(const std::string& s, char sep) {
-    std::vector<std::string> out(1);
-    for (const char c : s) {
-        if (c == sep) out.emplace_back();
-        else out.back() += c;
-    }
-    return out;
-}
+using namespace snaxels::test::svg;
 
 struct PathInfo {
     double lo_x = 1e300, lo_y = 1e300, hi_x = -1e300, hi_y = -1e300; // drawn extent over the frames shown
@@ -178,63 +45,16 @@ struct PathInfo {
     bool visible_without_smil = true;
 };
 
-pugi::xml_node animate_of(pugi::xml_node path, const char* attribute) {
-    for (pugi::xml_node a : path.children("animate"))
-        if (std::strcmp(a.attribute("attributeName").value(), attribute) == 0) return a;
-    return {};
-}
-
-// The value list entry in force at normalized time t (discrete).
-std::size_t interval_at(const std::vector<double>& times, double t) {
-    std::size_t k = 0;
-    while (k + 1 < times.size() && times[k + 1] <= t) ++k;
-    return k;
-}
-
-std::vector<double> numbers(const std::string& s) {
-    std::vector<double> out;
-    for (const auto& p : split(s, ';')) out.push_back(std::atof(p.c_str()));
-    return out;
-}
-
 PathInfo measure(pugi::xml_node path, bool fill, bool outline, int frames) {
     PathInfo info;
     info.fill = fill;
-    const std::string display = path.attribute("display").value();
-    info.visible_without_smil = display != "none";
-    std::vector<double> dtimes;
-    std::vector<std::string> dvalues;
-    if (pugi::xml_node a = animate_of(path, "d")) {
-        dtimes = numbers(a.attribute("keyTimes").value());
-        dvalues = split(a.attribute("values").value(), ';');
-    }
-    std::vector<double> show_times;
-    std::vector<std::string> show_values;
-    if (pugi::xml_node a = animate_of(path, "display")) {
-        show_times = numbers(a.attribute("keyTimes").value());
-        show_values = split(a.attribute("values").value(), ';');
-    }
+    info.visible_without_smil = std::strcmp(path.attribute("display").value(), "none") != 0;
     for (int f = 0; f < frames; ++f) {
         // Display in the middle of the frame; the shape just after its start.
         const double mid = (f + 0.5) / frames, at = (f + 0.01) / frames;
-        bool shown = info.visible_without_smil;
-        if (!show_times.empty()) shown = show_values[interval_at(show_times, mid)] != "none";
-        if (!shown) continue;
+        if (!shown_at(path, mid)) continue;
         info.shown.push_back(f);
-        std::vector<Token> shape;
-        if (dtimes.size() >= 2 && dtimes.size() == dvalues.size()) {
-            const std::size_t k = interval_at(dtimes, at);
-            const std::size_t k1 = std::min(k + 1, dtimes.size() - 1);
-            const std::vector<Token> a = tokenize(dvalues[k]), b = tokenize(dvalues[k1]);
-            const double span = dtimes[k1] - dtimes[k];
-            const double u = span > 0 ? std::clamp((at - dtimes[k]) / span, 0.0, 1.0) : 0.0;
-            shape = a;
-            if (compatible(a, b))
-                for (std::size_t i = 0; i < a.size(); ++i) shape[i].v = (1 - u) * a[i].v + u * b[i].v;
-        } else {
-            shape = tokenize(path.attribute("d").value());
-        }
-        const auto subs = flatten(shape);
+        const auto subs = flatten(shape_at(path, at));
         const double m = fill || outline ? area_of(subs) : length_of(subs);
         info.measure += m;
         if (m > 0)
