@@ -315,22 +315,27 @@ def report(root, corpus_path, results_dir, tool, out):
         else:
             sec += ["", "Distribution: best %s, median %s, 95th percentile %s, worst %s." % (
                 fmt(key, values[-1]), fmt(key, med), fmt(key, p5), fmt(key, values[0]))]
-        if key.startswith(("outline.", "qi.", "suggestive.")):
-            kind = "suggestive" if key.startswith("suggestive.") else "outline"
+        if key.startswith(("outline.", "qi.", "suggestive.", "maps.")):
+            kind = "suggestive" if key.startswith("suggestive.") else "maps" if key.startswith("maps.") else "outline"
             only = ["--views", "0"] if kind == "suggestive" else ["--suggestive-views", "0"]
             for rank, (a, (v, x)) in enumerate(ordered[:2]):
                 png = "%s-%d.png" % (key.replace(".", "-"), rank + 1)
                 with tempfile.TemporaryDirectory() as tmp:
                     subprocess.run([tool, by_id[a]["path"], "--pictures", tmp, "--no-export"] + only,
                                    capture_output=True, timeout=900)
-                    ppm = os.path.join(tmp, "%s-%s.ppm" % (kind, v))
+                    if kind == "maps":  # the view is "snaxel 3 (object)" or "post 3 (object)"
+                        words = str(v).split()
+                        ppm = os.path.join(tmp, "%s_map-%s.ppm" % (words[0], words[1]))
+                    else:
+                        ppm = os.path.join(tmp, "%s-%s.ppm" % (kind, v))
                     if os.path.exists(ppm):
                         ppm_to_png(ppm, os.path.join(pictures, png))
                         sec += ["", "![%s, view %s: %s](images/quality/%s)" % (display_path(by_id[a]["path"], root), v,
                                                                               fmt(key, x), png)]
-            sec += ["", "(Pictures: the visible faceted silhouette in blue, what is drawn on it in black, drawn off it in red.)"
-                    if kind == "outline" else
-                    "(Pictures: rtsc's suggestive contours (the oracle) in blue, the product's in red, both in black.)"]
+            sec += ["", {"outline": "(Pictures: the visible faceted silhouette in blue, what is drawn on it in black, drawn off it in red.)",
+                         "suggestive": "(Pictures: rtsc's suggestive contours (the oracle) in blue, the product's in red, both in black.)",
+                         "maps": "(Pictures: the mesh grey by the z-buffer's class where the map agrees, red where the map's class "
+                                 "differs, blue where its material does, black where no region covers it.)"}[kind]]
         sections += sec
     md += sections
     md += ["", "## Every asset", "",
@@ -460,8 +465,8 @@ def ratchet(root, corpus_path, results_dir, update):
             print("%-45s %-22s worst view %-12s %7.2f%%  threshold %s" % (
                 name, key, view, 100 * worst, "-" if held is None else "%.2f%%" % (100 * held)))
             if held is not None and (worst < held - SLACK if better == "high" else worst > held + SLACK):
-                failures.append("%s: %s fell to %.2f%% (view %s), its threshold is %.2f%%" % (
-                    name, key, 100 * worst, view, 100 * held))
+                failures.append("%s: %s %s to %.2f%% (view %s), its threshold is %.2f%%" % (
+                    name, key, "fell" if better == "high" else "rose", 100 * worst, view, 100 * held))
     if update:
         if errors:
             print("quality: not recording thresholds, assets failed:\n  " + "\n  ".join(errors))
