@@ -207,8 +207,14 @@ double ContourFunction::first_zero(const glm::dvec3& na, const glm::dvec3& nb, c
 }
 
 void ContourFunction::evaluate_vertices(const MeshTopology& topology, VertexData<double>& out) const {
-    if (spec_.kind == ContourKind::Suggestive) suggestive_function(topology, *require_curvature(topology), camera_, out);
-    else evaluate_vertices(topology.positions(), topology.normals(), out);
+    if (spec_.kind == ContourKind::Suggestive) {
+        // kappa_r is a curvature (its scale the mesh's), not a cosine: its
+        // zeros are its own, and a flat patch's exact 0 is no sign change
+        // (suggestive_margins).
+        suggestive_function(topology, *require_curvature(topology), camera_, out);
+        return;
+    }
+    evaluate_vertices(topology.positions(), topology.normals(), out);
     if (!topology.has_strips()) return;
     // A flat face seen edge-on (a box's sides in a front view) has f = 0 at
     // every corner, up to the rounding of the file's single-precision

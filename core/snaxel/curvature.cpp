@@ -893,6 +893,25 @@ std::vector<double> suggestive_margins(const MeshTopology& topo, const Curvature
     const double most_facing = std::cos(glm::radians(spec.min_angle));
     const auto P = topo.positions();
     const auto N = topo.normals();
+    // A snaxel at a vertex where kappa_r is exactly 0 (a flat patch, whose
+    // curvature vanishes) lies on a sign change only beside one that is not:
+    // rtsc draws a zero where one corner of a face has kappa_r positive and
+    // another negative, so the run along a flat patch's rim, from one such
+    // vertex to the next, is no suggestive contour, while the step from a
+    // true crossing to the flat vertex in the same face is.
+    std::vector<std::uint8_t> flat(n, 0), beside_crossing(n, 0);
+    for (std::size_t i = 0; i < n; ++i)
+        flat[i] = kr[fronts.snaxels[i].inside] == 0.0 || kr[fronts.snaxels[i].outside] == 0.0;
+    for (const FrontLoop& loop : fronts.loops) {
+        std::vector<std::int32_t> order;
+        fronts.for_each_in_loop(loop, [&](std::int32_t i) { order.push_back(i); });
+        for (std::size_t k = 0; k < order.size(); ++k) {
+            if (!flat[order[k]]) continue;
+            const bool has_prev = k > 0 || loop.closed, has_next = k + 1 < order.size() || loop.closed;
+            const std::int32_t prev = order[(k + order.size() - 1) % order.size()], next = order[(k + 1) % order.size()];
+            beside_crossing[order[k]] = (has_prev && !flat[prev]) || (has_next && !flat[next]);
+        }
+    }
     // The view terms first: where they already leave a snaxel out (about
     // half of them face away), its margin is theirs and the test's
     // strength is not needed.
@@ -913,11 +932,7 @@ std::vector<double> suggestive_margins(const MeshTopology& topo, const Curvature
         // smooth patches only).
         // (The rtsc test has no least angle: its tan(theta) falls to 0 where
         // the surface faces the viewer.)
-        // A snaxel at a vertex where kappa_r is exactly 0 (a flat patch,
-        // whose curvature vanishes) marks no sign change: rtsc draws a zero
-        // only where one corner's kappa_r is positive and another's negative.
-        const bool flat = kr[s.inside] == 0.0 || kr[s.outside] == 0.0;
-        margin[i] = rim || flat || (topo.has_strips() && edge_in_strip(topo, s.edge)) ? -1.0
+        margin[i] = rim || (flat[i] && !beside_crossing[i]) || (topo.has_strips() && edge_in_strip(topo, s.edge)) ? -1.0
                     : rtsc                                                   ? nv
                                                                              : std::min(most_facing - nv, nv);
     }, 4096);
