@@ -748,9 +748,14 @@ double require_feature_size(const MeshTopology& topo) {
         std::vector<double> lengths;
         lengths.reserve(topo.n_edges());
         const auto P = topo.positions();
-        for (const auto& [a, b] : topo.edge_vertices()) {
+        // The edges of faces with an area: a split sharp edge's strip is no
+        // part of the surface (its rungs have no length, its diagonals
+        // repeat the sharp edge's), as rtsc reads a file split there.
+        for (const EdgeId e : topo.edges()) {
+            if (topo.has_strips() && edge_in_strip(topo, e)) continue;
+            const auto [a, b] = topo.edge_vertices()[e];
             const double l = glm::length(P[b] - P[a]);
-            if (l > 0.0) lengths.push_back(l); // a split sharp edge's strip has edges of no length
+            if (l > 0.0) lengths.push_back(l);
         }
         if (lengths.empty()) return 0.0;
         const auto middle = lengths.begin() + std::ptrdiff_t(lengths.size() / 2);
