@@ -427,25 +427,17 @@ double share_near(const std::vector<glm::dvec2>& samples, const std::vector<glm:
 
 /// Per stroke path of an animated SVG of @p frames frames: the frames it is
 /// shown and its length over them.
-std::vector<std::pair<int, double>> stroke_lives(pugi::xml_node node, int frames, bool in_fills = false) {
+std::vector<std::pair<int, double>> stroke_lives(pugi::xml_node node, int frames) {
     std::vector<std::pair<int, double>> out;
-    for (pugi::xml_node c : node.children()) {
-        if (std::strcmp(c.name(), "g") == 0) {
-            const bool outline = std::strcmp(c.attribute("stroke").value(), "none") == 0 && c.attribute("fill") &&
-                                 std::strcmp(c.attribute("fill").value(), "none") != 0;
-            if (outline) continue;
-            for (const auto& life : stroke_lives(c, frames, in_fills || std::strcmp(c.attribute("id").value(), "fills") == 0))
-                out.push_back(life);
-        } else if (std::strcmp(c.name(), "path") == 0 && !in_fills) {
-            std::pair<int, double> life{0, 0.0};
-            for (int f = 0; f < frames; ++f) {
-                if (!test::svg::shown_at(c, (f + 0.5) / frames)) continue;
-                ++life.first;
-                life.second += test::svg::length_of(test::svg::flatten(test::svg::shape_at(c, (f + 0.01) / frames)));
-            }
-            if (life.first > 0) out.push_back(life);
+    test::svg::for_each_stroke_path(node, [&](pugi::xml_node path) {
+        std::pair<int, double> life{0, 0.0};
+        for (int f = 0; f < frames; ++f) {
+            if (!test::svg::shown_at(path, (f + 0.5) / frames)) continue;
+            ++life.first;
+            life.second += test::svg::length_of(test::svg::flatten(test::svg::shape_at(path, (f + 0.01) / frames)));
         }
-    }
+        if (life.first > 0) out.push_back(life);
+    });
     return out;
 }
 

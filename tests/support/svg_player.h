@@ -207,18 +207,28 @@ inline std::vector<Token> shape_at(pugi::xml_node path, double t) {
     return tokenize(path.attribute("d").value());
 }
 
-/// Every stroke path of an animated SVG (a path outside <g id="fills">,
-/// drawn by its stroke): the player's view of it at time @p t, flattened.
-inline void strokes_at(pugi::xml_node node, double t, std::vector<std::vector<Pt>>& out, bool in_fills = false) {
+/// Calls @p fn(path) for every stroke path under @p node: a path outside
+/// <g id="fills"> and outside a group of filled outlines (stroke="none"
+/// with a fill: lines of varying width), drawn by its stroke.
+template <class Fn> void for_each_stroke_path(pugi::xml_node node, Fn&& fn, bool in_fills = false) {
     for (pugi::xml_node c : node.children()) {
         if (std::strcmp(c.name(), "g") == 0) {
             const bool outline = std::strcmp(c.attribute("stroke").value(), "none") == 0 && c.attribute("fill") &&
                                  std::strcmp(c.attribute("fill").value(), "none") != 0;
-            if (!outline) strokes_at(c, t, out, in_fills || std::strcmp(c.attribute("id").value(), "fills") == 0);
-        } else if (std::strcmp(c.name(), "path") == 0 && !in_fills && shown_at(c, t)) {
-            for (auto& sub : flatten(shape_at(c, t))) out.push_back(std::move(sub));
+            if (!outline) for_each_stroke_path(c, fn, in_fills || std::strcmp(c.attribute("id").value(), "fills") == 0);
+        } else if (std::strcmp(c.name(), "path") == 0 && !in_fills) {
+            fn(c);
         }
     }
+}
+
+/// Every stroke path of an animated SVG (for_each_stroke_path): the
+/// player's view of it at time @p t, flattened.
+inline void strokes_at(pugi::xml_node node, double t, std::vector<std::vector<Pt>>& out) {
+    for_each_stroke_path(node, [&](pugi::xml_node path) {
+        if (!shown_at(path, t)) return;
+        for (auto& sub : flatten(shape_at(path, t))) out.push_back(std::move(sub));
+    });
 }
 
 } // namespace snaxels::test::svg
