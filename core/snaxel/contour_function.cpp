@@ -208,7 +208,7 @@ double ContourFunction::first_zero(const glm::dvec3& na, const glm::dvec3& nb, c
 
 void ContourFunction::evaluate_vertices(const MeshTopology& topology, VertexData<double>& out) const {
     if (spec_.kind == ContourKind::Suggestive) {
-        // kappa_r is a curvature (its scale the mesh's), not a cosine: its
+        // kappa_r sin^2(theta) is a curvature (its scale the mesh's), not a cosine: its
         // zeros are its own, and a flat patch's exact 0 is no sign change
         // (suggestive_margins).
         suggestive_function(topology, *require_curvature(topology), camera_, out);

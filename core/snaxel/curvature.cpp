@@ -784,12 +784,12 @@ void suggestive_function(const MeshTopology& topo, const CurvatureField& field, 
     VertexData<std::uint8_t> facing(topo.n_vertices());
     parallel_for(topo.vertices(), [&](VertexId v) { facing[v] = glm::dot(to_viewer(P[v]), N[v]) > 0.0; }, 4096);
     parallel_for(topo.vertices(), [&](VertexId v) {
-        // kappa_r itself on the side seen and one ring past it (the last
-        // ring of faces before the contour, where a suggestive contour meets
-        // the silhouette it continues); the stand-in beyond.
+        // kappa_r sin^2(theta) on the side seen and one ring past it (the
+        // last ring of faces before the contour, where a suggestive contour
+        // meets the silhouette it continues); the stand-in beyond.
         bool near = facing[v];
         for (const VertexId w : topo.neighbours(v)) near = near || facing[w];
-        out[v] = near ? radial_at(field, v, to_viewer(P[v])) : away;
+        out[v] = near ? field.form(v, to_viewer(P[v])) : away;
     }, 4096);
 }
 

@@ -54,6 +54,14 @@ struct CurvatureField {
         const double len2 = c * c + s * s;
         return len2 > 0.0 ? (k1[v] * c * c + k2[v] * s * s) / len2 : 0.0;
     }
+    /// The second fundamental form of vertex @p v on @p w's projection onto
+    /// the tangent plane: normal_curvature times the projection's squared
+    /// length, with no division (so it falls smoothly to 0 where the
+    /// projection vanishes). For a unit view vector, kappa_r sin^2(theta).
+    double form(VertexId v, const glm::dvec3& w) const {
+        const double c = glm::dot(w, dir1[v]), s = glm::dot(w, dir2[v]);
+        return k1[v] * c * c + k2[v] * s * s;
+    }
 };
 
 /// The curvature of @p topology in its pose (positions and vertex normals),
@@ -105,8 +113,13 @@ std::shared_ptr<const CurvatureField> require_curvature(const MeshTopology& topo
 /// view is along the normal (w vanishes).
 VertexData<double> radial_curvature(const MeshTopology& topology, const CurvatureField& field, const Camera& camera);
 
-/// The function whose zeros the suggestive kind tracks: kappa_r
-/// (radial_curvature) at the vertices facing the viewer and at those facing
+/// The function whose zeros the suggestive kind tracks: kappa_r sin^2(theta)
+/// (radial_curvature times the squared sine of the view's angle to the
+/// normal, CurvatureField::form of the unit view; theta's sine is positive,
+/// so its zeros and sign are kappa_r's, and it is what rtsc interpolates
+/// along an edge: where theta differs much between an edge's ends, the zero
+/// lies where rtsc finds it, not where kappa_r's own interpolation would put
+/// it) at the vertices facing the viewer and at those facing
 /// away next to one (the last ring of faces before the contour, where a
 /// suggestive contour runs on to meet the silhouette), and a positive value
 /// (the typical curvature) at the others. Suggestive contours lie on the

@@ -5,7 +5,7 @@
 // - Curvature (Rusinkiewicz 2004): each face's second fundamental form is
 //   fitted by least squares to the change of the vertex normals along its
 //   edges; a vertex takes the mean of its faces' forms weighted by its
-//   mixed Voronoi share of each face, each form held as a 3x3 tensor and
+//   share of each face (rtsc's Voronoi corner areas), each form held as a 3x3 tensor and
 //   rotated from the face's plane into the vertex's (the smallest rotation
 //   between the normals). Optional smoothing passes replace each vertex's
 //   form by the area-weighted mean of its own and its neighbours', rotated
@@ -47,7 +47,7 @@ struct RtscCurvature {
     std::vector<glm::dvec3> u, v;        ///< each vertex's tangent frame (u, v, its normal right-handed)
     std::vector<std::array<double, 3>> ii; ///< the second fundamental form [a b; b c] in (u, v)
     std::vector<std::array<double, 4>> c;  ///< the curvature derivative C(uuu), C(uuv), C(uvv), C(vvv)
-    std::vector<double> area;              ///< mixed Voronoi area
+    std::vector<double> area;              ///< Voronoi area (rtsc's corner shares)
 };
 
 namespace rtsc_detail {
@@ -118,18 +118,33 @@ template <std::size_t N> bool solve(std::array<std::array<double, N>, N> a, std:
     return true;
 }
 
-/// Each corner's mixed Voronoi area of a triangle (Meyer et al. 2003).
+/// Each corner's share of a triangle's area, as rtsc (trimesh2's point
+/// areas) shares it: the Voronoi cells of the corners where no angle is
+/// obtuse; where one is, each of the other two corners gets the right
+/// triangle between it, the middle of its edge to the obtuse corner and
+/// where that edge's perpendicular bisector meets the long edge (the
+/// square of the edge's length times the tangent of the corner's angle,
+/// over 8), and the obtuse corner the rest. (Not Meyer et al.'s halves and
+/// quarters: on a CAD file's slivers the two differ by a factor of six.)
 inline std::array<double, 3> voronoi(const glm::dvec3& p0, const glm::dvec3& p1, const glm::dvec3& p2) {
     const std::array<glm::dvec3, 3> p{p0, p1, p2};
     const double area = 0.5 * glm::length(glm::cross(p1 - p0, p2 - p0));
     std::array<double, 3> out{};
     if (!(area > 0.0)) return out;
-    for (int i = 0; i < 3; ++i) {
+    auto angle_at = [&](int i) {
         const glm::dvec3 a = p[(i + 1) % 3] - p[i], b = p[(i + 2) % 3] - p[i];
-        if (glm::dot(a, b) < 0.0) { // obtuse at i
-            for (int j = 0; j < 3; ++j) out[j] = j == i ? 0.5 * area : 0.25 * area;
-            return out;
+        return std::atan2(glm::length(glm::cross(a, b)), glm::dot(a, b));
+    };
+    for (int i = 0; i < 3; ++i) {
+        if (!(angle_at(i) >= 0.5 * 3.14159265358979323846)) continue; // obtuse (or right) at i
+        double rest = area;
+        for (const int j : {(i + 1) % 3, (i + 2) % 3}) {
+            const double l = glm::length(p[j] - p[i]);
+            out[j] = l * l * std::tan(angle_at(j)) / 8.0;
+            rest -= out[j];
         }
+        out[i] = rest;
+        return out;
     }
     auto cot = [](const glm::dvec3& a, const glm::dvec3& b) { return glm::dot(a, b) / glm::length(glm::cross(a, b)); };
     for (int i = 0; i < 3; ++i) {

@@ -159,8 +159,9 @@ TEST(Suggestive, TorusZerosMatchTheAnalyticRadialCurvature) {
 
 namespace {
 
-/// kappa_r at every vertex from the pose's curvature field, computed here:
-/// k1 cos^2 + k2 sin^2 of the angle between the projected view and dir1;
+/// kappa_r sin^2(theta) at every vertex from the pose's curvature field,
+/// computed here: k1 c^2 + k2 s^2 with c and s the components along dir1
+/// and dir2 of the unit view's projection onto the tangent plane;
 /// positive at a vertex facing away whose neighbours all face away too
 /// (the tracked function's convention: kappa_r is kept one ring past the
 /// side seen).
@@ -180,7 +181,8 @@ VertexData<double> oracle_kr(const MeshTopology& topo, const CurvatureField& fie
         }
         const glm::dvec3 w = view - glm::dot(view, n) * n;
         const double c = glm::dot(w, field.dir1[v]), s = glm::dot(w, field.dir2[v]);
-        kr[v] = c * c + s * s > 0.0 ? (field.k1[v] * c * c + field.k2[v] * s * s) / (c * c + s * s) : 0.0;
+        // kappa_r sin^2(theta), as rtsc interpolates it: |w|^2 = sin^2(theta).
+        kr[v] = field.k1[v] * c * c + field.k2[v] * s * s;
     }
     return kr;
 }
@@ -191,8 +193,8 @@ class SuggestiveTurntable : public ::testing::TestWithParam<std::string> {};
 
 // Done-when 3: through a 120-frame turntable the tracked suggestive contour
 // is, at every frame, the from-scratch one: the same snaxels on the same
-// edges at the same points (each the zero of kappa_r, linear along its
-// edge, on exactly the edges where the oracle's kappa_r changes sign), the
+// edges at the same points (each the zero of kappa_r sin^2(theta), linear
+// along its edge, on exactly the edges where the oracle's changes sign), the
 // same parts drawn, each passing its test by as much (what a faded stroke
 // follows); and the tracker keeps identities across frames. For both tests.
 TEST_P(SuggestiveTurntable, TrackedEqualsFromScratchAtEveryFrame) {
