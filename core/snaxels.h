@@ -35,6 +35,7 @@
 #include "snaxels/planarmap/region.h"
 
 #include "snaxels/style/style.h"
+#include "snaxels/style/style_edit.h"
 
 #include "snaxels/animation/frame_driver.h"
 #include "snaxels/animation/pipeline.h"

@@ -1,33 +1,53 @@
 #include "ui/document.h"
 
+#include <algorithm>
+
 #include <QUndoStack>
 
+#include "snaxels/mesh/parts.h"
+#include "snaxels/style/style_edit.h"
 #include "ui/undo.h"
 
 namespace snaxels::ui {
 
 Document::Document(QString style_text, QObject* parent)
     : QObject(parent), undo_(new QUndoStack(this)), defaultStyle_(style_text), style_(std::move(style_text)) {
-    connect(undo_, &QUndoStack::cleanChanged, this, [this] { emit modifiedChanged(isModified()); });
+    connect(undo_, &QUndoStack::cleanChanged, this, &Document::updateModified);
+    connect(undo_, &QUndoStack::indexChanged, this, &Document::updateModified);
     try {
         parsed_ = parse_style(style_.toStdString(), "style", nullptr);
     } catch (const StyleError&) {
         parsed_ = default_style();
     }
     historyStart_ = edited();
+    saved_ = historyStart_;
 }
 
 AnimationJob Document::animationJob() const {
     return make_animation_job(parsed_, animation_, orbit_base_camera(view_), light_);
 }
 
-bool Document::isModified() const { return meshChanged_ || !undo_->isClean(); }
+bool Document::isModified() const {
+    // Away from the stack's clean index, the edited parts may still be
+    // what the file holds (undone to the saved text by other steps, typed
+    // back by hand): that is no change to save.
+    return meshChanged_ || (!undo_->isClean() && edited() != saved_);
+}
+
+void Document::updateModified() {
+    const bool modified = isModified();
+    if (modified == lastModified_) return;
+    lastModified_ = modified;
+    emit modifiedChanged(modified);
+}
 
 template <class T>
 void Document::edit(const T& now, const T& value, const QString& text, int id, void (Document::*assign)(const T&),
                     bool mergeable) {
     if (value == now) return;
-    // Pushing the step runs its redo, which makes the change.
+    // Pushing the step runs its redo, which makes the change. (QUndoStack
+    // merges no step into the one at its clean index: undoing the first
+    // step after a save comes back to what was saved.)
     undo_->push(new SetValueCommand<T>(text, id, now, value, this, assign, mergeable));
 }
 
@@ -82,9 +102,8 @@ void Document::assignAnimation(const AnimationSpec& animation) {
 }
 
 void Document::setMeshChanged(bool changed) {
-    const bool was = isModified();
     meshChanged_ = changed;
-    if (isModified() != was) emit modifiedChanged(isModified());
+    updateModified();
 }
 
 void Document::setFrame(int frame) {
@@ -104,6 +123,14 @@ void Document::startNew(const QString& spec, std::shared_ptr<const LoadedMesh> m
                         const AnimationSpec& animation) {
     meshSpec_ = spec;
     mesh_ = std::move(mesh);
+    // The last scene's objects, named in the style, are not this one's.
+    const auto kept = without_absent_objects(style_.toStdString(), [this](const std::string& name) {
+        if (!mesh_) return false;
+        return std::any_of(mesh_->objects.begin(), mesh_->objects.end(), [&](const SceneObject& o) {
+            return glob_match(name, o.name) || glob_match(name, o.path);
+        });
+    });
+    if (kept && QString::fromStdString(*kept) != style_) assignStyle(QString::fromStdString(*kept));
     emit meshChanged();
     resetView(view);
     resetAnimation(animation);
@@ -114,22 +141,28 @@ void Document::startNew(const QString& spec, std::shared_ptr<const LoadedMesh> m
         projectPath_.clear();
         emit projectPathChanged(projectPath_);
     }
+    saved_ = edited();
     setMeshChanged(false);
-    emit modifiedChanged(isModified());
+    lastModified_ = isModified();
+    emit modifiedChanged(lastModified_);
 }
 
+// A change that is not an edit is no difference from the file either.
 void Document::resetStyleText(const QString& text) {
     if (text != style_) assignStyle(text);
+    saved_.style = style_;
     changedOutsideHistory();
 }
 
 void Document::resetView(const OrbitView& view) {
     if (view != view_) assignView(view);
+    saved_.view = view_;
     changedOutsideHistory();
 }
 
 void Document::resetAnimation(const AnimationSpec& animation) {
     if (animation != animation_) assignAnimation(animation);
+    saved_.animation = animation_;
     changedOutsideHistory();
 }
 
@@ -169,8 +202,10 @@ void Document::save(const QString& path) {
     write_project(path.toStdString(), project(path));
     const bool moved = path != projectPath_;
     projectPath_ = path;
+    saved_ = edited();
     undo_->setClean();
     setMeshChanged(false);
+    updateModified();
     if (moved) emit projectPathChanged(projectPath_);
 }
 
@@ -189,10 +224,12 @@ void Document::load(const Project& project, const QString& path, const QString& 
     assignLight(project.light);
     assignView(project.view);
     startHistory();
+    saved_ = edited();
     projectPath_ = path;
     emit projectPathChanged(projectPath_);
     setMeshChanged(false);
-    emit modifiedChanged(isModified());
+    lastModified_ = isModified();
+    emit modifiedChanged(lastModified_);
 }
 
 } // namespace snaxels::ui

@@ -67,7 +67,8 @@ class Document : public QObject {
     AnimationJob animationJob() const;
     /// Empty until saved or opened.
     const QString& projectPath() const { return projectPath_; }
-    /// Unsaved changes: an edit since the last save or open, or a new mesh.
+    /// Unsaved changes: an edit since the last save or open that left the
+    /// edited parts other than the file's, or a new mesh.
     bool isModified() const;
 
     // Edits: each is one undo step (quick successions of one kind merge into
@@ -139,6 +140,8 @@ class Document : public QObject {
     void assignLight(const std::optional<Light>& light);
     void assignAnimation(const AnimationSpec& animation);
     void setMeshChanged(bool changed);
+    /// Emits modifiedChanged when isModified() is no longer what it last said.
+    void updateModified();
     /// Clears the undo history, which now begins at the present state.
     void startHistory();
     /// A change that is not an edit: it moves the history's start while
@@ -158,6 +161,10 @@ class Document : public QObject {
     QString projectPath_;
     bool meshChanged_ = false; ///< a new mesh, or a difference no undo step holds
     Edited historyStart_;
+    /// The edited parts as the file holds them (or as a new document
+    /// began): undone or typed back to these, nothing is left to save.
+    Edited saved_;
+    bool lastModified_ = false; ///< what modifiedChanged last said
 };
 
 } // namespace snaxels::ui

@@ -1,5 +1,6 @@
 #include "ui/meshview.h"
 
+#include <utility>
 #include <algorithm>
 #include <atomic>
 #include <unordered_map>
@@ -581,20 +582,25 @@ void MeshView::drawContours(const glm::mat4& mvp, bool stale) {
 
 void MeshView::mousePressEvent(QMouseEvent* event) {
     lastPos_ = event->position().toPoint();
+    pressed_ = true;
     dragged_ = false;
+    orbitAtPress_ = orbit_;
     draggingLight_ = (event->button() == Qt::LeftButton) && (event->modifiers() & Qt::ShiftModifier);
     if (draggingLight_) globe_->setActive(true); // the light's globe brightens while it turns
 }
 
 void MeshView::mouseReleaseEvent(QMouseEvent* event) {
-    if (!dragged_) {
+    const bool pressed = std::exchange(pressed_, false);
+    if (!pressed || !dragged_) {
         draggingLight_ = false;
         globe_->setActive(false);
         return;
     }
     dragged_ = false;
+    // An edit only where the drag changed something: through a file's
+    // camera the orbit stays as it was.
     if (draggingLight_) emit lightEdited();
-    else emit viewEdited();
+    else if (!(orbit_ == orbitAtPress_)) emit viewEdited();
     draggingLight_ = false;
     globe_->setActive(false);
     event->accept();
@@ -604,7 +610,7 @@ void MeshView::mouseMoveEvent(QMouseEvent* event) {
     const QPoint pos = event->position().toPoint();
     const QPoint d = pos - lastPos_;
     lastPos_ = pos;
-    if (d.isNull()) return;
+    if (d.isNull() || !pressed_) return; // a hover, or a drag that began elsewhere
     dragged_ = true;
     if (draggingLight_ && (event->buttons() & Qt::LeftButton)) {
         // Screen-space rotation of the light: right turns it about the

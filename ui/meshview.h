@@ -160,7 +160,11 @@ class MeshView : public QOpenGLWidget, protected QOpenGLFunctions_3_3_Core {
     OrbitView orbit_;
     std::optional<Camera> fileCamera_;
     QPoint lastPos_;
+    /// A press this view had, not released yet: only its drag can be an
+    /// edit (a release whose press went elsewhere, a menu's, is none).
+    bool pressed_ = false;
     bool dragged_ = false, draggingLight_ = false;
+    OrbitView orbitAtPress_; ///< a drag is a camera edit only if it moved the orbit
 
     RegionShading shading_;
     std::vector<ContourStrip> strips_;

@@ -8,7 +8,6 @@
 #include <QHeaderView>
 #include <QPainter>
 #include <QPixmap>
-#include <QRegularExpression>
 #include <QTreeWidget>
 #include <QVBoxLayout>
 
@@ -27,8 +26,6 @@ bool matches_any(const std::vector<std::string>& patterns, const std::string& na
                        [&](const std::string& p) { return glob_match(p, name) || glob_match(p, path); });
 }
 
-QString xml_escaped(const QString& text) { return text.toHtmlEscaped(); }
-
 QIcon swatch(const glm::dvec4& colour) {
     QPixmap pixmap(14, 14);
     pixmap.fill(Qt::transparent);
@@ -40,22 +37,15 @@ QIcon swatch(const glm::dvec4& colour) {
     return QIcon(pixmap);
 }
 
+/// The style text a panel edit starts from: an empty text is the built-in
+/// style, written out so that an element can join it.
+std::string editable(const QString& text) {
+    return text.trimmed().isEmpty() ? std::string("<style>\n  <contour kind=\"visual\"/>\n</style>\n") : text.toStdString();
+}
+
 const QStringList& state_names() {
     static const QStringList names{QObject::tr("Drawn"), QObject::tr("Occluder only"), QObject::tr("Hidden")};
     return names;
-}
-
-/// @p text with @p line (an element and its newline) before </style>, on
-/// a line of its own; the built-in style and the element where the text
-/// has no </style>.
-QString with_element(QString text, const QString& line) {
-    const qsizetype end = text.lastIndexOf("</style>");
-    if (end < 0) return "<style>\n  <contour kind=\"visual\"/>\n" + line + "</style>\n";
-    // At the start of the closing tag's line, so the element gets a line of its own.
-    qsizetype at = end;
-    while (at > 0 && (text[at - 1] == ' ' || text[at - 1] == '\t')) --at;
-    if (at > 0 && text[at - 1] != '\n') return text.insert(end, "\n" + line);
-    return text.insert(at, line);
 }
 
 } // namespace
@@ -64,26 +54,6 @@ ObjectState object_state(const Style& style, const std::string& name, const std:
     if (matches_any(style.hidden_objects, name, path)) return ObjectState::Hidden;
     if (matches_any(style.occluders, name, path)) return ObjectState::Occluder;
     return ObjectState::Drawn;
-}
-
-QString with_object_state(const QString& text, const QString& name, ObjectState state) {
-    QString out = text;
-    // Elements naming exactly this object, and the line they stand on.
-    const QRegularExpression element("[ \\t]*<object\\s+name\\s*=\\s*\"" + QRegularExpression::escape(xml_escaped(name)) +
-                                     "\"[^>]*/>[ \\t]*\\n?");
-    out.remove(element);
-    if (state == ObjectState::Drawn) return out;
-    return with_element(out, "  <object name=\"" + xml_escaped(name) + "\" " +
-                                 (state == ObjectState::Hidden ? "hide=\"true\"" : "draw=\"false\"") + "/>\n");
-}
-
-QString with_intersection_lines(const QString& text, const QString& name, bool on) {
-    QString out = text;
-    const QRegularExpression element("[ \\t]*<contour\\s+kind\\s*=\\s*\"intersection\"\\s+object\\s*=\\s*\"" +
-                                     QRegularExpression::escape(xml_escaped(name)) + "\"\\s*/>[ \\t]*\\n?");
-    out.remove(element);
-    if (!on) return out;
-    return with_element(out, "  <contour kind=\"intersection\" object=\"" + xml_escaped(name) + "\"/>\n");
 }
 
 bool draws_intersections(const Style& style, const FaceParts& parts, std::uint32_t index) {
@@ -116,7 +86,13 @@ ObjectsPanel::ObjectsPanel(QWidget* parent) : QWidget(parent), tree_(new QTreeWi
         const SceneObject& obj = mesh_->objects[o];
         const bool on = item->checkState(4) == Qt::Checked;
         const QString name = QString::fromStdString(obj.name);
-        emit styleEdited(with_intersection_lines(text_, name, on),
+        const auto text = with_intersection_lines(editable(text_), obj.name, on);
+        if (!text) {
+            emit notice(tr("The style has an error: fix it in the Style tab first"));
+            refreshStyle();
+            return;
+        }
+        emit styleEdited(QString::fromStdString(*text),
                          on ? tr("Draw %1's Intersection Lines").arg(name) : tr("Leave Out %1's Intersection Lines").arg(name));
         // A line set that takes it among others (every object's) may still draw them.
         if (!on && draws_intersections(style_, *parts_, o)) {
@@ -183,11 +159,16 @@ void ObjectsPanel::rebuild() {
             const SceneObject& obj = mesh_->objects[o];
             const auto wanted = ObjectState(index);
             const QString name = QString::fromStdString(obj.name);
-            const QString text = with_object_state(text_, name, wanted);
+            const auto text = with_object_drawing(editable(text_), obj.name, wanted);
+            if (!text) {
+                emit notice(tr("The style has an error: fix it in the Style tab first"));
+                refreshStyle();
+                return;
+            }
             const QString step = wanted == ObjectState::Drawn      ? tr("Draw %1").arg(name)
                                  : wanted == ObjectState::Occluder ? tr("Make %1 an Occluder").arg(name)
                                                                    : tr("Hide %1").arg(name);
-            emit styleEdited(text, step);
+            emit styleEdited(QString::fromStdString(*text), step);
             // A pattern of the style that names it among others may still decide.
             if (object_state(style_, obj.name, obj.path) != wanted) {
                 emit notice(tr("%1 is still %2: a pattern in the style sets it")

@@ -17,31 +17,21 @@
 #include "snaxels/mesh/build.h"
 #include "snaxels/mesh/parts.h"
 #include "snaxels/style/style.h"
+#include "snaxels/style/style_edit.h"
 
 class QTreeWidget;
 class QTreeWidgetItem;
 
 namespace snaxels::ui {
 
-/// How the style draws an object.
-enum class ObjectState { Drawn, Occluder, Hidden };
+/// How the style draws an object (core's ObjectDrawing: the style's edits
+/// live in snaxels/style/style_edit.h).
+using ObjectState = ObjectDrawing;
 
 /// @p style's state for an object known by @p name and @p path: hidden
 /// when a hide="true" pattern matches it, else an occluder when a
 /// draw="false" pattern does, else drawn.
 ObjectState object_state(const Style& style, const std::string& name, const std::string& path);
-
-/// @p text with the <object> element of exactly @p name set to @p state:
-/// an element naming it exactly is replaced (or removed, for Drawn); a new
-/// one goes before </style>. Patterns that match it among others are left
-/// as they are.
-QString with_object_state(const QString& text, const QString& name, ObjectState state);
-
-/// @p text with the line set that draws @p name's intersection lines
-/// (`<contour kind="intersection" object="NAME"/>`, where it meets anything)
-/// added before </style> when @p on, or every such element naming exactly
-/// it removed when not.
-QString with_intersection_lines(const QString& text, const QString& name, bool on);
 
 /// Whether a line set of @p style draws intersection lines on object
 /// @p index of @p parts.

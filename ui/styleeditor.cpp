@@ -20,6 +20,8 @@
 
 #include <functional>
 
+#include "snaxels/style/style_edit.h"
+
 namespace snaxels::ui {
 namespace {
 
@@ -427,31 +429,17 @@ bool StyleEditor::pickColour(int position) {
     return true;
 }
 
-std::optional<std::pair<std::pair<int, int>, QString>> sharp_angle_edit(const QString& text, const QString& value) {
-    const QString attribute = QStringLiteral("sharp-angle=\"%1\"").arg(value);
-    static const QRegularExpression surface(QStringLiteral("<surface\\b[^>]*>"));
-    if (const QRegularExpressionMatch m = surface.match(text); m.hasMatch()) {
-        static const QRegularExpression existing(QStringLiteral("sharp-angle\\s*=\\s*(\"[^\"]*\"|'[^']*')"));
-        const QString element = m.captured();
-        if (const QRegularExpressionMatch a = existing.match(element); a.hasMatch())
-            return std::pair{std::pair{int(m.capturedStart() + a.capturedStart()), int(a.capturedLength())}, attribute};
-        const int name_end = int(m.capturedStart() + QStringLiteral("<surface").size());
-        return std::pair{std::pair{name_end, 0}, " " + attribute};
-    }
-    static const QRegularExpression root(QStringLiteral("<style\\b[^>]*>"));
-    const QRegularExpressionMatch r = root.match(text);
-    if (!r.hasMatch() || r.captured().endsWith("/>")) return std::nullopt;
-    return std::pair{std::pair{int(r.capturedEnd()), 0}, "\n  <surface " + attribute + "/>"};
-}
-
 void StyleEditor::setSharpAngle(const QString& value) {
-    const auto edit = sharp_angle_edit(text(), value);
+    const std::string now = text().toStdString();
+    const auto edit = sharp_angle_splice(now, value.toStdString());
     if (!edit) return;
+    // Bytes of UTF-8 to the editor's characters (UTF-16).
+    auto chars = [&](std::size_t bytes) { return int(QString::fromUtf8(now.data(), qsizetype(bytes)).size()); };
     QTextCursor cursor(edit_->document());
     cursor.beginEditBlock(); // one undo step
-    cursor.setPosition(edit->first.first);
-    cursor.setPosition(edit->first.first + edit->first.second, QTextCursor::KeepAnchor);
-    cursor.insertText(edit->second);
+    cursor.setPosition(chars(edit->at));
+    cursor.setPosition(chars(edit->at + edit->length), QTextCursor::KeepAnchor);
+    cursor.insertText(QString::fromStdString(edit->text));
     cursor.endEditBlock();
     debounce_.stop();
     apply(); // at once: one edit of the document
@@ -513,3 +501,4 @@ void StyleEditor::apply() {
 }
 
 } // namespace snaxels::ui
+

@@ -96,12 +96,6 @@ class StyleEditor : public QWidget {
 /// of @p text: where its "#" is and its length, or nothing.
 std::optional<std::pair<int, int>> colour_value_at(const QString& text, int position);
 
-/// @p text with its <surface> element's sharp-angle set to @p value (the
-/// element added after the root's opening tag when there is none), as the
-/// range of the text to replace and what to put there; nothing when @p
-/// text has no root element.
-std::optional<std::pair<std::pair<int, int>, QString>> sharp_angle_edit(const QString& text, const QString& value);
-
 /// The style text the application starts with: the visual contour in ink
 /// with dashed hidden lines, and the shadow line.
 QString initial_style_text();

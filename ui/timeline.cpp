@@ -57,6 +57,8 @@ Timeline::Timeline(QWidget* parent)
       everyFrame_(new QCheckBox(tr("Every frame"), this)) {
     setClips({});
     camera_->setObjectName("cameraChoice");
+    source_->setObjectName("source");
+    degrees_->setObjectName("degreesPerFrame");
     camera_->addItem(tr("View camera"), QString());
     camera_->setToolTip(tr("The camera the frames are seen through: the view's (orbit with the mouse), or one of "
                            "the file's, with its field of view and aspect (a camera the file animates moves with "

@@ -1204,6 +1204,165 @@ class TestMainWindow : public QObject {
         QVERIFY(window.currentSvg().contains("height=\"800\""));
     }
 
+    // Looking through a file's camera, a left-drag moves nothing: it is no
+    // edit (no "Move Camera" step, the project stays saved). Nor is a
+    // release over the view whose press it never had (a menu item chosen
+    // over it), looking through the file's camera or orbiting.
+    void aDragThatMovesNothingIsNoEdit() {
+        QTemporaryDir dir;
+        MainWindow window;
+        QVERIFY(showWithMesh(window, QString(SNAXELS_TEST_ASSETS) + "/cameras/blender-shot.gltf"));
+        auto* cameras = window.timeline()->findChild<QComboBox*>("cameraChoice");
+        QComboBox* source = window.timeline()->findChild<QComboBox*>("source");
+        QVERIFY(cameras && source);
+        QSignalSpy contours(&window, &MainWindow::contoursUpdated);
+        // Through the file's still camera, through its moving one, orbiting.
+        for (const int mode : {0, 1, 2}) {
+            contours.clear();
+            if (mode == 0) cameras->setCurrentIndex(cameras->findText("Camera: ShotCam"));
+            if (mode == 1) source->setCurrentIndex(source->findText("Camera move: ShotCam"));
+            if (mode == 2) {
+                source->setCurrentIndex(source->findText("Turntable"));
+                cameras->setCurrentIndex(0);
+            }
+            QVERIFY(contours.wait(30000));
+            QTest::qWait(100);
+            QCOMPARE(window.meshView()->looksThroughFileCamera(), mode < 2);
+            QVERIFY(window.saveProject(dir.filePath("shot.snaxels")));
+            QVERIFY(!window.isModified());
+            const int steps = window.undoStack()->count();
+            const snaxels::Camera seen = window.meshView()->camera();
+            if (mode < 2) {
+                QTest::mousePress(window.meshView(), Qt::LeftButton, {}, QPoint(300, 300));
+                QTest::mouseMove(window.meshView(), QPoint(360, 320));
+                QTest::mouseRelease(window.meshView(), Qt::LeftButton, {}, QPoint(360, 320));
+                QVERIFY(window.meshView()->camera() == seen);
+                QVERIFY(window.statusBar()->currentMessage().contains("camera"));
+            }
+            QCOMPARE(window.undoStack()->count(), steps);
+            // A menu over the view closed by a click on it: its press went to
+            // the menu, the moves and the release (the button held) come here.
+            for (const QPoint at : {QPoint(200, 200), QPoint(240, 230), QPoint(290, 250)}) {
+                QMouseEvent move(QEvent::MouseMove, at, window.meshView()->mapToGlobal(at), Qt::NoButton, Qt::LeftButton,
+                                 Qt::NoModifier);
+                QApplication::sendEvent(window.meshView(), &move);
+            }
+            QMouseEvent release(QEvent::MouseButtonRelease, QPoint(290, 250), window.meshView()->mapToGlobal(QPoint(290, 250)),
+                                Qt::LeftButton, Qt::NoButton, Qt::NoModifier);
+            QApplication::sendEvent(window.meshView(), &release);
+            QTest::qWait(50);
+            QVERIFY(window.meshView()->camera() == seen);
+            QCOMPARE(window.undoStack()->count(), steps);
+            QVERIFY2(!window.isModified(), qPrintable(QString("mode %1").arg(mode)));
+        }
+    }
+
+    // A turntable's degrees per frame, typed in, is saved with the project
+    // and shown again when it is reopened.
+    void degreesPerFrameSurviveAReopen() {
+        QTemporaryDir dir;
+        MainWindow window;
+        QVERIFY(showWithMesh(window, QString(SNAXELS_TEST_ASSETS) + "/spot.obj"));
+        auto* degrees = window.timeline()->findChild<QDoubleSpinBox*>("degreesPerFrame");
+        QVERIFY(degrees && degrees->isEnabled());
+        for (const double value : {2.0, 3.5, 1.0}) {
+            degrees->setFocus();
+            degrees->selectAll();
+            QTest::keyClicks(degrees, QString::number(value, 'f', 2));
+            QTest::keyClick(degrees, Qt::Key_Return);
+            QCOMPARE(degrees->value(), value);
+            QCOMPARE(window.document()->animation().degrees_per_frame, value);
+            MainWindow reopened;
+            QVERIFY(saveAndReopen(window, dir.filePath("turn.snaxels"), reopened));
+            auto* shown = reopened.timeline()->findChild<QDoubleSpinBox*>("degreesPerFrame");
+            QCOMPARE(shown->value(), value);
+            QCOMPARE(reopened.timeline()->spec().degrees_per_frame, value);
+            QCOMPARE(reopened.document()->animation().degrees_per_frame, value);
+            QVERIFY(!reopened.isModified());
+        }
+        // Reopened in the same window, over another value.
+        const QString saved = dir.filePath("turn.snaxels");
+        degrees->setFocus();
+        degrees->selectAll();
+        QTest::keyClicks(degrees, "7.25");
+        QTest::keyClick(degrees, Qt::Key_Return);
+        QCOMPARE(window.document()->animation().degrees_per_frame, 7.25);
+        bool asked = false;
+        answerUnsavedPrompt(QMessageBox::Discard, &asked);
+        QSignalSpy opened(&window, &MainWindow::projectOpened);
+        window.openFile(saved);
+        QVERIFY(opened.wait(60000));
+        QVERIFY(asked);
+        QCOMPARE(degrees->value(), 1.0);
+        QCOMPARE(window.document()->animation().degrees_per_frame, 1.0);
+        QVERIFY(!window.isModified());
+    }
+
+    // Undoing back to the text that was saved leaves the project as saved,
+    // however the edits merged: typing on straight after a save is a step
+    // of its own, and the text being the saved text is what counts.
+    void undoingToTheSavedTextIsUnmodified() {
+        QTemporaryDir dir;
+        MainWindow window;
+        QVERIFY(showWithMesh(window, QString(SNAXELS_TEST_ASSETS) + "/spot.obj"));
+        const QString original = window.styleEditor()->text();
+        const QString a = QString(original).replace("</style>", "<!-- a -->\n</style>");
+        const QString b = QString(a).replace("<!-- a -->", "<!-- ab -->");
+        window.document()->setStyleText(a); // typing, taken up
+        QVERIFY(window.saveProject(dir.filePath("typed.snaxels")));
+        QVERIFY(!window.isModified());
+        window.document()->setStyleText(b); // more typing, at once
+        QVERIFY(window.isModified());
+        QVERIFY(window.isWindowModified());
+        window.undoStack()->undo();
+        QCOMPARE(window.document()->styleText(), a);
+        QVERIFY(!window.isModified());
+        QVERIFY(!window.isWindowModified());
+        window.undoStack()->undo(); // before the save
+        QCOMPARE(window.document()->styleText(), original);
+        QVERIFY(window.isModified());
+        // Typed back by hand, the saved text is the saved text.
+        QTest::qWait(1600);
+        window.document()->setStyleText(a);
+        QVERIFY(!window.isModified());
+        QVERIFY(!window.isWindowModified());
+    }
+
+    // A scene's own objects in the style (hidden, occluders, intersection
+    // lines) leave it when another mesh is opened: nothing is left over to
+    // warn about on every other model. Patterns stay.
+    void anotherMeshDropsTheLastScenesObjects() {
+        MainWindow window;
+        QVERIFY(showWithMesh(window, QString(SNAXELS_TEST_ASSETS) + "/hard/CesiumMilkTruck.gltf"));
+        const auto& objects = window.mesh()->objects;
+        QVERIFY(objects.size() >= 2);
+        const QString part = QString::fromStdString(objects[0].name);
+        auto* combo = window.objectsPanel()->findChild<QComboBox*>("state:" + QString::fromStdString(objects[0].path));
+        QVERIFY(combo);
+        combo->setFocus();
+        QTest::keyClick(combo, Qt::Key_End); // Hidden, chosen as a user does
+        QVERIFY(window.styleEditor()->text().contains("<object name=\"" + part + "\" hide=\"true\"/>"));
+        QString withPattern = window.styleEditor()->text();
+        withPattern.replace("</style>", "  <object name=\"tyre*\" draw=\"false\"/>\n</style>");
+        window.document()->setStyleText(withPattern);
+        QSignalSpy loaded(&window, &MainWindow::meshLoaded);
+        bool asked = false;
+        answerUnsavedPrompt(QMessageBox::Discard, &asked);
+        window.openMesh(QString(SNAXELS_TEST_ASSETS) + "/spot.obj");
+        QVERIFY(asked);
+        QVERIFY(loaded.wait(60000));
+        QTest::qWait(100);
+        const QString text = window.styleEditor()->text();
+        QVERIFY2(!text.contains("name=\"" + part + "\""), qPrintable(text));
+        QVERIFY(text.contains("<object name=\"tyre*\" draw=\"false\"/>"));
+        QCOMPARE(window.document()->styleText(), text);
+        auto* status = window.styleEditor()->findChild<QLabel*>("styleStatus");
+        QVERIFY(status);
+        QVERIFY2(!status->text().contains(part), qPrintable(status->text()));
+        QVERIFY(!window.isModified()); // a new untitled document
+        QCOMPARE(window.undoStack()->count(), 0);
+    }
+
     // The Objects panel lists the truck's parts; hiding one (chosen with the
     // keyboard on its combo, as a user does) is one undo step that changes
     // the SVG pane, Ctrl+Z brings the drawing back byte for byte, selecting

@@ -19,6 +19,7 @@
 #include <QTest>
 
 #include "snaxels/style/style.h"
+#include "snaxels/style/style_edit.h"
 #include "ui/styleeditor.h"
 
 using snaxels::ui::StyleCompletion;
@@ -196,7 +197,7 @@ class TestStyleEditor : public QObject {
         editor.setText("<style>\n  <surface/>\n</style>\n", "test");
         editor.setSharpAngle("45");
         QCOMPARE(editor.text(), QString("<style>\n  <surface sharp-angle=\"45\"/>\n</style>\n"));
-        QVERIFY(!snaxels::ui::sharp_angle_edit("not a style", "30"));
+        QVERIFY(!snaxels::sharp_angle_splice("not a style", "30"));
     }
 
     // Ctrl+click on a colour: a colour dialog, and the colour chosen is

@@ -1,0 +1,56 @@
+#pragma once
+/// Edits of a style's XML text made for the user (the Objects panel's
+/// states, Style > Sharp Edges, a scene replaced), found with pugixml and
+/// spliced into the text: everything else stays as the user wrote it
+/// (comments, spacing, quotes, attribute order), and an element that only
+/// looks like one (inside a comment, say) is never touched.
+///
+/// Each takes the whole text and gives the new text, or std::nullopt when
+/// the text is no style (it does not parse as XML, or its root is not
+/// <style>): there is then no element to edit, and the caller says so.
+
+#include <cstddef>
+#include <functional>
+#include <optional>
+#include <string>
+
+namespace snaxels {
+
+/// How a style draws an object: its <object> element's hide and draw.
+enum class ObjectDrawing { Drawn, Occluder, Hidden };
+
+/// One replacement in a text: @p length bytes at byte @p at become @p text.
+struct TextSplice {
+    std::size_t at = 0, length = 0;
+    std::string text;
+    std::string applied_to(const std::string& original) const {
+        return std::string(original).replace(at, length, text);
+    }
+};
+
+/// @p text with the object named exactly @p name drawn as @p state: the
+/// <object> elements whose name is exactly @p name are removed (with the
+/// line they stand on) and, unless @p state is Drawn, one element setting
+/// it goes last in <style>, on a line of its own. Patterns that match it
+/// among others stay as they are.
+std::optional<std::string> with_object_drawing(const std::string& text, const std::string& name, ObjectDrawing state);
+
+/// @p text with the line set drawing exactly @p name's intersection lines
+/// (<contour kind="intersection" object="NAME"/>) added last in <style>
+/// (@p on) or removed (with the line it stands on).
+std::optional<std::string> with_intersection_lines(const std::string& text, const std::string& name, bool on);
+
+/// The replacement that sets <surface sharp-angle="VALUE">: the attribute's
+/// value replaced where it is given, added to a <surface> without it, or a
+/// <surface> element made first in <style>.
+std::optional<TextSplice> sharp_angle_splice(const std::string& text, const std::string& value);
+
+/// @p text without the elements that name, exactly (a name with no glob
+/// character), an object @p has_object denies: <object name="NAME"> and
+/// <contour kind="intersection" object="NAME"> (with the line each stands
+/// on). What a scene's own parts leave in a style when another scene
+/// replaces it; patterns stay, as they may suit any scene.
+std::optional<std::string> without_absent_objects(const std::string& text,
+                                                  const std::function<bool(const std::string&)>& has_object);
+
+} // namespace snaxels
