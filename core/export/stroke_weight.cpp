@@ -5,7 +5,7 @@
 #include <map>
 
 #include "snaxels/export/detail/polyline.h"
-#include "snaxels/snaxel/curvature.h"
+#include "snaxels/snaxel/suggestive.h"
 #include "snaxels/visibility/visibility.h"
 
 namespace snaxels {

@@ -6,7 +6,7 @@
 #include <limits>
 
 #include "snaxels/error.h"
-#include "snaxels/snaxel/curvature.h"
+#include "snaxels/snaxel/suggestive.h"
 #include "snaxels/snaxel/feature_edges.h"
 
 namespace snaxels {

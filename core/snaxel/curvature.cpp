@@ -13,6 +13,7 @@
 #include <glm/glm.hpp>
 
 #include "snaxels/snaxel/detail/corner_areas.h"
+#include "snaxels/util/detail/lanes.h"
 #include "snaxels/util/detail/parallel.h"
 
 namespace snaxels {
@@ -34,69 +35,16 @@ struct TangentFrame {
     glm::dvec3 u, v, n;
 };
 
-// Vector lanes. The passes below compute several forms, vertices or faces
-// at once, each a lane of a vector of doubles (GCC/Clang vector
-// extensions), with the same operations in the same order as the scalar
-// formulas they stand for, so every lane's result is the scalar one to the
-// bit. Each pass is built twice, two lanes for any x86-64 and four for
-// AVX2 (chosen at run time); neither build fuses a product and a sum (AVX2
-// brings no FMA), so both give the same bits (a test compares them).
-// The vectors are passed only between functions inlined into one build of
-// a pass, never across the ABI GCC and Clang warn about (at the end of the
-// file, so the warning is off for all of it).
-#if defined(__GNUC__)
-#pragma GCC diagnostic ignored "-Wpsabi"
-#endif
+// The curvature passes compute several forms, vertices or faces at once,
+// each a lane of a vector (snaxels/util/detail/lanes.h: each lane's result
+// is the scalar formula's to the bit, in the two-lane and the AVX2 builds).
 namespace lanes {
-
-/// The most lanes any build uses (AVX2's four doubles).
-constexpr std::size_t kMaxWidth = 4;
-
-// (Spelled per width: GCC drops a vector attribute on an alias template.)
-using Doubles2 = double __attribute__((vector_size(2 * sizeof(double))));
-using Doubles4 = double __attribute__((vector_size(4 * sizeof(double))));
-using Mask2 = std::int64_t __attribute__((vector_size(2 * sizeof(double))));
-using Mask4 = std::int64_t __attribute__((vector_size(4 * sizeof(double))));
-template <std::size_t W> struct Vectors;
-template <> struct Vectors<2> {
-    using Doubles = Doubles2;
-    using Mask = Mask2;
-};
-template <> struct Vectors<4> {
-    using Doubles = Doubles4;
-    using Mask = Mask4;
-};
-template <std::size_t W> using Doubles = typename Vectors<W>::Doubles;
-template <std::size_t W> using Mask = typename Vectors<W>::Mask;
+using namespace simd;
 
 /// The projected forms, a lane per form: [k0 k1; k1 k2] in the frame.
 struct Projected {
     alignas(32) double k0[kMaxWidth], k1[kMaxWidth], k2[kMaxWidth];
 };
-
-template <std::size_t W> [[gnu::always_inline]] inline void store(double* p, Doubles<W> d) { std::memcpy(p, &d, sizeof d); }
-/// The vector of value(lane) over the lanes (built in registers: lanes
-/// written to memory one by one and read back as a vector would stall).
-template <std::size_t W, class Value> [[gnu::always_inline]] inline Doubles<W> gather(Value&& value) {
-    static_assert(W == 2 || W == 4);
-    if constexpr (W == 2) return Doubles<W>{value(0), value(1)};
-    else return Doubles<W>{value(0), value(1), value(2), value(3)};
-}
-/// @p x in every lane (exactly: adding it to zeros would turn -0 into +0).
-template <std::size_t W> [[gnu::always_inline]] inline Doubles<W> splat(double x) {
-    return gather<W>([x](std::size_t) { return x; });
-}
-
-/// @p a where @p m is set, else @p b.
-template <std::size_t W> [[gnu::always_inline]] inline Doubles<W> select(Mask<W> m, Doubles<W> a, Doubles<W> b) {
-    return Doubles<W>((Mask<W>(a) & m) | (Mask<W>(b) & ~m));
-}
-/// glm::dot's order: (x x' + y y') + z z'.
-template <std::size_t W>
-[[gnu::always_inline]] inline Doubles<W> dot(Doubles<W> ax, Doubles<W> ay, Doubles<W> az, Doubles<W> bx, Doubles<W> by,
-                                             Doubles<W> bz) {
-    return ax * bx + ay * by + az * bz;
-}
 
 /// The forms of @p source numbered @p at, turned into @p frame, a lane
 /// each. source.t(i), b(i), n(i), ku(i), kuv(i), kv(i) give form i: the
@@ -205,27 +153,6 @@ VertexData<TangentFrame> vertex_frames(const MeshTopology& topo) {
     return frames;
 }
 
-/// The normal curvature of vertex @p v along @p view (toward the viewer)
-/// projected onto its tangent plane: kappa_r.
-/// (The principal directions lie in the tangent plane, so the view's part
-/// along the normal adds nothing to its components along them: no
-/// projection is needed.)
-double radial_at(const CurvatureField& field, VertexId v, const glm::dvec3& view) {
-    return field.normal_curvature(v, view);
-}
-
-/// Camera::to_viewer with the orthographic camera's one direction found once.
-struct ToViewer {
-    explicit ToViewer(const Camera& camera)
-        : camera_(camera), ortho_(camera.orthographic()), v_(ortho_ ? camera.to_viewer(glm::dvec3(0.0)) : glm::dvec3(0.0)) {}
-    glm::dvec3 operator()(const glm::dvec3& p) const { return ortho_ ? v_ : camera_.to_viewer(p); }
-
-  private:
-    const Camera& camera_;
-    bool ortho_;
-    glm::dvec3 v_;
-};
-
 /// A face's area and its corners' gradients (corner_gradients).
 struct FaceGradients {
     double area = 0.0;
@@ -239,14 +166,6 @@ struct Pending {
     VertexId v;
     double ku, kuv, kv;
 };
-
-template <std::size_t W> [[gnu::always_inline]] inline Doubles<W> abs(Doubles<W> x) {
-    return Doubles<W>(Mask<W>(x) & ~Mask<W>(splat<W>(-0.0)));
-}
-/// std::sqrt lane by lane (exact in every build).
-template <std::size_t W> [[gnu::always_inline]] inline Doubles<W> sqrt(Doubles<W> x) {
-    return gather<W>([&](std::size_t l) { return std::sqrt(x[l]); });
-}
 
 /// The principal curvatures and directions of @p count pending vertices
 /// (at most W), a lane each, from each one's second fundamental form
@@ -302,26 +221,6 @@ template <std::size_t W>
                                               const VertexData<TangentFrame>& frames, ElementSpan<VertexTag, const glm::dvec3> normals,
                                               CurvatureField& out) {
     for (std::size_t at = 0; at < count; at += W) principal<W>(pending + at, std::min(W, count - at), frames, normals, out);
-}
-
-/// A vector of three coordinates, a point or direction per lane.
-template <std::size_t W> struct Vec3 {
-    Doubles<W> x, y, z;
-    Vec3 operator-(const Vec3& o) const { return {x - o.x, y - o.y, z - o.z}; }
-    Vec3 operator/(Doubles<W> d) const { return {x / d, y / d, z / d}; }
-    glm::dvec3 lane(std::size_t l) const { return {x[l], y[l], z[l]}; }
-};
-/// glm::dot's order.
-template <std::size_t W> [[gnu::always_inline]] inline Doubles<W> dot(const Vec3<W>& a, const Vec3<W>& b) {
-    return a.x * b.x + a.y * b.y + a.z * b.z;
-}
-/// glm::cross's order.
-template <std::size_t W> [[gnu::always_inline]] inline Vec3<W> cross(const Vec3<W>& a, const Vec3<W>& b) {
-    return {a.y * b.z - b.y * a.z, a.z * b.x - b.z * a.x, a.x * b.y - b.x * a.y};
-}
-template <std::size_t W, class Point> [[gnu::always_inline]] inline Vec3<W> gather3(Point&& point) {
-    return {gather<W>([&](std::size_t l) { return point(l).x; }), gather<W>([&](std::size_t l) { return point(l).y; }),
-            gather<W>([&](std::size_t l) { return point(l).z; })};
 }
 
 /// The vertex values @p values (positions or normals) at each corner of the
@@ -420,22 +319,6 @@ template <std::size_t W>
 }
 
 } // namespace lanes
-
-/// The gradients over face @p face of its corners' barycentric coordinates,
-/// (n x opposite edge) / |n|^2, and the face's area through @p area (all 0
-/// for a face of no area). A linear interpolant's gradient is the sum of
-/// each corner's value times its vector.
-std::array<glm::dvec3, 3> corner_gradients(const MeshTopology& topo, FaceId face, double& area) {
-    const auto& fv = topo.face_vertices()[face];
-    const auto P = topo.positions();
-    const glm::dvec3 a = P[fv[0]], b = P[fv[1]], c = P[fv[2]];
-    const glm::dvec3 normal = glm::cross(b - a, c - a);
-    const double twice_area2 = glm::dot(normal, normal);
-    area = 0.5 * std::sqrt(twice_area2);
-    if (!(twice_area2 > 0.0)) return {glm::dvec3(0.0), glm::dvec3(0.0), glm::dvec3(0.0)};
-    return {glm::cross(normal, c - b) / twice_area2, glm::cross(normal, a - c) / twice_area2,
-            glm::cross(normal, b - a) / twice_area2};
-}
 
 /// The median |k1| over the vertices with area (CurvatureField::typical).
 double typical_curvature(const CurvatureField& field) {
@@ -613,29 +496,9 @@ struct FacePass {
     }
 };
 
-// Each pass is built twice: two lanes for the baseline x86-64 (SSE2) and
-// four for AVX2, chosen at run time by what the processor has. Neither
-// build may fuse a product and a sum (AVX2 does not bring FMA), so both
-// give the same bits.
-template <class Pass> void run_pass(const Pass& pass, std::size_t begin, std::size_t end) {
-    pass.template run<2>(begin, end);
-}
-#if defined(__x86_64__)
-template <class Pass> __attribute__((target("avx2"))) void run_pass_avx2(const Pass& pass, std::size_t begin, std::size_t end) {
-    pass.template run<4>(begin, end);
-}
-#endif
-
-bool wide_lanes_available() {
-#if defined(__x86_64__)
-    return __builtin_cpu_supports("avx2") != 0;
-#else
-    return false;
-#endif
-}
 
 /// Whether the passes take their AVX2 build.
-std::atomic<bool> wide_lanes{wide_lanes_available()};
+std::atomic<bool> wide_lanes{simd::wide_lanes_available()};
 
 /// Runs @p pass over [0, @p n) (vertices or faces), in blocks, in parallel.
 template <class Pass> void run_blocks(std::size_t n, const Pass& pass) {
@@ -643,9 +506,9 @@ template <class Pass> void run_blocks(std::size_t n, const Pass& pass) {
     parallel_for((n + kBlock - 1) / kBlock, [&](std::size_t b) {
         const std::size_t begin = b * kBlock, end = std::min(n, begin + kBlock);
 #if defined(__x86_64__)
-        if (wide) return run_pass_avx2(pass, begin, end);
+        if (wide) return simd::run_pass_avx2(pass, begin, end);
 #endif
-        run_pass(pass, begin, end);
+        simd::run_pass(pass, begin, end);
     }, 4);
 }
 
@@ -705,9 +568,9 @@ void gradient_operator(const MeshTopology& topo, const CurvaturePlan& plan, Curv
 
 namespace detail {
 
-bool allow_curvature_wide_lanes(bool allowed) { return wide_lanes.exchange(allowed && wide_lanes_available()); }
+bool allow_curvature_wide_lanes(bool allowed) { return wide_lanes.exchange(allowed && simd::wide_lanes_available()); }
 
-bool curvature_wide_lanes_available() { return wide_lanes_available(); }
+bool curvature_wide_lanes_available() { return simd::wide_lanes_available(); }
 
 } // namespace detail
 
@@ -741,227 +604,6 @@ std::shared_ptr<const CurvatureField> require_curvature(const MeshTopology& topo
         if (options.gradient) gradient_operator(topo, *plan, field);
         return field;
     });
-}
-
-double require_feature_size(const MeshTopology& topo) {
-    return *topo.pose()->quantities.require<double>("feature size", [&] {
-        std::vector<double> lengths;
-        lengths.reserve(topo.n_edges());
-        const auto P = topo.positions();
-        // The edges of faces with an area: a split sharp edge's strip is no
-        // part of the surface (its rungs have no length, its diagonals
-        // repeat the sharp edge's), as rtsc reads a file split there.
-        for (const EdgeId e : topo.edges()) {
-            if (topo.has_strips() && edge_in_strip(topo, e)) continue;
-            const auto [a, b] = topo.edge_vertices()[e];
-            const double l = glm::length(P[b] - P[a]);
-            if (l > 0.0) lengths.push_back(l);
-        }
-        if (lengths.empty()) return 0.0;
-        const auto middle = lengths.begin() + std::ptrdiff_t(lengths.size() / 2);
-        std::nth_element(lengths.begin(), middle, lengths.end());
-        return *middle;
-    });
-}
-
-VertexData<double> radial_curvature(const MeshTopology& topo, const CurvatureField& field, const Camera& camera) {
-    VertexData<double> out(topo.n_vertices(), 0.0);
-    const auto P = topo.positions();
-    const ToViewer to_viewer(camera);
-    parallel_for(topo.vertices(), [&](VertexId v) { out[v] = radial_at(field, v, to_viewer(P[v])); }, 4096);
-    return out;
-}
-
-double suggestive_away_value(const CurvatureField& field) { return field.typical > 0.0 ? field.typical : 1.0; }
-
-void suggestive_function(const MeshTopology& topo, const CurvatureField& field, const Camera& camera,
-                         VertexData<double>& out) {
-    out.resize(topo.n_vertices());
-    const double away = suggestive_away_value(field);
-    const auto P = topo.positions();
-    const auto N = topo.normals();
-    const ToViewer to_viewer(camera);
-    VertexData<std::uint8_t> facing(topo.n_vertices());
-    parallel_for(topo.vertices(), [&](VertexId v) { facing[v] = glm::dot(to_viewer(P[v]), N[v]) > 0.0; }, 4096);
-    parallel_for(topo.vertices(), [&](VertexId v) {
-        // kappa_r sin^2(theta) on the side seen and one ring past it (the
-        // last ring of faces before the contour, where a suggestive contour
-        // meets the silhouette it continues); the stand-in beyond.
-        bool near = facing[v];
-        for (const VertexId w : topo.neighbours(v)) near = near || facing[w];
-        out[v] = near ? field.form(v, to_viewer(P[v])) : away;
-    }, 4096);
-}
-
-namespace {
-
-/// The derivative along the unit view direction projected onto vertex @p v's
-/// tangent plane of the vertex values @p f (f(j) the value of vertex j),
-/// from the pose's gradient operator (CurvatureField::gradient_*: the
-/// area-weighted mean of the gradients of the faces around v, smoother than
-/// one face's).
-template <class Values>
-double vertex_derivative_along_view(const MeshTopology& topo, const CurvatureField& field, Values&& f, VertexId v,
-                                    const ToViewer& to_viewer) {
-    glm::dvec3 gradient(0.0);
-    for (std::int32_t k = field.gradient_start[v.index()]; k < field.gradient_start[v.index() + 1]; ++k)
-        gradient += f(field.gradient_vertex[k]) * field.gradient_weight[k];
-    const glm::dvec3 n = topo.normals()[v];
-    const glm::dvec3 view = to_viewer(topo.positions()[v]);
-    const glm::dvec3 w = view - glm::dot(view, n) * n;
-    const double len = glm::length(w);
-    return len > 0.0 ? glm::dot(gradient, w) / len : 0.0;
-}
-
-/// "No slot yet" in suggestive_margins' vertex slots.
-constexpr std::size_t kNoSlot = ~std::size_t(0);
-
-} // namespace
-
-namespace {
-
-/// The strength of a suggestive contour's test (suggestive_strength) at the
-/// snaxels of @p fronts where @p wanted says, -infinity at the others.
-std::vector<double> strength_where(const MeshTopology& topo, const CurvatureField& field, const Fronts& fronts,
-                                   const Camera& camera, const ContourSpec& spec, const std::vector<std::uint8_t>& wanted) {
-    const std::size_t n = fronts.snaxels.size();
-    const ToViewer to_viewer(camera);
-    const auto P = topo.positions();
-    const auto N = topo.normals();
-    // The derivative at each end vertex of the snaxels wanted, once per vertex.
-    VertexData<std::size_t> slot(topo.n_vertices(), kNoSlot);
-    std::vector<VertexId> ends;
-    for (std::size_t i = 0; i < n; ++i) {
-        if (!wanted[i]) continue;
-        for (const VertexId v : {fronts.snaxels[i].inside, fronts.snaxels[i].outside})
-            if (slot[v] == kNoSlot) {
-                slot[v] = ends.size();
-                ends.push_back(v);
-            }
-    }
-    std::vector<double> out(n, -std::numeric_limits<double>::infinity());
-    if (spec.test == SuggestiveTest::Derivative) {
-        // The derivative along the view, from kappa_r at the vertex's neighbours.
-        std::vector<double> derivative(ends.size());
-        parallel_for(ends.size(), [&](std::size_t k) {
-            // kappa_r itself at every vertex (suggestive_function holds a
-            // stand-in past the last ring; it is recomputed there, and a true
-            // kappa_r of the stand-in's value is recomputed to itself).
-            auto radial = [&](VertexId j) { return radial_at(field, j, to_viewer(P[j])); };
-            derivative[k] = vertex_derivative_along_view(topo, field, radial, ends[k], to_viewer);
-        }, 1024);
-        const double typical = field.typical, scale = typical > 0.0 ? 1.0 / (typical * typical) : 0.0;
-        for (std::size_t i = 0; i < n; ++i) {
-            if (!wanted[i]) continue;
-            const Snaxel& s = fronts.snaxels[i];
-            const double d = (1.0 - s.t) * derivative[slot[s.inside]] + s.t * derivative[slot[s.outside]];
-            out[i] = d * scale - spec.k;
-        }
-        return out;
-    }
-    // rtsc's test: feature_size^2 sin(theta) D_w kappa_r and cos(theta) at
-    // each end, interpolated apart along the edge, their ratio against k;
-    // D_w kappa_r from the derivative of curvature, as rtsc computes it.
-    const double fs = require_feature_size(topo), fs2 = fs * fs;
-    const std::shared_ptr<const CurvatureDerivative> dc = require_curvature_derivative(topo, field);
-    std::vector<double> num(ends.size()), den(ends.size());
-    parallel_for(ends.size(), [&](std::size_t k) {
-        const VertexId v = ends[k];
-        const glm::dvec3 view = to_viewer(P[v]);
-        den[k] = glm::dot(view, N[v]);
-        num[k] = fs2 * radial_derivative_term(field, *dc, v, N[v], view);
-    }, 4096);
-    for (std::size_t i = 0; i < n; ++i) {
-        if (!wanted[i]) continue;
-        const Snaxel& s = fronts.snaxels[i];
-        const std::size_t a = slot[s.inside], b = slot[s.outside];
-        const double nu = (1.0 - s.t) * num[a] + s.t * num[b], de = (1.0 - s.t) * den[a] + s.t * den[b];
-        if (de > 0.0) out[i] = nu / de - spec.k;
-    }
-    return out;
-}
-
-} // namespace
-
-std::vector<double> suggestive_strength(const MeshTopology& topo, const CurvatureField& field, const Fronts& fronts,
-                                        const Camera& camera, const ContourSpec& spec) {
-    return strength_where(topo, field, fronts, camera, spec, std::vector<std::uint8_t>(fronts.snaxels.size(), 1));
-}
-
-std::vector<double> suggestive_margins(const MeshTopology& topo, const CurvatureField& field, const VertexData<double>& kr,
-                                       const Fronts& fronts, const Camera& camera, const ContourSpec& spec) {
-    const std::size_t n = fronts.snaxels.size();
-    const double away = suggestive_away_value(field);
-    const ToViewer to_viewer(camera);
-    std::vector<double> margin(n);
-    const bool rtsc = spec.test == SuggestiveTest::Rtsc;
-    const double most_facing = std::cos(glm::radians(spec.min_angle));
-    const auto P = topo.positions();
-    const auto N = topo.normals();
-    // A snaxel at a vertex where kappa_r is exactly 0 (a flat patch, whose
-    // curvature vanishes) lies on a sign change only beside one that is not:
-    // rtsc draws a zero where one corner of a face has kappa_r positive and
-    // another negative, so the run along a flat patch's rim, from one such
-    // vertex to the next, is no suggestive contour, while the step from a
-    // true crossing to the flat vertex in the same face is.
-    std::vector<std::uint8_t> flat(n, 0), beside_crossing(n, 0);
-    for (std::size_t i = 0; i < n; ++i)
-        flat[i] = kr[fronts.snaxels[i].inside] == 0.0 || kr[fronts.snaxels[i].outside] == 0.0;
-    for (const FrontLoop& loop : fronts.loops) {
-        std::vector<std::int32_t> order;
-        fronts.for_each_in_loop(loop, [&](std::int32_t i) { order.push_back(i); });
-        for (std::size_t k = 0; k < order.size(); ++k) {
-            if (!flat[order[k]]) continue;
-            const bool has_prev = k > 0 || loop.closed, has_next = k + 1 < order.size() || loop.closed;
-            const std::int32_t prev = order[(k + order.size() - 1) % order.size()], next = order[(k + 1) % order.size()];
-            beside_crossing[order[k]] = (has_prev && !flat[prev]) || (has_next && !flat[next]);
-        }
-    }
-    // The view terms first: where they already leave a snaxel out (about
-    // half of them face away), its margin is theirs and the test's
-    // strength is not needed.
-    parallel_for(n, [&](std::size_t i) {
-        const Snaxel& s = fronts.snaxels[i];
-        const glm::dvec3 p = (1.0 - s.t) * P[s.inside] + s.t * P[s.outside];
-        // (The normalized mean of the end normals: the slerp's direction
-        // within a hair, at a fraction of its cost.)
-        const glm::dvec3 mixed = (1.0 - s.t) * N[s.inside] + s.t * N[s.outside];
-        const double len = glm::length(mixed);
-        const double nv = len > 0.0 ? glm::dot(mixed, to_viewer(p)) / len : 0.0;
-        // A snaxel on an edge from a vertex holding suggestive_function's
-        // stand-in (its inside end) lies on the rim of the stand-in, a zero
-        // of suggestive_function only: never drawn.
-        const bool rim = kr[s.inside] == away;
-        // Inside a sharp edge's strip kappa_r jumps from one side's to the
-        // other's: a zero there is no suggestive contour (they are drawn on
-        // smooth patches only).
-        // (The rtsc test has no least angle: its tan(theta) falls to 0 where
-        // the surface faces the viewer.)
-        margin[i] = rim || (flat[i] && !beside_crossing[i]) || (topo.has_strips() && edge_in_strip(topo, s.edge)) ? -1.0
-                    : rtsc                                                   ? nv
-                                                                             : std::min(most_facing - nv, nv);
-    }, 4096);
-    std::vector<std::uint8_t> open(n);
-    for (std::size_t i = 0; i < n; ++i) open[i] = margin[i] >= 0.0;
-    const std::vector<double> strength = strength_where(topo, field, fronts, camera, spec, open);
-    for (std::size_t i = 0; i < n; ++i)
-        if (open[i]) margin[i] = std::isfinite(strength[i]) ? std::min(margin[i], strength[i]) : -1.0;
-    return margin;
-}
-
-double derivative_along_view(const MeshTopology& topo, const VertexData<double>& f, FaceId face,
-                             const glm::dvec3& p, const Camera& camera) {
-    double area = 0.0;
-    const std::array<glm::dvec3, 3> g = corner_gradients(topo, face, area);
-    if (!(area > 0.0)) return 0.0;
-    const auto& fv = topo.face_vertices()[face];
-    const glm::dvec3 gradient = f[fv[0]] * g[0] + f[fv[1]] * g[1] + f[fv[2]] * g[2];
-    const auto P = topo.positions();
-    const glm::dvec3 n = glm::normalize(glm::cross(P[fv[1]] - P[fv[0]], P[fv[2]] - P[fv[0]]));
-    const glm::dvec3 view = camera.to_viewer(p);
-    const glm::dvec3 w = view - glm::dot(view, n) * n;
-    const double len = glm::length(w);
-    return len > 0.0 ? glm::dot(gradient, w) / len : 0.0;
 }
 
 std::array<double, 3> detail::corner_areas(const std::array<glm::dvec3, 3>& e, double area) {

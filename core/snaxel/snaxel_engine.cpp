@@ -1,6 +1,6 @@
 #include "snaxels/snaxel/snaxel_engine.h"
 
-#include "snaxels/snaxel/curvature.h"
+#include "snaxels/snaxel/suggestive.h"
 #include "snaxels/snaxel/feature_edges.h"
 #include "snaxels/snaxel/intersections.h"
 #include "snaxels/snaxel/parabolic.h"

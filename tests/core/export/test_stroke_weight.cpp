@@ -9,7 +9,7 @@
 
 #include "snaxels/export/stroke_weight.h"
 #include "snaxels/mesh/import.h"
-#include "snaxels/snaxel/curvature.h"
+#include "snaxels/snaxel/suggestive.h"
 #include "snaxels/snaxel/tracker.h"
 #include "snaxels/style/style.h"
 #include "tests/support/assets.h"

@@ -9,6 +9,7 @@
 
 #include "snaxels/mesh/import.h"
 #include "snaxels/snaxel/curvature.h"
+#include "snaxels/snaxel/suggestive.h"
 #include "snaxels/mesh/refine.h"
 
 using namespace snaxels;

@@ -12,6 +12,7 @@
 #include "snaxels/export/drawing.h"
 #include "snaxels/mesh/import.h"
 #include "snaxels/snaxel/curvature.h"
+#include "snaxels/snaxel/suggestive.h"
 #include "snaxels/snaxel/tracker.h"
 #include "snaxels/style/style.h"
 #include "snaxels/visibility/visibility.h"
