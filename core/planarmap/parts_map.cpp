@@ -6,7 +6,6 @@
 #include <limits>
 #include <map>
 #include <memory>
-#include <mutex>
 #include <optional>
 
 #include "snaxels/error.h"
@@ -58,26 +57,18 @@ constexpr double kSliverArea = 4.0;
 
 /// The material and object lines of @p engine's mesh: lines of the
 /// surface, the same in every pose of its connectivity, so found once per
-/// mesh (the last mesh's are kept; maps of other meshes find their own).
+/// mesh and kept in the connectivity's quantities.
 std::shared_ptr<const std::vector<Fronts>> boundary_fronts(const SnaxelEngine& engine) {
-    static std::mutex mutex;
-    static std::weak_ptr<const MeshConnectivity> cached_for;
-    static std::shared_ptr<const std::vector<Fronts>> cached;
-    const std::shared_ptr<const MeshConnectivity>& connectivity = engine.topology().connectivity();
-    {
-        const std::lock_guard<std::mutex> lock(mutex);
-        if (cached && cached_for.lock() == connectivity) return cached;
-    }
-    auto fronts = std::make_shared<std::vector<Fronts>>();
-    for (const ContourKind kind : {ContourKind::Material, ContourKind::Object}) {
-        ContourSpec spec;
-        spec.kind = kind;
-        fronts->push_back(feature_fronts(engine.topology(), spec));
-    }
-    const std::lock_guard<std::mutex> lock(mutex);
-    cached_for = connectivity;
-    cached = fronts;
-    return cached;
+    const MeshTopology& topo = engine.topology();
+    return topo.connectivity()->quantities.require(Quantity<std::vector<Fronts>>{"material and object lines"}, [&] {
+        std::vector<Fronts> fronts;
+        for (const ContourKind kind : {ContourKind::Material, ContourKind::Object}) {
+            ContourSpec spec;
+            spec.kind = kind;
+            fronts.push_back(feature_fronts(topo, spec));
+        }
+        return fronts;
+    });
 }
 
 /// The lines a map's regions are cut along, in the image, as strips
@@ -314,7 +305,7 @@ struct OutlineCandidate {
 /// strip parts nothing, and across the strip the faces beside it are those
 /// it parts (faces_beside). Found once: a strip has no area in any pose.
 std::shared_ptr<const std::vector<OutlineCandidate>> outline_candidates(const MeshTopology& topo) {
-    return topo.connectivity()->quantities.require<std::vector<OutlineCandidate>>("faceted outline candidates", [&] {
+    return topo.connectivity()->quantities.require(Quantity<std::vector<OutlineCandidate>>{"faceted outline candidates"}, [&] {
         std::vector<OutlineCandidate> edges;
         const std::shared_ptr<const MeshRefinement>& refinement = topo.refinement();
         auto with_area = [&](FaceId f) { return f.valid() && (!topo.has_strips() || face_has_area(topo, f)); };

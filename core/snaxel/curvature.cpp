@@ -386,7 +386,7 @@ CurvaturePlan make_plan(const MeshTopology& topo) {
 
 /// The topology's plan, made on first use and kept with its connectivity.
 std::shared_ptr<const CurvaturePlan> require_plan(const MeshTopology& topo) {
-    return topo.connectivity()->quantities.require<CurvaturePlan>("curvature plan", [&] { return make_plan(topo); });
+    return topo.connectivity()->quantities.require(Quantity<CurvaturePlan>{"curvature plan"}, [&] { return make_plan(topo); });
 }
 
 /// The passes that turn forms into vertex frames, over the vertices
@@ -595,7 +595,7 @@ std::shared_ptr<const CurvatureField> require_curvature(const MeshTopology& topo
                             " gradient=" + std::to_string(int(options.gradient));
     // Computed outside the store's lock: the computation runs parallel
     // loops, whose workers may be asked for the same pose's curvature.
-    return topo.pose()->quantities.require<CurvatureField>(key, [&] {
+    return topo.pose()->quantities.require(Quantity<CurvatureField>{key}, [&] {
         const std::shared_ptr<const CurvaturePlan> plan = require_plan(topo);
         const VertexData<TangentFrame> frames = vertex_frames(topo);
         CurvatureField field = unsmoothed(topo, *plan, frames);

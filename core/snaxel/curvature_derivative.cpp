@@ -150,7 +150,7 @@ std::shared_ptr<const CurvatureDerivative> require_curvature_derivative(const Me
     // (what every caller draws with); another field's is computed afresh.
     if (&field != require_curvature(topo).get())
         return std::make_shared<const CurvatureDerivative>(compute_derivative(topo, field));
-    return topo.pose()->quantities.require<CurvatureDerivative>("curvature derivative",
+    return topo.pose()->quantities.require(Quantity<CurvatureDerivative>{"curvature derivative"},
                                                                  [&] { return compute_derivative(topo, field); });
 }
 

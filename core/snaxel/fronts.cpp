@@ -76,8 +76,8 @@ Fronts extract_fronts(const MeshTopology& topo, const VertexData<std::uint8_t>& 
     // enters across the one from the outside vertex to the third vertex
     // when the third is inside, else across the one from the third vertex
     // back to the inside one.
-    const std::shared_ptr<const EdgeWings> wings = topo.connectivity()->quantities.require<EdgeWings>(
-        "edge wings", [&] { return make_edge_wings(topo); });
+    const std::shared_ptr<const EdgeWings> wings = topo.connectivity()->quantities.require(
+        Quantity<EdgeWings>{"edge wings"}, [&] { return make_edge_wings(topo); });
     parallel_for(n, [&](std::size_t i) {
         const EdgeId e = crossing_edges[i];
         const Snaxel& s = fronts.snaxels[i];

@@ -393,7 +393,7 @@ IntersectionCurves find_intersections(const MeshTopology& topo) {
 }
 
 std::shared_ptr<const IntersectionCurves> require_intersections(const MeshTopology& topology) {
-    return topology.pose()->quantities.require<IntersectionCurves>("intersections",
+    return topology.pose()->quantities.require(Quantity<IntersectionCurves>{"intersections"},
                                                                    [&] { return find_intersections(topology); });
 }
 

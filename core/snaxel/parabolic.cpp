@@ -736,11 +736,11 @@ ParabolicResult find_parabolic(const MeshTopology& mesh_topo, const ParabolicOpt
 namespace {
 
 /// The options that change a search's result, as a key.
-std::string parabolic_key(const ParabolicOptions& options) {
+Quantity<ParabolicResult> parabolic_key(const ParabolicOptions& options) {
     char key[96];
     std::snprintf(key, sizeof key, "parabolic samples=%d orders=%d smoothing=%.17g", options.samples, options.orders,
                   options.smoothing);
-    return key;
+    return {key};
 }
 
 /// A hash of @p topology's positions and faces.
@@ -769,9 +769,9 @@ ProcessCache& process_cache() {
 } // namespace
 
 std::shared_ptr<const ParabolicResult> require_parabolic(const MeshTopology& topo, const ParabolicOptions& options) {
-    const std::string key = parabolic_key(options);
-    if (auto kept = topo.pose()->quantities.find<ParabolicResult>(key)) return kept;
-    const std::pair<std::uint64_t, std::string> content{content_hash(topo), key};
+    const Quantity<ParabolicResult> key = parabolic_key(options);
+    if (auto kept = topo.pose()->quantities.find(key)) return kept;
+    const std::pair<std::uint64_t, std::string> content{content_hash(topo), key.name};
     ProcessCache& cache = process_cache();
     std::shared_ptr<const ParabolicResult> result;
     {

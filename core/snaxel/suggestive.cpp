@@ -56,7 +56,7 @@ std::array<glm::dvec3, 3> corner_gradients(const MeshTopology& topo, FaceId face
 } // namespace
 
 double require_feature_size(const MeshTopology& topo) {
-    return *topo.pose()->quantities.require<double>("feature size", [&] {
+    return *topo.pose()->quantities.require(Quantity<double>{"feature size"}, [&] {
         std::vector<double> lengths;
         lengths.reserve(topo.n_edges());
         const auto P = topo.positions();
