@@ -56,6 +56,16 @@ Timeline::Timeline(QWidget* parent)
       play_(new QPushButton(tr("Play"), this)), loop_(new QCheckBox(tr("Loop"), this)),
       everyFrame_(new QCheckBox(tr("Every frame"), this)) {
     setClips({});
+    setUpWidgets();
+    connectWidgets();
+    // The clock says which frame is due; the ticks only look at it, often
+    // enough to show each frame within a few milliseconds of its time.
+    timer_.setTimerType(Qt::PreciseTimer);
+    timer_.setInterval(5);
+    showPosition();
+}
+
+void Timeline::setUpWidgets() {
     camera_->setObjectName("cameraChoice");
     source_->setObjectName("source");
     degrees_->setObjectName("degreesPerFrame");
@@ -111,6 +121,9 @@ Timeline::Timeline(QWidget* parent)
     layout->addWidget(slider_, 1);
     layout->addWidget(frameBox_);
     layout->addWidget(label_);
+}
+
+void Timeline::connectWidgets() {
     auto refresh = [this] {
         showPosition();
         emit changed();
@@ -168,11 +181,6 @@ Timeline::Timeline(QWidget* parent)
     connect(slider_, &QSlider::valueChanged, this, [this] {
         if (playing() && !advancing_) anchorClock();
     });
-    // The clock says which frame is due; the ticks only look at it, often
-    // enough to show each frame within a few milliseconds of its time.
-    timer_.setTimerType(Qt::PreciseTimer);
-    timer_.setInterval(5);
-    showPosition();
 }
 
 void Timeline::setClips(const std::vector<AnimationClipInfo>& clips) {

@@ -76,6 +76,10 @@ class Timeline : public QWidget {
     void playbackStatus(const QString& text);
 
   private:
+    /// The widgets' ranges, texts and tips, and their layout.
+    void setUpWidgets();
+    /// What each widget's change does (in the order the widgets signal).
+    void connectWidgets();
     void advance();
     /// The frame after @p frame, or -1 at the end without loop.
     int nextFrame(int frame) const;

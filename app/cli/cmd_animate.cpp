@@ -46,6 +46,69 @@ nlohmann::json stats_json(const AnimationOutput& result) {
             {"path_list", paths}};
 }
 
+/// What moves in the animation, from the options: exactly one source
+/// (--turntable, --light-orbit, --clip, --sequence, or --camera alone for
+/// a camera the file animates), with its rate and in point.
+AnimationSpec animation_source(const Args& args, const SceneOptions& scene) {
+    AnimationSpec anim;
+    int sources = 0;
+    if (const auto v = args.value("turntable")) {
+        anim.kind = AnimationSpec::Kind::Turntable;
+        anim.degrees_per_frame = parse_number("turntable", *v, -360.0, 360.0);
+        ++sources;
+    }
+    if (const auto v = args.value("light-orbit")) {
+        anim.kind = AnimationSpec::Kind::LightOrbit;
+        anim.degrees_per_frame = parse_number("light-orbit", *v, -360.0, 360.0);
+        ++sources;
+    }
+    if (const auto v = args.value("clip")) {
+        anim.kind = AnimationSpec::Kind::Clip;
+        anim.clip = *v;
+        ++sources;
+    }
+    if (const auto v = args.value("sequence")) {
+        anim.kind = AnimationSpec::Kind::Sequence;
+        anim.pattern = *v;
+        if (v->find('#') == std::string::npos && v->find('%') == std::string::npos)
+            throw UsageError("--sequence needs #### or %04d in the pattern where the frame number goes");
+        ++sources;
+    }
+    if (scene.file_camera) anim.camera = *scene.file_camera;
+    // The file's camera alone: it moves through its own clip (checked once
+    // the file is read: a camera no clip moves has nothing to animate).
+    if (sources == 0 && scene.file_camera) anim.kind = AnimationSpec::Kind::Camera;
+    else if (sources != 1)
+        throw UsageError("give exactly one of --turntable, --light-orbit, --clip, --sequence (or --camera NAME alone, "
+                         "for a camera the file animates)");
+    if (const auto v = args.value("fps")) anim.fps = parse_number("fps", *v, 0.0, 1000.0);
+    if (const auto v = args.value("start")) anim.start = parse_int("start", *v, 0, 1000000);
+    return anim;
+}
+
+/// The line that says what was written, and how long it took.
+void print_summary(const std::string& output, const AnimationOutput& result, const AnimationJob& job,
+                   const AnimationSpec& anim, std::chrono::steady_clock::time_point t_start) {
+    const double total_ms =
+        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t_start).count();
+    double tracking = 0.0;
+    for (const double ms : result.tracking_ms) tracking += ms;
+    const AnimatedSvgStats& stats = result.stats;
+    if (!job.video.empty()) {
+        std::printf("%s: %d frames at %g fps, %ux%u, %ju bytes; tracking %.2f ms per frame, %.0f ms in all; %zu events\n",
+                    output.c_str(), result.frames, anim.fps, unsigned(job.scene.style.width), unsigned(job.scene.style.height),
+                    std::uintmax_t(std::filesystem::file_size(output)), tracking / std::max(1, result.frames), total_ms,
+                    result.events.size());
+        return;
+    }
+    const std::uintmax_t on_disk = std::filesystem::file_size(output);
+    const std::string compressed = on_disk != result.bytes ? " (" + std::to_string(on_disk) + " compressed)" : "";
+    std::printf("%s: %d frames at %g fps, %zu paths, %zu keyframes (of %zu path-frames), %zu bytes%s; "
+                "tracking %.2f ms per frame, %.0f ms in all; %zu events\n",
+                output.c_str(), result.frames, anim.fps, stats.paths, stats.keyframes, stats.frames_spanned,
+                result.bytes, compressed.c_str(), tracking / std::max(1, result.frames), total_ms, result.events.size());
+}
+
 } // namespace
 
 int run_animate(const std::vector<std::string>& argv) {
@@ -84,39 +147,7 @@ int run_animate(const std::vector<std::string>& argv) {
         return 0;
     }
     SceneOptions scene = parse_scene_options(args);
-    AnimationSpec anim;
-    int sources = 0;
-    if (const auto v = args.value("turntable")) {
-        anim.kind = AnimationSpec::Kind::Turntable;
-        anim.degrees_per_frame = parse_number("turntable", *v, -360.0, 360.0);
-        ++sources;
-    }
-    if (const auto v = args.value("light-orbit")) {
-        anim.kind = AnimationSpec::Kind::LightOrbit;
-        anim.degrees_per_frame = parse_number("light-orbit", *v, -360.0, 360.0);
-        ++sources;
-    }
-    if (const auto v = args.value("clip")) {
-        anim.kind = AnimationSpec::Kind::Clip;
-        anim.clip = *v;
-        ++sources;
-    }
-    if (const auto v = args.value("sequence")) {
-        anim.kind = AnimationSpec::Kind::Sequence;
-        anim.pattern = *v;
-        if (v->find('#') == std::string::npos && v->find('%') == std::string::npos)
-            throw UsageError("--sequence needs #### or %04d in the pattern where the frame number goes");
-        ++sources;
-    }
-    if (scene.file_camera) anim.camera = *scene.file_camera;
-    // The file's camera alone: it moves through its own clip (checked once
-    // the file is read: a camera no clip moves has nothing to animate).
-    if (sources == 0 && scene.file_camera) anim.kind = AnimationSpec::Kind::Camera;
-    else if (sources != 1)
-        throw UsageError("give exactly one of --turntable, --light-orbit, --clip, --sequence (or --camera NAME alone, "
-                         "for a camera the file animates)");
-    if (const auto v = args.value("fps")) anim.fps = parse_number("fps", *v, 0.0, 1000.0);
-    if (const auto v = args.value("start")) anim.start = parse_int("start", *v, 0, 1000000);
+    AnimationSpec anim = animation_source(args, scene);
     int frames = 0;
     if (const auto v = args.value("frames")) frames = parse_int("frames", *v, 1, 100000);
     else if (anim.kind != AnimationSpec::Kind::Clip && anim.kind != AnimationSpec::Kind::Camera)
@@ -165,24 +196,7 @@ int run_animate(const std::vector<std::string>& argv) {
     const AnimationOutput result = run_animation_with_progress(loaded, mesh_path, job);
     if (!events_out.empty()) write_file_atomically(events_out, events_json(result, job).dump(1) + "\n");
     if (!stats_out.empty()) write_file_atomically(stats_out, stats_json(result).dump(1) + "\n");
-    const double total_ms =
-        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t_start).count();
-    double tracking = 0.0;
-    for (const double ms : result.tracking_ms) tracking += ms;
-    const AnimatedSvgStats& stats = result.stats;
-    if (!job.video.empty()) {
-        std::printf("%s: %d frames at %g fps, %ux%u, %ju bytes; tracking %.2f ms per frame, %.0f ms in all; %zu events\n",
-                    output->c_str(), result.frames, anim.fps, unsigned(job.scene.style.width), unsigned(job.scene.style.height),
-                    std::uintmax_t(std::filesystem::file_size(*output)), tracking / std::max(1, result.frames), total_ms,
-                    result.events.size());
-        return 0;
-    }
-    const std::uintmax_t on_disk = std::filesystem::file_size(*output);
-    const std::string compressed = on_disk != result.bytes ? " (" + std::to_string(on_disk) + " compressed)" : "";
-    std::printf("%s: %d frames at %g fps, %zu paths, %zu keyframes (of %zu path-frames), %zu bytes%s; "
-                "tracking %.2f ms per frame, %.0f ms in all; %zu events\n",
-                output->c_str(), result.frames, anim.fps, stats.paths, stats.keyframes, stats.frames_spanned,
-                result.bytes, compressed.c_str(), tracking / std::max(1, result.frames), total_ms, result.events.size());
+    print_summary(*output, result, job, anim, t_start);
     return 0;
 }
 

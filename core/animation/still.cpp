@@ -94,6 +94,47 @@ std::vector<ContourResult> StillTracking::compute(const MeshTopology& topology, 
     return results;
 }
 
+namespace {
+
+/// The contours a planar map of @p style is built from (the snaxel-defined
+/// map unless the job asks for the post-processed one): the fills', or,
+/// without fills, the whole map's (patches, lit and shadow).
+std::vector<ContourSpec> map_contours(const Style& style) {
+    std::vector<ContourSpec> needed = style.fill_contours();
+    if (needed.empty()) needed = {ContourSpec{}, ContourSpec{ContourKind::Shadow, 0.0}};
+    return needed;
+}
+
+/// @p drawn, then those of @p needed that no drawn line set has.
+std::vector<ContourSpec> contours_to_find(const std::vector<ContourSpec>& drawn, const std::vector<ContourSpec>& needed) {
+    std::vector<ContourSpec> specs = drawn;
+    for (const ContourSpec& spec : needed)
+        if (std::none_of(specs.begin(), specs.end(), [&](const ContourSpec& s) { return s.line().same_as(spec); }))
+            specs.push_back(spec);
+    return specs;
+}
+
+/// Every contour of @p specs from scratch, in parallel; line sets of one
+/// line (other parts) share its computation.
+std::vector<ContourResult> compute_line_sets(const SnaxelEngine& engine, const std::vector<ContourSpec>& specs,
+                                             const SceneSettings& scene) {
+    std::vector<std::size_t> first(specs.size());
+    for (std::size_t i = 0; i < specs.size(); ++i)
+        for (first[i] = 0; !specs[first[i]].line().same_as(specs[i].line());) ++first[i];
+    std::vector<ContourResult> all(specs.size());
+    parallel_for(specs.size(), [&](std::size_t i) {
+        if (first[i] == i) all[i] = engine.compute(specs[i], scene.camera, scene.light, scene.engine);
+    }, 1);
+    for (std::size_t i = 0; i < specs.size(); ++i)
+        if (first[i] != i) {
+            all[i] = all[first[i]];
+            all[i].spec = specs[i];
+        }
+    return all;
+}
+
+} // namespace
+
 StillOutput render_still(const LoadedMesh& mesh, const MeshTopology& topology, const RayScene* rays,
                          const StillJob& job, StillTracking* tracking) {
     const FloatModeGuard float_mode;
@@ -108,19 +149,10 @@ StillOutput render_still(const LoadedMesh& mesh, const MeshTopology& topology, c
     const SnaxelEngine engine(topology);
 
     // Every contour at once (in parallel): the drawn kinds, then those the
-    // style's fills need that are not drawn (scene.map_kind: the snaxel-defined
-    // map unless the job asks for the post-processed one); without fills
-    // but asked for the map, its whole: patches, lit and shadow.
+    // fills need that are not drawn.
     const bool map = !scene.style.regions.empty() || scene.planar_map;
-    std::vector<ContourSpec> specs = scene.kinds;
-    std::vector<ContourSpec> needed;
-    if (map) {
-        needed = scene.style.fill_contours();
-        if (needed.empty()) needed = {ContourSpec{}, ContourSpec{ContourKind::Shadow, 0.0}};
-        for (const ContourSpec& spec : needed)
-            if (std::none_of(specs.begin(), specs.end(), [&](const ContourSpec& s) { return s.line().same_as(spec); }))
-                specs.push_back(spec);
-    }
+    const std::vector<ContourSpec> needed = map ? map_contours(scene.style) : std::vector<ContourSpec>{};
+    const std::vector<ContourSpec> specs = contours_to_find(scene.kinds, needed);
     std::unique_ptr<RayScene> own_rays;
     if (!rays && (scene.visibility || map)) rays = (own_rays = std::make_unique<RayScene>(topology)).get();
     // The snaxel map's rays from the vertices need only the visual
@@ -137,19 +169,7 @@ StillOutput render_still(const LoadedMesh& mesh, const MeshTopology& topology, c
             all = tracking->compute(topology, specs, scene.camera, scene.light, scene.engine, centre, map);
             return;
         }
-        // Line sets of one line (other parts) share its computation.
-        std::vector<std::size_t> first(specs.size());
-        for (std::size_t i = 0; i < specs.size(); ++i)
-            for (first[i] = 0; !specs[first[i]].line().same_as(specs[i].line());) ++first[i];
-        all.resize(specs.size());
-        parallel_for(specs.size(), [&](std::size_t i) {
-            if (first[i] == i) all[i] = engine.compute(specs[i], scene.camera, scene.light, scene.engine);
-        }, 1);
-        for (std::size_t i = 0; i < specs.size(); ++i)
-            if (first[i] != i) {
-                all[i] = all[first[i]];
-                all[i].spec = specs[i];
-            }
+        all = compute_line_sets(engine, specs, scene);
     };
     parallel_invoke(find_contours, see);
     out.results.assign(std::make_move_iterator(all.begin()), std::make_move_iterator(all.begin() + std::ptrdiff_t(scene.kinds.size())));

@@ -275,6 +275,49 @@ std::vector<std::pair<std::size_t, std::size_t>> match_loops(const std::vector<s
     return pairs;
 }
 
+namespace {
+
+/// Links the loops of @p ff (a frame of one region's life) to those of
+/// @p prev, the frame before: matched loops keep their ids, and ff.jump is
+/// set where the path must jump instead of moving. @p class_loops(frame)
+/// gives every loop of the region's class in that frame.
+template <class ClassLoops> void link_loops(const FillFrame& prev, FillFrame& ff, ClassLoops&& class_loops) {
+    const auto pairs = match_loops(prev.loops, ff.loops, 4.0);
+    // A loop may appear (grow from a point) or vanish (shrink
+    // to one) only where that changes what the region covers:
+    // an outline over what the other frame leaves uncovered, a
+    // hole in what it covers. Otherwise (loops that merge or
+    // split, a hole pinched off an outline, a loop that moved
+    // too far to match) growing and shrinking would uncover
+    // what both frames cover: the path jumps there instead.
+    std::vector<char> old_matched(prev.loops.size(), 0), new_matched(ff.loops.size(), 0);
+    for (const auto& [i, j] : pairs) old_matched[i] = new_matched[j] = 1;
+    // Nor where the other frame has the same class there in
+    // another region's path (a region that split or changed
+    // hands): growing from a point would uncover it.
+    for (std::size_t i = 0; i < prev.loops.size() && !ff.jump; ++i)
+        if (!old_matched[i])
+            ff.jump = !changes_cover(prev.loops[i], ff.loops) || !changes_cover(prev.loops[i], class_loops(ff.frame));
+    for (std::size_t j = 0; j < ff.loops.size() && !ff.jump; ++j)
+        if (!new_matched[j])
+            ff.jump = !changes_cover(ff.loops[j], prev.loops) || !changes_cover(ff.loops[j], class_loops(prev.frame));
+    for (std::size_t i = 0; i < prev.loops.size() && !ff.jump; ++i)
+        for (std::size_t j = 0; j < ff.loops.size() && !ff.jump; ++j)
+            ff.jump = !old_matched[i] && !new_matched[j] && boxes_meet(prev.loops[i], ff.loops[j]);
+    for (const auto& [i, j] : pairs) {
+        ff.ids[j] = prev.ids[i];
+        // A loop that would sweep outside both outlines between
+        // the frames makes the path jump there instead.
+        const double len = std::max(loop_length(prev.loops[i]), loop_length(ff.loops[j]));
+        const std::size_t n = samples_for(len);
+        const Loop a = resample_loop(prev.loops[i], n, first_start(prev.loops[i]));
+        const Loop b = resample_loop(ff.loops[j], n, arc_nearest(ff.loops[j], a[0]));
+        if (stray(a, b) > kMaxFillSweepPx) ff.jump = true;
+    }
+}
+
+} // namespace
+
 void fill_paths(const std::vector<AnimationFrame>& frames, const Style& style, const AnimatedSvgOptions& options,
                 std::vector<AnimatedPathData>& out) {
     if (style.regions.empty()) return;
@@ -319,41 +362,8 @@ void fill_paths(const std::vector<AnimationFrame>& frames, const Style& style, c
                     if (loop.size() >= 3 && std::abs(twice_area(loop)) >= 2.0 * kMinLoopArea) ff.loops.push_back(std::move(loop));
                 any |= !ff.loops.empty();
                 ff.ids.assign(ff.loops.size(), -1);
-                if (!life.empty()) {
-                    const FillFrame& prev = life.back();
-                    const auto pairs = match_loops(prev.loops, ff.loops, 4.0);
-                    // A loop may appear (grow from a point) or vanish (shrink
-                    // to one) only where that changes what the region covers:
-                    // an outline over what the other frame leaves uncovered, a
-                    // hole in what it covers. Otherwise (loops that merge or
-                    // split, a hole pinched off an outline, a loop that moved
-                    // too far to match) growing and shrinking would uncover
-                    // what both frames cover: the path jumps there instead.
-                    std::vector<char> old_matched(prev.loops.size(), 0), new_matched(ff.loops.size(), 0);
-                    for (const auto& [i, j] : pairs) old_matched[i] = new_matched[j] = 1;
-                    // Nor where the other frame has the same class there in
-                    // another region's path (a region that split or changed
-                    // hands): growing from a point would uncover it.
-                    for (std::size_t i = 0; i < prev.loops.size() && !ff.jump; ++i)
-                        if (!old_matched[i])
-                            ff.jump = !changes_cover(prev.loops[i], ff.loops) || !changes_cover(prev.loops[i], class_loops(ff.frame, r0));
-                    for (std::size_t j = 0; j < ff.loops.size() && !ff.jump; ++j)
-                        if (!new_matched[j])
-                            ff.jump = !changes_cover(ff.loops[j], prev.loops) || !changes_cover(ff.loops[j], class_loops(prev.frame, r0));
-                    for (std::size_t i = 0; i < prev.loops.size() && !ff.jump; ++i)
-                        for (std::size_t j = 0; j < ff.loops.size() && !ff.jump; ++j)
-                            ff.jump = !old_matched[i] && !new_matched[j] && boxes_meet(prev.loops[i], ff.loops[j]);
-                    for (const auto& [i, j] : pairs) {
-                        ff.ids[j] = prev.ids[i];
-                        // A loop that would sweep outside both outlines between
-                        // the frames makes the path jump there instead.
-                        const double len = std::max(loop_length(prev.loops[i]), loop_length(ff.loops[j]));
-                        const std::size_t n = samples_for(len);
-                        const Loop a = resample_loop(prev.loops[i], n, first_start(prev.loops[i]));
-                        const Loop b = resample_loop(ff.loops[j], n, arc_nearest(ff.loops[j], a[0]));
-                        if (stray(a, b) > kMaxFillSweepPx) ff.jump = true;
-                    }
-                }
+                if (!life.empty())
+                    link_loops(life.back(), ff, [&](int frame) -> const std::vector<Loop>& { return class_loops(frame, r0); });
                 if (ff.jump)
                     for (int& l : ff.ids) l = -1;
                 for (int& l : ff.ids)

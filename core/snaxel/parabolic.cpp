@@ -621,6 +621,48 @@ std::vector<std::vector<glm::dvec3>> parabolic_walks(int samples, int orders) {
     return out;
 }
 
+namespace {
+
+/// Marks where the visual events @p events of one step of a walk (the view
+/// from @p from to @p to) happened, into @p found: each at the nearest
+/// topology-changing crossing of the step (@p crossings) within
+/// @p place_limit, one of the event's own type first, each vertex once a
+/// step. Returns how many events found no crossing near enough.
+std::size_t place_events(const MeshTopology& topo, const std::vector<VisualEvent>& events,
+                         const std::vector<CriticalCrossing>& crossings, const glm::dvec3& from, const glm::dvec3& to,
+                         double place_limit, std::vector<ParabolicPoint>& found) {
+    std::size_t unplaced = 0;
+    std::vector<VertexId> marked; // vertices marked in this step
+    for (const VisualEvent& e : events) {
+        const bool saddle = e.kind == EventKind::Split || e.kind == EventKind::Merge;
+        const CriticalCrossing* best = nullptr;
+        double best_d = std::numeric_limits<double>::max();
+        for (int pass = 0; pass < 2 && !best; ++pass) // a crossing of the event's type first
+            for (const CriticalCrossing& c : crossings) {
+                if (pass == 0 && c.saddle != saddle) continue;
+                const double d = glm::length(topo.positions()[c.vertex] - e.where);
+                if (d < best_d && d <= place_limit) best_d = d, best = &c;
+            }
+        if (!best) {
+            ++unplaced;
+            continue;
+        }
+        if (std::find(marked.begin(), marked.end(), best->vertex) != marked.end()) continue;
+        marked.push_back(best->vertex);
+        ParabolicPoint p;
+        p.kind = e.kind;
+        p.vertex = best->vertex;
+        p.where = topo.positions()[best->vertex];
+        p.dir = best->dir;
+        p.from_dir = from;
+        p.to_dir = to;
+        found.push_back(p);
+    }
+    return unplaced;
+}
+
+} // namespace
+
 ParabolicResult find_parabolic(const MeshTopology& mesh_topo, const ParabolicOptions& options) {
     const auto t0 = std::chrono::steady_clock::now();
     // The normals the contour is tracked with, smoothed at the asked scale
@@ -665,32 +707,7 @@ ParabolicResult find_parabolic(const MeshTopology& mesh_topo, const ParabolicOpt
                 if (k == 0 || frame.events.empty()) continue;
                 events[i] += frame.events.size();
                 critical_crossings(topo, boundary, walk[k - 1], walk[k], crossings);
-                std::vector<VertexId> marked; // vertices marked in this step
-                for (const VisualEvent& e : frame.events) {
-                    const bool saddle = e.kind == EventKind::Split || e.kind == EventKind::Merge;
-                    const CriticalCrossing* best = nullptr;
-                    double best_d = std::numeric_limits<double>::max();
-                    for (int pass = 0; pass < 2 && !best; ++pass) // a crossing of the event's type first
-                        for (const CriticalCrossing& c : crossings) {
-                            if (pass == 0 && c.saddle != saddle) continue;
-                            const double d = glm::length(topo.positions()[c.vertex] - e.where);
-                            if (d < best_d && d <= place_limit) best_d = d, best = &c;
-                        }
-                    if (!best) {
-                        ++unplaced[i];
-                        continue;
-                    }
-                    if (std::find(marked.begin(), marked.end(), best->vertex) != marked.end()) continue;
-                    marked.push_back(best->vertex);
-                    ParabolicPoint p;
-                    p.kind = e.kind;
-                    p.vertex = best->vertex;
-                    p.where = topo.positions()[best->vertex];
-                    p.dir = best->dir;
-                    p.from_dir = walk[k - 1];
-                    p.to_dir = walk[k];
-                    found[i].push_back(p);
-                }
+                unplaced[i] += place_events(topo, frame.events, crossings, walk[k - 1], walk[k], place_limit, found[i]);
             }
             const int now = done += int(walk.size()) - 1;
             if (options.progress) {
