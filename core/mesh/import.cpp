@@ -178,28 +178,12 @@ bool ply_header_line(std::istream& in, std::string& line, std::string& problem, 
     return !line.empty();
 }
 
-std::string ply_problem(std::ifstream& in, std::uintmax_t file_size, const std::string& path) {
-    in.clear();
-    in.seekg(0);
-    // Assimp reads any .ply file as PLY, and a file that starts with "ply" or
-    // "PLY" (after a line end) whatever its name.
-    char head[4] = {};
-    in.read(head, 4);
-    const std::size_t skip = head[0] == '\n' ? 1 : head[0] == '\r' && head[1] == '\n' ? 2 : 0;
-    const bool magic = std::tolower(head[skip]) == 'p' && std::tolower(head[skip + 1]) == 'l' &&
-                       std::tolower(head[skip + 2]) == 'y';
-    if (!magic && lower_extension(path) != ".ply") return {};
-    in.clear();
-    in.seekg(std::streamoff(skip));
-    std::uintmax_t offset = skip;
+/// Reads a PLY header's lines after its "ply" line from @p in (@p offset
+/// counting the bytes read) into @p format and @p elements: what is wrong
+/// with it, or "".
+std::string read_ply_header(std::ifstream& in, std::uintmax_t& offset, std::string& format,
+                            std::vector<PlyElement>& elements) {
     std::string line, problem;
-    if (!ply_header_line(in, line, problem, offset))
-        return problem.empty() ? "the PLY file has no header" : problem;
-    std::transform(line.begin(), line.end(), line.begin(), [](unsigned char c) { return char(std::tolower(c)); });
-    while (!line.empty() && (line.back() == ' ' || line.back() == '\t')) line.pop_back();
-    if (line != "ply") return "the PLY file does not start with a 'ply' line";
-    std::string format;
-    std::vector<PlyElement> elements;
     bool header_ended = false;
     while (!header_ended && ply_header_line(in, line, problem, offset)) {
         std::istringstream words(line);
@@ -242,45 +226,54 @@ std::string ply_problem(std::ifstream& in, std::uintmax_t file_size, const std::
         for (std::size_t b = a + 1; b < elements.size(); ++b)
             if (elements[a].name == elements[b].name)
                 return "the PLY header declares the element '" + elements[a].name + "' twice";
-    const auto item_name = [](const PlyElement& e, std::uintmax_t i) { return e.name + " " + std::to_string(i); };
+    return {};
+}
 
-    if (format == "ascii") {
-        // One item per line, each list as long as its count says.
-        for (const PlyElement& e : elements) {
-            for (std::uintmax_t i = 0; i < e.count;) {
-                if (!std::getline(in, line)) {
-                    std::uintmax_t total = 0;
-                    for (const auto& el : elements) total += el.count;
-                    return "the ASCII PLY file is truncated (its header declares " + std::to_string(total) +
-                           " elements, the file ends at " + item_name(e, i) + ")";
-                }
-                if (!line.empty() && line.back() == '\r') line.pop_back();
-                if (std::any_of(line.begin(), line.end(), [](char c) { return c >= 0 && c < 0x20 && c != '\t'; }))
-                    return "the ASCII PLY " + item_name(e, i) + " has a control character in its line";
-                if (line.find_first_not_of(" \t") == std::string::npos) continue;
-                if (e.has_list()) {
-                    std::istringstream tokens(line);
-                    std::string token;
-                    for (const PlyProperty& p : e.properties) {
-                        if (!(tokens >> token)) return "the ASCII PLY " + item_name(e, i) + " is missing values: " + shown(line);
-                        if (!p.list) continue;
-                        char* end = nullptr;
-                        const long long n = std::strtoll(token.c_str(), &end, 10);
-                        if (*end != '\0' || n < 0)
-                            return "the ASCII PLY " + item_name(e, i) + " has a malformed list count '" + token + "'";
-                        for (long long k = 0; k < n; ++k)
-                            if (!(tokens >> token))
-                                return "the ASCII PLY " + item_name(e, i) + " declares a list of " + std::to_string(n) +
-                                       " values but its line holds " + std::to_string(k);
-                    }
-                }
-                ++i;
+std::string ply_item_name(const PlyElement& e, std::uintmax_t i) { return e.name + " " + std::to_string(i); }
+
+/// What is wrong with an ASCII PLY body (after the header, in @p in) of
+/// @p elements, or "".
+std::string ascii_ply_problem(std::ifstream& in, const std::vector<PlyElement>& elements) {
+    std::string line;
+    // One item per line, each list as long as its count says.
+    for (const PlyElement& e : elements) {
+        for (std::uintmax_t i = 0; i < e.count;) {
+            if (!std::getline(in, line)) {
+                std::uintmax_t total = 0;
+                for (const auto& el : elements) total += el.count;
+                return "the ASCII PLY file is truncated (its header declares " + std::to_string(total) +
+                       " elements, the file ends at " + ply_item_name(e, i) + ")";
             }
+            if (!line.empty() && line.back() == '\r') line.pop_back();
+            if (std::any_of(line.begin(), line.end(), [](char c) { return c >= 0 && c < 0x20 && c != '\t'; }))
+                return "the ASCII PLY " + ply_item_name(e, i) + " has a control character in its line";
+            if (line.find_first_not_of(" \t") == std::string::npos) continue;
+            if (e.has_list()) {
+                std::istringstream tokens(line);
+                std::string token;
+                for (const PlyProperty& p : e.properties) {
+                    if (!(tokens >> token)) return "the ASCII PLY " + ply_item_name(e, i) + " is missing values: " + shown(line);
+                    if (!p.list) continue;
+                    char* end = nullptr;
+                    const long long n = std::strtoll(token.c_str(), &end, 10);
+                    if (*end != '\0' || n < 0)
+                        return "the ASCII PLY " + ply_item_name(e, i) + " has a malformed list count '" + token + "'";
+                    for (long long k = 0; k < n; ++k)
+                        if (!(tokens >> token))
+                            return "the ASCII PLY " + ply_item_name(e, i) + " declares a list of " + std::to_string(n) +
+                                   " values but its line holds " + std::to_string(k);
+                }
+            }
+            ++i;
         }
-        return {};
     }
-    const bool big_endian = format == "binary_big_endian";
-    if (!big_endian && format != "binary_little_endian") return "the PLY header has an unknown format '" + format + "'";
+    return {};
+}
+
+/// What is wrong with a binary PLY body (after the header, in @p in, of a
+/// file of @p file_size bytes) of @p elements, or "".
+std::string binary_ply_problem(std::ifstream& in, std::uintmax_t file_size, bool big_endian,
+                               const std::vector<PlyElement>& elements) {
     const auto body = file_size - static_cast<std::uintmax_t>(in.tellg());
     const auto truncated = [&](const std::string& where) {
         return "the binary PLY file is truncated (its data ends inside " + where + "; the body has " +
@@ -297,18 +290,47 @@ std::string ply_problem(std::ifstream& in, std::uintmax_t file_size, const std::
         for (std::uintmax_t i = 0; i < e.count; ++i) {
             for (const PlyProperty& p : e.properties) {
                 if (!p.list) {
-                    if (!walk.skip(p.size)) return truncated(item_name(e, i));
+                    if (!walk.skip(p.size)) return truncated(ply_item_name(e, i));
                     continue;
                 }
                 std::uint64_t n = 0;
-                if (!walk.count(p.count_size, big_endian, n)) return truncated(item_name(e, i));
+                if (!walk.count(p.count_size, big_endian, n)) return truncated(ply_item_name(e, i));
                 if (n > body / p.size || !walk.skip(n * p.size))
-                    return "the binary PLY " + item_name(e, i) + " declares a list of " + std::to_string(n) +
+                    return "the binary PLY " + ply_item_name(e, i) + " declares a list of " + std::to_string(n) +
                            " values, more than the file holds";
             }
         }
     }
     return {};
+}
+
+std::string ply_problem(std::ifstream& in, std::uintmax_t file_size, const std::string& path) {
+    in.clear();
+    in.seekg(0);
+    // Assimp reads any .ply file as PLY, and a file that starts with "ply" or
+    // "PLY" (after a line end) whatever its name.
+    char head[4] = {};
+    in.read(head, 4);
+    const std::size_t skip = head[0] == '\n' ? 1 : head[0] == '\r' && head[1] == '\n' ? 2 : 0;
+    const bool magic = std::tolower(head[skip]) == 'p' && std::tolower(head[skip + 1]) == 'l' &&
+                       std::tolower(head[skip + 2]) == 'y';
+    if (!magic && lower_extension(path) != ".ply") return {};
+    in.clear();
+    in.seekg(std::streamoff(skip));
+    std::uintmax_t offset = skip;
+    std::string line, problem;
+    if (!ply_header_line(in, line, problem, offset))
+        return problem.empty() ? "the PLY file has no header" : problem;
+    std::transform(line.begin(), line.end(), line.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+    while (!line.empty() && (line.back() == ' ' || line.back() == '\t')) line.pop_back();
+    if (line != "ply") return "the PLY file does not start with a 'ply' line";
+    std::string format;
+    std::vector<PlyElement> elements;
+    if (std::string header = read_ply_header(in, offset, format, elements); !header.empty()) return header;
+    if (format == "ascii") return ascii_ply_problem(in, elements);
+    const bool big_endian = format == "binary_big_endian";
+    if (!big_endian && format != "binary_little_endian") return "the PLY header has an unknown format '" + format + "'";
+    return binary_ply_problem(in, file_size, big_endian, elements);
 }
 
 // OFF: the counts line must not promise more vertex and face lines than

@@ -169,6 +169,46 @@ bool leans_across(const Mesh& m, Mesh::VertexHandle v, const glm::dvec3& n) {
     return std::acos(std::clamp(glm::dot(n, own), -1.0, 1.0)) > spread + glm::radians(kLeanDegrees);
 }
 
+/// Closes the hole round each vertex of @p mesh where three or more wedges
+/// meet: its copies' free strip edges @p hole (per original vertex), when
+/// they make one loop round it, are fanned by @p add_face(a, b, c, beside)
+/// (beside: a face at the vertex, whose part the fan takes).
+template <class AddFace>
+void close_fans(const Mesh& mesh, const std::unordered_map<int, std::vector<std::pair<std::size_t, std::size_t>>>& hole,
+                AddFace&& add_face) {
+    for (const auto& [v, edges] : hole) {
+        if (edges.size() < 3 || mesh.is_boundary(Mesh::VertexHandle(v))) continue;
+        std::unordered_map<std::size_t, std::size_t> next;
+        for (const auto& [from, to] : edges) next[from] = to;
+        std::vector<std::size_t> cycle{edges.front().first};
+        while (cycle.size() <= edges.size()) {
+            const auto it = next.find(cycle.back());
+            if (it == next.end() || it->second == cycle.front()) break;
+            cycle.push_back(it->second);
+        }
+        if (cycle.size() != edges.size()) continue; // not one loop round the vertex: left open
+        Mesh::FaceHandle beside;
+        for (const auto fh : mesh.vf_range(Mesh::VertexHandle(v))) beside = fh;
+        for (std::size_t i = 1; i + 1 < cycle.size(); ++i) add_face(cycle[0], cycle[i], cycle[i + 1], beside);
+    }
+}
+
+/// Where the file gave the sharp edges, its own normals shade @p m (the
+/// split of @p loaded, whose face corners became the vertices
+/// @p corner_vertex): each vertex takes the mean of the file's normals at
+/// its corners, unless it leans across its faces.
+void with_file_normals_at_corners(const LoadedMesh& loaded, const std::vector<std::size_t>& corner_vertex, Mesh& m) {
+    const Mesh& mesh = loaded.mesh;
+    std::vector<glm::dvec3> file(m.n_vertices(), glm::dvec3(0.0));
+    for (const auto h : mesh.halfedges())
+        if (!mesh.is_boundary(h))
+            file[corner_vertex[slot(h)]] += corner_normal(loaded, mesh.face_handle(h), mesh.to_vertex_handle(h));
+    for (const auto vh : m.vertices()) {
+        const double len = glm::length(file[slot(vh)]);
+        if (len > 0.0 && !leans_across(m, vh, file[slot(vh)] / len)) m.set_normal(vh, to_om(file[slot(vh)] / len));
+    }
+}
+
 } // namespace
 
 std::optional<LoadedMesh> split_sharp_edges(const LoadedMesh& loaded, const SurfaceOptions& options, SharpSplit* what) {
@@ -272,35 +312,10 @@ std::optional<LoadedMesh> split_sharp_edges(const LoadedMesh& loaded, const Surf
             hole[mesh.to_vertex_handle(h).idx()].push_back({bL, bR});
         }
     }
-    for (auto& [v, edges] : hole) {
-        if (edges.size() < 3 || mesh.is_boundary(Mesh::VertexHandle(v))) continue;
-        std::unordered_map<std::size_t, std::size_t> next;
-        for (const auto& [from, to] : edges) next[from] = to;
-        std::vector<std::size_t> cycle{edges.front().first};
-        while (cycle.size() <= edges.size()) {
-            const auto it = next.find(cycle.back());
-            if (it == next.end() || it->second == cycle.front()) break;
-            cycle.push_back(it->second);
-        }
-        if (cycle.size() != edges.size()) continue; // not one loop round the vertex: left open
-        Mesh::FaceHandle beside;
-        for (const auto fh : mesh.vf_range(Mesh::VertexHandle(v))) beside = fh;
-        for (std::size_t i = 1; i + 1 < cycle.size(); ++i) add_strip_face(cycle[0], cycle[i], cycle[i + 1], beside);
-    }
+    close_fans(mesh, hole, add_strip_face);
     omerr().enable();
     compute_vertex_normals(m); // zero-area faces weigh nothing: each copy takes its wedge's normal
-    if (options.sharp_angle < 0.0 && !loaded.corner_normals.empty()) {
-        // Where the file gave the edges, its own normals shade the surface:
-        // each vertex takes the mean of the file's normals at its corners.
-        std::vector<glm::dvec3> file(points.size(), glm::dvec3(0.0));
-        for (const auto h : mesh.halfedges())
-            if (!mesh.is_boundary(h))
-                file[corner_vertex[slot(h)]] += corner_normal(loaded, mesh.face_handle(h), mesh.to_vertex_handle(h));
-        for (const auto vh : m.vertices()) {
-            const double len = glm::length(file[slot(vh)]);
-            if (len > 0.0 && !leans_across(m, vh, file[slot(vh)] / len)) m.set_normal(vh, to_om(file[slot(vh)] / len));
-        }
-    }
+    if (options.sharp_angle < 0.0 && !loaded.corner_normals.empty()) with_file_normals_at_corners(loaded, corner_vertex, m);
     if (what) *what = split;
     return out;
 }
