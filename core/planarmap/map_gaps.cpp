@@ -46,10 +46,12 @@ int shading_class_at(const MeshTopology& topo, const RayHit& hit, const ShadingC
                             [&](int h) { return rv >= classes.level(classes.first_highlight() + h); });
 }
 
-void fill_snaxel_map_gaps(PlanarMap& map, const SnaxelEngine& engine, const SnaxelMapInput& input, const RayScene& rays,
-                          const ImageProjection& projection, const Camera& camera, const Light& light) {
-    const MeshTopology& topo = engine.topology();
-    if (map.vertex_region.size() != topo.n_vertices()) return;
+namespace {
+
+/// The outline, in the image, of the faces where a gap in @p map can show
+/// (none: empty).
+ClipperLib::Paths gap_faces(const PlanarMap& map, const MeshTopology& topo, const ImageProjection& projection,
+                            const Camera& camera) {
     // The faces that can show where no region reaches: turned to the
     // viewer and large in the image (where something hides part of one,
     // a region's front stops on the face's edges, and between those stops
@@ -85,8 +87,44 @@ void fill_snaxel_map_gaps(PlanarMap& map, const SnaxelEngine& engine, const Snax
         for (std::size_t k = 0; k < 3; ++k) outline.walk(fv[k].index(), fv[(k + 1) % 3].index());
         any = true;
     }
-    if (!any) return;
-    const ClipperLib::Paths faces = outline.paths([&](std::int64_t v) { return image[VertexId(std::int32_t(v))]; });
+    if (!any) return {};
+    return outline.paths([&](std::int64_t v) { return image[VertexId(std::int32_t(v))]; });
+}
+
+/// The region of @p map of class @p region_class at @p level nearest on the
+/// mesh to @p face: at its corners, else within two rings of them (a piece
+/// beside an occluder can lie in a face whose corners are all hidden); -1
+/// when there is none.
+std::int32_t nearest_region(const PlanarMap& map, const MeshTopology& topo, FaceId face, RegionClass region_class,
+                            double level) {
+    std::int32_t into = -1;
+    std::vector<VertexId> ring(topo.face_vertices()[face].begin(), topo.face_vertices()[face].end());
+    std::vector<VertexId> seen = ring;
+    for (int rings = 0; rings <= 2 && into < 0; ++rings) {
+        for (const VertexId v : ring) {
+            const std::int32_t r = map.vertex_region[v];
+            if (r >= 0 && map.regions[r].cls == region_class && map.regions[r].k == level) {
+                into = r;
+                break;
+            }
+        }
+        std::vector<VertexId> next;
+        for (const VertexId v : ring)
+            for (const VertexId w : topo.neighbours(v))
+                if (std::find(seen.begin(), seen.end(), w) == seen.end()) seen.push_back(w), next.push_back(w);
+        ring = std::move(next);
+    }
+    return into;
+}
+
+} // namespace
+
+void fill_snaxel_map_gaps(PlanarMap& map, const SnaxelEngine& engine, const SnaxelMapInput& input, const RayScene& rays,
+                          const ImageProjection& projection, const Camera& camera, const Light& light) {
+    const MeshTopology& topo = engine.topology();
+    if (map.vertex_region.size() != topo.n_vertices()) return;
+    const ClipperLib::Paths faces = gap_faces(map, topo, projection, camera);
+    if (faces.empty()) return;
     clip::Box reach;
     for (const ClipperLib::Path& path : faces) reach.add(path);
     // What of them no region covers.
@@ -147,24 +185,7 @@ void fill_snaxel_map_gaps(PlanarMap& map, const SnaxelEngine& engine, const Snax
         // corners, else within two rings of them (a piece beside an
         // occluder can lie in a face whose corners are all hidden). Joined
         // to it, the piece keeps the region's identity through animation.
-        std::int32_t into = -1;
-        std::vector<VertexId> ring(topo.face_vertices()[best->second.second].begin(),
-                                   topo.face_vertices()[best->second.second].end());
-        std::vector<VertexId> seen = ring;
-        for (int rings = 0; rings <= 2 && into < 0; ++rings) {
-            for (const VertexId v : ring) {
-                const std::int32_t r = map.vertex_region[v];
-                if (r >= 0 && map.regions[r].cls == region_class && map.regions[r].k == level) {
-                    into = r;
-                    break;
-                }
-            }
-            std::vector<VertexId> next;
-            for (const VertexId v : ring)
-                for (const VertexId w : topo.neighbours(v))
-                    if (std::find(seen.begin(), seen.end(), w) == seen.end()) seen.push_back(w), next.push_back(w);
-            ring = std::move(next);
-        }
+        const std::int32_t into = nearest_region(map, topo, best->second.second, region_class, level);
         if (into >= 0) {
             MapRegion& region = map.regions[into];
             const ClipperLib::Paths joined = clip::op(clip::to_paths(region.polygons), piece, ClipperLib::ctUnion);
