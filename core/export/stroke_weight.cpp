@@ -239,6 +239,59 @@ double landed_offset(const DrawnLoop& loop, std::size_t k, const glm::dvec2& lan
 
 } // namespace
 
+namespace {
+
+/// Of the snaxels @p kept from last frame (each from the loop
+/// @p kept_from says), those of the loop most of them come from are kept
+/// (where loops merged, that side keeps its u; the other side's are taken
+/// as new); returns that loop (of equal counts, the first).
+std::uint32_t keep_main_source(std::vector<std::pair<std::size_t, double>>& kept, const std::vector<std::uint32_t>& kept_from) {
+    std::unordered_map<std::uint32_t, std::size_t> from;
+    for (const std::uint32_t loop : kept_from) ++from[loop];
+    std::uint32_t source = 0;
+    std::size_t most = 0;
+    for (const auto& [p, count] : from)
+        if (count > most || (count == most && p < source)) most = count, source = p;
+    std::vector<std::pair<std::size_t, double>> own;
+    own.reserve(kept.size());
+    for (std::size_t i = 0; i < kept.size(); ++i)
+        if (kept_from[i] == source) own.push_back(kept[i]);
+    kept = std::move(own);
+    return source;
+}
+
+/// The most common value of @p d on the circle of @p period (where an event
+/// joined stretches whose u do not meet, the mean would fall between
+/// them): the fullest 16-px bin, refined by the mean round it. Between
+/// -period/2 and period/2 (@p nearest takes a difference the short way
+/// round), so that u = c + b s + e stays within the old period where the
+/// old u did, and the new period wraps it only past its end.
+template <class Nearest> double circular_mode(const std::vector<double>& d, double period, Nearest&& nearest) {
+    const long bins = std::max(1L, std::lround(std::floor(period / 16.0)));
+    std::map<long, std::size_t> count;
+    for (const double x : d) ++count[std::min(bins - 1, std::lround(std::floor(wrap(x, period) / period * double(bins))))];
+    long best = 0;
+    std::size_t fullest = 0;
+    const auto in_bin = [&](long bin) {
+        const auto it = count.find((bin + bins) % bins);
+        return it == count.end() ? 0 : it->second;
+    };
+    for (const auto& entry : count) {
+        const std::size_t around = in_bin(entry.first - 1) + entry.second + in_bin(entry.first + 1);
+        if (around > fullest) fullest = around, best = entry.first;
+    }
+    const double centre = (double(best) + 0.5) / double(bins) * period;
+    double sum = 0.0;
+    std::size_t near = 0;
+    for (const double x : d) {
+        const double off = nearest(x - centre);
+        if (std::abs(off) <= 32.0) sum += off, ++near;
+    }
+    return nearest(centre + (near ? sum / double(near) : 0.0));
+}
+
+} // namespace
+
 void parameterize_still(DrawnContour& contour) {
     for (DrawnLoop& loop : contour.loops) {
         if (!loop.u.empty() || loop.q.empty()) continue;
@@ -262,7 +315,6 @@ void StrokeParameter::step(DrawnContour& contour, const std::vector<AnimatedLoop
         // The snaxels that go on, and the previous loop most of them come from.
         std::vector<std::pair<std::size_t, double>> kept; // (snaxel, its u last frame)
         std::vector<std::uint32_t> kept_from;              // the loop it was on
-        std::unordered_map<std::uint32_t, std::size_t> from;
         for (std::size_t k = 0; k < n && k < ids.size(); ++k) {
             const auto it = previous_.find(ids[k]);
             if (it == previous_.end()) continue;
@@ -270,19 +322,8 @@ void StrokeParameter::step(DrawnContour& contour, const std::vector<AnimatedLoop
             if (surface && project) u -= landed_offset(loop, k, project(it->second.where));
             kept.push_back({k, u});
             kept_from.push_back(it->second.loop);
-            ++from[it->second.loop];
         }
-        std::uint32_t source = 0;
-        std::size_t most = 0;
-        for (const auto& [p, count] : from)
-            if (count > most || (count == most && p < source)) most = count, source = p;
-        // Where loops merged, the side most snaxels come from keeps its u;
-        // the other side's are taken as new.
-        std::vector<std::pair<std::size_t, double>> own;
-        own.reserve(kept.size());
-        for (std::size_t i = 0; i < kept.size(); ++i)
-            if (kept_from[i] == source) own.push_back(kept[i]);
-        kept = std::move(own);
+        const std::uint32_t source = keep_main_source(kept, kept_from);
         const bool ring = loop.closed && !kept.empty() && previous_period_[source] > 0.0;
         loop.u = s; // a new line: arc length from its first snaxel
         loop.u_period = loop.closed ? length : 0.0;
@@ -319,37 +360,8 @@ void StrokeParameter::step(DrawnContour& contour, const std::vector<AnimatedLoop
             std::vector<double> d(kept.size());
             for (std::size_t i = 0; i < kept.size(); ++i) d[i] = kept[i].second - b * s[kept[i].first];
             double c = 0.0;
-            if (ring) {
-                // The most common value on the circle (where an event joined
-                // stretches whose u do not meet, the mean would fall between
-                // them): the fullest 16-px bin, refined by the mean round it.
-                const long bins = std::max(1L, std::lround(std::floor(old_period / 16.0)));
-                std::map<long, std::size_t> count;
-                for (const double x : d) ++count[std::min(bins - 1, std::lround(std::floor(wrap(x, old_period) / old_period * double(bins))))];
-                long best = 0;
-                std::size_t fullest = 0;
-                const auto in_bin = [&](long bin) {
-                    const auto it = count.find((bin + bins) % bins);
-                    return it == count.end() ? 0 : it->second;
-                };
-                for (const auto& entry : count) {
-                    const std::size_t around = in_bin(entry.first - 1) + entry.second + in_bin(entry.first + 1);
-                    if (around > fullest) fullest = around, best = entry.first;
-                }
-                const double centre = (double(best) + 0.5) / double(bins) * old_period;
-                double sum = 0.0;
-                std::size_t near = 0;
-                for (const double x : d) {
-                    const double off = nearest(x - centre);
-                    if (std::abs(off) <= 32.0) sum += off, ++near;
-                }
-                // Between -period/2 and period/2, so that u = c + b s + e
-                // stays within the old period where the old u did, and the
-                // new period wraps it only past its end.
-                c = nearest(centre + (near ? sum / double(near) : 0.0));
-            } else {
-                c = median(d);
-            }
+            if (ring) c = circular_mode(d, old_period, nearest);
+            else c = median(d);
             // Each kept snaxel's departure from that uniform parameter (on a
             // ring the nearest way round its old period), spread to the
             // snaxels between them by arc length.
