@@ -839,6 +839,59 @@ void run_polyline(const ParamLoop& p, const ClassSpan& span, const StrokeStyle& 
     out.push_back(std::move(sp));
 }
 
+/// Frames made without a carried stroke parameter (by hand) take a
+/// still's: contour @p c of every frame, parameterized as a still; none
+/// when every frame carries one.
+std::vector<DrawnContour> still_parameters(const std::vector<AnimationFrame>& frames, std::size_t c) {
+    std::vector<DrawnContour> stills;
+    const bool by_hand = std::any_of(frames.begin(), frames.end(), [&](const AnimationFrame& frame) {
+        return std::any_of(frame.drawing.contours[c].loops.begin(), frame.drawing.contours[c].loops.end(),
+                           [](const DrawnLoop& l) { return l.u.empty() && !l.q.empty(); });
+    });
+    if (!by_hand) return stills;
+    stills.resize(frames.size());
+    for (std::size_t f = 0; f < frames.size(); ++f) {
+        stills[f] = frames[f].drawing.contours[c];
+        parameterize_still(stills[f]);
+    }
+    return stills;
+}
+
+/// The paths of contour @p c's brief contours (@p brief: per class, frame
+/// -> the runs of its one-frame contours), into @p out.
+void brief_paths(const std::map<int, anim::Shape> (&brief)[2], std::size_t c, std::vector<AnimatedPathData>& out) {
+    // The brief contours' path: each frame's shape holds until the next
+    // frame (nothing corresponds from one frame to the next); frames without
+    // any draw a lone move.
+    for (const int cls : {0, 1}) {
+        if (brief[cls].empty()) continue;
+        AnimatedPathData path;
+        path.contour = c;
+        path.cls = cls;
+        path.brief = true;
+        path.first = brief[cls].begin()->first;
+        path.last = brief[cls].rbegin()->first;
+        glm::dvec2 rest = brief[cls].begin()->second.front().pts.front();
+        for (int f = path.first; f <= path.last; ++f) {
+            const auto it = brief[cls].find(f);
+            if (it == brief[cls].end() && f > path.first && brief[cls].count(f - 1) == 0) continue; // still empty
+            const anim::Shape shape = it != brief[cls].end() ? it->second : anim::Shape{anim::Subpath{{rest}, false}};
+            if (it != brief[cls].end()) rest = shape.front().pts.front();
+            int until = f + 1; // the next frame whose shape differs
+            while (until <= path.last && it == brief[cls].end() && brief[cls].count(until) == 0) ++until;
+            PathSegment seg;
+            seg.times.push_back(double(f));
+            seg.shapes.push_back(shape);
+            if (until <= path.last) {
+                seg.times.push_back(double(until) - anim::kSwitch);
+                seg.shapes.push_back(shape);
+            }
+            path.segments.push_back(std::move(seg));
+        }
+        out.push_back(std::move(path));
+    }
+}
+
 } // namespace
 
 void stroke_paths(const std::vector<AnimationFrame>& frames, std::size_t c, const Style& style,
@@ -858,19 +911,7 @@ void stroke_paths(const std::vector<AnimationFrame>& frames, std::size_t c, cons
     };
     const bool screen_dashes = screen(cs.visible) || screen(cs.hidden);
     const bool carried = (cs.visible.draw && cs.visible.carries_parameter()) || (cs.hidden.draw && cs.hidden.carries_parameter());
-    std::vector<DrawnContour> stills;
-    if (carried) // frames made without a carried parameter (by hand): a still's
-        for (const AnimationFrame& frame : frames)
-            if (std::any_of(frame.drawing.contours[c].loops.begin(), frame.drawing.contours[c].loops.end(),
-                            [](const DrawnLoop& l) { return l.u.empty() && !l.q.empty(); })) {
-                stills.resize(frames.size());
-                break;
-            }
-    if (!stills.empty())
-        for (std::size_t f = 0; f < frames.size(); ++f) {
-            stills[f] = frames[f].drawing.contours[c];
-            parameterize_still(stills[f]);
-        }
+    const std::vector<DrawnContour> stills = carried ? still_parameters(frames, c) : std::vector<DrawnContour>{};
     std::map<std::uint64_t, std::vector<std::pair<int, std::size_t>>> by_sequence;
     for (std::size_t f = 0; f < frames.size(); ++f)
         for (std::size_t l = 0; l < frames[f].loops[c].size(); ++l)
@@ -951,36 +992,7 @@ void stroke_paths(const std::vector<AnimationFrame>& frames, std::size_t c, cons
             }
         }
     }
-    // The brief contours' path: each frame's shape holds until the next
-    // frame (nothing corresponds from one frame to the next); frames without
-    // any draw a lone move.
-    for (const int cls : {0, 1}) {
-        if (brief[cls].empty()) continue;
-        AnimatedPathData path;
-        path.contour = c;
-        path.cls = cls;
-        path.brief = true;
-        path.first = brief[cls].begin()->first;
-        path.last = brief[cls].rbegin()->first;
-        glm::dvec2 rest = brief[cls].begin()->second.front().pts.front();
-        for (int f = path.first; f <= path.last; ++f) {
-            const auto it = brief[cls].find(f);
-            if (it == brief[cls].end() && f > path.first && brief[cls].count(f - 1) == 0) continue; // still empty
-            const anim::Shape shape = it != brief[cls].end() ? it->second : anim::Shape{anim::Subpath{{rest}, false}};
-            if (it != brief[cls].end()) rest = shape.front().pts.front();
-            int until = f + 1; // the next frame whose shape differs
-            while (until <= path.last && it == brief[cls].end() && brief[cls].count(until) == 0) ++until;
-            PathSegment seg;
-            seg.times.push_back(double(f));
-            seg.shapes.push_back(shape);
-            if (until <= path.last) {
-                seg.times.push_back(double(until) - anim::kSwitch);
-                seg.shapes.push_back(shape);
-            }
-            path.segments.push_back(std::move(seg));
-        }
-        out.push_back(std::move(path));
-    }
+    brief_paths(brief, c, out);
 }
 
 } // namespace snaxels
