@@ -379,6 +379,14 @@ class StrokeWriter {
     StrokeWriter(const std::vector<LifeFrame>& life, int first_frame, const AnimatedSvgOptions& options)
         : life_(life), first_frame_(first_frame), options_(options) {}
 
+    /// A segment of a plan: its first and last life frames, the time of its
+    /// first key.
+    struct Range {
+        std::size_t first, last;
+        double start;
+        bool hold_after = false; ///< a jump follows: hold the last shape until then
+    };
+
     /// The runs of @p cls that @p keep selects, over life frames [a, b]:
     /// the path's segments. A segment's subpaths are the runs alive in any
     /// of its frames; in frames before a run appears it is a point where it
@@ -390,13 +398,22 @@ class StrokeWriter {
         for (std::size_t i = a; i <= b; ++i)
             for (const Run& r : life_[i].runs[cls])
                 if (keep(r.id)) runs[i - a].push_back(r);
+        const std::vector<Range> ranges = ranges_of(runs, a, b);
+        std::vector<Plan> plans;
+        for (std::size_t q = 0; q < ranges.size(); ++q) {
+            const Range& rg = ranges[q];
+            if (q > 0 && ranges[q - 1].last + 1 == rg.first && !ranges[q - 1].hold_after)
+                plans.push_back(transition(runs[rg.first - 1 - a], runs[rg.first - a], rg.first - 1));
+            plans.push_back(plan_of(runs, a, rg));
+        }
+        return plans;
+    }
+
+    /// A plan's frames: the runs of life frames [a, b] (@p runs, from a)
+    /// cut into segments where a run jumps, appears or vanishes, or travels
+    /// too far for one vertex set.
+    std::vector<Range> ranges_of(const std::vector<std::vector<Run>>& runs, std::size_t a, std::size_t b) const {
         auto time_of = [&](std::size_t i) { return double(first_frame_ + int(i)); };
-        // Segment boundaries: (first frame, last frame, time of its first key).
-        struct Range {
-            std::size_t first, last;
-            double start;
-            bool hold_after = false; ///< a jump follows: hold the last shape until then
-        };
         std::vector<Range> ranges{{a, a, time_of(a)}};
         std::map<int, std::pair<double, double>> lo_hi;
         std::map<int, double> widest;
@@ -444,61 +461,62 @@ class StrokeWriter {
                 widest[r.id] = std::max(widest[r.id], extent(r.span));
             }
         }
-        std::vector<Plan> plans;
-        for (std::size_t q = 0; q < ranges.size(); ++q) {
-            const Range& rg = ranges[q];
-            if (q > 0 && ranges[q - 1].last + 1 == rg.first && !ranges[q - 1].hold_after)
-                plans.push_back(transition(runs[rg.first - 1 - a], runs[rg.first - a], rg.first - 1));
-            Plan plan;
-            std::map<int, std::vector<const Run*>> by_id; // per id: its run in each frame of the range
-            for (std::size_t i = rg.first; i <= rg.last; ++i)
-                for (const Run& r : runs[i - a]) {
-                    auto& v = by_id[r.id];
-                    v.resize(rg.last - rg.first + 1, nullptr);
-                    v[i - rg.first] = &r;
-                }
-            const std::size_t frames = rg.last - rg.first + 1;
-            std::vector<std::vector<ClassSpan>> spans(frames); // [frame][subpath]
-            for (const auto& [id, present] : by_id) {
-                plan.ids.push_back(id);
-                std::size_t p0 = 0, p1 = frames - 1;
-                while (!present[p0]) ++p0;
-                while (!present[p1]) --p1;
-                bool all_whole = p0 == 0 && p1 == frames - 1;
-                double centre = 0.0;
-                bool have_centre = false;
-                for (std::size_t f = p0; f <= p1; ++f) {
-                    all_whole &= present[f] && present[f]->span.whole;
-                    if (present[f] && !present[f]->span.whole && !have_centre)
-                        centre = 0.5 * (present[f]->span.u0 + present[f]->span.u1), have_centre = true;
-                }
-                auto open = [&](const ClassSpan& sp) {
-                    if (!sp.whole || all_whole) return sp;
-                    return ClassSpan{sp.cls, false, centre - 0.5, centre + 0.5}; // a ring opened where the run will open
-                };
-                const ClassSpan first = open(present[p0]->span), last = open(present[p1]->span);
-                for (std::size_t f = 0; f < frames; ++f) {
-                    ClassSpan sp;
-                    if (f < p0) sp = {first.cls, false, 0.5 * (first.u0 + first.u1), 0.5 * (first.u0 + first.u1)};
-                    else if (f > p1) sp = {last.cls, false, 0.5 * (last.u0 + last.u1), 0.5 * (last.u0 + last.u1)};
-                    else if (present[f]) sp = open(present[f]->span);
-                    else sp = {last.cls, false, 0.5 * (last.u0 + last.u1), 0.5 * (last.u0 + last.u1)};
-                    spans[f].push_back(sp);
-                }
+        return ranges;
+    }
+
+    /// The plan of one segment @p rg of the runs @p runs (life frames from
+    /// @p a): a subpath per run alive in any of its frames, a point where
+    /// it will appear or was before it appears or after it vanishes.
+    Plan plan_of(const std::vector<std::vector<Run>>& runs, std::size_t a, const Range& rg) const {
+        auto time_of = [&](std::size_t i) { return double(first_frame_ + int(i)); };
+        Plan plan;
+        std::map<int, std::vector<const Run*>> by_id; // per id: its run in each frame of the range
+        for (std::size_t i = rg.first; i <= rg.last; ++i)
+            for (const Run& r : runs[i - a]) {
+                auto& v = by_id[r.id];
+                v.resize(rg.last - rg.first + 1, nullptr);
+                v[i - rg.first] = &r;
             }
-            if (plan.ids.empty()) {
-                plan.ids.push_back(-1);
-                for (auto& s : spans) s.push_back({});
+        const std::size_t frames = rg.last - rg.first + 1;
+        std::vector<std::vector<ClassSpan>> spans(frames); // [frame][subpath]
+        for (const auto& [id, present] : by_id) {
+            plan.ids.push_back(id);
+            std::size_t p0 = 0, p1 = frames - 1;
+            while (!present[p0]) ++p0;
+            while (!present[p1]) --p1;
+            bool all_whole = p0 == 0 && p1 == frames - 1;
+            double centre = 0.0;
+            bool have_centre = false;
+            for (std::size_t f = p0; f <= p1; ++f) {
+                all_whole &= present[f] && present[f]->span.whole;
+                if (present[f] && !present[f]->span.whole && !have_centre)
+                    centre = 0.5 * (present[f]->span.u0 + present[f]->span.u1), have_centre = true;
             }
+            auto open = [&](const ClassSpan& sp) {
+                if (!sp.whole || all_whole) return sp;
+                return ClassSpan{sp.cls, false, centre - 0.5, centre + 0.5}; // a ring opened where the run will open
+            };
+            const ClassSpan first = open(present[p0]->span), last = open(present[p1]->span);
             for (std::size_t f = 0; f < frames; ++f) {
-                const std::size_t i = rg.first + f;
-                plan.keys.push_back({i, 0.0, f == 0 ? rg.start : time_of(i), spans[f]});
+                ClassSpan sp;
+                if (f < p0) sp = {first.cls, false, 0.5 * (first.u0 + first.u1), 0.5 * (first.u0 + first.u1)};
+                else if (f > p1) sp = {last.cls, false, 0.5 * (last.u0 + last.u1), 0.5 * (last.u0 + last.u1)};
+                else if (present[f]) sp = open(present[f]->span);
+                else sp = {last.cls, false, 0.5 * (last.u0 + last.u1), 0.5 * (last.u0 + last.u1)};
+                spans[f].push_back(sp);
             }
-            // Before a jump the shape holds until the next frame begins.
-            if (rg.hold_after) plan.keys.push_back({rg.last, 0.0, time_of(rg.last) + 1.0 - anim::kSwitch, spans.back()});
-            plans.push_back(std::move(plan));
         }
-        return plans;
+        if (plan.ids.empty()) {
+            plan.ids.push_back(-1);
+            for (auto& s : spans) s.push_back({});
+        }
+        for (std::size_t f = 0; f < frames; ++f) {
+            const std::size_t i = rg.first + f;
+            plan.keys.push_back({i, 0.0, f == 0 ? rg.start : time_of(i), spans[f]});
+        }
+        // Before a jump the shape holds until the next frame begins.
+        if (rg.hold_after) plan.keys.push_back({rg.last, 0.0, time_of(rg.last) + 1.0 - anim::kSwitch, spans.back()});
+        return plan;
     }
 
     /// The segment of @p plan: geometry at every key, vertices and keys
@@ -570,34 +588,7 @@ class StrokeWriter {
             }
             if (dashed) return dash_shape(plan, k, shape, dash_ids, stroke);
             if (!weighted) return shape;
-            // Line weight: each subpath's stroke points from the loop the
-            // key draws (its parameter, weight and time), wobbled, and
-            // outlined where the width varies.
-            const ParamLoop& w = k.s < 0.5 ? a : b;
-            anim::Shape weighed;
-            for (std::size_t j = 0; j < n; ++j) {
-                if (plan.ids[j] < 0) {
-                    weighed.push_back(shape[j]);
-                    continue;
-                }
-                std::vector<StrokePoint> centre;
-                centre.reserve(shape[j].pts.size());
-                auto add = [&](double u, const glm::dvec2& q) {
-                    StrokePoint p = w.stroke_at(u);
-                    p.q = q;
-                    centre.push_back(p);
-                };
-                const ClassSpan& s = k.spans[j];
-                if (ring[j]) {
-                    for (std::size_t g = 0; g < grid[j].size(); ++g) add(grid[j][g], shape[j].pts[g]);
-                } else {
-                    add(s.u0, shape[j].pts.front());
-                    for (std::size_t g = 0; g < grid[j].size(); ++g) add(std::clamp(grid[j][g], s.u0, s.u1), shape[j].pts[g + 1]);
-                    add(s.u1, shape[j].pts.back());
-                }
-                weigh(stroke, std::move(centre), ring[j], w.u_period, w.seconds, weighed);
-            }
-            return weighed;
+            return weighed_shape(plan, k, shape, grid, ring, stroke);
         };
         anim::Segment seg;
         for (std::size_t k = 0; k < plan.keys.size(); ++k) {
@@ -619,6 +610,41 @@ class StrokeWriter {
     }
 
   private:
+    /// A key's shape with line weight: each subpath's stroke points from
+    /// the loop the key draws (its parameter, weight and time), wobbled, and
+    /// outlined where the width varies. @p shape is the key's centre lines
+    /// on the plan's grid (@p grid, @p ring: emit's).
+    anim::Shape weighed_shape(const Plan& plan, const Key& k, const anim::Shape& shape,
+                              const std::vector<std::vector<double>>& grid, const std::vector<char>& ring,
+                              const StrokeStyle& stroke) const {
+        const std::size_t n = plan.ids.size();
+        const ParamLoop& w = *life_[k.s < 0.5 ? k.i : std::min(k.i + 1, life_.size() - 1)].loop;
+        anim::Shape weighed;
+        for (std::size_t j = 0; j < n; ++j) {
+            if (plan.ids[j] < 0) {
+                weighed.push_back(shape[j]);
+                continue;
+            }
+            std::vector<StrokePoint> centre;
+            centre.reserve(shape[j].pts.size());
+            auto add = [&](double u, const glm::dvec2& q) {
+                StrokePoint p = w.stroke_at(u);
+                p.q = q;
+                centre.push_back(p);
+            };
+            const ClassSpan& s = k.spans[j];
+            if (ring[j]) {
+                for (std::size_t g = 0; g < grid[j].size(); ++g) add(grid[j][g], shape[j].pts[g]);
+            } else {
+                add(s.u0, shape[j].pts.front());
+                for (std::size_t g = 0; g < grid[j].size(); ++g) add(std::clamp(grid[j][g], s.u0, s.u1), shape[j].pts[g + 1]);
+                add(s.u1, shape[j].pts.back());
+            }
+            weigh(stroke, std::move(centre), ring[j], w.u_period, w.seconds, weighed);
+        }
+        return weighed;
+    }
+
     /// A dash of a key's run: its id, the loop's arc length at its ends,
     /// and how many points draw it (the same for an id in every key).
     struct KeyDash {

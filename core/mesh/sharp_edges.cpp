@@ -209,19 +209,64 @@ void with_file_normals_at_corners(const LoadedMesh& loaded, const std::vector<st
     }
 }
 
-} // namespace
-
-std::optional<LoadedMesh> split_sharp_edges(const LoadedMesh& loaded, const SurfaceOptions& options, SharpSplit* what) {
+/// Per edge of @p loaded's mesh, whether it is sharp by @p options (by
+/// the default angle, only where it makes a feature line); edges on a
+/// border never are.
+std::vector<std::uint8_t> sharp_edges_of(const LoadedMesh& loaded, const SurfaceOptions& options) {
     const Mesh& mesh = loaded.mesh;
-    SharpSplit split;
-    // A face's corner at a vertex is the face's halfedge pointing to it.
-    // Corners at one vertex in faces joined by a smooth edge are one wedge.
     std::vector<std::uint8_t> sharp(mesh.n_edges(), 0);
     for (const auto eh : mesh.edges()) {
         const Halfedge h0 = mesh.halfedge_handle(eh, 0), h1 = mesh.halfedge_handle(eh, 1);
         if (!mesh.is_boundary(h0) && !mesh.is_boundary(h1)) sharp[slot(eh)] = is_sharp(loaded, h0, options);
     }
     if (by_default_angle(loaded, options)) keep_feature_lines(loaded, sharp);
+    return sharp;
+}
+
+/// The split mesh's vertices: the mesh's, and a copy of a vertex for each
+/// of its wedges (@p wedges) but the first (counted in @p split); the
+/// source vertex of each; and the new vertex of each face corner.
+struct WedgeVertices {
+    std::vector<Mesh::Point> points;
+    std::vector<std::uint32_t> source;
+    std::vector<std::size_t> corner_vertex;
+};
+
+WedgeVertices wedge_vertices(const LoadedMesh& loaded, Corners& wedges, SharpSplit& split) {
+    const Mesh& mesh = loaded.mesh;
+    WedgeVertices out;
+    std::vector<Mesh::Point>& points = out.points;
+    std::vector<std::uint32_t>& source = out.source;
+    source = loaded.vertex_source;
+    points.reserve(mesh.n_vertices());
+    for (const auto vh : mesh.vertices()) points.push_back(mesh.point(vh));
+    out.corner_vertex.assign(mesh.n_halfedges(), 0);
+    std::unordered_map<std::size_t, std::size_t> vertex_of_wedge;
+    for (const auto vh : mesh.vertices()) {
+        vertex_of_wedge.clear();
+        for (const auto h : mesh.vih_range(vh)) {
+            if (mesh.is_boundary(h)) continue;
+            auto [it, fresh] = vertex_of_wedge.try_emplace(wedges.find(slot(h)), slot(vh));
+            if (fresh && vertex_of_wedge.size() > 1) {
+                it->second = points.size();
+                points.push_back(mesh.point(vh));
+                source.push_back(source[slot(vh)]);
+                ++split.copies;
+            }
+            out.corner_vertex[slot(h)] = it->second;
+        }
+    }
+    return out;
+}
+
+} // namespace
+
+std::optional<LoadedMesh> split_sharp_edges(const LoadedMesh& loaded, const SurfaceOptions& options, SharpSplit* what) {
+    const Mesh& mesh = loaded.mesh;
+    SharpSplit split;
+    const std::vector<std::uint8_t> sharp = sharp_edges_of(loaded, options);
+    // A face's corner at a vertex is the face's halfedge pointing to it.
+    // Corners at one vertex in faces joined by a smooth edge are one wedge.
     Corners wedges(mesh.n_halfedges());
     for (const auto eh : mesh.edges()) {
         const Halfedge h0 = mesh.halfedge_handle(eh, 0), h1 = mesh.halfedge_handle(eh, 1);
@@ -238,27 +283,7 @@ std::optional<LoadedMesh> split_sharp_edges(const LoadedMesh& loaded, const Surf
         return with_file_normals(loaded, options);
     }
 
-    // Each wedge at a vertex but the first gets a copy of the vertex.
-    std::vector<Mesh::Point> points;
-    std::vector<std::uint32_t> source = loaded.vertex_source;
-    points.reserve(mesh.n_vertices());
-    for (const auto vh : mesh.vertices()) points.push_back(mesh.point(vh));
-    std::vector<std::size_t> corner_vertex(mesh.n_halfedges(), 0); // the new vertex of each face corner
-    std::unordered_map<std::size_t, std::size_t> vertex_of_wedge;
-    for (const auto vh : mesh.vertices()) {
-        vertex_of_wedge.clear();
-        for (const auto h : mesh.vih_range(vh)) {
-            if (mesh.is_boundary(h)) continue;
-            auto [it, fresh] = vertex_of_wedge.try_emplace(wedges.find(slot(h)), slot(vh));
-            if (fresh && vertex_of_wedge.size() > 1) {
-                it->second = points.size();
-                points.push_back(mesh.point(vh));
-                source.push_back(source[slot(vh)]);
-                ++split.copies;
-            }
-            corner_vertex[slot(h)] = it->second;
-        }
-    }
+    auto [points, source, corner_vertex] = wedge_vertices(loaded, wedges, split);
     if (split.copies == 0) {
         if (what) *what = split;
         return std::nullopt; // sharp edges that part no vertex's faces: smooth everywhere
