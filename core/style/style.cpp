@@ -388,6 +388,134 @@ struct Parser {
         return s;
     }
 
+    /// <light>: a direction or a point the style lights the scene from.
+    void light_element(const pugi::xml_node& child, Style& style) const {
+        check_attributes(child);
+        const bool dir = bool(child.attribute("dir")), pos = bool(child.attribute("pos"));
+        if (dir == pos) fail(child, "<light> takes either dir=\"x,y,z\" or pos=\"x,y,z\"");
+        Light light;
+        if (dir) {
+            light.dir = vector(child, "dir");
+            if (glm::length(light.dir) < 1e-12) fail(child, "dir must not be the zero vector");
+            light.dir = glm::normalize(light.dir);
+        } else {
+            light.point = true;
+            light.pos = vector(child, "pos");
+        }
+        style.light = light;
+    }
+
+    /// <surface>: where the surface is shaded hard (sharp-angle).
+    void surface_element(const pugi::xml_node& child, Style& style) const {
+        check_attributes(child);
+        const std::string angle = child.attribute("sharp-angle").value();
+        if (angle == "file") {
+            style.surface.sharp_angle = kFileNormals;
+        } else {
+            char* end = nullptr;
+            const double degrees = std::strtod(angle.c_str(), &end);
+            if (child.attribute("sharp-angle") && (end == angle.c_str() || *end != '\0' || !(degrees >= 0.0 && degrees <= 180.0)))
+                fail(child, "sharp-angle=\"" + angle + "\" must be degrees from 0 to 180, or file");
+            style.surface.sharp_angle = number(child, "sharp-angle", kFileNormals, 0.0, 180.0);
+        }
+    }
+
+    /// <contour>: a line set (its kind and value, the parts it takes) and its strokes.
+    void contour_element(const pugi::xml_node& child, Style& style) const {
+        check_attributes(child);
+        const std::string kind = child.attribute("kind").value();
+        ContourSpec spec;
+        if (kind != "crease" && child.attribute("angle")) fail(child, "only a crease contour takes an angle");
+        for (const char* attr : {"min-derivative", "min-angle", "test", "threshold"})
+            if (kind != "suggestive" && child.attribute(attr))
+                fail(child, std::string("only a suggestive contour takes ") + attr);
+        if (kind != "crease" && kind != "border" && kind != "material" && kind != "object" &&
+            child.attribute("min-length"))
+            fail(child, "only crease, border, material and object contours take a min-length");
+        spec.min_length = number(child, "min-length", 0.0, 0.0, 1.0);
+        if (kind == "visual" || kind == "shadow" || kind == "parabolic" || kind == "border" || kind == "material" ||
+            kind == "object" || kind == "intersection") {
+            if (child.attribute("k")) fail(child, "a " + kind + " contour takes no k");
+            spec.kind = ContourSpec::parse(kind).kind;
+        } else if (kind == "crease") {
+            if (child.attribute("k")) fail(child, "a crease contour takes angle=\"DEGREES\", not k");
+            spec.kind = ContourKind::Crease;
+            spec.k = number(child, "angle", kDefaultCreaseDegrees, 0.01, 179.99);
+        } else if (kind == "suggestive") {
+            if (child.attribute("k"))
+                fail(child, "a suggestive contour takes min-derivative=\"D\" and min-angle=\"DEGREES\", not k");
+            suggestive(child, spec);
+        } else if (kind == "isophote" || kind == "gleam") {
+            if (!child.attribute("k")) fail(child, "an " + kind + " contour needs k (a cosine in -1 .. 1)");
+            spec.kind = kind == "isophote" ? ContourKind::Isophote : ContourKind::Gleam;
+            spec.k = number(child, "k", 0.0, -1.0, 1.0);
+        } else {
+            std::string kinds;
+            const auto& all = words(child, "kind");
+            for (std::size_t i = 0; i < all.size(); ++i)
+                kinds += (i ? i + 1 == all.size() ? " or " : ", " : "") + all[i];
+            fail(child, "kind=\"" + kind + "\" must be " + kinds);
+        }
+        spec.parts = selector(child, style);
+        if (child.attribute("over")) {
+            if (kind != "visual") fail(child, "only a visual contour takes over=\"objects\"");
+            spec.parts.over_objects = choice(child, "over", "objects") == "objects";
+        }
+        for (const ContourStyle& existing : style.contours)
+            if (existing.spec.label() == spec.label()) fail(child, "a second <contour> for " + spec.label());
+        ContourStyle cs = default_contour_style(spec);
+        for (const pugi::xml_node part : child.children()) {
+            if (part.type() != pugi::node_element) continue;
+            const std::string part_name = part.name();
+            if (part_name == "visible") cs.visible = stroke(part, cs.visible);
+            else if (part_name == "hidden") cs.hidden = stroke(part, cs.hidden);
+            else warn(part, "unknown element <" + part_name + "> in <contour> (expected <visible> or <hidden>)");
+        }
+        style.contours.push_back(finished(child, cs));
+    }
+
+    /// <region>: a fill of a shading class (and level), over the parts it takes.
+    void region_element(const pugi::xml_node& child, Style& style) const {
+        check_attributes(child);
+        RegionStyle rs;
+        const std::string cls = choice(child, "class", "");
+        if (cls.empty()) fail(child, "<region> needs class=\"shadow|lit|band|highlight\"");
+        rs.cls = *parse_region_class(cls); // choice() admits only the names
+        const bool needs_k = region_class_has_level(rs.cls);
+        if (needs_k && !child.attribute("k"))
+            fail(child, "a " + cls + " region needs k (" +
+                            (rs.cls == RegionClass::Band ? "the isophote level it starts at" : "the gleam threshold") + ")");
+        if (!needs_k && child.attribute("k")) fail(child, "a " + cls + " region takes no k");
+        rs.k = number(child, "k", 0.0, -1.0, 1.0);
+        rs.fill_material = std::string(child.attribute("fill").value()) == "material";
+        if (!rs.fill_material) rs.fill = colour(child, "fill", rs.fill, false);
+        if (child.attribute("shade") && !rs.fill_material)
+            fail(child, "shade goes with fill=\"material\" (it shades the material's colour)");
+        rs.shade = number(child, "shade", rs.shade, 0.0, 2.0);
+        rs.opacity = number(child, "opacity", rs.opacity, 0.0, 1.0);
+        rs.erosion = number(child, "erosion", rs.erosion, 0.0, 100.0);
+        rs.parts = selector(child, style);
+        for (const RegionStyle& other : style.regions)
+            if (other.cls == rs.cls && std::abs(other.k - rs.k) < 1e-9 && other.parts == rs.parts)
+                fail(child, "a second <region> for " + cls + (rs.parts.empty() ? "" : " " + rs.parts.text()));
+        style.regions.push_back(rs);
+    }
+
+    /// <object>: a pattern of objects hidden or kept as occluders.
+    void object_element(const pugi::xml_node& child, Style& style) const {
+        check_attributes(child);
+        const std::string pattern = child.attribute("name").value();
+        if (pattern.empty()) fail(child, "<object> needs name=\"PATTERN\" (an object's name, or a glob such as wheel*)");
+        if (pattern[0] == '!') fail(child, "<object name=\"" + pattern + "\">: name a pattern to set, without !");
+        const bool hide = boolean(child, "hide", false), draw = boolean(child, "draw", true);
+        if (hide) style.hidden_objects.push_back(pattern);
+        else if (!draw) style.occluders.push_back(pattern);
+        if (hide || !draw) {
+            const StyleDiagnostic at = where(child.offset_debug(), "");
+            style.part_patterns.push_back({{{pattern}, {}}, at.line, at.column});
+        }
+    }
+
     Style parse() const {
         pugi::xml_document doc;
         const pugi::xml_parse_result result = doc.load_buffer(text.data(), text.size());
@@ -409,118 +537,15 @@ struct Parser {
                 style.margin = number(child, "margin", style.margin, 0.0, 10000.0);
                 style.background = colour(child, "background", style.background, true);
             } else if (name == "light") {
-                check_attributes(child);
-                const bool dir = bool(child.attribute("dir")), pos = bool(child.attribute("pos"));
-                if (dir == pos) fail(child, "<light> takes either dir=\"x,y,z\" or pos=\"x,y,z\"");
-                Light light;
-                if (dir) {
-                    light.dir = vector(child, "dir");
-                    if (glm::length(light.dir) < 1e-12) fail(child, "dir must not be the zero vector");
-                    light.dir = glm::normalize(light.dir);
-                } else {
-                    light.point = true;
-                    light.pos = vector(child, "pos");
-                }
-                style.light = light;
+                light_element(child, style);
             } else if (name == "surface") {
-                check_attributes(child);
-                const std::string angle = child.attribute("sharp-angle").value();
-                if (angle == "file") {
-                    style.surface.sharp_angle = kFileNormals;
-                } else {
-                    char* end = nullptr;
-                    const double degrees = std::strtod(angle.c_str(), &end);
-                    if (child.attribute("sharp-angle") && (end == angle.c_str() || *end != '\0' || !(degrees >= 0.0 && degrees <= 180.0)))
-                        fail(child, "sharp-angle=\"" + angle + "\" must be degrees from 0 to 180, or file");
-                    style.surface.sharp_angle = number(child, "sharp-angle", kFileNormals, 0.0, 180.0);
-                }
+                surface_element(child, style);
             } else if (name == "contour") {
-                check_attributes(child);
-                const std::string kind = child.attribute("kind").value();
-                ContourSpec spec;
-                if (kind != "crease" && child.attribute("angle")) fail(child, "only a crease contour takes an angle");
-                for (const char* attr : {"min-derivative", "min-angle", "test", "threshold"})
-                    if (kind != "suggestive" && child.attribute(attr))
-                        fail(child, std::string("only a suggestive contour takes ") + attr);
-                if (kind != "crease" && kind != "border" && kind != "material" && kind != "object" &&
-                    child.attribute("min-length"))
-                    fail(child, "only crease, border, material and object contours take a min-length");
-                spec.min_length = number(child, "min-length", 0.0, 0.0, 1.0);
-                if (kind == "visual" || kind == "shadow" || kind == "parabolic" || kind == "border" || kind == "material" ||
-                    kind == "object" || kind == "intersection") {
-                    if (child.attribute("k")) fail(child, "a " + kind + " contour takes no k");
-                    spec.kind = ContourSpec::parse(kind).kind;
-                } else if (kind == "crease") {
-                    if (child.attribute("k")) fail(child, "a crease contour takes angle=\"DEGREES\", not k");
-                    spec.kind = ContourKind::Crease;
-                    spec.k = number(child, "angle", kDefaultCreaseDegrees, 0.01, 179.99);
-                } else if (kind == "suggestive") {
-                    if (child.attribute("k"))
-                        fail(child, "a suggestive contour takes min-derivative=\"D\" and min-angle=\"DEGREES\", not k");
-                    suggestive(child, spec);
-                } else if (kind == "isophote" || kind == "gleam") {
-                    if (!child.attribute("k")) fail(child, "an " + kind + " contour needs k (a cosine in -1 .. 1)");
-                    spec.kind = kind == "isophote" ? ContourKind::Isophote : ContourKind::Gleam;
-                    spec.k = number(child, "k", 0.0, -1.0, 1.0);
-                } else {
-                    std::string kinds;
-                    const auto& all = words(child, "kind");
-                    for (std::size_t i = 0; i < all.size(); ++i)
-                        kinds += (i ? i + 1 == all.size() ? " or " : ", " : "") + all[i];
-                    fail(child, "kind=\"" + kind + "\" must be " + kinds);
-                }
-                spec.parts = selector(child, style);
-                if (child.attribute("over")) {
-                    if (kind != "visual") fail(child, "only a visual contour takes over=\"objects\"");
-                    spec.parts.over_objects = choice(child, "over", "objects") == "objects";
-                }
-                for (const ContourStyle& existing : style.contours)
-                    if (existing.spec.label() == spec.label()) fail(child, "a second <contour> for " + spec.label());
-                ContourStyle cs = default_contour_style(spec);
-                for (const pugi::xml_node part : child.children()) {
-                    if (part.type() != pugi::node_element) continue;
-                    const std::string part_name = part.name();
-                    if (part_name == "visible") cs.visible = stroke(part, cs.visible);
-                    else if (part_name == "hidden") cs.hidden = stroke(part, cs.hidden);
-                    else warn(part, "unknown element <" + part_name + "> in <contour> (expected <visible> or <hidden>)");
-                }
-                style.contours.push_back(finished(child, cs));
+                contour_element(child, style);
             } else if (name == "region") {
-                check_attributes(child);
-                RegionStyle rs;
-                const std::string cls = choice(child, "class", "");
-                if (cls.empty()) fail(child, "<region> needs class=\"shadow|lit|band|highlight\"");
-                rs.cls = *parse_region_class(cls); // choice() admits only the names
-                const bool needs_k = region_class_has_level(rs.cls);
-                if (needs_k && !child.attribute("k"))
-                    fail(child, "a " + cls + " region needs k (" +
-                                    (rs.cls == RegionClass::Band ? "the isophote level it starts at" : "the gleam threshold") + ")");
-                if (!needs_k && child.attribute("k")) fail(child, "a " + cls + " region takes no k");
-                rs.k = number(child, "k", 0.0, -1.0, 1.0);
-                rs.fill_material = std::string(child.attribute("fill").value()) == "material";
-                if (!rs.fill_material) rs.fill = colour(child, "fill", rs.fill, false);
-                if (child.attribute("shade") && !rs.fill_material)
-                    fail(child, "shade goes with fill=\"material\" (it shades the material's colour)");
-                rs.shade = number(child, "shade", rs.shade, 0.0, 2.0);
-                rs.opacity = number(child, "opacity", rs.opacity, 0.0, 1.0);
-                rs.erosion = number(child, "erosion", rs.erosion, 0.0, 100.0);
-                rs.parts = selector(child, style);
-                for (const RegionStyle& other : style.regions)
-                    if (other.cls == rs.cls && std::abs(other.k - rs.k) < 1e-9 && other.parts == rs.parts)
-                        fail(child, "a second <region> for " + cls + (rs.parts.empty() ? "" : " " + rs.parts.text()));
-                style.regions.push_back(rs);
+                region_element(child, style);
             } else if (name == "object") {
-                check_attributes(child);
-                const std::string pattern = child.attribute("name").value();
-                if (pattern.empty()) fail(child, "<object> needs name=\"PATTERN\" (an object's name, or a glob such as wheel*)");
-                if (pattern[0] == '!') fail(child, "<object name=\"" + pattern + "\">: name a pattern to set, without !");
-                const bool hide = boolean(child, "hide", false), draw = boolean(child, "draw", true);
-                if (hide) style.hidden_objects.push_back(pattern);
-                else if (!draw) style.occluders.push_back(pattern);
-                if (hide || !draw) {
-                    const StyleDiagnostic at = where(child.offset_debug(), "");
-                    style.part_patterns.push_back({{{pattern}, {}}, at.line, at.column});
-                }
+                object_element(child, style);
             } else {
                 warn(child, "unknown element <" + name +
                                 "> (expected <canvas>, <light>, <surface>, <contour>, <region> or <object>)");
