@@ -142,18 +142,6 @@ std::string kind_group(const ContourSpec& spec, const StrokeStyle& stroke, const
     return out;
 }
 
-std::string xml_text(const std::string& text) {
-    std::string out;
-    for (const char c : text) {
-        if (c == '&') out += "&amp;";
-        else if (c == '<') out += "&lt;";
-        else if (c == '>') out += "&gt;";
-        else if (c == '"') out += "&quot;";
-        else out += c;
-    }
-    return out;
-}
-
 std::string object_group(const SceneObject& object) {
     return "<g class=\"object\" data-object=\"" + xml_text(object.path) + "\" inkscape:groupmode=\"layer\" inkscape:label=\"" +
            xml_text(object.name) + "\">\n";

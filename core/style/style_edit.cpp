@@ -5,6 +5,8 @@
 
 #include <pugixml.hpp>
 
+#include "snaxels/util/detail/xml_text.h"
+
 namespace snaxels {
 
 namespace {
@@ -121,20 +123,6 @@ std::string with_last_child(const std::string& text, const std::string& element)
     return out;
 }
 
-std::string xml_escaped(const std::string& value) {
-    std::string out;
-    for (const char c : value) {
-        switch (c) {
-        case '&': out += "&amp;"; break;
-        case '<': out += "&lt;"; break;
-        case '>': out += "&gt;"; break;
-        case '"': out += "&quot;"; break;
-        default: out += c;
-        }
-    }
-    return out;
-}
-
 bool is_intersection_set(const pugi::xml_node& node) {
     return std::string(node.name()) == "contour" && std::string(node.attribute("kind").value()) == "intersection";
 }
@@ -164,7 +152,7 @@ std::optional<std::string> with_object_drawing(const std::string& text, const st
     if (!parsed(text, style)) return std::nullopt;
     const std::string element =
         state == ObjectDrawing::Drawn ? std::string()
-                                      : "<object name=\"" + xml_escaped(name) + "\" " +
+                                      : "<object name=\"" + xml_text(name) + "\" " +
                                             (state == ObjectDrawing::Hidden ? "hide=\"true\"" : "draw=\"false\"") + "/>";
     return edited(
         text, style,
@@ -175,7 +163,7 @@ std::optional<std::string> with_object_drawing(const std::string& text, const st
 std::optional<std::string> with_intersection_lines(const std::string& text, const std::string& name, bool on) {
     ParsedStyle style;
     if (!parsed(text, style)) return std::nullopt;
-    const std::string element = on ? "<contour kind=\"intersection\" object=\"" + xml_escaped(name) + "\"/>" : std::string();
+    const std::string element = on ? "<contour kind=\"intersection\" object=\"" + xml_text(name) + "\"/>" : std::string();
     // Only a set with nothing else to it (no strokes of its own, no other
     // selector) is the one this edit adds and removes.
     return edited(
@@ -190,7 +178,7 @@ std::optional<std::string> with_intersection_lines(const std::string& text, cons
 std::optional<TextSplice> sharp_angle_splice(const std::string& text, const std::string& value) {
     ParsedStyle style;
     if (!parsed(text, style)) return std::nullopt;
-    const std::string attribute = "sharp-angle=\"" + xml_escaped(value) + "\"";
+    const std::string attribute = "sharp-angle=\"" + xml_text(value) + "\"";
     if (const pugi::xml_node surface = style.root.child("surface")) {
         const std::size_t start = element_start(surface), end = tag_end(text, start);
         const std::string tag = text.substr(start, end - start);

@@ -7,6 +7,7 @@
 
 #include <glm/glm.hpp>
 
+#include "snaxels/util/detail/xml_text.h"
 #include "snaxels/export/bezier.h"
 #include "snaxels/snaxel/contour_function.h"
 #include "snaxels/style/style.h"
@@ -34,8 +35,6 @@ void append_compact_chain_data(std::string& out, const BezierChain& chain, glm::
 /// XML declaration, <svg> start tag and the background (unless "none");
 /// with @p inkscape, the namespace of Inkscape's layer attributes.
 std::string document_start(int width, int height, const std::string& background, bool inkscape = false);
-/// @p text with XML's special characters escaped, for an attribute's value.
-std::string xml_text(const std::string& text);
 /// The opening tag of an object's sublayer inside a kind's group: class
 /// "object", data-object its path, an Inkscape layer labelled with its name.
 std::string object_group(const SceneObject& object);
