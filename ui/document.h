@@ -15,6 +15,9 @@
 #include "snaxels/animation/frame_driver.h"
 #include "snaxels/animation/pipeline.h"
 #include "snaxels/mesh/build.h"
+#include "snaxels/mesh/file_cameras.h"
+#include "snaxels/mesh/mesh_animation.h"
+#include "snaxels/mesh/parts.h"
 #include "snaxels/project/project.h"
 #include "snaxels/scene/orbit.h"
 #include "snaxels/style/style.h"
@@ -22,6 +25,22 @@
 class QUndoStack;
 
 namespace snaxels::ui {
+
+/// What a loaded file offers its document beyond the mesh: the clips and
+/// cameras an animation may name, and the sphere the view frames.
+struct SceneFacts {
+    std::vector<AnimationClipInfo> clips;
+    std::vector<FileCamera> cameras;
+    glm::dvec3 centre{0.0}; ///< the drawn mesh's bounding-box centre: what the view orbits
+    double radius = 1.0;    ///< half its bounding box's diagonal
+};
+
+/// @p spec as a scene with @p facts plays it: a clip or camera named by
+/// number or left empty gets its name, a clip's or camera move's frame
+/// count (0 or less) its length at the spec's rate, and a clip, camera
+/// move or camera the scene lacks gives way to a turntable or the view's
+/// camera. @p found (if given) says whether everything named was there.
+AnimationSpec resolve_animation(const AnimationSpec& spec, const SceneFacts& facts, bool* found = nullptr);
 
 class Document : public QObject {
     Q_OBJECT
@@ -57,7 +76,21 @@ class Document : public QObject {
     /// The light the user set (none: the style's light, else the default one).
     const std::optional<Light>& light() const { return light_; }
     const AnimationSpec& animation() const { return animation_; }
+    /// The animation's frame shown now (0 to its frame count less one).
     int frame() const { return frame_; }
+    /// The source's frame shown now: the animation's in point plus frame().
+    int sourceFrame() const { return animation_.start + frame_; }
+    /// The loaded file's clips, cameras and framing sphere.
+    const SceneFacts& scene() const { return facts_; }
+    /// The view that frames the mesh: its front from a little above and to
+    /// the side, standing on +Y (View > Reset Camera, and a new mesh's).
+    OrbitView framingView() const;
+    /// The style's warnings (patterns naming no part of the scene among
+    /// them), from the one parse of its text each edit makes.
+    const std::vector<StyleDiagnostic>& styleWarnings() const { return warnings_; }
+    /// Why the style's text does not parse (none when it does): the last
+    /// style that parsed stays in force meanwhile.
+    const std::optional<StyleDiagnostic>& styleProblem() const { return problem_; }
     /// The mesh loaded now: its path or proc: spec, and the mesh.
     const QString& meshSpec() const { return meshSpec_; }
     const std::shared_ptr<const LoadedMesh>& mesh() const { return mesh_; }
@@ -85,18 +118,22 @@ class Document : public QObject {
     void setAnimation(const AnimationSpec& animation);
 
     // Changes that are not edits (no undo step), each emitting what changed.
-    /// Where playback stands: saved with the project, not undone.
+    /// Where playback stands (clamped to the animation's frames): saved
+    /// with the project, not undone.
     void setFrame(int frame);
     /// A new mesh (the document differs from its file, if any, from now on).
     void setMesh(const QString& spec, std::shared_ptr<const LoadedMesh> mesh);
-    /// A new untitled document for a mesh just opened (@p spec, @p mesh),
-    /// framed by @p view and starting with @p animation: this document's
-    /// style stays, the user's light goes, the frame is 0, the undo history
-    /// is cleared, there is no project file, and it is not modified.
-    void startNew(const QString& spec, std::shared_ptr<const LoadedMesh> mesh, const OrbitView& view,
+    /// A new untitled document for a mesh just opened (@p spec, @p mesh,
+    /// whose file offers @p facts), framed by framingView() and starting
+    /// with @p animation (resolved): this document's style stays, less the
+    /// objects the mesh lacks, the user's light goes, the frame is 0, the
+    /// undo history is cleared, there is no project file, and it is not
+    /// modified.
+    void startNew(const QString& spec, std::shared_ptr<const LoadedMesh> mesh, const SceneFacts& facts,
                   const AnimationSpec& animation);
-    /// The style a session starts with (a style given on the command line).
-    void resetStyleText(const QString& text);
+    /// The style a session starts with (a style given on the command line,
+    /// read from @p source, which its diagnostics name).
+    void resetStyleText(const QString& text, const QString& source = QStringLiteral("style"));
     /// The camera framed on a new mesh.
     void resetView(const OrbitView& view);
     /// The animation a new mesh or sequence starts with.
@@ -112,16 +149,22 @@ class Document : public QObject {
     /// and at @p path. Throws snaxels::Error (nothing changes then).
     void save(const QString& path);
     /// Replaces the document with @p project, read from @p path, whose mesh
-    /// (@p mesh_spec, @p mesh) has been loaded: a sequence's pattern is
-    /// resolved against @p path, an empty style is the default style, the
-    /// undo history is cleared and the document is clean.
-    void load(const Project& project, const QString& path, const QString& mesh_spec,
-              std::shared_ptr<const LoadedMesh> mesh);
+    /// (@p mesh_spec, @p mesh, offering @p facts) has been loaded: a
+    /// sequence's pattern is resolved against @p path, an empty style is
+    /// the default style, the view orbits the mesh's centre, the undo
+    /// history is cleared and the document is clean. Returns why the
+    /// document differs from the file (a clip or camera the mesh lacks, the
+    /// document then modified), or an empty string.
+    QString load(const Project& project, const QString& path, const QString& mesh_spec,
+                 std::shared_ptr<const LoadedMesh> mesh, const SceneFacts& facts = {});
 
   signals:
     void styleTextChanged(const QString& text);
     /// The style in force changed (its text parsed).
     void styleChanged(const snaxels::Style& style);
+    /// The style's text was parsed (or failed to) and checked against the
+    /// scene: styleWarnings() and styleProblem() are new.
+    void styleChecked();
     void viewChanged(const snaxels::OrbitView& view);
     void lightChanged(const std::optional<snaxels::Light>& light);
     void animationChanged(const snaxels::AnimationSpec& animation);
@@ -136,6 +179,9 @@ class Document : public QObject {
     void edit(const T& now, const T& value, const QString& text, int id, void (Document::*assign)(const T&),
               bool mergeable = true);
     void assignStyle(const QString& text);
+    /// Parses the style's text (once per change), checks it against the
+    /// scene's parts, and tells the observers.
+    void parseStyle();
     void assignView(const OrbitView& view);
     void assignLight(const std::optional<Light>& light);
     void assignAnimation(const AnimationSpec& animation);
@@ -151,7 +197,12 @@ class Document : public QObject {
     QUndoStack* undo_;
     QString defaultStyle_;
     QString style_;
+    QString styleSource_ = QStringLiteral("style"); ///< what the style's diagnostics name
     Style parsed_;
+    std::vector<StyleDiagnostic> warnings_;
+    std::optional<StyleDiagnostic> problem_;
+    std::shared_ptr<const FaceParts> parts_; ///< the mesh's, which style patterns are checked against
+    SceneFacts facts_;
     OrbitView view_;
     std::optional<Light> light_;
     AnimationSpec animation_;

@@ -1,32 +1,31 @@
 #include "ui/mainwindow.h"
 
+#ifdef __GLIBC__
+#include <malloc.h>
+#endif
+
 #include <utility>
 
 #include <glm/gtx/rotate_vector.hpp>
 
 #include <QCloseEvent>
-#include <QDesktopServices>
-#include <QDir>
 #include <QDockWidget>
 #include <QDragEnterEvent>
 #include <QDropEvent>
-#include <QFileDialog>
 #include <QFileInfo>
 #include <QLabel>
-#include <QMessageBox>
 #include <QMimeData>
 #include <QProgressBar>
 #include <QSettings>
 #include <QSplitter>
 #include <QStatusBar>
-#include <QToolButton>
+#include <QTimer>
 #include <QUndoStack>
-#include <QUrl>
 
-#include "snaxels/util/atomic_file.h"
-#include "ui/animation_export.h"
 #include "ui/contour_scheduler.h"
 #include "ui/document.h"
+#include "ui/document_controller.h"
+#include "ui/export_actions.h"
 #include "ui/meshview.h"
 #include "ui/objects_panel.h"
 #include "ui/parabolic_search.h"
@@ -37,11 +36,10 @@
 namespace snaxels::ui {
 
 MainWindow::MainWindow(QWidget* parent)
-    : QMainWindow(parent), view_(new MeshView(this)), svgPane_(new SvgPane(this)),
-      styleEditor_(new StyleEditor(this)), timeline_(new Timeline(this)), objects_(new ObjectsPanel(this)), meshLabel_(new QLabel(this)),
-      busy_(new QProgressBar(this)), contourLabel_(new QLabel(this)), loader_(new MeshLoader(this)),
-      contours_(new ContourScheduler([this] { return contourWork(); }, this)), parabolic_(new ParabolicSearch(this)),
-      export_(new AnimationExport(this)) {
+    : QMainWindow(parent), view_(new MeshView(this)), svgPane_(new SvgPane(this)), styleEditor_(new StyleEditor(this)),
+      timeline_(new Timeline(this)), objects_(new ObjectsPanel(this)), meshLabel_(new QLabel(this)),
+      busy_(new QProgressBar(this)), contourLabel_(new QLabel(this)),
+      contours_(new ContourScheduler([this] { return contourWork(); }, this)), parabolic_(new ParabolicSearch(this)) {
     setWindowTitle("snaxels[*]");
     // The 3-D view and, beside it, the SVG the export writes for this view.
     auto* splitter = new QSplitter(this);
@@ -52,10 +50,17 @@ MainWindow::MainWindow(QWidget* parent)
     splitter->setSizes({600, 400});
     setCentralWidget(splitter);
     document_ = new Document(styleEditor_->text(), this);
+    document_->resetAnimation(initial_animation());
+    controller_ = new DocumentController(document_, this);
+    controller_->setFlush([this] { styleEditor_->applyPending(); }); // typing not yet taken up
     createDocks();
+    styleEditor_->showCheck(document_->styleWarnings(), document_->styleProblem());
+    objects_->setStyle(document_->styleText(), document_->style());
     observeDocument();
+    connectEdits();
     setAcceptDrops(true);
     createStatusBar();
+    exports_ = new ExportActions(document_, controller_, this); // its status button after the others
     connectControllers();
     createMenus();
 
@@ -74,27 +79,11 @@ MainWindow::~MainWindow() {
 } // the controllers stop and wait for their threads
 
 void MainWindow::createDocks() {
-    // The style editor, docked; the text it takes up is the document's style.
+    // The style editor and the scene's parts, tabbed; the timeline below.
     auto* dock = new QDockWidget(tr("Style"), this);
     dock->setObjectName("styleDock");
     dock->setWidget(styleEditor_);
     addDockWidget(Qt::RightDockWidgetArea, dock);
-    // Every edit in a widget goes to the document, as one undo step.
-    connect(styleEditor_, &StyleEditor::textApplied, this, [this](const QString& text) {
-        if (!restoring_) document_->setStyleText(text);
-    });
-    connect(view_, &MeshView::lockedToFileCamera, this, [this] {
-        statusBar()->showMessage(tr("Looking through the file's camera: choose View camera in the timeline to orbit"), 4000);
-    });
-    connect(view_, &MeshView::viewEdited, this, [this] {
-        if (!restoring_) document_->setView(viewState());
-    });
-    connect(view_, &MeshView::lightDragged, this, &MainWindow::onLightDragged);
-    connect(view_, &MeshView::lightEdited, this, [this] {
-        if (!restoring_) document_->setLight(light_);
-    });
-    // The scene's parts, in a tab beside the style: a part's state is an
-    // edit of the style (one undo step); a part selected is tinted in the view.
     auto* objectsDock = new QDockWidget(tr("Objects"), this);
     objectsDock->setObjectName("objectsDock");
     objects_->setObjectName("objectsPanel");
@@ -102,31 +91,34 @@ void MainWindow::createDocks() {
     addDockWidget(Qt::RightDockWidgetArea, objectsDock);
     tabifyDockWidget(dock, objectsDock);
     dock->raise();
-    objects_->setStyleText(document_->styleText());
-    connect(objects_, &ObjectsPanel::styleEdited, this, [this](const QString& text, const QString& step) {
-        if (!restoring_) document_->setStyleText(text, step);
-    });
-    connect(objects_, &ObjectsPanel::highlightChanged, view_, &MeshView::setHighlight);
-    connect(objects_, &ObjectsPanel::notice, this, [this](const QString& m) { statusBar()->showMessage(m, 5000); });
-    connect(document_, &Document::meshChanged, this, [this] {
-        objects_->setMesh(document_->mesh());
-        ++restoring_; // the editor re-reads its text for the new scene's parts: no edit
-        styleEditor_->setSceneParts(document_->mesh() ? loaded_parts(*document_->mesh()) : nullptr);
-        --restoring_;
-    });
-    // The timeline, docked below: scrubbing turns the view or the light.
     auto* timelineDock = new QDockWidget(tr("Timeline"), this);
     timelineDock->setObjectName("timelineDock");
     timelineDock->setWidget(timeline_);
     addDockWidget(Qt::BottomDockWidgetArea, timelineDock);
-    connect(timeline_, &Timeline::changed, this, &MainWindow::applyFrame);
+}
+
+void MainWindow::connectEdits() {
+    // Every edit in a widget goes to the document, as one undo step; the
+    // widgets' own setters (the document shown) signal no edit.
+    connect(styleEditor_, &StyleEditor::textApplied, document_, qOverload<const QString&>(&Document::setStyleText));
+    connect(objects_, &ObjectsPanel::styleEdited, document_, qOverload<const QString&, const QString&>(&Document::setStyleText));
+    connect(objects_, &ObjectsPanel::highlightChanged, view_, &MeshView::setHighlight);
+    connect(objects_, &ObjectsPanel::notice, this, [this](const QString& m) { statusBar()->showMessage(m, 5000); });
+    connect(view_, &MeshView::viewEdited, this, [this] {
+        OrbitView v = view_->orbit();
+        v.turntable = 0.0; // the frame's turn is the animation's, not the view's
+        document_->setView(v);
+    });
+    connect(view_, &MeshView::lockedToFileCamera, this, [this] {
+        statusBar()->showMessage(tr("Looking through the file's camera: choose View camera in the timeline to orbit"), 4000);
+    });
+    connect(view_, &MeshView::lightDragged, this, &MainWindow::onLightDragged);
+    // Scrubbing and play move the document's frame; the settings are an edit.
+    connect(timeline_, &Timeline::changed, this, [this] { document_->setFrame(timeline_->frame()); });
+    connect(timeline_, &Timeline::specEdited, this, [this] { document_->setAnimation(timeline_->spec()); });
     connect(timeline_, &Timeline::playbackStatus, this, [this](const QString& text) {
         if (text.isEmpty()) statusBar()->clearMessage();
         else statusBar()->showMessage(text); // stays while playing
-    });
-    document_->resetAnimation(timeline_->spec());
-    connect(timeline_, &Timeline::specEdited, this, [this] {
-        if (!restoring_) document_->setAnimation(timeline_->spec());
     });
 }
 
@@ -144,26 +136,27 @@ void MainWindow::createStatusBar() {
     parabolicProgress_->setMaximumWidth(220);
     parabolicProgress_->hide();
     statusBar()->addPermanentWidget(parabolicProgress_);
-    reveal_ = new QToolButton(this);
-    reveal_->setObjectName("revealExport");
-    reveal_->setText(tr("Reveal in Folder"));
-    reveal_->setAutoRaise(true);
-    reveal_->hide(); // until something is exported
-    connect(reveal_, &QToolButton::clicked, this, [this] {
-        QDesktopServices::openUrl(QUrl::fromLocalFile(reveal_->property("folder").toString()));
-    });
-    statusBar()->addPermanentWidget(reveal_);
 }
 
 void MainWindow::connectControllers() {
-    connect(loader_, &MeshLoader::finished, this, [this](const LoadResult& result) {
-        busy_->hide();
-        if (result.mesh) onLoadFinished(result);
-        else onLoadFailed(result);
+    connect(controller_, &DocumentController::busy, busy_, &QWidget::setVisible);
+    connect(controller_, &DocumentController::loaded, this, &MainWindow::showLoaded);
+    connect(controller_, &DocumentController::status, this, [this](const QString& text, int ms) {
+        statusBar()->showMessage(text, ms);
     });
-    // Contours follow the camera: recomputed off the GUI thread shortly
-    // after it stops moving, the newest request winning.
-    connect(view_, &MeshView::cameraChanged, this, &MainWindow::scheduleContours);
+    connect(controller_, &DocumentController::meshLoaded, this, &MainWindow::meshLoaded);
+    connect(controller_, &DocumentController::loadFailed, this, &MainWindow::loadFailed);
+    connect(controller_, &DocumentController::projectOpened, this, &MainWindow::projectOpened);
+    connect(controller_, &DocumentController::projectFailed, this, &MainWindow::projectFailed);
+    connect(controller_, &DocumentController::projectSaved, this, &MainWindow::projectSaved);
+    connect(exports_, &ExportActions::finished, this, [this](const QString& path) {
+        returnFreedMemorySoon();
+        emit exportFinished(path);
+    });
+    connect(exports_, &ExportActions::failed, this, [this](const QString& message) {
+        returnFreedMemorySoon();
+        emit exportFailed(message);
+    });
     connect(contours_, &ContourScheduler::ready, this, &MainWindow::onContoursReady);
     parabolic_->setWanted([this] { return wantsParabolic(); });
     connect(parabolic_, &ParabolicSearch::started, this, [this] {
@@ -192,89 +185,121 @@ void MainWindow::connectControllers() {
         emit parabolicFinished(QString());
         scheduleContours();
     });
-    connect(export_, &AnimationExport::finished, this, [this](const QString& path) {
-        returnFreedMemorySoon();
-        reportExported(path);
-        emit exportFinished(path);
+}
+
+void MainWindow::observeDocument() {
+    connect(document_, &Document::modifiedChanged, this, &MainWindow::updateTitle);
+    connect(document_, &Document::projectPathChanged, this, &MainWindow::updateTitle);
+    connect(document_, &Document::meshChanged, this, &MainWindow::updateTitle);
+    connect(document_->undoStack(), &QUndoStack::indexChanged, this, &MainWindow::updateTitle);
+    // An edit, an undo, a redo or an opened project: the widgets show it.
+    connect(document_, &Document::styleTextChanged, styleEditor_, &StyleEditor::showText);
+    connect(document_, &Document::styleChecked, this, [this] {
+        styleEditor_->showCheck(document_->styleWarnings(), document_->styleProblem());
+        objects_->setStyle(document_->styleText(), document_->style());
     });
-    connect(export_, &AnimationExport::failed, this, [this](const QString& error) {
-        returnFreedMemorySoon();
-        statusBar()->showMessage(error, 8000);
-        // A failure is said in a box; a cancel the user asked for is not.
-        if (error != AnimationExport::cancelledMessage())
-            warn(tr("Export Animation"), tr("The animation was not exported: %1").arg(error));
-        emit exportFailed(error);
+    connect(document_, &Document::styleChanged, this, [this] {
+        parabolic_->ensure(); // a style that draws parabolic curves needs them found
+        scheduleContours();
     });
+    connect(document_, &Document::meshChanged, this, [this] { objects_->setMesh(document_->mesh()); });
+    connect(document_, &Document::viewChanged, this, [this](const OrbitView& v) {
+        view_->setOrbit(v); // the turntable's turn, the frame's, stays
+        scheduleContours();
+    });
+    connect(document_, &Document::lightChanged, this, &MainWindow::scheduleContours);
+    connect(document_, &Document::animationChanged, this, [this](const AnimationSpec& a) {
+        if (!(timeline_->spec() == a)) timeline_->setSpec(a);
+        // A sequence's file count bounds the frames its source offers.
+        if (a.kind == AnimationSpec::Kind::Sequence && a.pattern != std::exchange(sequencePattern_, a.pattern))
+            if (const auto files = find_sequence(sequence_file(a, 0))) timeline_->setSequenceFiles(files->count);
+        showFrame();
+    });
+    connect(document_, &Document::frameChanged, this, &MainWindow::showFrame);
 }
 
-void MainWindow::reportExported(const QString& path) {
-    const QFileInfo file(path);
-    QSettings().setValue(kExportFolder, file.absolutePath()); // the next export's dialog starts there
-    statusBar()->showMessage(tr("Exported %1").arg(QDir::toNativeSeparators(file.absoluteFilePath())), 15000);
-    reveal_->setToolTip(tr("Show %1 in its folder").arg(QDir::toNativeSeparators(file.absolutePath())));
-    reveal_->setProperty("folder", file.absolutePath());
-    reveal_->show();
+void MainWindow::showLoaded(const LoadResult& result) {
+    returnFreedMemorySoon(); // the last mesh's memory, once nothing holds it
+    contours_->invalidate(); // what is under way is of the old mesh
+    scene_ = result.scene;
+    parabolic_->setMesh(scene_->rest);
+    parabolic_->ensure();
+    view_->setContours({}, view_->camera());
+    view_->setGeometry(MeshGeometry(*result.geometry));
+    timeline_->setClips(scene_->clips);
+    timeline_->setCameras(scene_->cameras);
+    sequencePattern_.clear();
+    showMeshReport(*result.mesh);
 }
 
-void MainWindow::setStartingStyle(const QString& text, const QString& source) {
-    ++restoring_;
-    styleEditor_->setText(text, source);
-    --restoring_;
-    document_->resetStyleText(styleEditor_->text());
+void MainWindow::showMeshReport(const LoadedMesh& mesh) {
+    const MeshReport& r = mesh.report;
+    meshLabel_->setText(tr("%1 vertices, %2 faces, %3 boundary edges%4%5")
+                            .arg(r.vertices)
+                            .arg(r.faces)
+                            .arg(r.boundary_edges)
+                            .arg(r.split_vertices ? tr(", %1 vertices split").arg(r.split_vertices) : QString())
+                            .arg(scene_->rest.refinement()
+                                     ? tr(" (refined to %1 faces for contours)").arg(scene_->rest.n_faces())
+                                     : QString()));
 }
 
-void MainWindow::warn(const QString& title, const QString& message) {
-    auto* box = new QMessageBox(QMessageBox::Warning, title, message, QMessageBox::Ok, this);
-    box->setAttribute(Qt::WA_DeleteOnClose);
-    box->open();
-}
-
-std::shared_ptr<const ParabolicResult> MainWindow::parabolicCurves() const { return parabolic_->curves(); }
-
-bool MainWindow::parabolicPending() const { return parabolic_->pending(); }
-
-bool MainWindow::contoursBusy() const { return contours_->busy(); }
-
-bool MainWindow::isLoading() const { return loader_->loading(); }
-
-bool MainWindow::exporting() const { return export_->running(); }
-
-void MainWindow::applyFrame() {
-    const AnimationSpec spec = timeline_->spec();
+void MainWindow::showFrame() {
+    const AnimationSpec& spec = document_->animation();
+    timeline_->setFrame(document_->frame());
     if (spec.kind == AnimationSpec::Kind::Turntable) {
-        view_->centreView(); // turntables orbit the mesh's centre, as exports do
-        view_->setTurntable(spec.degrees_per_frame * timeline_->sourceFrame());
-        if (!restoring_) document_->resetView(viewState()); // the frame's view, not an edit
+        // Turntables orbit the mesh's centre, as exports do: no pan.
+        if (document_->view().pan != glm::dvec3(0.0)) {
+            OrbitView centred = document_->view();
+            centred.pan = glm::dvec3(0.0);
+            document_->resetView(centred); // the frame's view, not an edit
+        }
+        view_->setTurntable(spec.degrees_per_frame * document_->sourceFrame());
     } else {
         view_->setTurntable(0.0);
     }
     scheduleContours();
 }
 
+void MainWindow::setStartingStyle(const QString& text, const QString& source) { document_->resetStyleText(text, source); }
+
+void MainWindow::openMesh(const QString& spec) { controller_->openMesh(spec); }
+void MainWindow::openFile(const QString& path) { controller_->openFile(path); }
+bool MainWindow::openSequence(const QString& path) { return controller_->openSequence(path); }
+void MainWindow::openProject(const QString& path) { controller_->openProject(path); }
+bool MainWindow::saveProject(const QString& path) { return controller_->save(path); }
+void MainWindow::exportAnimation(const QString& path) { exports_->exportAnimation(path); }
+bool MainWindow::exportFrame(const QString& path) { return exports_->exportFrame(path); }
+bool MainWindow::exporting() const { return exports_->running(); }
+const QByteArray& MainWindow::currentSvg() const { return exports_->frameSvg(); }
+const QString& MainWindow::frameProblem() const { return exports_->frameProblem(); }
+std::shared_ptr<const ParabolicResult> MainWindow::parabolicCurves() const { return parabolic_->curves(); }
+bool MainWindow::parabolicPending() const { return parabolic_->pending(); }
+bool MainWindow::contoursBusy() const { return contours_->busy(); }
+bool MainWindow::isLoading() const { return controller_->loading(); }
+bool MainWindow::isModified() const { return document_->isModified(); }
+QUndoStack* MainWindow::undoStack() const { return document_->undoStack(); }
+QString MainWindow::projectPath() const { return document_->projectPath(); }
+const std::optional<Light>& MainWindow::userLight() const { return document_->light(); }
+const LoadedMesh* MainWindow::mesh() const { return document_->mesh().get(); }
+
 Light MainWindow::baseLight() const {
     // Through a file's camera the default light is placed from it where it
     // starts, as the export and snaxels-cli place it.
-    if (const std::string name = timeline_->spec().camera; scene_ && !name.empty())
-        for (const FileCamera& c : scene_->cameras)
-            if (c.name == name) return job_light(document_->style(), c.first, light_);
-    return job_light(document_->style(), view_->baseCamera(), light_);
-}
-
-OrbitView MainWindow::viewState() const {
-    OrbitView v = view_->orbit();
-    v.turntable = 0.0;
-    return v;
+    for (const FileCamera& c : document_->scene().cameras)
+        if (c.name == document_->animation().camera) return job_light(document_->style(), c.first, document_->light());
+    return job_light(document_->style(), orbit_base_camera(document_->view()), document_->light());
 }
 
 void MainWindow::onLightDragged(glm::dvec3 axis_a, double angle_a, glm::dvec3 axis_b, double angle_b) {
     // The drag turns the light as it is seen at this frame; the document
     // keeps the frame-0 light, so the frame's own turn is taken off again.
     Light light = baseLight();
-    const AnimationSpec spec = timeline_->spec();
+    const AnimationSpec& spec = document_->animation();
     const bool turns = (spec.kind == AnimationSpec::Kind::Turntable && !light.point) ||
                        spec.kind == AnimationSpec::Kind::LightOrbit;
-    const double frame_angle = turns ? glm::radians(spec.degrees_per_frame * timeline_->sourceFrame()) : 0.0;
-    const glm::dvec3 y = glm::normalize(view_->orbit().up); // the turntable's axis
+    const double frame_angle = turns ? glm::radians(spec.degrees_per_frame * document_->sourceFrame()) : 0.0;
+    const glm::dvec3 y = glm::normalize(document_->view().up); // the turntable's axis
     auto turn = [&](glm::dvec3 v) {
         v = glm::rotate(v, frame_angle, y);
         v = glm::rotate(v, angle_a, glm::normalize(axis_a));
@@ -287,18 +312,14 @@ void MainWindow::onLightDragged(glm::dvec3 axis_a, double angle_a, glm::dvec3 ax
     } else {
         light.dir = glm::normalize(turn(light.dir));
     }
-    light_ = light;
-    scheduleContours();
+    document_->setLight(light); // a drag's steps merge into one undo step
 }
 
 void MainWindow::turnLight(double right, double down) {
     glm::dvec3 r, u;
     view_->camera().screen_basis(r, u);
     onLightDragged(u, right, r, down);
-    emit view_->lightEdited();
 }
-
-const LoadedMesh* MainWindow::mesh() const { return document_->mesh().get(); }
 
 glm::dvec3 MainWindow::meshCentre() const {
     const LoadedMesh* loaded = mesh();
@@ -307,38 +328,44 @@ glm::dvec3 MainWindow::meshCentre() const {
 
 Light MainWindow::frameLight() const {
     // As FrameDriver poses it, about the orbit's vertical axis.
-    const glm::dvec3 centre = meshCentre();
-    return light_at_frame(timeline_->spec(), baseLight(), timeline_->sourceFrame(), glm::normalize(view_->orbit().up), centre);
+    return light_at_frame(document_->animation(), baseLight(), document_->sourceFrame(),
+                          glm::normalize(document_->view().up), meshCentre());
+}
+
+Camera MainWindow::frameViewCamera() const {
+    OrbitView v = document_->view();
+    const AnimationSpec& spec = document_->animation();
+    if (spec.kind == AnimationSpec::Kind::Turntable) v.turntable = glm::radians(spec.degrees_per_frame * document_->sourceFrame());
+    return orbit_camera(v);
 }
 
 void MainWindow::scheduleContours() {
     if (scene_) contours_->schedule();
-    else timeline_->frameShown(timeline_->frame()); // nothing to compute: the frame shows as it is
+    else timeline_->frameShown(document_->frame()); // nothing to compute: the frame shows as it is
 }
 
 std::optional<std::function<OverlayResult()>> MainWindow::contourWork() const {
     if (!scene_) return std::nullopt;
     const std::shared_ptr<ContourScene> scene = scene_;
     const std::shared_ptr<const LoadedMesh> mesh = document_->mesh();
-    const Camera camera = view_->camera();
+    const Camera camera = frameViewCamera();
     const Style style = document_->style();
     const Light light = frameLight();
+    const AnimationSpec spec = document_->animation();
+    const int frame = document_->frame();
     std::optional<ClipPose> pose;
-    if (const AnimationSpec spec = timeline_->spec();
-        spec.kind == AnimationSpec::Kind::Clip || spec.kind == AnimationSpec::Kind::Sequence)
-        pose = ClipPose{spec, timeline_->frame()}; // the driver adds the in point
+    if (spec.kind == AnimationSpec::Kind::Clip || spec.kind == AnimationSpec::Kind::Sequence)
+        pose = ClipPose{spec, frame}; // the driver adds the in point
     const std::shared_ptr<const ParabolicResult> parabolic = parabolic_->curves();
     const bool showParabolic = parabolicAction_ && parabolicAction_->isChecked();
-    const int frame = timeline_->frame();
     std::optional<CameraShot> shot;
-    if (const AnimationSpec spec = timeline_->spec(); !spec.camera.empty()) shot = CameraShot{spec, frame};
+    if (!spec.camera.empty()) shot = CameraShot{spec, frame};
     // The camera the export starts from (the model's up as its up), turned
     // to the frame as the export turns it: the same arithmetic, so the pane
     // holds the export's frame to the bit. Through a file's camera the
     // view's orbit is not the camera: the shot applies the turntable.
-    const Camera seen = shot ? view_->baseCamera()
-                             : camera_at_frame(timeline_->spec(), view_->baseCamera(), nullptr,
-                                               timeline_->sourceFrame(), meshCentre());
+    const Camera base = orbit_base_camera(document_->view());
+    const Camera seen = shot ? base : camera_at_frame(spec, base, nullptr, document_->sourceFrame(), meshCentre());
     return [mesh, scene, camera, seen, style, light, pose, parabolic, showParabolic, frame, shot] {
         OverlayResult result = compute_overlay(*mesh, *scene, seen, style, light, pose, parabolic, showParabolic, shot);
         result.frame = frame;
@@ -360,9 +387,9 @@ void MainWindow::onContoursReady(const OverlayResult& ready) {
         // The frame asked for cannot be drawn (the eye inside the mesh):
         // no drawing of another frame stands in for it, in the pane, the
         // 3-D view's lines or Export Frame.
-        frameProblem_ = tr("This frame cannot be drawn: %1").arg(result.error);
-        svg_.clear();
-        svgPane_->setProblem(frameProblem_);
+        const QString problem = tr("This frame cannot be drawn: %1").arg(result.error);
+        exports_->setFrame({}, problem);
+        svgPane_->setProblem(problem);
         contourLoops_ = 0;
         contourLabel_->setText(tr("no contours: this frame cannot be drawn"));
         view_->setContours({}, result.camera);
@@ -370,60 +397,17 @@ void MainWindow::onContoursReady(const OverlayResult& ready) {
         emit contoursUpdated();
         return;
     }
-    frameProblem_.clear();
     if (result.geometry) view_->setPose(std::move(*result.geometry));
     view_->setRegionShading(region_shading(document_->style(), result.light, regionsAction_->isChecked()));
     contourLoops_ = result.loops;
     contourLabel_->setText(tr("%1 loops, %2 snaxels, %3 ms").arg(result.loops).arg(result.snaxels).arg(result.ms, 0, 'f', 1));
     // Through a file's camera, the 3-D view looks through it too.
-    view_->setFileCamera(timeline_->spec().camera.empty() ? std::nullopt : std::optional<Camera>(result.camera));
+    view_->setFileCamera(document_->animation().camera.empty() ? std::nullopt : std::optional<Camera>(result.camera));
     view_->setContours(std::move(result.strips), result.camera);
     timeline_->frameShown(result.frame);
-    svg_ = QByteArray::fromStdString(result.svg);
-    svgPane_->load(svg_);
+    exports_->setFrame(QByteArray::fromStdString(result.svg), {});
+    svgPane_->load(exports_->frameSvg());
     emit contoursUpdated();
-}
-
-bool MainWindow::isModified() const { return document_->isModified(); }
-
-QUndoStack* MainWindow::undoStack() const { return document_->undoStack(); }
-
-QString MainWindow::projectPath() const { return document_->projectPath(); }
-
-void MainWindow::observeDocument() {
-    connect(document_, &Document::modifiedChanged, this, &MainWindow::updateTitle);
-    connect(document_, &Document::projectPathChanged, this, &MainWindow::updateTitle);
-    connect(document_->undoStack(), &QUndoStack::indexChanged, this, &MainWindow::updateTitle);
-    // An undo, a redo or an opened project: the widgets follow. (Their own
-    // edits come back here too, and change nothing.)
-    connect(document_, &Document::styleTextChanged, this, [this](const QString& text) {
-        objects_->setStyleText(text);
-        if (styleEditor_->text() == text) return;
-        ++restoring_;
-        styleEditor_->setText(text, "style");
-        --restoring_;
-    });
-    connect(document_, &Document::styleChanged, this, [this] {
-        parabolic_->ensure(); // a style that draws parabolic curves needs them found
-        scheduleContours();
-    });
-    connect(document_, &Document::viewChanged, this, [this](const OrbitView& v) {
-        if (viewState() == v) return;
-        ++restoring_;
-        view_->setOrbit(v);
-        --restoring_;
-    });
-    connect(document_, &Document::lightChanged, this, [this](const std::optional<Light>& l) {
-        light_ = l;
-        scheduleContours();
-    });
-    connect(document_, &Document::animationChanged, this, [this](const AnimationSpec& a) {
-        specAccepted_ = true;
-        if (timeline_->spec() == a) return;
-        ++restoring_;
-        specAccepted_ = timeline_->setSpec(a);
-        --restoring_;
-    });
 }
 
 void MainWindow::updateTitle() {
@@ -434,6 +418,42 @@ void MainWindow::updateTitle() {
                                                   : QString();
     setWindowTitle(name.isEmpty() ? tr("snaxels[*]") : tr("%1[*] — snaxels").arg(name));
     setWindowModified(isModified());
+}
+
+void MainWindow::returnFreedMemorySoon() {
+    if (!memoryTimer_) {
+        memoryTimer_ = new QTimer(this);
+        memoryTimer_->setSingleShot(true);
+        memoryTimer_->setInterval(1000);
+        connect(memoryTimer_, &QTimer::timeout, this, [this] {
+            if (isLoading() || contoursBusy() || exports_->running() || parabolic_->running()) return memoryTimer_->start();
+#ifdef __GLIBC__
+            malloc_trim(0);
+#endif
+        });
+    }
+    memoryTimer_->start();
+}
+
+void MainWindow::closeEvent(QCloseEvent* event) {
+    if (!controller_->maybeSave()) {
+        event->ignore();
+        return;
+    }
+    QSettings settings;
+    settings.setValue("window/geometry", saveGeometry());
+    settings.setValue("window/state", saveState());
+    parabolic_->cancel(); // a search under way ends at its next step
+    event->accept();
+}
+
+void MainWindow::dragEnterEvent(QDragEnterEvent* event) {
+    if (event->mimeData()->hasUrls()) event->acceptProposedAction();
+}
+
+void MainWindow::dropEvent(QDropEvent* event) {
+    const auto urls = event->mimeData()->urls();
+    if (!urls.isEmpty() && urls.first().isLocalFile()) controller_->openFile(urls.first().toLocalFile());
 }
 
 } // namespace snaxels::ui

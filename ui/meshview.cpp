@@ -269,7 +269,8 @@ void MeshView::setGeometry(MeshGeometry geometry) {
     // A new file stands on +Y (import turns FBX and Collada files upright
     // from their own axes); the user's up axis was for the file before.
     orbit_.up = glm::dvec3(0.0, 1.0, 0.0);
-    resetCamera();
+    orbit_.centre = centre_;
+    update(); // the document frames the new mesh: setOrbit
 }
 
 void MeshView::setPose(MeshGeometry geometry) {
@@ -584,7 +585,6 @@ void MeshView::mousePressEvent(QMouseEvent* event) {
     lastPos_ = event->position().toPoint();
     pressed_ = true;
     dragged_ = false;
-    orbitAtPress_ = orbit_;
     draggingLight_ = (event->button() == Qt::LeftButton) && (event->modifiers() & Qt::ShiftModifier);
     if (draggingLight_) globe_->setActive(true); // the light's globe brightens while it turns
 }
@@ -597,10 +597,6 @@ void MeshView::mouseReleaseEvent(QMouseEvent* event) {
         return;
     }
     dragged_ = false;
-    // An edit only where the drag changed something: through a file's
-    // camera the orbit stays as it was.
-    if (draggingLight_) emit lightEdited();
-    else if (!(orbit_ == orbitAtPress_)) emit viewEdited();
     draggingLight_ = false;
     globe_->setActive(false);
     event->accept();
@@ -624,6 +620,7 @@ void MeshView::mouseMoveEvent(QMouseEvent* event) {
         emit lockedToFileCamera();
         return;
     }
+    const OrbitView before = orbit_;
     if (event->buttons() & Qt::LeftButton) {
         orbit_.yaw += d.x() * 0.01;
         orbit_.pitch = std::clamp(orbit_.pitch + d.y() * 0.01, -kMaxPitch, kMaxPitch);
@@ -634,8 +631,10 @@ void MeshView::mouseMoveEvent(QMouseEvent* event) {
     } else {
         return;
     }
+    if (orbit_ == before) return; // pitched against its limit: nothing moved, no edit
     update();
     emit cameraChanged();
+    emit viewEdited();
 }
 
 void MeshView::wheelEvent(QWheelEvent* event) {

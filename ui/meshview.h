@@ -66,7 +66,8 @@ class MeshView : public QOpenGLWidget, protected QOpenGLFunctions_3_3_Core {
     explicit MeshView(QWidget* parent = nullptr);
     ~MeshView() override;
 
-    /// Copies the mesh's triangles for drawing and frames the camera on it.
+    /// Copies the mesh's triangles for drawing, the orbit about its centre
+    /// (the camera stays until setOrbit or resetCamera frames it).
     void setMesh(const Mesh& mesh);
     /// The same with triangles prepared by mesh_geometry (on any thread).
     void setGeometry(MeshGeometry geometry);
@@ -74,7 +75,8 @@ class MeshView : public QOpenGLWidget, protected QOpenGLFunctions_3_3_Core {
     /// frame) without moving the camera.
     void setPose(MeshGeometry geometry);
     void clearMesh();
-    /// Frames the whole mesh, its front seen from a little above and to the side.
+    /// Frames the whole mesh, its front seen from a little above and to the
+    /// side (View > Reset Camera): an edit (viewEdited).
     void resetCamera();
     /// Looks through @p camera (one of the file's cameras, posed for the
     /// frame) instead of the orbit; nullopt goes back to the orbit. Orbit,
@@ -118,14 +120,13 @@ class MeshView : public QOpenGLWidget, protected QOpenGLFunctions_3_3_Core {
     void cameraChanged();
     /// An orbit, pan or zoom while the view looks through a file's camera.
     void lockedToFileCamera();
-    /// The user finished moving the camera (a drag released, a wheel turn,
-    /// a reset): one step for the undo stack.
+    /// The user moved the camera (each step of a drag that moves it, a
+    /// wheel turn, a reset): an edit of the document's view (a drag's steps
+    /// merge into one undo step there).
     void viewEdited();
     /// Shift+drag turns the light: by @p angle_a about @p axis_a, then by
     /// @p angle_b about @p axis_b (world axes, radians).
     void lightDragged(glm::dvec3 axis_a, double angle_a, glm::dvec3 axis_b, double angle_b);
-    /// The light drag ended: one step for the undo stack.
-    void lightEdited();
 
   public:
 
@@ -164,7 +165,6 @@ class MeshView : public QOpenGLWidget, protected QOpenGLFunctions_3_3_Core {
     /// edit (a release whose press went elsewhere, a menu's, is none).
     bool pressed_ = false;
     bool dragged_ = false, draggingLight_ = false;
-    OrbitView orbitAtPress_; ///< a drag is a camera edit only if it moved the orbit
 
     RegionShading shading_;
     std::vector<ContourStrip> strips_;

@@ -114,13 +114,9 @@ void ObjectsPanel::setMesh(std::shared_ptr<const LoadedMesh> mesh) {
     rebuild();
 }
 
-void ObjectsPanel::setStyleText(const QString& text) {
+void ObjectsPanel::setStyle(const QString& text, const Style& style) {
     text_ = text;
-    try {
-        style_ = text.trimmed().isEmpty() ? default_style() : parse_style(text.toStdString(), "style", nullptr);
-    } catch (const std::exception&) {
-        return; // the last style that parsed stays in force
-    }
+    style_ = style;
     refreshStyle();
 }
 

@@ -44,9 +44,10 @@ class ObjectsPanel : public QWidget {
 
     /// Lists @p mesh's objects and materials (none: the panel empties).
     void setMesh(std::shared_ptr<const LoadedMesh> mesh);
-    /// The style in force: the states and line sets shown follow it. A
-    /// text that does not parse leaves them as they were.
-    void setStyleText(const QString& text);
+    /// The document's style text and the style in force (the last that
+    /// parsed, which the document keeps): the states and line sets shown
+    /// follow the style; edits are made to the text.
+    void setStyle(const QString& text, const Style& style);
     QTreeWidget* tree() const { return tree_; }
 
   signals:

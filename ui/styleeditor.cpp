@@ -354,7 +354,7 @@ StyleEditor::StyleEditor(QWidget* parent)
     completer_->setCompletionMode(QCompleter::PopupCompletion);
     completer_->setCaseSensitivity(Qt::CaseInsensitive);
     connect(completer_, qOverload<const QString&>(&QCompleter::activated), this, &StyleEditor::insertCompletion);
-    setText(initial_style_text(), "style");
+    showText(initial_style_text());
 }
 
 void StyleEditor::complete(bool forced) {
@@ -451,20 +451,19 @@ void StyleEditor::applyPending() {
     apply();
 }
 
-void StyleEditor::setText(const QString& text, const QString& source) {
-    source_ = source;
+void StyleEditor::setText(const QString& text) {
     edit_->setPlainText(text);
     debounce_.stop();
     apply();
 }
 
-void StyleEditor::setSceneParts(std::shared_ptr<const FaceParts> parts) {
-    parts_ = std::move(parts);
-    apply();
+void StyleEditor::showText(const QString& text) {
+    if (text == edit_->toPlainText()) return;
+    edit_->setPlainText(text);
+    debounce_.stop(); // shown, not typed: nothing to apply
 }
 
-void StyleEditor::apply() {
-    std::vector<StyleDiagnostic> warnings;
+void StyleEditor::showCheck(const std::vector<StyleDiagnostic>& warnings, const std::optional<StyleDiagnostic>& problem) {
     QList<QTextEdit::ExtraSelection> marks;
     auto mark = [&](int line, int column, const QColor& colour) {
         QTextEdit::ExtraSelection sel;
@@ -475,11 +474,13 @@ void StyleEditor::apply() {
         sel.cursor = cursor;
         marks.append(sel);
     };
-    try {
-        const Style style = parse_style(edit_->toPlainText().toStdString(), source_.toStdString(), &warnings); // for its marks
-        // Patterns that name no part of the scene on screen.
-        if (parts_)
-            for (StyleDiagnostic& w : check_parts(style, *parts_)) warnings.push_back(std::move(w));
+    if (problem) {
+        const StyleDiagnostic& d = *problem;
+        problem_ = QString("%1:%2: %3").arg(d.line).arg(d.column).arg(QString::fromStdString(d.message));
+        status_->setStyleSheet("color: #b00020");
+        status_->setText(tr("%1 (the last good style stays in force)").arg(problem_));
+        mark(d.line, d.column, QColor("#ffd6d6"));
+    } else {
         problem_.clear();
         QStringList lines;
         for (const StyleDiagnostic& w : warnings) {
@@ -488,17 +489,11 @@ void StyleEditor::apply() {
         }
         status_->setStyleSheet(warnings.empty() ? "color: #2e7d32" : "color: #9a6700");
         status_->setText(warnings.empty() ? tr("Style applied.") : lines.join('\n'));
-        edit_->setExtraSelections(marks);
-    } catch (const StyleError& e) {
-        const StyleDiagnostic& d = e.diagnostic();
-        problem_ = QString("%1:%2: %3").arg(d.line).arg(d.column).arg(QString::fromStdString(d.message));
-        status_->setStyleSheet("color: #b00020");
-        status_->setText(tr("%1 (the last good style stays in force)").arg(problem_));
-        mark(d.line, d.column, QColor("#ffd6d6"));
-        edit_->setExtraSelections(marks);
     }
-    emit textApplied(edit_->toPlainText());
+    edit_->setExtraSelections(marks);
 }
+
+void StyleEditor::apply() { emit textApplied(edit_->toPlainText()); }
 
 } // namespace snaxels::ui
 

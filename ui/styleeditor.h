@@ -1,7 +1,9 @@
 #pragma once
-// The XML style editor: highlighting, the parse error marked at its line and
-// column, warnings listed, and the style applied shortly after typing stops.
-// A style that does not parse leaves the last good one in force.
+// The XML style editor: highlighting, completion, and the style applied
+// shortly after typing stops. The document it edits parses the text; the
+// editor shows what that parse found (the error marked at its line and
+// column, warnings listed). A style that does not parse leaves the last
+// good one in force.
 
 #include <QPlainTextEdit>
 #include <QTimer>
@@ -11,7 +13,6 @@
 
 #include <QWidget>
 
-#include "snaxels/mesh/parts.h"
 #include "snaxels/style/style.h"
 
 class QCompleter;
@@ -45,13 +46,18 @@ class StyleEditor : public QWidget {
     explicit StyleEditor(QWidget* parent = nullptr);
 
     QString text() const { return edit_->toPlainText(); }
-    /// Replaces the text (a preset or a file) and applies it at once.
-    void setText(const QString& text, const QString& source);
+    /// Replaces the text (a preset or a file) and applies it at once: an edit.
+    void setText(const QString& text);
+    /// Shows @p text, the document's (an undo, a project opened): no edit.
+    void showText(const QString& text);
+    /// Shows what the document's parse of the text found: @p warnings
+    /// listed and marked, or @p problem, why it does not parse.
+    void showCheck(const std::vector<StyleDiagnostic>& warnings, const std::optional<StyleDiagnostic>& problem);
     /// Typing not applied yet (it is applied when typing pauses).
     bool pending() const { return debounce_.isActive(); }
     /// Applies typing not applied yet at once (before a save, an undo).
     void applyPending();
-    /// The last parse problem, "LINE:COL: message", or empty.
+    /// The parse problem shown, "LINE:COL: message", or empty.
     QString problem() const { return problem_; }
     QPlainTextEdit* editor() const { return edit_; }
     /// The completer: it pops up as an element, attribute or value is typed
@@ -66,14 +72,10 @@ class StyleEditor : public QWidget {
     /// sharp-angle, adding the element after the root's opening tag when
     /// the style has none (one edit, applied at once).
     void setSharpAngle(const QString& value);
-    /// The parts of the scene on screen (null: none): a style's object= or
-    /// material= pattern that matches none of them is listed as a warning.
-    void setSceneParts(std::shared_ptr<const FaceParts> parts);
 
   signals:
-    /// The text was taken up (typing paused, or set): parsed or not. The
-    /// document it goes to parses it again and keeps the style in force;
-    /// the editor parses only to mark problems.
+    /// The user's text was taken up (typing paused, or set): parsed or not,
+    /// it is the document's next style text.
     void textApplied(const QString& text);
 
   private:
@@ -87,9 +89,7 @@ class StyleEditor : public QWidget {
     QPlainTextEdit* edit_;
     QLabel* status_;
     QTimer debounce_;
-    QString source_ = "style";
     QString problem_;
-    std::shared_ptr<const FaceParts> parts_;
 };
 
 /// The colour value ("#rrggbb" or "#rgb", in quotes) around @p position

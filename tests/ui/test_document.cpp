@@ -147,6 +147,7 @@ class TestDocument : public QObject {
         AnimationSpec clip;
         clip.kind = AnimationSpec::Kind::Clip;
         clip.clip = "Walk";
+        clip.frames = 48;
         doc.resetAnimation(clip);
         doc.setFrame(17);
         QCOMPARE(doc.undoStack()->count(), 0);
@@ -394,6 +395,105 @@ class TestDocument : public QObject {
         QVERIFY(doc.projectPath().isEmpty());
         QVERIFY(!QFile::exists(bad));
     }
+
+    // A scene's animation as the document plays it: names filled in, a
+    // clip's length at the rate, and what the scene lacks giving way.
+    void resolvesTheAnimationAgainstTheScene() {
+        snaxels::ui::SceneFacts facts;
+        facts.clips = {{"Idle", 1.0}, {"Walk", 2.0}};
+        snaxels::FileCamera still, moving;
+        still.name = "Top";
+        moving.name = "Shot";
+        moving.clip = "ShotAction";
+        moving.clip_seconds = 0.5;
+        facts.cameras = {still, moving};
+        AnimationSpec clip;
+        clip.kind = AnimationSpec::Kind::Clip;
+        clip.clip = "1"; // by number
+        clip.frames = 0; // its own length
+        clip.fps = 10.0;
+        bool found = false;
+        AnimationSpec r = snaxels::ui::resolve_animation(clip, facts, &found);
+        QVERIFY(found);
+        QCOMPARE(QString::fromStdString(r.clip), QString("Walk"));
+        QCOMPARE(r.frames, 21); // 2 s at 10 fps, both ends
+        clip.clip.clear(); // the first
+        QCOMPARE(QString::fromStdString(snaxels::ui::resolve_animation(clip, facts).clip), QString("Idle"));
+        clip.clip = "Run"; // not there: a turntable, told
+        r = snaxels::ui::resolve_animation(clip, facts, &found);
+        QVERIFY(!found);
+        QCOMPARE(r.kind, AnimationSpec::Kind::Turntable);
+        QVERIFY(r.clip.empty());
+        QCOMPARE(r.frames, 1);
+        AnimationSpec move;
+        move.kind = AnimationSpec::Kind::Camera;
+        move.camera = "Shot";
+        move.frames = 0;
+        move.fps = 24.0;
+        r = snaxels::ui::resolve_animation(move, facts, &found);
+        QVERIFY(found);
+        QCOMPARE(QString::fromStdString(r.clip), QString("ShotAction"));
+        QCOMPARE(r.frames, 13);
+        move.camera = "Top"; // a camera no clip moves is no camera move
+        r = snaxels::ui::resolve_animation(move, facts, &found);
+        QVERIFY(!found);
+        QCOMPARE(r.kind, AnimationSpec::Kind::Turntable);
+        AnimationSpec through;
+        through.kind = AnimationSpec::Kind::LightOrbit;
+        through.camera = "Gone";
+        through.frames = 30;
+        r = snaxels::ui::resolve_animation(through, facts, &found);
+        QVERIFY(!found);
+        QVERIFY(r.camera.empty()); // the view's camera
+        QCOMPARE(r.kind, AnimationSpec::Kind::LightOrbit);
+        QCOMPARE(r.frames, 30);
+    }
+
+    // The frame stays within the animation, and follows it when it shortens.
+    void theFrameStaysWithinTheAnimation() {
+        Document doc("<style/>");
+        AnimationSpec turn;
+        turn.kind = AnimationSpec::Kind::Turntable;
+        turn.frames = 10;
+        doc.setAnimation(turn);
+        doc.setFrame(25);
+        QCOMPARE(doc.frame(), 9);
+        doc.setFrame(-3);
+        QCOMPARE(doc.frame(), 0);
+        doc.setFrame(8);
+        turn.frames = 5;
+        QSignalSpy frame(&doc, &Document::frameChanged);
+        doc.setAnimation(turn);
+        QCOMPARE(doc.frame(), 4);
+        QCOMPARE(frame.count(), 1);
+        turn.start = 3;
+        doc.setAnimation(turn);
+        QCOMPARE(doc.sourceFrame(), 7);
+    }
+
+    // The document parses its style's text once per edit and keeps what
+    // the parse found: the error's place, or the warnings.
+    void theStyleIsParsedAndCheckedByTheDocument() {
+        Document doc("<style version=\"1\"/>");
+        QVERIFY(!doc.styleProblem());
+        QSignalSpy checked(&doc, &Document::styleChecked);
+        QSignalSpy parsed(&doc, &Document::styleChanged);
+        doc.setStyleText("<style version=\"1\">\n  <contour kind=\"visual\" colour=\"red\"/>\n</style>");
+        QCOMPARE(checked.count(), 1);
+        QCOMPARE(parsed.count(), 1);
+        QVERIFY(!doc.styleProblem());
+        QCOMPARE(doc.styleWarnings().size(), std::size_t(1)); // an attribute the parser does not know
+        QCOMPARE(doc.styleWarnings()[0].line, 2);
+        pastMergeWindow();
+        doc.setStyleText("<style version=\"1\">\n  <contour kind=\"nothing\"/>\n</style>");
+        QCOMPARE(checked.count(), 2);
+        QCOMPARE(parsed.count(), 1); // the last good style stays in force
+        QVERIFY(doc.styleProblem().has_value());
+        QCOMPARE(doc.styleProblem()->line, 2);
+        QVERIFY(doc.styleWarnings().empty());
+        QCOMPARE(doc.style().contours.size(), std::size_t(1));
+    }
+
 };
 
 QTEST_GUILESS_MAIN(TestDocument)

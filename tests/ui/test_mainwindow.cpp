@@ -61,6 +61,7 @@
 #include "snaxels/project/project.h"
 #include "ui/document.h"
 #include "ui/mainwindow.h"
+#include "ui/mesh_loader.h"
 #include "ui/meshview.h"
 #include "ui/objects_panel.h"
 #include "ui/resources.h"
@@ -229,7 +230,7 @@ double contourOffOutline(const QImage& image) {
 bool showHorseInToon(MainWindow& window) {
     if (!showWithMesh(window, QString(SNAXELS_TEST_ASSETS) + "/horse.ply")) return false;
     QSignalSpy restyled(&window, &MainWindow::contoursUpdated);
-    window.styleEditor()->setText(toonStyle(), "toon.xml");
+    window.styleEditor()->setText(toonStyle());
     return restyled.wait(60000);
 }
 
@@ -347,7 +348,7 @@ class TestMainWindow : public QObject {
         QFile toon(snaxels::ui::dataDirectory() + "/styles/toon.xml");
         QVERIFY(toon.open(QIODevice::ReadOnly));
         contours.clear();
-        window.styleEditor()->setText(QString::fromUtf8(toon.readAll()), "toon.xml");
+        window.styleEditor()->setText(QString::fromUtf8(toon.readAll()));
         QVERIFY(contours.wait(30000));
         QVERIFY(window.currentSvg().contains("<g id=\"fills\""));
         QVERIFY(window.currentSvg().contains("#f6c86b"));
@@ -433,8 +434,7 @@ class TestMainWindow : public QObject {
 
         // A style that draws them draws them in the SVG too, once found.
         contours.clear();
-        window.styleEditor()->setText("<style>\n  <contour kind=\"visual\"/>\n  <contour kind=\"parabolic\"/>\n</style>\n",
-                                      "parabolic.xml");
+        window.styleEditor()->setText("<style>\n  <contour kind=\"visual\"/>\n  <contour kind=\"parabolic\"/>\n</style>\n");
         QVERIFY(contours.wait(30000));
         QTRY_VERIFY_WITH_TIMEOUT(window.currentSvg().contains("#1f8a4c"), 30000);
 
@@ -539,7 +539,7 @@ class TestMainWindow : public QObject {
         QVERIFY(showWithMesh(window, QString(SNAXELS_TEST_ASSETS) + "/spot.obj"));
         QFile toon(snaxels::ui::dataDirectory() + "/styles/toon.xml");
         QVERIFY(toon.open(QIODevice::ReadOnly));
-        window.styleEditor()->setText(QString::fromUtf8(toon.readAll()), "toon.xml");
+        window.styleEditor()->setText(QString::fromUtf8(toon.readAll()));
         window.timeline()->setFrameCount(6);
         const int steps = window.undoStack()->count();
         const QString style = window.styleEditor()->text();
@@ -764,7 +764,7 @@ class TestMainWindow : public QObject {
         QFile toon(snaxels::ui::dataDirectory() + "/styles/toon.xml");
         QVERIFY(toon.open(QIODevice::ReadOnly));
         contours.clear();
-        window.styleEditor()->setText(QString::fromUtf8(toon.readAll()), "toon.xml");
+        window.styleEditor()->setText(QString::fromUtf8(toon.readAll()));
         QVERIFY(contours.wait(30000));
         QVERIFY(window.currentSvg().contains("<g id=\"fills\""));
         QTest::qWait(1600); // a later edit does not merge with this one
@@ -985,7 +985,7 @@ class TestMainWindow : public QObject {
         snaxels::AnimationSpec orbit = window.timeline()->spec();
         orbit.kind = snaxels::AnimationSpec::Kind::LightOrbit;
         orbit.frames = 102;
-        window.timeline()->setSpec(orbit);
+        window.document()->setAnimation(orbit); // as the timeline's source and frames would
         window.turnLight(0.4, 0.0);
         QVERIFY(window.saveProject(first));
         const QByteArray saved = readAll(first);
@@ -1447,7 +1447,7 @@ class TestMainWindow : public QObject {
 
         // A pattern that names no part of the truck is a warning in the
         // style editor, naming it and the parts the scene has.
-        reopened.styleEditor()->setText("<style>\n<contour kind=\"visual\" object=\"Trailer*\"/>\n</style>\n", "test");
+        reopened.styleEditor()->setText("<style>\n<contour kind=\"visual\" object=\"Trailer*\"/>\n</style>\n");
         auto* status = reopened.styleEditor()->findChild<QLabel*>("styleStatus");
         QVERIFY(status);
         QVERIFY2(status->text().contains("2:1: warning: object \"Trailer*\" matches none") &&
@@ -1557,7 +1557,7 @@ class TestMainWindow : public QObject {
         QVERIFY(window.findChild<QDockWidget*>("timelineDock"));
 
         // The Default preset: the style a new window starts with.
-        window.styleEditor()->setText("<style version=\"1\"/>", "empty");
+        window.styleEditor()->setText("<style version=\"1\"/>");
         QAction* preset = nullptr;
         for (QAction* menu : window.menuBar()->actions())
             if (QString(menu->text()).remove('&') == "Style")
@@ -1711,7 +1711,7 @@ class TestMainWindow : public QObject {
         for (const QString& name : files) {
             QFile f(presets.filePath(name));
             QVERIFY(f.open(QIODevice::ReadOnly));
-            window.styleEditor()->setText(QString::fromUtf8(f.readAll()), name);
+            window.styleEditor()->setText(QString::fromUtf8(f.readAll()));
             QCoreApplication::processEvents();
             QTextBlock longest = edit->document()->firstBlock();
             for (QTextBlock b = longest; b.isValid(); b = b.next())
@@ -1837,7 +1837,7 @@ class TestMainWindow : public QObject {
         contours.clear();
         snaxels::AnimationSpec turntable;
         turntable.kind = snaxels::AnimationSpec::Kind::Turntable;
-        window.timeline()->setSpec(turntable);
+        window.document()->setAnimation(turntable);
         window.timeline()->setFrame(0);
         QVERIFY(contours.wait(30000));
     }
@@ -2181,7 +2181,7 @@ class TestMainWindow : public QObject {
                          .arg(0.04 + 0.075 * i)
                          .arg(QColor::fromHsv(30 * i, 255, 255).name());
         style += "  <contour kind=\"visual\"><visible stroke=\"#000000\" width=\"1\"/></contour>\n</style>\n";
-        window.styleEditor()->setText(style, "bands.xml");
+        window.styleEditor()->setText(style);
         QVERIFY2(window.styleEditor()->problem().isEmpty(), qPrintable(window.styleEditor()->problem()));
         QTRY_VERIFY_WITH_TIMEOUT(!window.contoursBusy(), 30000);
         window.regionsAction()->setChecked(true);
@@ -2294,6 +2294,90 @@ class TestMainWindow : public QObject {
         QVERIFY(failed.first().first().toString().contains("the file is empty"));
         QVERIFY(window.mesh() == nullptr);
     }
+
+    // The document alone is the scene: a Document made without any widget,
+    // given by its setters every kind of state the window's widgets edited
+    // (style, view, light, animation, frame), exports the very bytes the
+    // window exports, saves the window's project, and reloaded from that
+    // file exports and saves them again.
+    void theDocumentAloneExportsWhatTheWindowExports() {
+        QTemporaryDir dir;
+        const QString scene = QString(SNAXELS_TEST_ASSETS) + "/cameras/blender-shot.gltf";
+        MainWindow window;
+        QVERIFY(showWithMesh(window, scene));
+        QSignalSpy contours(&window, &MainWindow::contoursUpdated);
+        // Every kind of edit, each through its widget.
+        QFile toon(snaxels::ui::dataDirectory() + "/styles/toon.xml");
+        QVERIFY(toon.open(QIODevice::ReadOnly));
+        window.styleEditor()->setText(QString::fromUtf8(toon.readAll()));
+        window.findChild<QAction*>("viewLeft")->trigger();
+        QTest::mousePress(window.meshView(), Qt::LeftButton, {}, QPoint(300, 300));
+        QTest::mouseMove(window.meshView(), QPoint(340, 310));
+        QTest::mouseRelease(window.meshView(), Qt::LeftButton, {}, QPoint(340, 310));
+        window.turnLight(0.4, -0.2);
+        auto* degrees = window.timeline()->findChild<QDoubleSpinBox*>("degreesPerFrame");
+        degrees->setFocus();
+        degrees->selectAll();
+        QTest::keyClicks(degrees, "9.00");
+        QTest::keyClick(degrees, Qt::Key_Return);
+        window.timeline()->setFrameCount(6);
+        window.timeline()->setFrame(4);
+        QVERIFY(contoursSettle(window));
+        const snaxels::ui::Document& shown = *window.document();
+        QCOMPARE(shown.animation().degrees_per_frame, 9.0);
+        QCOMPARE(shown.animation().frames, 6);
+        QCOMPARE(shown.frame(), 4);
+        QVERIFY(shown.light().has_value());
+        // Left, then dragged 40 px to the right and 10 down: 0.01 rad a pixel.
+        const snaxels::OrbitView left = snaxels::preset_view(shown.view(), snaxels::ViewPreset::Left);
+        QVERIFY(std::abs(shown.view().yaw - (left.yaw + 0.4)) < 1e-9);
+        QVERIFY(std::abs(shown.view().pitch - (left.pitch + 0.1)) < 1e-9);
+        QVERIFY(shown.styleText() != snaxels::ui::initial_style_text());
+        QSignalSpy finished(&window, &MainWindow::exportFinished);
+        window.exportAnimation(dir.filePath("window.svg"));
+        QVERIFY(finished.wait(180000));
+        QVERIFY(window.saveProject(dir.filePath("window.snaxels")));
+
+        // The same scene read by the loader alone, and a document with no window.
+        snaxels::ui::MeshLoader loader;
+        snaxels::ui::LoadResult result;
+        QObject::connect(&loader, &snaxels::ui::MeshLoader::finished, [&](const snaxels::ui::LoadResult& r) { result = r; });
+        QVERIFY(loader.load(scene));
+        QTRY_VERIFY_WITH_TIMEOUT(!loader.loading(), 60000);
+        QVERIFY(result.mesh);
+        snaxels::ui::SceneFacts facts{result.scene->clips, result.scene->cameras, result.geometry->centre,
+                                      result.geometry->radius};
+        auto exported = [&](const snaxels::ui::Document& doc, const QString& name) {
+            snaxels::AnimationJob job = doc.animationJob();
+            if (!snaxels::set_output(job, dir.filePath(name).toStdString())) return QByteArray();
+            snaxels::run_animation(*doc.mesh(), doc.meshSpec().toStdString(), job);
+            return readAll(dir.filePath(name));
+        };
+        snaxels::ui::Document alone(snaxels::ui::initial_style_text());
+        alone.startNew(scene, result.mesh, facts, snaxels::ui::initial_animation());
+        alone.setStyleText(shown.styleText());
+        alone.setView(shown.view());
+        alone.setLight(shown.light());
+        alone.setAnimation(shown.animation());
+        alone.setFrame(shown.frame());
+        const QByteArray windowSvg = readAll(dir.filePath("window.svg"));
+        QVERIFY(windowSvg.size() > 1000);
+        QVERIFY2(exported(alone, "alone.svg") == windowSvg, "the document alone exports other bytes than the window");
+        alone.save(dir.filePath("alone.snaxels"));
+        QCOMPARE(readAll(dir.filePath("alone.snaxels")), readAll(dir.filePath("window.snaxels")));
+
+        // Reloaded from the window's project: the same export and the same file.
+        snaxels::ui::Document reloaded(snaxels::ui::initial_style_text());
+        const snaxels::Project project = snaxels::read_project(dir.filePath("window.snaxels").toStdString());
+        QVERIFY(reloaded.load(project, dir.filePath("window.snaxels"), scene, result.mesh, facts).isEmpty());
+        QVERIFY(!reloaded.isModified());
+        QVERIFY(reloaded.edited() == shown.edited());
+        QCOMPARE(reloaded.frame(), shown.frame());
+        QVERIFY2(exported(reloaded, "reloaded.svg") == windowSvg, "the reloaded project exports other bytes");
+        reloaded.save(dir.filePath("reloaded.snaxels"));
+        QCOMPARE(readAll(dir.filePath("reloaded.snaxels")), readAll(dir.filePath("window.snaxels")));
+    }
+
 };
 
 int main(int argc, char** argv) {
@@ -2318,8 +2402,7 @@ int main(int argc, char** argv) {
         for (int n = 0;; ++n) {
             window.styleEditor()->setText(QString("<style version=\"1\">\n<!-- helper save %1 %2 -->\n</style>\n")
                                               .arg(n)
-                                              .arg(QString(4000 + n % 7, 'x')),
-                                          "style");
+                                              .arg(QString(4000 + n % 7, 'x')));
             if (!window.saveProject(QString(argv[2]))) return 3;
         }
     }

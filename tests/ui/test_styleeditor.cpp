@@ -150,7 +150,7 @@ class TestStyleEditor : public QObject {
         for (const QString& name : files) {
             QFile f(presets.filePath(name));
             QVERIFY(f.open(QIODevice::ReadOnly));
-            editor.setText(QString::fromUtf8(f.readAll()), name);
+            editor.setText(QString::fromUtf8(f.readAll()));
             QCoreApplication::processEvents();
             QCOMPARE(editor.editor()->horizontalScrollBar()->maximum(), 0);
         }
@@ -179,7 +179,7 @@ class TestStyleEditor : public QObject {
     void setsTheSharpAngle() {
         StyleEditor editor;
         const QString text = "<style version=\"1\">\n  <contour kind=\"visual\"/>\n</style>\n";
-        editor.setText(text, "test");
+        editor.setText(text);
         QSignalSpy applied(&editor, &StyleEditor::textApplied);
         editor.setSharpAngle("30");
         QCOMPARE(editor.text(), QString("<style version=\"1\">\n  <surface sharp-angle=\"30\"/>\n  <contour kind=\"visual\"/>\n</style>\n"));
@@ -194,7 +194,7 @@ class TestStyleEditor : public QObject {
         editor.editor()->undo();
         QCOMPARE(editor.text(), text);
         // A <surface> without the attribute takes it.
-        editor.setText("<style>\n  <surface/>\n</style>\n", "test");
+        editor.setText("<style>\n  <surface/>\n</style>\n");
         editor.setSharpAngle("45");
         QCOMPARE(editor.text(), QString("<style>\n  <surface sharp-angle=\"45\"/>\n</style>\n"));
         QVERIFY(!snaxels::sharp_angle_splice("not a style", "30"));
@@ -206,7 +206,7 @@ class TestStyleEditor : public QObject {
         StyleEditor editor;
         const QString text = "<style version=\"1\">\n  <contour kind=\"visual\">\n    <visible stroke=\"#111111\" width=\"2\"/>\n"
                              "  </contour>\n</style>\n";
-        editor.setText(text, "test");
+        editor.setText(text);
         const int at = int(text.indexOf("#111111")) + 3;
         const auto value = snaxels::ui::colour_value_at(text, at);
         QVERIFY(value && value->first == text.indexOf("#111111") && value->second == 7);
@@ -239,7 +239,7 @@ class TestStyleEditor : public QObject {
         QVERIFY(QTest::qWaitForWindowExposed(&editor));
         const QString text = "<style version=\"1\">\n  <contour kind=\"visual\">\n    <visible stroke=\"#2f5fa8\" width=\"2\"/>\n"
                              "  </contour>\n</style>\n";
-        editor.setText(text, "test");
+        editor.setText(text);
         QPlainTextEdit* edit = editor.editor();
         QWidget* gutter = nullptr; // the edit's child beside its viewport
         for (QWidget* child : edit->findChildren<QWidget*>(Qt::FindDirectChildrenOnly))
@@ -293,7 +293,7 @@ class TestStyleEditor : public QObject {
         editor.resize(420, 300);
         editor.show();
         QVERIFY(QTest::qWaitForWindowExposed(&editor));
-        editor.setText("<style version=\"1\">\n  <canvas ", "test");
+        editor.setText("<style version=\"1\">\n  <canvas ");
         QPlainTextEdit* edit = editor.editor();
         edit->setFocus();
         edit->moveCursor(QTextCursor::End);
