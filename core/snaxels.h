@@ -30,6 +30,7 @@
 #include "snaxels/scene/orbit.h"
 
 #include "snaxels/snaxel/contour_function.h"
+#include "snaxels/snaxel/contour_kind.h"
 #include "snaxels/snaxel/curvature.h"
 #include "snaxels/snaxel/feature_edges.h"
 #include "snaxels/snaxel/fronts.h"

@@ -13,22 +13,7 @@
 
 namespace snaxels::ui {
 
-const char* view_colour(ContourKind kind) {
-    switch (kind) {
-    case ContourKind::Visual: return "#e8402a";
-    case ContourKind::Shadow: return "#2f7fe0";
-    case ContourKind::Isophote: return "#a05fd0";
-    case ContourKind::Gleam: return "#ffc000";
-    case ContourKind::Parabolic: return "#3ddc84";
-    case ContourKind::Crease: return "#f0f0f0";
-    case ContourKind::Border: return "#ff7ac8";
-    case ContourKind::Suggestive: return "#ff9a3c";
-    case ContourKind::Material: return "#7ad7ff";
-    case ContourKind::Object: return "#ffe45c";
-    case ContourKind::Intersection: return "#ff5c8a";
-    }
-    return "#e8402a";
-}
+const char* view_colour(ContourKind kind) { return contour_kind_info(kind).view_colour; }
 
 RegionShading region_shading(const Style& style, const Light& light, bool enabled) {
     RegionShading r;

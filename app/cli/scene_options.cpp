@@ -90,7 +90,7 @@ std::vector<OptionSpec> scene_option_specs() {
              "are turned upright from their own axes on import; 0,0,1 for Z-up scans and Blender's axes)"},
             {"light-dir", "X,Y,Z", "directional light: the direction toward the light"},
             {"light-pos", "X,Y,Z", "point light at this position"},
-            {"kind", "KIND", "contour to find: visual, shadow, isophote:K, gleam:K, parabolic, crease[:DEG], border, suggestive[:D[:DEG]] (default visual)", true},
+            {"kind", "KIND", "contour to find: " + contour_kind_usages(", ") + " (default visual)", true},
             {"style", "FILE.xml", "how to draw: strokes per contour kind, canvas, light (docs/styles.md)"},
             {"size", "WxH", "image size in pixels (default: the style's canvas, 800x800)"},
             {"no-visibility", "", "skip hidden-line classification (no qi, no dashed runs)"},
@@ -139,7 +139,8 @@ SceneOptions parse_scene_options(const Args& args) {
     // min-angle, --kind crease with its angle and least length.
     for (std::size_t i = 0; i < o.overrides.kinds.size(); ++i) {
         ContourSpec& spec = o.overrides.kinds[i];
-        if (valued[i] || (spec.kind != ContourKind::Suggestive && spec.kind != ContourKind::Crease)) continue;
+        const ContourValue value = contour_kind_info(spec.kind).value;
+        if (valued[i] || (value != ContourValue::Suggestive && value != ContourValue::Angle)) continue;
         for (const ContourStyle& cs : o.style.contours)
             if (cs.spec.kind == spec.kind) {
                 spec.k = cs.spec.k;

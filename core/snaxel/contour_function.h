@@ -13,12 +13,9 @@
 #include "snaxels/scene/camera.h"
 #include "snaxels/mesh/parts.h"
 #include "snaxels/mesh/topology.h"
+#include "snaxels/snaxel/contour_kind.h"
 
 namespace snaxels {
-
-enum class ContourKind {
-    Visual, Shadow, Isophote, Gleam, Parabolic, Crease, Border, Suggestive, Material, Object, Intersection
-};
 
 /// On a mesh with split sharp edges, f within this of zero at a vertex is a
 /// face seen edge-on (some 0.0006 degrees: ten times the rounding of a
@@ -108,14 +105,12 @@ struct ContourSpec {
     /// and light: fixed on the surface while the mesh keeps its pose,
     /// bounding no region of its own.
     bool on_surface() const {
-        return kind == ContourKind::Parabolic || kind == ContourKind::Intersection || along_edges();
+        const ContourOrigin origin = contour_kind_info(kind).origin;
+        return origin == ContourOrigin::Surface || origin == ContourOrigin::Edges;
     }
     /// A line made of whole mesh edges (crease, border, material, object):
     /// feature_fronts finds it.
-    bool along_edges() const {
-        return kind == ContourKind::Crease || kind == ContourKind::Border || kind == ContourKind::Material ||
-               kind == ContourKind::Object;
-    }
+    bool along_edges() const { return contour_kind_info(kind).origin == ContourOrigin::Edges; }
     /// Parses the CLI's --kind values; throws snaxels::Error when malformed.
     static ContourSpec parse(const std::string& text);
     /// The same contour (kind, test, and k, min_length and min_angle within
@@ -148,7 +143,7 @@ class ContourFunction {
     /// along an edge (suggestive contours' kappa_r): its zero on an edge is
     /// then f_a / (f_a - f_b), and the vertex values come from the pose's
     /// curvature (suggestive_function in core/snaxel/curvature.h).
-    bool linear_on_edge() const { return spec_.kind == ContourKind::Suggestive; }
+    bool linear_on_edge() const { return contour_kind_info(spec_.kind).origin == ContourOrigin::Vertices; }
     /// That v (the unit vector toward the viewer) when linear_in_normal().
     const glm::dvec3& normal_coefficient() const { return v_; }
 
@@ -177,12 +172,18 @@ class ContourFunction {
     double evaluate(const glm::dvec3& p, const glm::dvec3& n) const;
 
     ContourSpec spec_;
+    const ContourKindInfo* kind_; ///< its entry in the table of kinds
     Camera camera_;
     Light light_;
     bool linear_ = false, closed_ = false;
     glm::dvec3 v_{0.0}; ///< to the viewer (orthographic)
     glm::dvec3 l_{0.0}; ///< to the light (directional)
 };
+
+/// The first y in [0, span] where c0 + a cos y + b sin y turns negative
+/// (it is >= 0 at y = 0), or +inf when it does not: the zero of one
+/// sinusoidal term of f along a slerped edge (ContourKindInfo::arc_zero).
+double first_downward(double c0, double a, double b, double span);
 
 /// The zero of N.v on the slerp from @p na (N.v = @p a >= 0) to @p nb
 /// (N.v = @p b < 0), as t in [0, 1]: a sin((1-t)w) + b sin(tw) = 0 with w

@@ -202,10 +202,8 @@ Fronts chain_fronts(const MeshTopology& topo, const std::vector<EdgeChain>& chai
 }
 
 Fronts feature_fronts(const MeshTopology& topo, const ContourSpec& spec) {
-    const std::vector<EdgeId> edges = spec.kind == ContourKind::Crease     ? crease_edges(topo, spec.k)
-                                      : spec.kind == ContourKind::Material ? material_edges(topo)
-                                      : spec.kind == ContourKind::Object   ? object_edges(topo)
-                                                                           : border_edges(topo);
+    const auto lines = contour_kind_info(spec.kind).edges;
+    const std::vector<EdgeId> edges = lines ? lines(topo, spec) : border_edges(topo);
     const double min_length = spec.min_length > 0.0 ? spec.min_length * 2.0 * bounding_radius(topo) : 0.0;
     return chain_fronts(topo, chains_at_least(topo, chain_edges(topo, edges), min_length));
 }

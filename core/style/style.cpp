@@ -50,6 +50,17 @@ const char* width_by_name(StrokeStyle::WidthBy by) {
     return "none";
 }
 
+namespace {
+
+/// Every contour kind's name, in the table's order.
+std::vector<std::string> kind_names() {
+    std::vector<std::string> names;
+    for (const ContourKindInfo* info : contour_kinds()) names.emplace_back(info->name);
+    return names;
+}
+
+} // namespace
+
 const std::vector<StyleElement>& style_vocabulary() {
     static const std::vector<StyleElement> vocabulary = [] {
         const std::vector<StyleAttribute> stroke = {
@@ -86,8 +97,7 @@ const std::vector<StyleElement>& style_vocabulary() {
              {{"sharp-angle", {"file"}, "edges whose faces meet at more than this angle are sharp"}}},
             {"contour",
              "which contour to find and how to draw it",
-             {{"kind", {"visual", "shadow", "isophote", "gleam", "parabolic", "crease", "border", "suggestive", "material", "object", "intersection"},
-               "the contour function"},
+             {{"kind", kind_names(), "the contour function"},
               {"k", {}, "the isophote level N.L = k, or the gleam threshold V.R = k"},
               {"angle", {}, "the crease angle"},
               {"min-length", {}, "chains (runs of crease, border, material or object edges from end to end, or junction to junction) shorter than this are left out"},
@@ -185,6 +195,28 @@ struct Parser {
             if (!ok) warn(node, "unknown attribute '" + std::string(a.name()) + "' on <" + node.name() + ">");
         }
     }
+    // A <contour>'s attributes that some kinds take and its kind does not
+    // (the table of kinds says which kinds take which).
+    void check_kind_attributes(const pugi::xml_node& node, const ContourKindInfo& info) const {
+        const std::vector<const ContourKindInfo*> kinds = contour_kinds();
+        auto takes = [](const ContourKindInfo& k, const char* attr) {
+            const std::string a = attr;
+            return std::any_of(k.attributes.begin(), k.attributes.end(), [&](const char* b) { return a == b; }) ||
+                   (a == "angle" && k.value == ContourValue::Angle);
+        };
+        for (const pugi::xml_attribute a : node.attributes()) {
+            if (takes(info, a.name())) continue;
+            std::vector<std::string> which;
+            for (const ContourKindInfo* k : kinds)
+                if (takes(*k, a.name())) which.emplace_back(k->name);
+            if (which.empty()) continue; // every kind's, or none's
+            std::string list;
+            for (std::size_t i = 0; i < which.size(); ++i)
+                list += (i ? i + 1 == which.size() ? " and " : ", " : "") + which[i];
+            fail(node, which.size() == 1 ? "only a " + list + " contour takes " + a.name()
+                                         : "only " + list + " contours take " + a.name());
+        }
+    }
     // The words attribute `name` of `node`'s element takes (the vocabulary's).
     static const std::vector<std::string>& words(const pugi::xml_node& node, const char* name) {
         static const std::vector<std::string> none;
@@ -197,8 +229,7 @@ struct Parser {
     // `cs` with its fade read, once its strokes are: width-by="strength" is a
     // suggestive contour's.
     ContourStyle finished(const pugi::xml_node& node, ContourStyle cs) const {
-        const bool suggestive = cs.spec.kind == ContourKind::Suggestive;
-        if (!suggestive && node.attribute("fade")) fail(node, "only a suggestive contour takes fade");
+        const bool suggestive = contour_kind_info(cs.spec.kind).value == ContourValue::Suggestive;
         for (const StrokeStyle* s : {&cs.visible, &cs.hidden})
             if (!suggestive && s->width_by == StrokeStyle::WidthBy::Strength)
                 fail(node, "width-by=\"strength\" follows a suggestive contour's test: a " + cs.spec.kind_name() + " contour has none");
@@ -208,7 +239,6 @@ struct Parser {
     }
     // A suggestive contour's test and its values into `spec`.
     void suggestive(const pugi::xml_node& node, ContourSpec& spec) const {
-        spec.kind = ContourKind::Suggestive;
         std::string test = node.attribute("test").value();
         if (!test.empty() && test != "derivative" && test != "rtsc") fail(node, "test=\"" + test + "\" must be derivative or rtsc");
         // Without test: rtsc's, unless the derivative test's values are given
@@ -424,41 +454,38 @@ struct Parser {
     void contour_element(const pugi::xml_node& child, Style& style) const {
         check_attributes(child);
         const std::string kind = child.attribute("kind").value();
-        ContourSpec spec;
-        if (kind != "crease" && child.attribute("angle")) fail(child, "only a crease contour takes an angle");
-        for (const char* attr : {"min-derivative", "min-angle", "test", "threshold"})
-            if (kind != "suggestive" && child.attribute(attr))
-                fail(child, std::string("only a suggestive contour takes ") + attr);
-        if (kind != "crease" && kind != "border" && kind != "material" && kind != "object" &&
-            child.attribute("min-length"))
-            fail(child, "only crease, border, material and object contours take a min-length");
-        spec.min_length = number(child, "min-length", 0.0, 0.0, 1.0);
-        if (kind == "visual" || kind == "shadow" || kind == "parabolic" || kind == "border" || kind == "material" ||
-            kind == "object" || kind == "intersection") {
-            if (child.attribute("k")) fail(child, "a " + kind + " contour takes no k");
-            spec.kind = ContourSpec::parse(kind).kind;
-        } else if (kind == "crease") {
-            if (child.attribute("k")) fail(child, "a crease contour takes angle=\"DEGREES\", not k");
-            spec.kind = ContourKind::Crease;
-            spec.k = number(child, "angle", kDefaultCreaseDegrees, 0.01, 179.99);
-        } else if (kind == "suggestive") {
-            if (child.attribute("k"))
-                fail(child, "a suggestive contour takes min-derivative=\"D\" and min-angle=\"DEGREES\", not k");
-            suggestive(child, spec);
-        } else if (kind == "isophote" || kind == "gleam") {
-            if (!child.attribute("k")) fail(child, "an " + kind + " contour needs k (a cosine in -1 .. 1)");
-            spec.kind = kind == "isophote" ? ContourKind::Isophote : ContourKind::Gleam;
-            spec.k = number(child, "k", 0.0, -1.0, 1.0);
-        } else {
+        const ContourKindInfo* info = find_contour_kind(kind);
+        if (!info) {
             std::string kinds;
-            const auto& all = words(child, "kind");
+            const auto& all = contour_kinds();
             for (std::size_t i = 0; i < all.size(); ++i)
-                kinds += (i ? i + 1 == all.size() ? " or " : ", " : "") + all[i];
+                kinds += (i ? i + 1 == all.size() ? " or " : ", " : "") + std::string(all[i]->name);
             fail(child, "kind=\"" + kind + "\" must be " + kinds);
+        }
+        check_kind_attributes(child, *info);
+        ContourSpec spec;
+        spec.kind = info->kind;
+        spec.min_length = number(child, "min-length", 0.0, 0.0, 1.0);
+        switch (info->value) {
+        case ContourValue::None:
+            if (child.attribute("k")) fail(child, "a " + kind + " contour takes no k");
+            break;
+        case ContourValue::Angle:
+            if (child.attribute("k")) fail(child, "a " + kind + " contour takes angle=\"DEGREES\", not k");
+            spec.k = number(child, "angle", kDefaultCreaseDegrees, 0.01, 179.99);
+            break;
+        case ContourValue::Suggestive:
+            if (child.attribute("k"))
+                fail(child, "a " + kind + " contour takes min-derivative=\"D\" and min-angle=\"DEGREES\", not k");
+            suggestive(child, spec);
+            break;
+        case ContourValue::Cosine:
+            if (!child.attribute("k")) fail(child, "an " + kind + " contour needs k (a cosine in -1 .. 1)");
+            spec.k = number(child, "k", 0.0, -1.0, 1.0);
+            break;
         }
         spec.parts = selector(child, style);
         if (child.attribute("over")) {
-            if (kind != "visual") fail(child, "only a visual contour takes over=\"objects\"");
             spec.parts.over_objects = choice(child, "over", "objects") == "objects";
         }
         for (const ContourStyle& existing : style.contours)
@@ -563,22 +590,7 @@ struct Parser {
 
 } // namespace
 
-const char* default_stroke(ContourKind kind) {
-    switch (kind) {
-    case ContourKind::Visual: return "#111111";
-    case ContourKind::Shadow: return "#2f5fa8";
-    case ContourKind::Isophote: return "#8a4fb0";
-    case ContourKind::Gleam: return "#d98c00";
-    case ContourKind::Parabolic: return "#1f8a4c";
-    case ContourKind::Crease: return "#333333";
-    case ContourKind::Border: return "#111111";
-    case ContourKind::Suggestive: return "#5a4632";
-    case ContourKind::Material: return "#333333";
-    case ContourKind::Object: return "#111111";
-    case ContourKind::Intersection: return "#111111";
-    }
-    return "#111111";
-}
+const char* default_stroke(ContourKind kind) { return contour_kind_info(kind).stroke; }
 
 std::uint32_t colour_rgb(const std::string& colour) {
     if (colour.size() == 7 && colour[0] == '#') return std::uint32_t(std::stoul(colour.substr(1), nullptr, 16));
