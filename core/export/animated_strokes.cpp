@@ -15,7 +15,7 @@
 
 namespace snaxels {
 
-std::vector<ClassSpan> class_spans(const std::vector<std::pair<double, int>>& changes, int cls0, bool closed,
+std::vector<ClassSpan> class_spans(const std::vector<std::pair<double, StrokeClass>>& changes, StrokeClass cls0, bool closed,
                                    double min_u) {
     std::vector<ClassSpan> spans;
     if (changes.empty()) return {{cls0, closed, 0.0, 1.0}};
@@ -27,7 +27,7 @@ std::vector<ClassSpan> class_spans(const std::vector<std::pair<double, int>>& ch
         }
     } else {
         double u0 = 0.0;
-        int cls = cls0;
+        StrokeClass cls = cls0;
         for (const auto& [u, after] : changes) {
             spans.push_back({cls, false, u0, u});
             u0 = u;
@@ -121,10 +121,10 @@ std::vector<double> restarts_of(const ParamLoop& p, const DrawnLoop& dl) {
 }
 
 std::vector<ClassSpan> spans_of(const ParamLoop& p, const DrawnLoop& dl, double min_run_px) {
-    if (dl.qi.empty()) return {{0, p.closed, 0.0, 1.0}};
+    if (dl.qi.empty()) return {{StrokeClass::Visible, p.closed, 0.0, 1.0}}; // no visibility: visible
     const std::size_t n = p.pts.size();
-    auto cls = [&](std::size_t k) { return dl.qi[k] == kNotDrawn ? kLeftOut : dl.qi[k] > 0 ? 1 : 0; };
-    std::vector<std::pair<double, int>> changes;
+    auto cls = [&](std::size_t k) { return stroke_class(dl.qi[k]); };
+    std::vector<std::pair<double, StrokeClass>> changes;
     for (std::size_t k = 0; k < n; ++k) {
         if (!p.closed && k == 0) continue;
         const std::size_t prev = (k + n - 1) % n;
@@ -133,7 +133,7 @@ std::vector<ClassSpan> spans_of(const ParamLoop& p, const DrawnLoop& dl, double 
     }
     std::sort(changes.begin(), changes.end());
     // The class at u = 0: after the last change before it (cyclically).
-    const int cls0 = p.closed && !changes.empty() ? changes.back().second : cls(0);
+    const StrokeClass cls0 = p.closed && !changes.empty() ? changes.back().second : cls(0);
     return class_spans(changes, cls0, p.closed, p.length > 0.0 ? min_run_px / p.length : 0.0);
 }
 
@@ -196,7 +196,7 @@ double overlap(const ClassSpan& last, const ClassSpan& s, bool closed, double& s
 
 // Runs followed from frame to frame: a run continues the previous frame's
 // run it overlaps most when that one overlaps it most too.
-void track_runs(std::vector<LifeFrame>& life, int cls, int& next_id) {
+void track_runs(std::vector<LifeFrame>& life, StrokeClass cls, int& next_id) {
     for (std::size_t i = 0; i < life.size(); ++i) {
         std::vector<Run>& runs = life[i].runs[cls];
         const bool follow = i > 0 && !life[i].jump;
@@ -245,11 +245,11 @@ std::vector<DrawnContour> still_parameters(const std::vector<AnimationFrame>& fr
 
 /// The paths of contour @p c's brief contours (@p brief: per class, frame
 /// -> the runs of its one-frame contours), into @p out.
-void brief_paths(const std::map<int, anim::Shape> (&brief)[2], std::size_t c, std::vector<AnimatedPathData>& out) {
+void brief_paths(const ByClass<std::map<int, anim::Shape>>& brief, std::size_t c, std::vector<AnimatedPathData>& out) {
     // The brief contours' path: each frame's shape holds until the next
     // frame (nothing corresponds from one frame to the next); frames without
     // any draw a lone move.
-    for (const int cls : {0, 1}) {
+    for (const StrokeClass cls : kDrawnClasses) {
         if (brief[cls].empty()) continue;
         AnimatedPathData path;
         path.contour = c;
@@ -284,7 +284,7 @@ void stroke_paths(const std::vector<AnimationFrame>& frames, std::size_t c, cons
                   const AnimatedSvgOptions& options, std::vector<AnimatedPathData>& out, const ChunkContext* chunk) {
     const DrawnContour& contour0 = frames[0].drawing.contours[c];
     const ContourStyle cs = style.contour(contour0.spec);
-    const StrokeStyle* strokes[2] = {&cs.visible, &cs.hidden};
+    const ByClass<const StrokeStyle*> strokes{{&cs.visible, &cs.hidden, nullptr}}; // nothing draws what is left out
     // Strokes with line weight read each loop's stroke parameter (a still's
     // where the frames were made without one, by hand).
     const bool weighted = (cs.visible.draw && cs.visible.needs_parameter()) || (cs.hidden.draw && cs.hidden.needs_parameter());
@@ -303,7 +303,7 @@ void stroke_paths(const std::vector<AnimationFrame>& frames, std::size_t c, cons
         for (std::size_t l = 0; l < frames[f].loops[c].size(); ++l)
             by_sequence[frames[f].loops[c][l].sequence].push_back({int(f), l});
     int next_run = 1;
-    std::map<int, anim::Shape> brief[2]; // per class: frame -> the runs of one-frame contours
+    ByClass<std::map<int, anim::Shape>> brief; // per class: frame -> the runs of one-frame contours
     for (const auto& entry : by_sequence) {
         const auto sequence = entry.first; // variables, so lambdas below may capture them
         const auto& members = entry.second;
@@ -347,7 +347,7 @@ void stroke_paths(const std::vector<AnimationFrame>& frames, std::size_t c, cons
                 life[i].loop = &loops[i];
                 for (const ClassSpan& s : loops[i].spans) life[i].runs[s.cls].push_back({0, s});
             }
-            for (const int cls : {0, 1}) {
+            for (const StrokeClass cls : kDrawnClasses) {
                 const StrokeStyle& stroke = *strokes[cls];
                 bool any = false;
                 for (const LifeFrame& lf : life) any |= !lf.runs[cls].empty();

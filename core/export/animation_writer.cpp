@@ -127,7 +127,7 @@ struct AnimationWriter::Impl {
 
     /// The stroke path @p p is drawn with: its style's, without the dash
     /// array where the dashes are pieces of the line.
-    StrokeStyle stroke_of(const AnimatedPathData& p) const { return drawn(p.cls ? style.contour(specs[p.contour]).hidden : style.contour(specs[p.contour]).visible); }
+    StrokeStyle stroke_of(const AnimatedPathData& p) const { return drawn(p.cls == StrokeClass::Hidden ? style.contour(specs[p.contour]).hidden : style.contour(specs[p.contour]).visible); }
     StrokeStyle drawn(StrokeStyle stroke) const {
         if (dashes_as_geometry(stroke, options.screen_dash_array)) stroke.dash.clear();
         return stroke;
@@ -267,7 +267,7 @@ struct AnimationWriter::Impl {
         std::vector<const Record*> out;
         for (const Record* r : sorted)
             if (r->meta.fill) out.push_back(r);
-        for (const int cls : {1, 0})
+        for (const StrokeClass cls : {StrokeClass::Hidden, StrokeClass::Visible})
             for (std::size_t c = 0; c < specs.size(); ++c)
                 for (const Record* r : sorted)
                     if (!r->meta.fill && r->meta.contour == c && r->meta.cls == cls) out.push_back(r);
@@ -323,7 +323,8 @@ struct AnimationWriter::Impl {
             path(*r, attributes, r->meta.region_class, {});
         }
         if (any_fill) sink("</g>\n");
-        for (const bool is_hidden : {true, false}) {
+        for (const StrokeClass cls : {StrokeClass::Hidden, StrokeClass::Visible}) {
+            const bool is_hidden = cls == StrokeClass::Hidden;
             if (is_hidden && !with_visibility) continue;
             const std::string part = is_hidden ? "hidden" : "visible";
             sink("<g id=\"" + part + "\" inkscape:groupmode=\"layer\" inkscape:label=\"" + part + " lines\">\n");
@@ -337,7 +338,7 @@ struct AnimationWriter::Impl {
                                          label + " (" + part + ")\""));
                 auto write_paths = [&](std::int32_t object) {
                     for (const Record* r : order) {
-                        if (r->meta.fill || r->meta.contour != c || r->meta.cls != int(is_hidden)) continue;
+                        if (r->meta.fill || r->meta.contour != c || r->meta.cls != cls) continue;
                         if (parts && r->meta.object != object) continue;
                         path(*r, r->meta.brief ? " class=\"brief\"" : "", label, {});
                     }
@@ -346,7 +347,7 @@ struct AnimationWriter::Impl {
                     // A sublayer per object inside the kind's group (docs/styles.md says why).
                     for (std::size_t o = 0; o < parts->objects.size(); ++o) {
                         const bool any = std::any_of(order.begin(), order.end(), [&](const Record* r) {
-                            return !r->meta.fill && r->meta.contour == c && r->meta.cls == int(is_hidden) &&
+                            return !r->meta.fill && r->meta.contour == c && r->meta.cls == cls &&
                                    r->meta.object == std::int32_t(o);
                         });
                         if (!any) continue;
@@ -374,7 +375,7 @@ struct AnimationWriter::Impl {
             const std::string object = parts && m.object >= 0 && m.object < std::int32_t(parts->objects.size())
                                            ? parts->objects[m.object].name + ": "
                                            : "";
-            names[n] = (m.fill ? "fill " + label : object + label + (m.cls ? " hidden" : " visible") + (m.brief ? " brief" : "")) +
+            names[n] = (m.fill ? "fill " + label : object + label + (m.cls == StrokeClass::Hidden ? " hidden" : " visible") + (m.brief ? " brief" : "")) +
                        " " + std::to_string(n + 1);
             st.path_stats.push_back(path_stats_of(*order[n], label, order[n]->lottie_keys));
         }
@@ -402,7 +403,7 @@ struct AnimationWriter::Impl {
             p.object = parts->objects[r.meta.object].path;
         p.kind = r.meta.fill ? "fill" : "stroke";
         p.label = label;
-        p.part = r.meta.fill ? "fill" : r.meta.cls ? "hidden" : "visible";
+        p.part = r.meta.fill ? "fill" : r.meta.cls == StrokeClass::Hidden ? "hidden" : "visible";
         p.first = r.meta.first;
         p.last = r.meta.last;
         p.frames_shown = std::size_t(r.meta.last - r.meta.first + 1);

@@ -396,8 +396,8 @@ bool StrokeWriter::glides(const std::vector<Run>& from, const std::vector<Run>& 
         if (x && y && x->whole && y->whole) continue;
         if ((x && x->whole) || (y && y->whole)) return false; // a ring opens or closes
         const double c = 0.5 * (x ? x->u0 + x->u1 : y->u0 + y->u1);
-        const ClassSpan a = x ? *x : ClassSpan{0, false, c, c};
-        const ClassSpan b = y ? *y : ClassSpan{0, false, c, c};
+        const ClassSpan a = x ? *x : ClassSpan{StrokeClass::Visible, false, c, c};
+        const ClassSpan b = y ? *y : ClassSpan{StrokeClass::Visible, false, c, c};
         for (const auto& [ua, ub] : {std::pair{a.u0, b.u0}, std::pair{a.u1, b.u1}})
             if (std::max(bend(p, ua, ub), bend(q, ua, ub)) > options_.max_sweep_px) return false;
     }
@@ -423,7 +423,7 @@ Plan StrokeWriter::transition(const std::vector<Run>& from, const std::vector<Ru
             const Run* open = y && !y->span.whole ? y : x && !x->span.whole ? x : nullptr;
             const double c = open ? 0.5 * (open->span.u0 + open->span.u1) : 0.0;
             auto end = [&](const Run* r) {
-                if (!r) return ClassSpan{0, false, c, c};
+                if (!r) return ClassSpan{StrokeClass::Visible, false, c, c};
                 if (r->span.whole) return ClassSpan{r->span.cls, false, c - 0.5, c + 0.5};
                 return r->span;
             };

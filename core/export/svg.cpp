@@ -8,6 +8,7 @@
 
 #include "snaxels/export/detail/polyline.h"
 #include "snaxels/export/detail/svg_writer.h"
+#include "snaxels/export/detail/animated_strokes.h"
 #include "snaxels/export/stroke_weight.h"
 #include "snaxels/planarmap/planar_map.h"
 
@@ -262,7 +263,8 @@ void draw_weighted(std::string& out, const DrawnLoop& given, bool hidden, const 
         return;
     }
     for (const DrawnRun& run : loop->runs)
-        if (run.qi != kNotDrawn && (run.qi > 0) == hidden && !run.q.empty()) draw(attributes.run(run), run.closed);
+        if (stroke_class(run.qi) == (hidden ? StrokeClass::Hidden : StrokeClass::Visible) && !run.q.empty())
+            draw(attributes.run(run), run.closed);
 }
 
 /// The fills' group of a still's SVG (empty without regions or region styles).
@@ -341,7 +343,7 @@ std::string strokes_svg(const Drawing& drawing, const Style& style, bool by_obje
                     return;
                 }
                 for (const DrawnRun& run : loop.runs) {
-                    if (run.qi == kNotDrawn || (run.qi > 0) != hidden || run.q.empty()) continue;
+                    if (stroke_class(run.qi) != (hidden ? StrokeClass::Hidden : StrokeClass::Visible) || run.q.empty()) continue;
                     append_path(text, run.q, run.closed, stroke);
                 }
             };

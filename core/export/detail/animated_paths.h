@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "snaxels/export/animated_svg.h"
+#include "snaxels/export/detail/animated_strokes.h"
 #include "snaxels/export/detail/path_keys.h"
 
 namespace snaxels {
@@ -29,10 +30,9 @@ struct PathSegment {
 struct AnimatedPathData {
     bool fill = false;
     // Strokes: the contour kind (index into the drawing's contours), visible
-    // (0) or hidden (1), and whether this is the kind's path of one-frame
-    // contours.
+    // or hidden, and whether this is the kind's path of one-frame contours.
     std::size_t contour = 0;
-    int cls = 0;
+    StrokeClass cls = StrokeClass::Visible;
     bool brief = false;
     /// Strokes: the object the contour lies on where it starts (DrawnLoop::object),
     /// -1 for none (no parts, or the path of brief contours).

@@ -82,7 +82,7 @@ struct Run {
 struct LifeFrame {
     const ParamLoop* loop = nullptr;
     bool jump = false; ///< not interpolated from the frame before
-    std::vector<Run> runs[3]; ///< per class (visible, hidden, kLeftOut: not drawn), sorted by id
+    ByClass<std::vector<Run>> runs; ///< per class, sorted by id
 };
 
 inline double extent(const ClassSpan& s) { return s.whole ? 1.0 : s.u1 - s.u0; }
@@ -122,7 +122,7 @@ class StrokeWriter {
     /// will appear (the middle of its first span), after it vanishes a
     /// point where it was, so it grows and shrinks between frames.
     template <class Select>
-    std::vector<Plan> plan(int cls, std::size_t a, std::size_t b, Select keep) const {
+    std::vector<Plan> plan(StrokeClass cls, std::size_t a, std::size_t b, Select keep) const {
         std::vector<std::vector<Run>> runs(b - a + 1);
         for (std::size_t i = a; i <= b; ++i)
             for (const Run& r : life_[i].runs[cls])

@@ -178,15 +178,16 @@ TEST(PathKeys, ReduceVerticesIsJointOverKeys) {
 // a closed loop left with one class is whole.
 TEST(ClassSpans, FlickerJoinsItsNeighbours) {
     // Visible, a hidden sliver of 1% at u 0.3, then hidden from 0.6 to 0.9.
-    const auto spans = class_spans({{0.3, 1}, {0.31, 0}, {0.6, 1}, {0.9, 0}}, 0, true, 0.02);
+    constexpr StrokeClass V = StrokeClass::Visible, H = StrokeClass::Hidden;
+    const auto spans = class_spans({{0.3, H}, {0.31, V}, {0.6, H}, {0.9, V}}, V, true, 0.02);
     ASSERT_EQ(spans.size(), 2u);
     for (const auto& s : spans) {
         EXPECT_FALSE(s.whole);
-        if (s.cls == 1) {
+        if (s.cls == H) {
             EXPECT_NEAR(s.u1 - s.u0, 0.3, 1e-12);
         }
     }
-    const auto whole = class_spans({{0.3, 1}, {0.305, 0}}, 0, true, 0.02);
+    const auto whole = class_spans({{0.3, H}, {0.305, V}}, V, true, 0.02);
     ASSERT_EQ(whole.size(), 1u);
     EXPECT_TRUE(whole[0].whole);
 }
