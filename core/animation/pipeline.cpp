@@ -10,6 +10,7 @@
 
 #include "snaxels/error.h"
 #include "snaxels/animation/still.h"
+#include "snaxels/export/stroke_parameter.h"
 #include "snaxels/export/stroke_weight.h"
 #include "snaxels/export/lottie.h"
 #include "snaxels/export/raster.h"

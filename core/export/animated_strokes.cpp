@@ -10,6 +10,8 @@
 #include "snaxels/export/detail/animated_paths.h"
 #include "snaxels/export/detail/path_keys.h"
 #include "snaxels/export/detail/polyline.h"
+#include "snaxels/export/stroke_dashes.h"
+#include "snaxels/export/stroke_parameter.h"
 #include "snaxels/export/stroke_weight.h"
 #include "snaxels/visibility/visibility.h"
 

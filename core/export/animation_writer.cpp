@@ -1,5 +1,5 @@
 #include "snaxels/export/animation_writer.h"
-#include "snaxels/export/stroke_weight.h"
+#include "snaxels/export/stroke_dashes.h"
 
 #include <algorithm>
 #include <array>

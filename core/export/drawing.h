@@ -33,7 +33,7 @@ struct DrawnLoop {
     std::vector<int> qi;       ///< per snaxel; empty when visibility was not computed
     std::vector<glm::dvec2> change_before; ///< per snaxel, where qi changes before it (see LoopVisibility)
     std::vector<DrawnRun> runs; ///< empty when visibility was not computed
-    /// The stroke parameter (core/export/stroke_weight.h) per snaxel, for
+    /// The stroke parameter (core/export/stroke_parameter.h) per snaxel, for
     /// styles whose strokes read it (wobble, lines of varying width, dashes
     /// fastened to the surface):
     /// arc length in pixels from a seam, carried by the surface through an

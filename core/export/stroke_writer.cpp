@@ -5,6 +5,7 @@
 #include "snaxels/export/detail/stroke_writer.h"
 
 #include "snaxels/export/detail/path_keys.h"
+#include "snaxels/export/stroke_dashes.h"
 #include "snaxels/export/detail/polyline.h"
 #include "snaxels/visibility/visibility.h"
 
@@ -64,17 +65,15 @@ std::vector<std::pair<double, double>> screen_pieces(const ParamLoop& w, double 
 /// wobbled, and as filled outlines where its width varies.
 void weigh(const StrokeStyle& stroke, std::vector<StrokePoint> centre, bool closed, double period, double seconds,
            anim::Shape& out) {
-    wobble(stroke, centre, closed, closed ? period : 0.0, seconds);
+    StrokeShape shape = stroke_shape(stroke, std::move(centre), closed, period, seconds);
     if (!stroke.variable_width()) {
         anim::Subpath sp;
         sp.closed = closed;
-        for (const StrokePoint& p : centre) sp.pts.push_back(p.q);
+        for (const StrokePoint& p : shape.centre) sp.pts.push_back(p.q);
         out.push_back(std::move(sp));
         return;
     }
-    std::vector<std::vector<glm::dvec2>> outline;
-    stroke_outline(stroke, centre, closed, outline);
-    for (auto& poly : outline) out.push_back({std::move(poly), true});
+    for (auto& poly : shape.outlines) out.push_back({std::move(poly), true});
 }
 
 /// Whether two frames have the same runs (by id; both sorted by id).

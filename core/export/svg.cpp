@@ -9,6 +9,9 @@
 #include "snaxels/export/detail/polyline.h"
 #include "snaxels/export/detail/svg_writer.h"
 #include "snaxels/export/detail/animated_strokes.h"
+#include "snaxels/export/stroke_dashes.h"
+#include "snaxels/export/stroke_parameter.h"
+#include "snaxels/export/stroke_shape.h"
 #include "snaxels/export/stroke_weight.h"
 #include "snaxels/planarmap/planar_map.h"
 
@@ -219,9 +222,10 @@ void draw_weighted(std::string& out, const DrawnLoop& given, bool hidden, const 
         loop = &still;
     }
     const LoopAttributes attributes(*loop);
-    auto draw = [&](std::vector<StrokePoint> centre, bool closed) {
-        if (centre.size() < 2) return;
-        wobble(stroke, centre, closed, closed ? loop->u_period : 0.0, seconds);
+    auto draw = [&](std::vector<StrokePoint> line, bool closed) {
+        if (line.size() < 2) return;
+        StrokeShape shape = stroke_shape(stroke, std::move(line), closed, loop->u_period, seconds);
+        std::vector<StrokePoint>& centre = shape.centre;
         if (!stroke.variable_width()) {
             std::vector<glm::dvec2> q;
             for (const StrokePoint& p : centre) q.push_back(p.q);
@@ -247,12 +251,10 @@ void draw_weighted(std::string& out, const DrawnLoop& given, bool hidden, const 
             append_path(out, q, closed, stroke);
             return;
         }
-        std::vector<std::vector<glm::dvec2>> outline;
-        stroke_outline(stroke, centre, closed, outline);
         out += "<path d=\"";
-        for (std::size_t i = 0; i < outline.size(); ++i) {
+        for (std::size_t i = 0; i < shape.outlines.size(); ++i) {
             if (i) out += ' ';
-            svg::append_path_data(out, outline[i], true);
+            svg::append_path_data(out, shape.outlines[i], true);
         }
         out += "\"/>\n";
     };

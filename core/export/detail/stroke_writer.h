@@ -17,6 +17,7 @@
 
 #include "snaxels/export/detail/animated_paths.h"
 #include "snaxels/export/detail/animated_strokes.h"
+#include "snaxels/export/stroke_shape.h"
 #include "snaxels/export/stroke_weight.h"
 
 namespace snaxels::detail {

@@ -7,6 +7,8 @@
 
 #include <glm/gtx/rotate_vector.hpp>
 
+#include "snaxels/export/stroke_parameter.h"
+#include "snaxels/export/stroke_shape.h"
 #include "snaxels/export/stroke_weight.h"
 #include "snaxels/mesh/import.h"
 #include "snaxels/snaxel/suggestive.h"

@@ -4,7 +4,8 @@
 
 #include <glm/gtx/rotate_vector.hpp>
 
-#include "snaxels/export/stroke_weight.h"
+#include "snaxels/export/stroke_dashes.h"
+#include "snaxels/export/stroke_parameter.h"
 #include "snaxels/mesh/import.h"
 #include "snaxels/snaxel/tracker.h"
 
