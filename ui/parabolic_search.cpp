@@ -21,12 +21,12 @@ void ParabolicSearch::setWanted(std::function<bool()> wanted) { wanted_ = std::m
 
 void ParabolicSearch::setMesh(const MeshTopology& rest) {
     rest_ = rest;
-    curves_.reset(); // the old mesh's
     ++generation_;
 }
 
 std::shared_ptr<const ParabolicResult> ParabolicSearch::curves() const {
-    return foundFor_ == generation_ ? curves_ : nullptr;
+    // The mesh's own, kept in its pose's quantities by the search.
+    return rest_ ? kept_parabolic(*rest_) : nullptr;
 }
 
 bool ParabolicSearch::pending() const { return rest_ && wanted_ && wanted_() && !curves(); }
@@ -86,9 +86,7 @@ void ParabolicSearch::onFinished() {
         emit finished(error_ && !error_->isEmpty() ? *error_ : QString(), false);
         return;
     }
-    curves_ = std::move(result);
-    foundFor_ = searchedFor;
-    emit finished(QString(), true);
+    emit finished(QString(), true); // kept in the mesh's pose (curves())
 }
 
 } // namespace snaxels::ui

@@ -60,9 +60,7 @@ class ParabolicSearch : public QObject {
     std::function<bool()> wanted_;
     std::optional<MeshTopology> rest_;
     int generation_ = 0;  ///< counts meshes set
-    int foundFor_ = -1;   ///< the mesh curves_ belongs to
     int searchFor_ = -1;  ///< the mesh the search under way is for (-1: none)
-    std::shared_ptr<const ParabolicResult> curves_;
     std::shared_ptr<std::atomic<bool>> cancel_;
     std::shared_ptr<QString> error_; ///< the running search's error, if any
     QFutureWatcher<std::shared_ptr<const ParabolicResult>> watcher_;

@@ -364,6 +364,10 @@ std::shared_ptr<const ParabolicResult> require_parabolic(const MeshTopology& top
     return topo.pose()->quantities.keep(key, std::move(result), PoseQuantities::Lifetime::CarriedToLaterPoses);
 }
 
+std::shared_ptr<const ParabolicResult> kept_parabolic(const MeshTopology& topo, const ParabolicOptions& options) {
+    return topo.pose()->quantities.find(parabolic_key(options));
+}
+
 void keep_parabolic(const MeshTopology& topo, const ParabolicOptions& options, std::shared_ptr<const ParabolicResult> result) {
     if (result) topo.pose()->quantities.keep(parabolic_key(options), std::move(result), PoseQuantities::Lifetime::CarriedToLaterPoses);
 }

@@ -111,6 +111,10 @@ ParabolicResult find_parabolic(const MeshTopology& topology, const ParabolicOpti
 std::shared_ptr<const ParabolicResult> require_parabolic(const MeshTopology& topology,
                                                          const ParabolicOptions& options = {});
 
+/// The curves require_parabolic keeps for @p topology's pose and
+/// @p options, or null when none are kept yet (nothing is searched).
+std::shared_ptr<const ParabolicResult> kept_parabolic(const MeshTopology& topology, const ParabolicOptions& options = {});
+
 /// Keeps @p result as @p topology's curves for @p options (as
 /// require_parabolic would after finding them), for curves found elsewhere
 /// (the application searches in the background on the loaded pose).
