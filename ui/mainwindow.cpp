@@ -52,7 +52,10 @@ MainWindow::MainWindow(QWidget* parent)
     document_ = new Document(styleEditor_->text(), this);
     document_->resetAnimation(initial_animation());
     controller_ = new DocumentController(document_, this);
-    controller_->setFlush([this] { styleEditor_->applyPending(); }); // typing not yet taken up
+    controller_->setFlush([this] { // typing not yet taken up
+        styleEditor_->applyPending();
+        timeline_->applyPending();
+    });
     createDocks();
     styleEditor_->showCheck(document_->styleWarnings(), document_->styleProblem());
     objects_->setStyle(document_->styleText(), document_->style());

@@ -289,6 +289,11 @@ bool Timeline::setSpec(const AnimationSpec& s) {
     return found;
 }
 
+void Timeline::applyPending() {
+    for (QAbstractSpinBox* box : std::initializer_list<QAbstractSpinBox*>{degrees_, frames_, start_, fps_, frameBox_})
+        box->interpretText(); // signals a value typed, as Enter would (a box showing its value signals nothing)
+}
+
 void Timeline::setSequenceFiles(int count) {
     const int index = source_->findData(int(AnimationSpec::Kind::Sequence), kKindRole);
     if (index >= 0) source_->setItemData(index, count, kCountRole);

@@ -59,6 +59,11 @@ class Timeline : public QWidget {
     /// (0 when not playing or nothing was shown yet).
     double shownRate() const { return shownRate_; }
 
+    /// Takes up a value typed in a box and not yet entered (typed values
+    /// take effect on Enter or when the box is left): before a save, an
+    /// export or an undo, what the box shows is what counts.
+    void applyPending();
+
   public slots:
     void togglePlay();
     void step(int delta);

@@ -1280,6 +1280,19 @@ class TestMainWindow : public QObject {
             QCOMPARE(reopened.document()->animation().degrees_per_frame, value);
             QVERIFY(!reopened.isModified());
         }
+        // Typed and saved straight away (Ctrl+S, no Enter): what the box
+        // shows is what is saved.
+        degrees->setFocus();
+        degrees->selectAll();
+        QTest::keyClicks(degrees, "2.00");
+        QCOMPARE(degrees->text().left(4), QString("2.00"));
+        {
+            MainWindow reopened;
+            QVERIFY(saveAndReopen(window, dir.filePath("typed.snaxels"), reopened));
+            QCOMPARE(reopened.timeline()->findChild<QDoubleSpinBox*>("degreesPerFrame")->value(), 2.0);
+            QCOMPARE(reopened.document()->animation().degrees_per_frame, 2.0);
+        }
+        QCOMPARE(window.document()->animation().degrees_per_frame, 2.0);
         // Reopened in the same window, over another value.
         const QString saved = dir.filePath("turn.snaxels");
         degrees->setFocus();
