@@ -4,9 +4,13 @@
 #include <QFileDialog>
 #include <QFileInfo>
 #include <QMessageBox>
+#include <QPushButton>
 #include <QSettings>
 
 #include "ui/document.h"
+#include "ui/export_actions.h"
+#include "ui/resources.h"
+#include "ui/styleeditor.h"
 #include "ui/timeline.h"
 
 namespace snaxels::ui {
@@ -96,8 +100,10 @@ void DocumentController::onLoaded(const LoadResult& result) {
                         .arg(QFileInfo(QString::fromStdString(files.pattern)).fileName()),
                     6000);
     } else {
-        // A new untitled document: this one's style, the mesh's own framing
-        // and the animation a new mesh starts with.
+        // A new untitled document: this one's style (File > New: the
+        // default), the mesh's own framing and the animation a new mesh
+        // starts with.
+        if (std::exchange(pendingDefaultStyle_, false)) document_->resetStyleText(initial_style_text());
         document_->startNew(spec, result.mesh, facts, initial_animation());
         if (!spec.startsWith("proc:")) addRecentFile(QFileInfo(spec).absoluteFilePath());
     }
@@ -131,12 +137,16 @@ bool DocumentController::saveInteractive(bool askPath) {
     }
     QString path = document_->projectPath();
     if (askPath || path.isEmpty()) {
-        // An untitled document's project goes beside its mesh, named after it.
+        // An untitled document's project goes beside its mesh, named after
+        // it, where that folder can be written to (else the last folder
+        // used, documents or home).
         const QFileInfo mesh(document_->meshSpec());
+        const bool proc = document_->meshSpec().startsWith("proc:");
+        const QString folder = first_writable_folder(
+            {proc ? QString() : mesh.absolutePath(), QSettings().value("paths/lastDir").toString()});
         const QString suggested = !path.isEmpty() ? path
-                                  : document_->meshSpec().startsWith("proc:")
-                                      ? QDir(QSettings().value("paths/lastDir").toString()).filePath("untitled.snaxels")
-                                      : mesh.absoluteDir().filePath(mesh.completeBaseName() + kProjectExtension);
+                                  : QDir(folder).filePath(proc ? QString("untitled") + kProjectExtension
+                                                               : mesh.completeBaseName() + kProjectExtension);
         path = QFileDialog::getSaveFileName(dialogParent_, tr("Save Project"), suggested, tr("Snaxels projects (*.snaxels)"));
         if (path.isEmpty()) return false;
         if (!path.endsWith(kProjectExtension, Qt::CaseInsensitive)) path += kProjectExtension;
@@ -187,7 +197,9 @@ bool DocumentController::openSequence(const QString& path) {
     return true;
 }
 
-void DocumentController::openProject(const QString& path) {
+void DocumentController::openProject(const QString& path) { loadProject(path, true); }
+
+void DocumentController::loadProject(const QString& path, bool ask) {
     if (refuseWhileLoading()) return;
     Project project;
     try {
@@ -199,10 +211,43 @@ void DocumentController::openProject(const QString& path) {
         emit projectFailed(message);
         return;
     }
-    if (!maybeSave()) return;
+    if (ask && !maybeSave()) return; // a file that cannot be read is said before asking
     pendingProject_ = std::move(project);
     pendingProjectPath_ = path;
     startLoading(QString::fromStdString(resolve_project_mesh(path.toStdString(), pendingProject_->mesh)));
+}
+
+void DocumentController::newDocument() {
+    if (refuseWhileLoading() || !maybeSave()) return;
+    pendingDefaultStyle_ = true;
+    startLoading(defaultScenePath());
+}
+
+bool DocumentController::closeDocument() {
+    if (refuseWhileLoading() || !maybeSave()) return false;
+    document_->startNew(QString(), nullptr, SceneFacts{}, initial_animation());
+    emit status(tr("Closed: open a mesh or a project (Ctrl+O), or drop one on the window"), 6000);
+    return true;
+}
+
+bool DocumentController::revert() {
+    if (refuseWhileLoading()) return false;
+    const QString project = document_->projectPath(), mesh = document_->meshSpec();
+    if (project.isEmpty() && mesh.isEmpty()) return false;
+    flush();
+    if (document_->isModified()) {
+        const QString name = QFileInfo(!project.isEmpty() ? project : mesh).fileName();
+        QMessageBox box(QMessageBox::Warning, tr("Revert"), tr("Revert to the saved %1?").arg(name),
+                        QMessageBox::Discard | QMessageBox::Cancel, dialogParent_);
+        box.setInformativeText(tr("The changes since it was last saved or opened are lost."));
+        box.button(QMessageBox::Discard)->setText(tr("Revert"));
+        box.setDefaultButton(QMessageBox::Cancel);
+        box.setObjectName("revertBox");
+        if (box.exec() != QMessageBox::Discard) return false;
+    }
+    if (!project.isEmpty()) loadProject(project, false);
+    else startLoading(mesh);
+    return true;
 }
 
 void DocumentController::addRecentFile(const QString& path) {

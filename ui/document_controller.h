@@ -56,6 +56,17 @@ class DocumentController : public QObject {
     bool saveInteractive(bool askPath);
     /// Asks to save unsaved changes: false when the user cancels.
     bool maybeSave();
+    /// File > New: after asking about unsaved changes, a new untitled
+    /// document on the bundled default scene, with the default style.
+    void newDocument();
+    /// File > Close: after asking about unsaved changes, an empty document
+    /// (no mesh; the window waits for one to be opened or dropped).
+    bool closeDocument();
+    /// File > Revert: after the user agrees to lose the changes, the
+    /// document read again from its project file, or its mesh opened anew
+    /// when it has none. False when there is nothing to revert to or the
+    /// user declines.
+    bool revert();
 
     bool loading() const { return loader_->loading(); }
     /// The spec being read, or read last.
@@ -81,6 +92,9 @@ class DocumentController : public QObject {
     /// True, saying so, while a mesh is being read: one load at a time.
     bool refuseWhileLoading();
     void startLoading(const QString& spec);
+    /// Reads the project at @p path and starts loading its mesh, asking
+    /// about unsaved changes first when @p ask.
+    void loadProject(const QString& path, bool ask);
     void onLoaded(const LoadResult& result);
     void onLoadFailed(const LoadResult& result);
     void addRecentFile(const QString& path);
@@ -94,6 +108,7 @@ class DocumentController : public QObject {
     std::optional<Project> pendingProject_;
     QString pendingProjectPath_;
     std::optional<SequenceFiles> pendingSequence_; ///< shown once its first file has loaded
+    bool pendingDefaultStyle_ = false;              ///< File > New: the new document takes the default style
 };
 
 /// At most this many files are listed in File > Open Recent.

@@ -9,6 +9,7 @@
 #include <QMenuBar>
 #include <QMessageBox>
 #include <QSettings>
+#include <QStandardPaths>
 #include <QStatusBar>
 #include <QToolButton>
 #include <QUrl>
@@ -22,12 +23,21 @@
 
 namespace snaxels::ui {
 
+QString first_writable_folder(const QStringList& folders) {
+    for (const QString& folder : folders) {
+        const QFileInfo info(folder);
+        if (!folder.isEmpty() && info.isDir() && info.isWritable()) return info.absoluteFilePath();
+    }
+    const QString documents = QStandardPaths::writableLocation(QStandardPaths::DocumentsLocation);
+    return QFileInfo(documents).isDir() && QFileInfo(documents).isWritable() ? documents : QDir::homePath();
+}
+
 QString suggested_save_path(const QString& meshSpec, const char* folderKey, const QString& extension) {
-    // The folder last used for this kind of file, else the mesh's, else home;
-    // the name, the mesh's.
+    // The folder last used for this kind of file, else the mesh's, else
+    // documents or home: the first that can be written to. The name, the mesh's.
     const bool file = !meshSpec.isEmpty() && !meshSpec.startsWith("proc:");
-    QString folder = QSettings().value(folderKey).toString();
-    if (folder.isEmpty() || !QFileInfo(folder).isDir()) folder = file ? QFileInfo(meshSpec).absolutePath() : QDir::homePath();
+    const QString folder = first_writable_folder(
+        {QSettings().value(folderKey).toString(), file ? QFileInfo(meshSpec).absolutePath() : QString()});
     const QString name = file               ? QFileInfo(meshSpec).completeBaseName()
                          : meshSpec.isEmpty() ? QObject::tr("untitled")
                                               : meshSpec.section(':', 1, 1);

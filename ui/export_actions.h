@@ -23,9 +23,15 @@ class DocumentController;
 inline constexpr const char* kExportFolder = "paths/export";
 inline constexpr const char* kStyleFolder = "paths/style";
 
+/// The first of @p folders that exists and can be written to, else the
+/// user's documents folder, else home: where a save dialog may start (a
+/// packaged model's folder is a system folder the user cannot write).
+QString first_writable_folder(const QStringList& folders);
+
 /// Where a save dialog for a kind of file starts: the folder last used for
 /// it (the QSettings key @p folderKey), else the folder of @p meshSpec (a
-/// file), else home; named after the mesh, with @p extension.
+/// file), else documents or home, whichever first can be written to; named
+/// after the mesh, with @p extension.
 QString suggested_save_path(const QString& meshSpec, const char* folderKey, const QString& extension);
 
 /// Asks where to save a kind of file (starting at suggested_save_path), adds

@@ -205,7 +205,10 @@ void MainWindow::observeDocument() {
         parabolic_->ensure(); // a style that draws parabolic curves needs them found
         scheduleContours();
     });
-    connect(document_, &Document::meshChanged, this, [this] { objects_->setMesh(document_->mesh()); });
+    connect(document_, &Document::meshChanged, this, [this] {
+        objects_->setMesh(document_->mesh());
+        if (!document_->mesh()) showNoMesh(); // closed
+    });
     connect(document_, &Document::viewChanged, this, [this](const OrbitView& v) {
         view_->setOrbit(v); // the turntable's turn, the frame's, stays
         scheduleContours();
@@ -233,6 +236,22 @@ void MainWindow::showLoaded(const LoadResult& result) {
     timeline_->setCameras(scene_->cameras);
     sequencePattern_.clear();
     showMeshReport(*result.mesh);
+}
+
+void MainWindow::showNoMesh() {
+    contours_->invalidate();
+    scene_.reset();
+    parabolic_->clearMesh();
+    view_->clearMesh();
+    timeline_->setClips({});
+    timeline_->setCameras({});
+    const QString why = tr("No mesh is open: open one (Ctrl+O) or drop it on the window");
+    exports_->setFrame({}, why);
+    svgPane_->load({}); // no drawing of the closed document shows through
+    svgPane_->setProblem(why);
+    meshLabel_->clear();
+    contourLabel_->clear();
+    contourLoops_ = 0;
 }
 
 void MainWindow::showMeshReport(const LoadedMesh& mesh) {

@@ -139,6 +139,8 @@ class MainWindow : public QMainWindow {
     void observeDocument();
     /// Shows a mesh just read (before the document takes it).
     void showLoaded(const LoadResult& result);
+    /// Shows a document without a mesh (File > Close).
+    void showNoMesh();
     /// The frame the document stands at, in the 3-D view and the timeline.
     void showFrame();
     /// The 3-D view's camera at the document's frame (turned by a turntable).

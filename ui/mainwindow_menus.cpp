@@ -67,6 +67,9 @@ void MainWindow::createMenus() {
 
 void MainWindow::createFileMenu() {
     QMenu* file = menuBar()->addMenu(tr("&File"));
+    QAction* fresh = file->addAction(tr("&New"), controller_, &DocumentController::newDocument);
+    fresh->setShortcut(QKeySequence::New);
+    fresh->setToolTip(tr("A new untitled document on the default scene, with the default style"));
     auto ask = [this](const QString& title, const QString& filter) {
         const QString path = QFileDialog::getOpenFileName(this, title, QSettings().value("paths/lastDir").toString(), filter);
         if (!path.isEmpty()) QSettings().setValue("paths/lastDir", QFileInfo(path).absolutePath());
@@ -91,7 +94,15 @@ void MainWindow::createFileMenu() {
     QAction* save = file->addAction(tr("&Save Project"), this, [this] { controller_->saveInteractive(false); });
     save->setShortcut(QKeySequence::Save);
     QAction* saveAs = file->addAction(tr("Save Project &As…"), this, [this] { controller_->saveInteractive(true); });
-    saveAs->setShortcut(QKeySequence::SaveAs);
+    // The platform's Save As key, which some platforms leave without one.
+    saveAs->setShortcut(QKeySequence(QKeySequence::SaveAs).isEmpty() ? QKeySequence(tr("Ctrl+Shift+S"))
+                                                                     : QKeySequence(QKeySequence::SaveAs));
+    QAction* revert = file->addAction(tr("Re&vert"), controller_, &DocumentController::revert);
+    revert->setObjectName("revert");
+    revert->setToolTip(tr("Read the project (or the mesh) again from its file, losing the changes since"));
+    QAction* close = file->addAction(tr("&Close"), controller_, &DocumentController::closeDocument);
+    close->setShortcut(QKeySequence::Close);
+    close->setObjectName("closeDocument");
     file->addSeparator();
     QAction* quit = file->addAction(tr("&Quit"), this, &QWidget::close);
     quit->setShortcut(QKeySequence::Quit);

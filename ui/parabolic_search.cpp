@@ -24,6 +24,11 @@ void ParabolicSearch::setMesh(const MeshTopology& rest) {
     ++generation_;
 }
 
+void ParabolicSearch::clearMesh() {
+    rest_.reset();
+    ++generation_;
+}
+
 std::shared_ptr<const ParabolicResult> ParabolicSearch::curves() const {
     // The mesh's own, kept in its pose's quantities by the search.
     return rest_ ? kept_parabolic(*rest_) : nullptr;

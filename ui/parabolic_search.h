@@ -36,6 +36,8 @@ class ParabolicSearch : public QObject {
     void ensure();
     /// The current mesh's curves, or null until found.
     std::shared_ptr<const ParabolicResult> curves() const;
+    /// No mesh (a document closed): nothing to find.
+    void clearMesh();
     /// The curves are wanted and not found yet.
     bool pending() const;
     /// A search is under way.

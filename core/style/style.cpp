@@ -308,8 +308,11 @@ struct Parser {
             std::all_of(lower.begin() + 1, lower.end(), [](unsigned char c) { return std::isxdigit(c); }))
             return lower;
         if (colour_names().count(lower)) return lower;
-        fail(node, std::string(name) + "=\"" + v + "\" is not a colour (use #rrggbb, #rgb or a CSS colour name" +
-                       (allow_none ? ", or none)" : ")"));
+        // The words the attribute takes besides colours (none, material), as the vocabulary has them.
+        std::string others;
+        for (const std::string& w : words(node, name)) others += (others.empty() ? ", or " : " or ") + w;
+        if (others.empty() && allow_none) others = ", or none";
+        fail(node, std::string(name) + "=\"" + v + "\" is not a colour (use #rrggbb, #rgb or a CSS colour name" + others + ")");
     }
     glm::dvec3 vector(const pugi::xml_node& node, const char* name) const {
         const std::string v = node.attribute(name).value();

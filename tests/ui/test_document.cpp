@@ -8,6 +8,7 @@
 #include <thread>
 
 #include <QFile>
+#include <QFileInfo>
 #include <QSignalSpy>
 #include <QTemporaryDir>
 #include <QTest>
@@ -18,6 +19,7 @@
 #include "snaxels/project/project.h"
 #include "ui/contour_scheduler.h"
 #include "ui/document.h"
+#include "ui/export_actions.h"
 #include "ui/undo.h"
 
 using snaxels::AnimationSpec;
@@ -492,6 +494,20 @@ class TestDocument : public QObject {
         QCOMPARE(doc.styleProblem()->line, 2);
         QVERIFY(doc.styleWarnings().empty());
         QCOMPARE(doc.style().contours.size(), std::size_t(1));
+    }
+
+
+    // A save dialog starts in a folder that exists and can be written to:
+    // a folder gone, or a file where a folder was, is passed over.
+    void saveDialogsStartInAWritableFolder() {
+        QTemporaryDir dir;
+        QFile file(dir.filePath("not-a-folder"));
+        QVERIFY(file.open(QIODevice::WriteOnly));
+        file.close();
+        QCOMPARE(snaxels::ui::first_writable_folder({dir.filePath("gone"), file.fileName(), dir.path()}),
+                 QFileInfo(dir.path()).absoluteFilePath());
+        const QString fallback = snaxels::ui::first_writable_folder({dir.filePath("gone")});
+        QVERIFY(QFileInfo(fallback).isDir() && QFileInfo(fallback).isWritable());
     }
 
 };

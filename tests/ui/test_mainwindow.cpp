@@ -2391,6 +2391,61 @@ class TestMainWindow : public QObject {
         QCOMPARE(readAll(dir.filePath("reloaded.snaxels")), readAll(dir.filePath("window.snaxels")));
     }
 
+
+    // File > Revert reads the project again (after asking), Close leaves a
+    // window without a mesh, New opens the default scene with the default
+    // style; each by its key, and Save As has Ctrl+Shift+S.
+    void fileRevertCloseAndNew() {
+        QTemporaryDir dir;
+        MainWindow window;
+        QVERIFY(showWithMesh(window, QString(SNAXELS_TEST_ASSETS) + "/spot.obj"));
+        window.activateWindow();
+        const QString project = dir.filePath("spot.snaxels");
+        window.styleEditor()->setText("<style version=\"1\"><contour kind=\"visual\"/></style>");
+        QVERIFY(window.saveProject(project));
+        window.turnLight(0.4, 0.0);
+        QVERIFY(window.isModified());
+        QSignalSpy opened(&window, &MainWindow::projectOpened);
+        QTimer::singleShot(300, [] {
+            auto* box = qobject_cast<QMessageBox*>(QApplication::activeModalWidget());
+            if (box && box->objectName() == "revertBox") box->button(QMessageBox::Discard)->click();
+        });
+        window.findChild<QAction*>("revert")->trigger();
+        QVERIFY(opened.wait(60000));
+        QVERIFY(!window.isModified());
+        QVERIFY(!window.userLight().has_value()); // as saved
+        QCOMPARE(window.styleEditor()->text(), QString("<style version=\"1\"><contour kind=\"visual\"/></style>"));
+
+        // Close (Ctrl+W): no mesh, nothing drawn, and it says why.
+        window.activateWindow();
+        QVERIFY(QTest::qWaitForWindowActive(&window));
+        window.meshView()->setFocus();
+        QTest::keySequence(window.meshView(), QKeySequence::Close);
+        QTest::qWait(100);
+        QVERIFY(!window.mesh());
+        QVERIFY(window.currentSvg().isEmpty());
+        QVERIFY2(window.frameProblem().contains("No mesh"), qPrintable(window.frameProblem()));
+        QVERIFY(window.projectPath().isEmpty());
+        QVERIFY(!window.isModified());
+
+        // New (Ctrl+N): the default scene, the default style, untitled.
+        QSignalSpy loaded(&window, &MainWindow::meshLoaded);
+        QTest::keySequence(window.meshView(), QKeySequence::New);
+        QVERIFY(loaded.wait(60000));
+        QCOMPARE(QFileInfo(loaded.first().first().toString()).fileName(), QFileInfo(snaxels::ui::defaultScenePath()).fileName());
+        QCOMPARE(window.styleEditor()->text(), snaxels::ui::initial_style_text());
+        QVERIFY(!window.isModified());
+        QVERIFY(window.projectPath().isEmpty());
+
+        QAction* saveAs = nullptr;
+        for (QAction* a : window.findChildren<QAction*>())
+            if (a->text() == QString("Save Project &As…")) saveAs = a;
+        QVERIFY(saveAs);
+        QCOMPARE(saveAs->shortcut(), QKeySequence(QKeySequence::SaveAs).isEmpty() ? QKeySequence("Ctrl+Shift+S")
+                                                                                   : QKeySequence(QKeySequence::SaveAs));
+        QVERIFY(!saveAs->shortcut().isEmpty());
+    }
+
 };
 
 int main(int argc, char** argv) {

@@ -124,6 +124,10 @@ TEST(Style, RegionFills) {
     for (const ContourSpec& c : s.fill_contours()) labels.push_back(c.label());
     EXPECT_EQ(labels, (std::vector<std::string>{"visual", "shadow", "isophote:0.7", "gleam:0.95"}));
     EXPECT_NE(error_of("<style><region class=\"band\" fill=\"red\"/></style>").message.find("needs k"), std::string::npos);
+    // A misspelt word a colour attribute takes is named among the choices.
+    EXPECT_NE(error_of("<style><region class=\"lit\" fill=\"materal\"/></style>").message.find("or material)"),
+              std::string::npos);
+    EXPECT_NE(error_of("<style><canvas background=\"nope\"/></style>").message.find("or none)"), std::string::npos);
     EXPECT_NE(error_of("<style><region class=\"lit\" k=\"0.5\"/></style>").message.find("takes no k"), std::string::npos);
     EXPECT_NE(error_of("<style><region class=\"glow\"/></style>").message.find("must be one of"), std::string::npos);
 }
