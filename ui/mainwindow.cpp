@@ -16,6 +16,7 @@
 #include <QLabel>
 #include <QMimeData>
 #include <QProgressBar>
+#include <QScreen>
 #include <QSettings>
 #include <QSplitter>
 #include <QStatusBar>
@@ -68,7 +69,10 @@ MainWindow::MainWindow(QWidget* parent)
     createMenus();
 
     QSettings settings;
-    resize(1400, 860); // until a saved layout says otherwise
+    // Until a saved layout says otherwise: 1400 x 860, or the screen's room
+    // where it has less (a 1280 x 800 laptop).
+    const QSize room = screen() ? screen()->availableGeometry().size() : QSize(1400, 860);
+    resize(std::min(1400, room.width()), std::min(860, room.height()));
     restoreGeometry(settings.value("window/geometry").toByteArray());
     restoreState(settings.value("window/state").toByteArray());
 }

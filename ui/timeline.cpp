@@ -9,6 +9,7 @@
 #include <QDoubleSpinBox>
 #include <QFileInfo>
 #include <QHBoxLayout>
+#include <QVBoxLayout>
 #include <QLabel>
 #include <QProxyStyle>
 #include <QPushButton>
@@ -115,12 +116,27 @@ void Timeline::setUpWidgets() {
     // current frame at 1).
     for (QAbstractSpinBox* box : std::initializer_list<QAbstractSpinBox*>{degrees_, frames_, start_, fps_})
         box->setKeyboardTracking(false);
-    auto* layout = new QHBoxLayout(this);
-    for (QWidget* w : std::initializer_list<QWidget*>{source_, camera_, degrees_, start_, frames_, fps_, play_, loop_, everyFrame_})
-        layout->addWidget(w);
-    layout->addWidget(slider_, 1);
-    layout->addWidget(frameBox_);
-    layout->addWidget(label_);
+    // Two rows: the settings, then play and the scrubber across the whole
+    // width (in one row, a file's camera and clip names left the scrubber a
+    // few pixels at 1280 x 800).
+    auto* rows = new QVBoxLayout(this);
+    auto* settings = new QHBoxLayout;
+    for (QWidget* w : std::initializer_list<QWidget*>{source_, camera_, degrees_, start_, frames_, fps_, loop_, everyFrame_})
+        settings->addWidget(w);
+    settings->addStretch(1);
+    auto* scrub = new QHBoxLayout;
+    scrub->addWidget(play_);
+    scrub->addWidget(slider_, 1);
+    scrub->addWidget(frameBox_);
+    scrub->addWidget(label_);
+    rows->addLayout(settings);
+    rows->addLayout(scrub);
+    slider_->setMinimumWidth(240);
+    // Nothing moves sideways as play starts or stops: the button is as wide
+    // as its wider text, the position as wide as its longest.
+    play_->setMinimumWidth(std::max(play_->fontMetrics().horizontalAdvance(tr("Pause")),
+                                    play_->fontMetrics().horizontalAdvance(tr("Play"))) + 32);
+    label_->setMinimumWidth(label_->fontMetrics().horizontalAdvance(tr("/ 99999 · 9999.99 s of 9999.99 s · 240.0 fps shown")));
 }
 
 void Timeline::connectWidgets() {

@@ -5,6 +5,7 @@
 
 #include <sys/resource.h>
 
+#include <QAbstractButton>
 #include <QApplication>
 #include <QDir>
 #include <QElapsedTimer>
@@ -2444,6 +2445,49 @@ class TestMainWindow : public QObject {
         QCOMPARE(saveAs->shortcut(), QKeySequence(QKeySequence::SaveAs).isEmpty() ? QKeySequence("Ctrl+Shift+S")
                                                                                    : QKeySequence(QKeySequence::SaveAs));
         QVERIFY(!saveAs->shortcut().isEmpty());
+    }
+
+
+    // At 1280 x 800, with a file that has cameras and a camera move, every
+    // timeline control shows inside the window, the scrubber is at least
+    // 200 px wide, and nothing moves sideways when play starts or stops.
+    void timelineFitsAt1280x800() {
+        MainWindow window;
+        QVERIFY(showWithMesh(window, QString(SNAXELS_TEST_ASSETS) + "/cameras/blender-shot.gltf", {1280, 800}));
+        QTest::qWait(200);
+        window.grab().save(QString(SCREENSHOT_DIR) + "/mainwindow-1280x800.png");
+        const QRect inside = window.rect();
+        int controls = 0;
+        for (QWidget* w : window.timeline()->findChildren<QWidget*>()) {
+            const bool control = qobject_cast<QAbstractButton*>(w) || qobject_cast<QComboBox*>(w) ||
+                                 qobject_cast<QAbstractSpinBox*>(w) || qobject_cast<QSlider*>(w);
+            if (!control || !w->isVisibleTo(window.timeline())) continue;
+            const QRect at(w->mapTo(&window, QPoint(0, 0)), w->size());
+            QVERIFY2(inside.contains(at), qPrintable(QString("%1 at %2,%3 %4x%5 is not inside the window")
+                                                         .arg(w->metaObject()->className())
+                                                         .arg(at.x()).arg(at.y()).arg(at.width()).arg(at.height())));
+            QVERIFY2(w->width() >= 20 && w->height() >= 12, w->metaObject()->className());
+            ++controls;
+        }
+        QVERIFY(controls >= 10); // source, camera, degrees, from, frames, fps, loop, every frame, play, scrubber, frame
+        auto* slider = window.timeline()->findChild<QSlider*>();
+        QVERIFY(slider);
+        QVERIFY2(slider->width() >= 200, qPrintable(QString::number(slider->width())));
+        QPushButton* play = nullptr;
+        for (QPushButton* b : window.timeline()->findChildren<QPushButton*>())
+            if (b->text() == "Play") play = b;
+        QVERIFY(play);
+        const QPoint playAt = play->mapTo(&window, QPoint(0, 0)), sliderAt = slider->mapTo(&window, QPoint(0, 0));
+        const int sliderWidth = slider->width();
+        window.timeline()->togglePlay();
+        QTest::qWait(300);
+        QCOMPARE(play->text(), QString("Pause"));
+        QCOMPARE(play->mapTo(&window, QPoint(0, 0)), playAt);
+        QCOMPARE(slider->mapTo(&window, QPoint(0, 0)), sliderAt);
+        QCOMPARE(slider->width(), sliderWidth);
+        window.timeline()->togglePlay();
+        QTest::qWait(100);
+        QCOMPARE(slider->width(), sliderWidth);
     }
 
 };
