@@ -15,6 +15,23 @@
 
 namespace snaxels::ui {
 
+AnimationSpec first_look(const SceneFacts& facts) {
+    AnimationSpec spec = initial_animation();
+    const FileCamera* camera = facts.cameras.empty() ? nullptr : &facts.cameras.front();
+    if (camera) spec.camera = camera->name; // the picture the file composed
+    if (!facts.clips.empty()) {
+        // Its own animation, whole: the clip that moves its camera (which
+        // moves the rest of the scene too, as the file keyed it), else the first.
+        spec.kind = AnimationSpec::Kind::Clip;
+        spec.clip = camera && camera->animated() ? camera->clip : facts.clips.front().name;
+        spec.frames = 0;
+    } else if (camera) { // a camera no clip moves: the still it frames
+        spec.kind = AnimationSpec::Kind::Still;
+        spec.frames = 1;
+    }
+    return spec; // resolved by the document (a clip's frames)
+}
+
 DocumentController::DocumentController(Document* document, QWidget* dialogParent)
     : QObject(dialogParent), document_(document), dialogParent_(dialogParent), loader_(new MeshLoader(this)) {
     connect(loader_, &MeshLoader::finished, this, [this](const LoadResult& result) {
@@ -104,7 +121,11 @@ void DocumentController::onLoaded(const LoadResult& result) {
         // default), the mesh's own framing and the animation a new mesh
         // starts with.
         if (std::exchange(pendingDefaultStyle_, false)) document_->resetStyleText(initial_style_text());
-        document_->startNew(spec, result.mesh, facts, initial_animation());
+        document_->startNew(spec, result.mesh, facts, first_look(facts));
+        if (!document_->animation().camera.empty())
+            emit status(tr("Looking through the file's camera \"%1\": choose View camera in the timeline to orbit")
+                            .arg(QString::fromStdString(document_->animation().camera)),
+                        8000);
         if (!spec.startsWith("proc:")) addRecentFile(QFileInfo(spec).absoluteFilePath());
     }
     emit meshLoaded(spec);

@@ -23,6 +23,13 @@ class QWidget;
 namespace snaxels::ui {
 
 class Document;
+struct SceneFacts;
+
+/// The animation a file opens on: through its first camera if it has
+/// cameras; its own clip, whole, if it has clips (the one that moves that
+/// camera, else the first); else, through a camera, the still it frames,
+/// or the turntable a new mesh starts with.
+AnimationSpec first_look(const SceneFacts& facts);
 
 class DocumentController : public QObject {
     Q_OBJECT

@@ -273,6 +273,8 @@ void MainWindow::showMeshReport(const LoadedMesh& mesh) {
 void MainWindow::showFrame() {
     const AnimationSpec& spec = document_->animation();
     timeline_->setFrame(document_->frame());
+    // Back to the view camera at once (a file camera's picture comes with its contours).
+    if (spec.camera.empty()) view_->setFileCamera(std::nullopt);
     if (spec.kind == AnimationSpec::Kind::Turntable) {
         // Turntables orbit the mesh's centre, as exports do: no pan.
         if (document_->view().pan != glm::dvec3(0.0)) {

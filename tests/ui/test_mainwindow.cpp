@@ -1118,15 +1118,29 @@ class TestMainWindow : public QObject {
         auto* cameras = window.timeline()->findChild<QComboBox*>("cameraChoice");
         QVERIFY(cameras && cameras->isVisible());
         QCOMPARE(cameras->count(), 3); // the view's, ShotCam, TopOrtho
-        QVERIFY(!window.meshView()->looksThroughFileCamera());
         QComboBox* source = nullptr;
         for (QComboBox* box : window.timeline()->findChildren<QComboBox*>())
             if (box != cameras) source = box;
         QVERIFY(source);
         const int move = source->findText("Camera move: ShotCam");
         QVERIFY(move >= 0);
-
+        // The file's own first look: through its first camera, on the clip
+        // that moves it, and the status bar says so.
+        QCOMPARE(source->currentText(), QString("Clip: ShotCamAction"));
+        QCOMPARE(window.document()->animation().camera, std::string("ShotCam"));
+        QCOMPARE(window.document()->animation().frames, 49); // 2 s at 24 fps, both ends
+        QVERIFY(window.meshView()->looksThroughFileCamera());
+        QVERIFY2(window.statusBar()->currentMessage().contains("Looking through the file's camera \"ShotCam\""),
+                 qPrintable(window.statusBar()->currentMessage()));
+        QVERIFY(!window.isModified()); // the file's look, not an edit
+        // The view camera is a choice away; then back to the move.
         QSignalSpy contours(&window, &MainWindow::contoursUpdated);
+        source->setCurrentIndex(source->findText("Turntable"));
+        cameras->setCurrentIndex(0);
+        QVERIFY(contours.wait(30000));
+        QTest::qWait(200);
+        QVERIFY(!window.meshView()->looksThroughFileCamera());
+        contours.clear();
         source->setCurrentIndex(move);
         QVERIFY(contours.wait(30000));
         QTest::qWait(200);
@@ -1217,7 +1231,11 @@ class TestMainWindow : public QObject {
         QComboBox* source = window.timeline()->findChild<QComboBox*>("source");
         QVERIFY(cameras && source);
         QSignalSpy contours(&window, &MainWindow::contoursUpdated);
-        // Through the file's still camera, through its moving one, orbiting.
+        // From the view camera: through the file's still camera, through its
+        // moving one, orbiting.
+        source->setCurrentIndex(source->findText("Turntable"));
+        cameras->setCurrentIndex(0);
+        QVERIFY(contours.wait(30000));
         for (const int mode : {0, 1, 2}) {
             contours.clear();
             if (mode == 0) cameras->setCurrentIndex(cameras->findText("Camera: ShotCam"));
@@ -1828,11 +1846,13 @@ class TestMainWindow : public QObject {
         for (int i = 0; i < source->count() && clip < 0; ++i)
             if (source->itemText(i).startsWith("Clip: ")) clip = i;
         QVERIFY(clip >= 0);
-        contours.clear();
-        source->setCurrentIndex(clip);
+        // The file opens on its own clip, whole: the first Play plays it.
+        QCOMPARE(source->currentIndex(), clip);
         QCOMPARE(window.timeline()->spec().kind, snaxels::AnimationSpec::Kind::Clip);
         QVERIFY(window.timeline()->spec().frames > 2); // the clip's length at 24 fps
-        QVERIFY(contours.wait(30000));
+        QVERIFY(window.document()->animation() == window.timeline()->spec());
+        QVERIFY(!window.isModified());
+        QVERIFY(contoursSettle(window));
         QTest::qWait(200);
         const QByteArray rest = window.currentSvg();
         contours.clear();
@@ -2320,7 +2340,12 @@ class TestMainWindow : public QObject {
         MainWindow window;
         QVERIFY(showWithMesh(window, scene));
         QSignalSpy contours(&window, &MainWindow::contoursUpdated);
-        // Every kind of edit, each through its widget.
+        // Every kind of edit, each through its widget (from the view
+        // camera's turntable: the file opens through its camera).
+        window.timeline()->findChild<QComboBox*>("source")->setCurrentIndex(
+            window.timeline()->findChild<QComboBox*>("source")->findText("Turntable"));
+        window.timeline()->findChild<QComboBox*>("cameraChoice")->setCurrentIndex(0);
+        QVERIFY(contoursSettle(window));
         QFile toon(snaxels::ui::dataDirectory() + "/styles/toon.xml");
         QVERIFY(toon.open(QIODevice::ReadOnly));
         window.styleEditor()->setText(QString::fromUtf8(toon.readAll()));
