@@ -112,6 +112,7 @@ void MainWindow::createViewMenu() {
     QMenu* viewMenu = menuBar()->addMenu(tr("&View"));
     QAction* reset = viewMenu->addAction(tr("&Reset Camera"), view_, &MeshView::resetCamera);
     reset->setShortcut(Qt::Key_Home);
+    reset->setObjectName("resetCamera");
     reset->setToolTip(tr("Look at the model's front from a little above and to the side"));
     // Named views in the model's frame (its up axis and front), keeping the
     // distance and pan: one undo step each.

@@ -2,6 +2,7 @@
 
 #include <utility>
 #include <algorithm>
+#include <limits>
 #include <atomic>
 #include <unordered_map>
 #include <cmath>
@@ -405,9 +406,26 @@ void MeshView::centreView() {
 }
 
 void MeshView::resetCamera() {
-    // The model's front from a little above and to the side, standing on its up axis.
+    // The model's front from a little above and to the side, standing on its
+    // up axis, framing the pose drawn (a clip's frame may stand far from the
+    // rest pose): its bounding sphere, reached by a pan from the orbit's
+    // centre, which stays the mesh's (turntables turn about it).
+    glm::dvec3 lo(std::numeric_limits<double>::max()), hi(-std::numeric_limits<double>::max());
+    for (std::size_t i = 0; i + 5 < vertices_.size(); i += 6)
+        for (std::size_t k = 0; k < 3; ++k) {
+            lo[int(k)] = std::min(lo[int(k)], double(vertices_[i + k]));
+            hi[int(k)] = std::max(hi[int(k)], double(vertices_[i + k]));
+        }
+    const bool posed = vertexCount_ > 0;
+    const glm::dvec3 centre = posed ? 0.5 * (lo + hi) : centre_;
+    const double radius = posed ? std::max(0.5 * glm::length(hi - lo), 1e-9) : radius_;
     const double turntable = orbit_.turntable;
-    orbit_ = framing_view(centre_, radius_, orbit_.up);
+    orbit_ = framing_view(centre_, radius, orbit_.up);
+    orbit_.turntable = 0.0;
+    glm::dvec3 right, up;
+    orbit_camera(orbit_).screen_basis(right, up);
+    // In eye space the pan adds to the offset from the centre: it cancels the pose's.
+    orbit_.pan = -glm::dvec3(glm::dot(centre - centre_, right), glm::dot(centre - centre_, up), 0.0);
     orbit_.turntable = turntable;
     update();
     emit cameraChanged();

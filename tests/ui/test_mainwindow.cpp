@@ -144,6 +144,20 @@ bool contoursSettle(const MainWindow& window) {
     return !window.contoursBusy();
 }
 
+/// The box of the 3-D view's pixels that differ from its background (its
+/// corner's colour): where the model is drawn; empty when nothing is.
+QRect inkBox(const QImage& frame) {
+    const QColor bg = frame.pixelColor(0, frame.height() - 1);
+    QRect box;
+    for (int y = 0; y < frame.height(); ++y)
+        for (int x = 0; x < frame.width(); ++x) {
+            const QColor c = frame.pixelColor(x, y);
+            if (std::abs(c.red() - bg.red()) + std::abs(c.green() - bg.green()) + std::abs(c.blue() - bg.blue()) > 30)
+                box |= QRect(x, y, 1, 1);
+        }
+    return box;
+}
+
 bool showWithMesh(MainWindow& window, const QString& mesh, QSize size = {1000, 700}) {
     if (!showWindow(window, size)) return false;
     QSignalSpy contours(&window, &MainWindow::contoursUpdated);
@@ -2513,6 +2527,33 @@ class TestMainWindow : public QObject {
         window.timeline()->togglePlay();
         QTest::qWait(100);
         QCOMPARE(slider->width(), sliderWidth);
+    }
+
+
+    // Home frames the model as it is posed: panned out of the view, or a
+    // clip's frame, it comes back whole inside the view.
+    void homeFramesThePosedModel() {
+        MainWindow window;
+        QVERIFY(showWithMesh(window, QString(SNAXELS_TEST_ASSETS) + "/anim/skinned-bar.gltf", {1000, 700}));
+        QVERIFY(contoursSettle(window));
+        window.timeline()->setFrame(window.document()->animation().frames / 2); // bent
+        QVERIFY(contoursSettle(window));
+        snaxels::ui::MeshView* view = window.meshView();
+        // Pan it out of sight with a right drag.
+        QTest::mousePress(view, Qt::RightButton, {}, QPoint(100, 100));
+        for (int x = 120; x <= 900; x += 60) QTest::mouseMove(view, QPoint(x, 100));
+        QTest::mouseRelease(view, Qt::RightButton, {}, QPoint(900, 100));
+        QTest::qWait(100);
+        const QRect away = inkBox(view->grabFramebuffer());
+        const QRect inside = QRect(QPoint(0, 0), view->grabFramebuffer().size()).adjusted(2, 2, -2, -2);
+        QVERIFY2(away.isEmpty() || !inside.contains(away), "the drag did not take the model out of the view");
+        window.findChild<QAction*>("resetCamera")->trigger();
+        QVERIFY(contoursSettle(window));
+        QTest::qWait(100);
+        const QRect home = inkBox(view->grabFramebuffer());
+        QVERIFY2(!home.isEmpty() && inside.contains(home),
+                 qPrintable(QString("ink %1,%2 %3x%4").arg(home.x()).arg(home.y()).arg(home.width()).arg(home.height())));
+        QVERIFY(home.width() > inside.width() / 4 || home.height() > inside.height() / 4); // framed, not a speck
     }
 
 };
