@@ -5,6 +5,9 @@
 #include <set>
 
 #include <QComboBox>
+#include <QToolButton>
+#include <QMenu>
+#include <QColorDialog>
 #include <QHeaderView>
 #include <QPainter>
 #include <QPixmap>
@@ -69,9 +72,9 @@ ObjectsPanel::ObjectsPanel(QWidget* parent) : QWidget(parent), tree_(new QTreeWi
     layout->setContentsMargins(0, 0, 0, 0);
     layout->addWidget(tree_);
     tree_->setObjectName("objectsTree");
-    tree_->setColumnCount(5);
+    tree_->setColumnCount(6);
     // The name first, elided in a narrow dock; how it is drawn beside it.
-    tree_->setHeaderLabels({tr("Part"), tr("Drawn as"), tr("Faces"), tr("Line sets"), tr("Meets")});
+    tree_->setHeaderLabels({tr("Part"), tr("Drawn as"), tr("Faces"), tr("Line sets"), tr("Meets"), tr("Lines")});
     tree_->headerItem()->setToolTip(4, tr("Draw the object's intersection lines: where it passes into another object or "
                                           "into itself"));
     tree_->header()->setSectionResizeMode(0, QHeaderView::Interactive);
@@ -80,6 +83,7 @@ ObjectsPanel::ObjectsPanel(QWidget* parent) : QWidget(parent), tree_(new QTreeWi
     tree_->header()->setSectionResizeMode(2, QHeaderView::ResizeToContents);
     tree_->header()->setSectionResizeMode(3, QHeaderView::ResizeToContents);
     tree_->header()->setSectionResizeMode(4, QHeaderView::ResizeToContents);
+    tree_->header()->setSectionResizeMode(5, QHeaderView::ResizeToContents);
     connect(tree_, &QTreeWidget::itemChanged, this, [this](QTreeWidgetItem* item, int column) {
         if (updating_ || column != 4 || !mesh_ || !parts_ || !item->data(0, kIsObjectRole).toBool()) return;
         const auto o = std::uint32_t(item->data(0, kPartRole).toInt());
@@ -150,6 +154,7 @@ void ObjectsPanel::rebuild() {
         state->setToolTip(tr("How the style draws %1: its lines, as an occluder only (hiding what is behind it), or "
                              "not at all").arg(QString::fromStdString(object.name)));
         tree_->setItemWidget(item, 1, state);
+        addLinesButton(item, o);
         connect(state, &QComboBox::activated, this, [this, o, state](int index) {
             if (updating_ || !mesh_) return;
             const SceneObject& obj = mesh_->objects[o];
@@ -191,6 +196,63 @@ void ObjectsPanel::rebuild() {
     tree_->expandAll();
     updating_ = false;
     refreshStyle();
+}
+
+void ObjectsPanel::addLinesButton(QTreeWidgetItem* item, std::size_t o) {
+    const SceneObject& object = mesh_->objects[o];
+    const QString name = QString::fromStdString(object.name);
+    auto* button = new QToolButton(tree_);
+    button->setObjectName("lines:" + QString::fromStdString(object.path));
+    button->setText(tr("Lines"));
+    button->setToolButtonStyle(Qt::ToolButtonTextBesideIcon);
+    button->setPopupMode(QToolButton::InstantPopup);
+    button->setToolTip(tr("%1's outline in a colour, width and hidden lines of its own (a line set in the style)").arg(name));
+    auto* menu = new QMenu(button);
+    menu->addAction(tr("Colour…"), this, [this, o, name] {
+        ObjectLines lines = linesOf(o).value_or(ObjectLines{});
+        const QColor chosen = QColorDialog::getColor(QColor(QString::fromStdString(lines.colour)), this,
+                                                     tr("%1's Lines").arg(name));
+        if (!chosen.isValid()) return;
+        lines.colour = chosen.name().toStdString();
+        setLines(o, lines);
+    })->setObjectName("linesColour");
+    QMenu* widths = menu->addMenu(tr("Width"));
+    for (const double w : {0.5, 1.0, 1.5, 2.0, 3.0, 4.0})
+        widths->addAction(QString::number(w), this, [this, o, w] {
+            ObjectLines lines = linesOf(o).value_or(ObjectLines{});
+            lines.width = w;
+            setLines(o, lines);
+        })->setObjectName(QString("linesWidth%1").arg(w));
+    menu->addAction(tr("Hidden Lines"), this, [this, o] {
+        ObjectLines lines = linesOf(o).value_or(ObjectLines{});
+        lines.hidden = !lines.hidden;
+        setLines(o, lines);
+    })->setObjectName("linesHidden");
+    menu->addSeparator();
+    menu->addAction(tr("As the Style Draws It"), this, [this, o] { setLines(o, std::nullopt); })->setObjectName("linesReset");
+    button->setMenu(menu);
+    tree_->setItemWidget(item, 5, button);
+}
+
+std::optional<ObjectLines> ObjectsPanel::linesOf(std::size_t o) const {
+    const std::string& name = mesh_->objects[o].name;
+    for (const ContourStyle& cs : style_.contours)
+        if (cs.spec.kind == ContourKind::Visual && cs.spec.parts.objects == std::vector<std::string>{name} &&
+            cs.spec.parts.materials.empty() && !cs.spec.parts.over_objects)
+            return ObjectLines{cs.visible.colour, cs.visible.width, cs.hidden.draw};
+    return std::nullopt;
+}
+
+void ObjectsPanel::setLines(std::size_t o, const std::optional<ObjectLines>& lines) {
+    if (!mesh_ || o >= mesh_->objects.size()) return;
+    const QString name = QString::fromStdString(mesh_->objects[o].name);
+    const auto text = with_object_lines(editable(text_), mesh_->objects[o].name, lines);
+    if (!text) {
+        emit notice(tr("The style has an error: fix it in the Style tab first"));
+        return;
+    }
+    emit styleEdited(QString::fromStdString(*text),
+                     lines ? tr("Restyle %1's Lines").arg(name) : tr("Draw %1's Lines as the Style Does").arg(name));
 }
 
 void ObjectsPanel::refreshStyle() {

@@ -8,6 +8,7 @@
 
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <vector>
 
 #include <QString>
@@ -61,6 +62,13 @@ class ObjectsPanel : public QWidget {
 
   private:
     void rebuild();
+    /// The Lines button of object @p o's row: its outline's colour, width
+    /// and hidden lines, written as the object's own line set.
+    void addLinesButton(QTreeWidgetItem* item, std::size_t o);
+    /// The outline object @p o has its own line set for, if any.
+    std::optional<ObjectLines> linesOf(std::size_t o) const;
+    /// Writes @p lines (none: as the style's other line sets draw it) for object @p o, one undo step.
+    void setLines(std::size_t o, const std::optional<ObjectLines>& lines);
     void refreshStyle();
     void emitHighlight();
 

@@ -1,10 +1,12 @@
 #include "snaxels/style/style_edit.h"
 
 #include <algorithm>
+#include <cstdio>
 #include <vector>
 
 #include <pugixml.hpp>
 
+#include "snaxels/mesh/parts.h"
 #include "snaxels/util/detail/xml_text.h"
 
 namespace snaxels {
@@ -123,6 +125,39 @@ std::string with_last_child(const std::string& text, const std::string& element)
     return out;
 }
 
+/// Where attribute @p name of the tag at @p start ('<') is in @p text: the
+/// span of the whole attribute (name to closing quote) and of its value
+/// (inside the quotes); nothing when the tag has no such attribute.
+struct AttributeSpan {
+    std::size_t at = 0, end = 0, value = 0, value_end = 0;
+};
+std::optional<AttributeSpan> attribute_span(const std::string& text, std::size_t start, const std::string& name) {
+    const std::size_t end = tag_end(text, start);
+    const std::string tag = text.substr(start, end - start);
+    auto blank = [](char c) { return c == ' ' || c == '\t' || c == '\n' || c == '\r'; };
+    // The attribute's name, then its value in either quotes.
+    for (std::size_t at = tag.find(name); at != std::string::npos; at = tag.find(name, at + 1)) {
+        if (at == 0 || !blank(tag[at - 1])) continue; // the end of another attribute's name
+        std::size_t v = at + name.size();
+        while (v < tag.size() && blank(tag[v])) ++v;
+        if (v >= tag.size() || tag[v] != '=') continue;
+        ++v;
+        while (v < tag.size() && blank(tag[v])) ++v;
+        if (v >= tag.size() || (tag[v] != '"' && tag[v] != '\'')) continue;
+        const std::size_t close = tag.find(tag[v], v + 1);
+        if (close == std::string::npos) continue;
+        return AttributeSpan{start + at, start + close + 1, start + v + 1, start + close};
+    }
+    return std::nullopt;
+}
+
+/// @p text with @p splices (on disjoint spans) applied.
+std::string spliced(std::string text, std::vector<TextSplice> splices) {
+    std::sort(splices.begin(), splices.end(), [](const TextSplice& a, const TextSplice& b) { return a.at > b.at; });
+    for (const TextSplice& s : splices) text = s.applied_to(text);
+    return text;
+}
+
 bool is_intersection_set(const pugi::xml_node& node) {
     return std::string(node.name()) == "contour" && std::string(node.attribute("kind").value()) == "intersection";
 }
@@ -180,22 +215,8 @@ std::optional<TextSplice> sharp_angle_splice(const std::string& text, const std:
     if (!parsed(text, style)) return std::nullopt;
     const std::string attribute = "sharp-angle=\"" + xml_text(value) + "\"";
     if (const pugi::xml_node surface = style.root.child("surface")) {
-        const std::size_t start = element_start(surface), end = tag_end(text, start);
-        const std::string tag = text.substr(start, end - start);
-        // The attribute's name, then its value in either quotes.
-        for (std::size_t at = tag.find("sharp-angle"); at != std::string::npos; at = tag.find("sharp-angle", at + 1)) {
-            if (at == 0 || !(tag[at - 1] == ' ' || tag[at - 1] == '\t' || tag[at - 1] == '\n' || tag[at - 1] == '\r'))
-                continue; // the end of another attribute's name
-            std::size_t v = at + std::char_traits<char>::length("sharp-angle");
-            while (v < tag.size() && (tag[v] == ' ' || tag[v] == '\t' || tag[v] == '\n')) ++v;
-            if (v >= tag.size() || tag[v] != '=') continue;
-            ++v;
-            while (v < tag.size() && (tag[v] == ' ' || tag[v] == '\t' || tag[v] == '\n')) ++v;
-            if (v >= tag.size() || (tag[v] != '"' && tag[v] != '\'')) continue;
-            const std::size_t close = tag.find(tag[v], v + 1);
-            if (close == std::string::npos) continue;
-            return TextSplice{start + at, close + 1 - at, attribute};
-        }
+        const std::size_t start = element_start(surface);
+        if (const auto a = attribute_span(text, start, "sharp-angle")) return TextSplice{a->at, a->end - a->at, attribute};
         return TextSplice{start + 1 + std::char_traits<char>::length("surface"), 0, " " + attribute};
     }
     const std::size_t root = element_start(style.root), root_tag = tag_end(text, root);
@@ -218,6 +239,79 @@ std::optional<std::string> without_absent_objects(const std::string& text,
             return is_intersection_set(n) && exact_and_absent(n.attribute("object").value());
         },
         std::string());
+}
+
+namespace {
+
+/// A visual line set that takes every object (no object pattern but
+/// exclusions, no material, not over="objects"): where one object's own
+/// line set leaves it out.
+bool takes_every_object(const pugi::xml_node& n) {
+    if (std::string(n.name()) != "contour" || std::string(n.attribute("kind").value()) != "visual") return false;
+    if (n.attribute("material") || n.attribute("over")) return false;
+    for (const std::string& p : split_patterns(n.attribute("object").value()))
+        if (p.empty() || p[0] != '!') return false;
+    return true;
+}
+
+/// The splices that add "!NAME" to (@p exclude), or take it from, the object
+/// patterns of every visual line set that takes every object.
+std::vector<TextSplice> exclusions(const std::string& text, const ParsedStyle& style, const std::string& name, bool exclude) {
+    std::vector<TextSplice> out;
+    const std::string excluded = "!" + name;
+    for (const pugi::xml_node& n : style.root.children()) {
+        if (n.type() != pugi::node_element || !takes_every_object(n)) continue;
+        std::vector<std::string> patterns = split_patterns(n.attribute("object").value());
+        const auto it = std::find(patterns.begin(), patterns.end(), excluded);
+        if (exclude == (it != patterns.end())) continue; // as it should be already
+        if (exclude) patterns.push_back(excluded);
+        else patterns.erase(it);
+        std::string value;
+        for (const std::string& p : patterns) value += (value.empty() ? "" : ",") + p;
+        const std::size_t start = element_start(n);
+        const auto a = attribute_span(text, start, "object");
+        if (!a) { // last in the tag, before its '>' or '/>'
+            std::size_t at = tag_end(text, start) - 1;
+            if (at > start && text[at - 1] == '/') --at;
+            while (at > start && (text[at - 1] == ' ' || text[at - 1] == '\t')) --at;
+            out.push_back({at, 0, " object=\"" + xml_text(value) + "\""});
+        }
+        else if (value.empty()) out.push_back({a->at - 1, a->end - a->at + 1, ""}); // with the blank before it
+        else out.push_back({a->value, a->value_end - a->value, xml_text(value)});
+    }
+    return out;
+}
+
+} // namespace
+
+std::optional<std::string> with_object_lines(const std::string& text, const std::string& name,
+                                             const std::optional<ObjectLines>& lines) {
+    ParsedStyle style;
+    if (!parsed(text, style)) return std::nullopt;
+    const std::string first = spliced(text, exclusions(text, style, name, lines.has_value()));
+    ParsedStyle again;
+    if (!parsed(first, again)) return std::nullopt;
+    std::string element;
+    if (lines) {
+        char width[32], hidden_width[32];
+        std::snprintf(width, sizeof width, "%g", lines->width);
+        std::snprintf(hidden_width, sizeof hidden_width, "%g", lines->width * 2.0 / 3.0);
+        const std::string colour = xml_text(lines->colour);
+        element = "<contour kind=\"visual\" object=\"" + xml_text(name) + "\"><visible stroke=\"" + colour +
+                  "\" width=\"" + width + "\"/>" +
+                  (lines->hidden ? "<hidden stroke=\"" + colour + "\" width=\"" + hidden_width +
+                                       "\" opacity=\"0.55\" dash=\"4 3\" cap=\"butt\"/>"
+                                 : std::string("<hidden draw=\"false\"/>")) +
+                  "</contour>";
+    }
+    // The object's own line set: a visual contour on exactly NAME, with strokes of its own.
+    return edited(
+        first, again,
+        [&](const pugi::xml_node& n) {
+            return std::string(n.name()) == "contour" && std::string(n.attribute("kind").value()) == "visual" &&
+                   n.attribute("object").value() == name && !n.attribute("material") && !n.attribute("over");
+        },
+        element);
 }
 
 } // namespace snaxels

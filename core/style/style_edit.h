@@ -40,6 +40,24 @@ std::optional<std::string> with_object_drawing(const std::string& text, const st
 /// (@p on) or removed (with the line it stands on).
 std::optional<std::string> with_intersection_lines(const std::string& text, const std::string& name, bool on);
 
+/// How the Objects panel draws one object's outline: its colour, width and
+/// whether its hidden stretches are drawn (dashed).
+struct ObjectLines {
+    std::string colour = "#111111";
+    double width = 1.5;
+    bool hidden = false;
+};
+
+/// @p text with the visual contour on the object named exactly @p name
+/// drawn as @p lines: the line set <contour kind="visual" object="NAME">
+/// with those strokes goes last in <style> (replacing the one there was),
+/// and every visual line set that takes all objects (no object pattern of
+/// its own but exclusions, no material, not over="objects") leaves NAME to
+/// it (",!NAME" in its object patterns). Without @p lines, the object's line
+/// set goes and the others take NAME again.
+std::optional<std::string> with_object_lines(const std::string& text, const std::string& name,
+                                             const std::optional<ObjectLines>& lines);
+
 /// The replacement that sets <surface sharp-angle="VALUE">: the attribute's
 /// value replaced where it is given, added to a <surface> without it, or a
 /// <surface> element made first in <style>.

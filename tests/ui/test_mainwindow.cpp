@@ -45,6 +45,7 @@
 #include <algorithm>
 #include <cmath>
 #include <QUndoStack>
+#include <QColorDialog>
 #include <QComboBox>
 #include <QHeaderView>
 #include <QTreeWidget>
@@ -2554,6 +2555,50 @@ class TestMainWindow : public QObject {
         QVERIFY2(!home.isEmpty() && inside.contains(home),
                  qPrintable(QString("ink %1,%2 %3x%4").arg(home.x()).arg(home.y()).arg(home.width()).arg(home.height())));
         QVERIFY(home.width() > inside.width() / 4 || home.height() > inside.height() / 4); // framed, not a speck
+    }
+
+
+    // Restyling one object from the Objects panel: a colour and a width from
+    // its Lines button write its own line set (each one undo step, shown in
+    // the style's text), and the frame the pane shows draws that object's
+    // outline in that colour.
+    void objectsPanelRestylesOneObject() {
+        MainWindow window;
+        QVERIFY(showWithMesh(window, QString(SNAXELS_TEST_ASSETS) + "/hard/CesiumMilkTruck.gltf"));
+        QVERIFY(contoursSettle(window));
+        const auto& objects = window.mesh()->objects;
+        QVERIFY(objects.size() >= 2);
+        const QString name = QString::fromStdString(objects[0].name);
+        auto* button = window.objectsPanel()->findChild<QToolButton*>("lines:" + QString::fromStdString(objects[0].path));
+        QVERIFY(button);
+        const int steps = window.undoStack()->count();
+        QTimer::singleShot(300, [] {
+            if (auto* dialog = qobject_cast<QColorDialog*>(QApplication::activeModalWidget())) {
+                dialog->setCurrentColor(QColor("#cc2200"));
+                dialog->accept();
+            }
+        });
+        button->menu()->findChild<QAction*>("linesColour")->trigger();
+        QCOMPARE(window.undoStack()->count(), steps + 1);
+        QTest::qWait(1600); // past the merge window: the width is a step of its own
+        button->menu()->findChild<QAction*>("linesWidth3")->trigger();
+        QCOMPARE(window.undoStack()->count(), steps + 2);
+        QVERIFY(contoursSettle(window));
+        QTest::qWait(200);
+        const QString text = window.styleEditor()->text();
+        QVERIFY2(text.contains("<contour kind=\"visual\" object=\"" + name + "\"><visible stroke=\"#cc2200\" width=\"3\"/>"),
+                 qPrintable(text));
+        const QByteArray svg = window.currentSvg();
+        const qsizetype group = svg.indexOf(("data-label=\"visual object=" + name + "\"").toUtf8());
+        QVERIFY2(group >= 0, "no group for the object's line set");
+        const QByteArray tag = svg.mid(group, svg.indexOf('>', group) - group);
+        QVERIFY2(tag.contains("stroke=\"#cc2200\"") && tag.contains("stroke-width=\"3\""), tag.constData());
+        const qsizetype path = svg.indexOf("<path", group), close = svg.indexOf("</g>", group);
+        QVERIFY2(path > group && path < close, "the object's line set draws nothing");
+        // Undone twice: the style as it was.
+        window.undoStack()->undo();
+        window.undoStack()->undo();
+        QVERIFY(!window.styleEditor()->text().contains("object=\"" + name + "\"><visible"));
     }
 
 };

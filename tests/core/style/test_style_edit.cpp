@@ -137,3 +137,53 @@ TEST(StyleEdit, AnotherScenesObjectsLeaveTheStyle) {
 }
 
 } // namespace
+
+// Restyling one object's outline: its own line set goes last, the visual
+// line sets that take every object leave it to that set (so it is drawn
+// once, in its own stroke), and taking the restyle back restores the text.
+TEST(StyleEdit, AnObjectsOwnLinesTakeItFromTheLineSetsOfAll) {
+    const std::string text = "<style version=\"1\">\n"
+                             "  <contour kind=\"visual\" object=\"!Floor\">\n"
+                             "    <visible stroke=\"#111111\" width=\"1.5\"/>\n"
+                             "  </contour>\n"
+                             "  <contour kind=\"visual\" over=\"objects\"><visible width=\"3\"/></contour>\n"
+                             "  <contour kind=\"shadow\"/>\n"
+                             "</style>\n";
+    snaxels::ObjectLines red;
+    red.colour = "#cc2200";
+    red.width = 2.5;
+    const auto restyled = snaxels::with_object_lines(text, "Cube", red);
+    ASSERT_TRUE(restyled);
+    const snaxels::Style style = snaxels::parse_style(*restyled, "test", nullptr);
+    ASSERT_EQ(style.contours.size(), 4u);
+    // The line set of all objects now leaves Cube out, as it left the floor.
+    EXPECT_EQ(style.contours[0].spec.parts.objects, (std::vector<std::string>{"!Floor", "!Cube"}));
+    EXPECT_TRUE(style.contours[1].spec.parts.over_objects); // a decoration over others: untouched
+    EXPECT_TRUE(style.contours[1].spec.parts.objects.empty());
+    EXPECT_EQ(style.contours[2].spec.kind, snaxels::ContourKind::Shadow);
+    // Cube's own, last: its colour and width, no hidden lines.
+    const snaxels::ContourStyle& own = style.contours[3];
+    EXPECT_EQ(own.spec.kind, snaxels::ContourKind::Visual);
+    EXPECT_EQ(own.spec.parts.objects, (std::vector<std::string>{"Cube"}));
+    EXPECT_EQ(own.visible.colour, "#cc2200");
+    EXPECT_DOUBLE_EQ(own.visible.width, 2.5);
+    EXPECT_FALSE(own.hidden.draw);
+    // Again with hidden lines: replaced, not added; no second exclusion.
+    red.hidden = true;
+    const auto again = snaxels::with_object_lines(*restyled, "Cube", red);
+    ASSERT_TRUE(again);
+    const snaxels::Style style2 = snaxels::parse_style(*again, "test", nullptr);
+    ASSERT_EQ(style2.contours.size(), 4u);
+    EXPECT_EQ(style2.contours[0].spec.parts.objects, (std::vector<std::string>{"!Floor", "!Cube"}));
+    EXPECT_TRUE(style2.contours[3].hidden.draw);
+    EXPECT_EQ(style2.contours[3].hidden.colour, "#cc2200");
+    // Taken back: the text as it was, byte for byte.
+    EXPECT_EQ(snaxels::with_object_lines(*again, "Cube", std::nullopt), text);
+    // A line set with no object attribute takes one; taken back, it goes.
+    const std::string plain = "<style>\n  <contour kind=\"visual\"/>\n</style>\n";
+    const auto cut = snaxels::with_object_lines(plain, "Cube", red);
+    ASSERT_TRUE(cut);
+    EXPECT_NE(cut->find("<contour kind=\"visual\" object=\"!Cube\"/>"), std::string::npos) << *cut;
+    EXPECT_EQ(snaxels::with_object_lines(*cut, "Cube", std::nullopt), plain);
+    EXPECT_FALSE(snaxels::with_object_lines("not a style", "Cube", red));
+}
