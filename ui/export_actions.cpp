@@ -1,6 +1,13 @@
 #include "ui/export_actions.h"
 
 #include <QAction>
+#include <QComboBox>
+#include <QDialog>
+#include <QDialogButtonBox>
+#include <QFormLayout>
+#include <QSpinBox>
+
+#include <cmath>
 #include <QDesktopServices>
 #include <QDir>
 #include <QFileDialog>
@@ -120,7 +127,40 @@ void ExportActions::askAndExport(const QString& title, const QString& extension,
     const QString path = ask_save_path(window_, document_->meshSpec(), title, kExportFolder, extension, filter);
     if (path.isEmpty()) return;
     if (frame) exportFrame(path);
-    else exportAnimation(path);
+    else if (!is_video(output_kind_for(path.toStdString()).value_or(OutputKind::Svg)) || askVideoSettings(path))
+        exportAnimation(path);
+}
+
+bool ExportActions::askVideoSettings(const QString& path) {
+    QDialog dialog(window_);
+    dialog.setObjectName("videoSettings");
+    dialog.setWindowTitle(tr("Video Settings"));
+    auto* form = new QFormLayout(&dialog);
+    const int canvas = document_->style().width, tall = document_->style().height;
+    auto* width = new QComboBox(&dialog);
+    width->setObjectName("videoWidth");
+    width->addItem(tr("The canvas: %1 x %2").arg(canvas).arg(tall), 0);
+    for (const int w : {640, 1280, 1920, 3840})
+        width->addItem(tr("%1 x %2").arg(w).arg(std::max(1, int(std::lround(double(tall) * w / std::max(canvas, 1))))), w);
+    width->setCurrentIndex(std::max(0, width->findData(QSettings().value(kVideoWidth, 0).toInt())));
+    form->addRow(tr("Size:"), width);
+    const bool gif = QFileInfo(path).suffix().compare("gif", Qt::CaseInsensitive) == 0;
+    auto* quality = new QSpinBox(&dialog);
+    quality->setObjectName("videoCrf");
+    quality->setRange(0, 51);
+    quality->setValue(QSettings().value(kVideoCrf, kDefaultMp4Crf).toInt());
+    quality->setToolTip(tr("FFmpeg's constant rate factor: lower is better and bigger (18 is visually lossless "
+                           "for line art; 28 is half the size or less)"));
+    quality->setEnabled(!gif); // a GIF's palette has no such setting
+    form->addRow(tr("Quality (CRF):"), quality);
+    auto* buttons = new QDialogButtonBox(QDialogButtonBox::Ok | QDialogButtonBox::Cancel, &dialog);
+    connect(buttons, &QDialogButtonBox::accepted, &dialog, &QDialog::accept);
+    connect(buttons, &QDialogButtonBox::rejected, &dialog, &QDialog::reject);
+    form->addRow(buttons);
+    if (dialog.exec() != QDialog::Accepted) return false;
+    QSettings().setValue(kVideoWidth, width->currentData().toInt());
+    if (!gif) QSettings().setValue(kVideoCrf, quality->value());
+    return true;
 }
 
 void ExportActions::reportExported(const QString& path) {
@@ -176,6 +216,10 @@ void ExportActions::exportAnimation(const QString& path) {
         } catch (const std::exception& e) {
             return refuse(QString::fromStdString(e.what())); // said before any work, as an export's failure is
         }
+    }
+    if (!job.video.empty()) { // the video settings last chosen
+        job.video_width = QSettings().value(kVideoWidth, 0).toInt();
+        job.video_crf = QSettings().value(kVideoCrf, -1).toInt();
     }
     export_->start(window_, path, std::move(job), document_->mesh(), document_->meshSpec().toStdString());
 }

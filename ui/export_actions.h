@@ -22,6 +22,10 @@ class DocumentController;
 /// Where the dialogs for each kind of file were last (QSettings keys).
 inline constexpr const char* kExportFolder = "paths/export";
 inline constexpr const char* kStyleFolder = "paths/style";
+/// A video export's frame width (0: the canvas's) and quality (FFmpeg's CRF;
+/// -1: the format's default), as last chosen (QSettings keys).
+inline constexpr const char* kVideoWidth = "video/width";
+inline constexpr const char* kVideoCrf = "video/crf";
 
 /// The first of @p folders that exists and can be written to, else the
 /// user's documents folder, else home: where a save dialog may start (a
@@ -76,6 +80,9 @@ class ExportActions : public QObject {
     void reportExported(const QString& path);
     /// Says why nothing was exported, in the status bar and a box.
     void refuse(const QString& message);
+    /// Asks a video's width and quality (kVideoWidth, kVideoCrf, as last
+    /// chosen); false when cancelled.
+    bool askVideoSettings(const QString& path);
 
     Document* document_;
     DocumentController* controller_;

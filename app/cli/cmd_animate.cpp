@@ -128,6 +128,10 @@ int run_animate(const std::vector<std::string>& argv) {
                   {"format", "svg|lottie", "the document's format; must agree with OUT's extension"},
                   {"frames-dir", "DIR", "also write every frame as a static SVG into DIR (a flipbook, for comparison)"},
                   {"png-dir", "DIR", "also render every frame as PNG into DIR (frame_00000.png, ...)"},
+                  {"video-width", "PX", "a video's (and --png-dir's) frames PX pixels across, the height by the canvas's "
+                                        "aspect (default: the canvas's size)"},
+                  {"crf", "N", "a video's quality: FFmpeg's constant rate factor, lower is better and bigger "
+                               "(default 18 for .mp4, 30 for .webm; 0-51 and 0-63)"},
                   {"events", "OUT.json", "write the visual events (creation, annihilation, split, merge)"},
                   {"stats", "OUT.json", "write the animated SVG's paths: frames shown, vertices, keyframes"}});
     Args args("animate",
@@ -192,6 +196,8 @@ int run_animate(const std::vector<std::string>& argv) {
     job.canvas_follows_camera = !scene.size_given;
     job.frames_dir = frames_dir;
     job.png_dir = png_dir;
+    if (const auto v = args.value("video-width")) job.video_width = parse_int("video-width", *v, 16, kMaxRenderedSide);
+    if (const auto v = args.value("crf")) job.video_crf = parse_int("crf", *v, 0, 63);
     set_output(job, *output); // written as the frames are made, atomically
     const AnimationOutput result = run_animation_with_progress(loaded, mesh_path, job);
     if (!events_out.empty()) write_file_atomically(events_out, events_json(result, job).dump(1) + "\n");

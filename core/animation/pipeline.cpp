@@ -300,7 +300,8 @@ class FrameStages {
     /// 4. Any frames at once: the rendered frame.
     void render(InFlight& w) const {
         if (!renders()) return;
-        w.picture = render_svg(w.still, job_.scene.style.width, job_.scene.style.height, !job_.video.empty());
+        const auto [width, height] = rendered_size();
+        w.picture = render_svg(w.still, width, height, !job_.video.empty());
         std::string().swap(w.still);
     }
 
@@ -317,14 +318,20 @@ class FrameStages {
     /// path or a missing ffmpeg fails at once).
     void start_video() {
         if (!job_.video.empty())
-            video_ = std::make_unique<VideoEncoder>(job_.video, job_.video_kind, job_.scene.style.width,
-                                                    job_.scene.style.height, job_.animation.fps);
+            video_ = std::make_unique<VideoEncoder>(job_.video, job_.video_kind, rendered_size().first,
+                                                    rendered_size().second, job_.animation.fps, job_.video_crf);
     }
     void finish_video() {
         if (video_) video_->finish();
     }
 
   private:
+    /// The rendered frames' size: the canvas's, or video_width across at its aspect.
+    std::pair<int, int> rendered_size() const {
+        const int w = job_.scene.style.width, h = job_.scene.style.height;
+        if (job_.video_width <= 0 || w <= 0) return {w, h};
+        return {job_.video_width, std::max(1, int(std::lround(double(h) * job_.video_width / w)))};
+    }
     static std::string frame_name(int k, const char* extension) {
         char name[64];
         std::snprintf(name, sizeof name, "frame_%05d.%s", k, extension);

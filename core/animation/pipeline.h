@@ -56,6 +56,12 @@ struct AnimationJob {
     /// (core/export/video.h), atomically.
     std::string video;
     OutputKind video_kind = OutputKind::Mp4;
+    /// The video's (and --png-dir's) frames this many pixels across, the
+    /// height by the canvas's aspect; 0: the canvas's size.
+    int video_width = 0;
+    /// The video's quality (VideoEncoder: FFmpeg's CRF, lower is better and
+    /// bigger); -1: the format's default.
+    int video_crf = -1;
     /// When set, every frame is also rendered there as PNG (frame_00000.png).
     std::string png_dir;
     /// Whether the animated document is made at all (not for a video alone).

@@ -71,7 +71,7 @@ struct VideoEncoder::Impl {
     int width, height;
     bool finished = false;
 
-    Impl(const std::string& p, OutputKind kind, int w, int h, double fps) : path(p), file(p), width(w), height(h) {
+    Impl(const std::string& p, OutputKind kind, int w, int h, double fps, int crf) : path(p), file(p), width(w), height(h) {
         const std::string program = require_ffmpeg();
         std::vector<std::string> args{program, "-hide_banner", "-loglevel", "error", "-y",
                                       "-f", "rawvideo", "-pix_fmt", "rgba",
@@ -80,10 +80,10 @@ struct VideoEncoder::Impl {
         switch (kind) {
         case OutputKind::Mp4:
             args.insert(args.end(), {"-vf", "pad=ceil(iw/2)*2:ceil(ih/2)*2:color=white", "-c:v", "libx264", "-pix_fmt",
-                                     "yuv420p", "-crf", "18", "-preset", "medium", "-movflags", "+faststart", "-f", "mp4"});
+                                     "yuv420p", "-crf", std::to_string(crf >= 0 ? crf : kDefaultMp4Crf), "-preset", "medium", "-movflags", "+faststart", "-f", "mp4"});
             break;
         case OutputKind::Webm:
-            args.insert(args.end(), {"-c:v", "libvpx-vp9", "-pix_fmt", "yuv420p", "-crf", "30", "-b:v", "0",
+            args.insert(args.end(), {"-c:v", "libvpx-vp9", "-pix_fmt", "yuv420p", "-crf", std::to_string(crf >= 0 ? crf : kDefaultWebmCrf), "-b:v", "0",
                                      "-deadline", "good", "-cpu-used", "4", "-row-mt", "1", "-f", "webm"});
             break;
         case OutputKind::Gif:
@@ -180,8 +180,8 @@ struct VideoEncoder::Impl {
     }
 };
 
-VideoEncoder::VideoEncoder(const std::string& path, OutputKind kind, int width, int height, double fps)
-    : impl_(std::make_unique<Impl>(path, kind, width, height, fps)) {}
+VideoEncoder::VideoEncoder(const std::string& path, OutputKind kind, int width, int height, double fps, int crf)
+    : impl_(std::make_unique<Impl>(path, kind, width, height, fps, crf)) {}
 
 VideoEncoder::~VideoEncoder() = default;
 

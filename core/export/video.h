@@ -22,11 +22,18 @@ namespace snaxels {
 /// (checked before an export starts).
 std::string require_ffmpeg();
 
+/// The quality an MP4 or WebM is encoded at: FFmpeg's constant rate factor,
+/// lower is better and bigger (0 to 51 for MP4, 0 to 63 for WebM); these
+/// are the defaults, visually lossless for line art.
+inline constexpr int kDefaultMp4Crf = 18;
+inline constexpr int kDefaultWebmCrf = 30;
+
 class VideoEncoder {
   public:
     /// Starts ffmpeg writing @p kind (Mp4, Webm or Gif) of @p width x
-    /// @p height frames at @p fps to a temporary beside @p path.
-    VideoEncoder(const std::string& path, OutputKind kind, int width, int height, double fps);
+    /// @p height frames at @p fps to a temporary beside @p path, at quality
+    /// @p crf (MP4 and WebM; -1: the format's default; a GIF has none).
+    VideoEncoder(const std::string& path, OutputKind kind, int width, int height, double fps, int crf = -1);
     /// Unless finished: stops ffmpeg and removes its file.
     ~VideoEncoder();
     VideoEncoder(const VideoEncoder&) = delete;

@@ -63,6 +63,7 @@
 #include "snaxels/project/project.h"
 #include "ui/document.h"
 #include "ui/mainwindow.h"
+#include "ui/export_actions.h"
 #include "ui/mesh_loader.h"
 #include "ui/meshview.h"
 #include "ui/objects_panel.h"
@@ -2599,6 +2600,49 @@ class TestMainWindow : public QObject {
         window.undoStack()->undo();
         window.undoStack()->undo();
         QVERIFY(!window.styleEditor()->text().contains("object=\"" + name + "\"><visible"));
+    }
+
+
+    // Export > Video asks the video's size and quality, remembers them, and
+    // the file written has that size (ffprobe reads it).
+    void videoExportTakesItsSettings() {
+        if (QStandardPaths::findExecutable("ffprobe").isEmpty()) QSKIP("ffprobe is not installed");
+        QTemporaryDir dir;
+        QSettings().setValue(snaxels::ui::kExportFolder, dir.path());
+        QSettings().remove(snaxels::ui::kVideoWidth);
+        QSettings().remove(snaxels::ui::kVideoCrf);
+        MainWindow window;
+        QVERIFY(showWithMesh(window, QString(SNAXELS_TEST_ASSETS) + "/spot.obj"));
+        window.timeline()->setFrameCount(4);
+        QVERIFY(contoursSettle(window));
+        QSignalSpy finished(&window, &MainWindow::exportFinished);
+        bool asked = false;
+        QTimer poll; // the settings dialog, once the file dialog is answered
+        poll.setInterval(50);
+        QObject::connect(&poll, &QTimer::timeout, [&] {
+            auto* dialog = qobject_cast<QDialog*>(QApplication::activeModalWidget());
+            if (!dialog || dialog->objectName() != "videoSettings") return;
+            poll.stop();
+            asked = true;
+            auto* width = dialog->findChild<QComboBox*>("videoWidth");
+            width->setCurrentIndex(width->findData(640));
+            dialog->findChild<QSpinBox*>("videoCrf")->setValue(30);
+            dialog->accept();
+        });
+        poll.start();
+        const QString suggested = answerFileDialog([&] { window.findChild<QAction*>("exportVideo")->trigger(); }, true);
+        QVERIFY(asked);
+        QVERIFY(finished.wait(120000));
+        QCOMPARE(QFileInfo(suggested).fileName(), QString("spot.mp4"));
+        QProcess probe;
+        probe.start("ffprobe", {"-v", "error", "-select_streams", "v:0", "-show_entries", "stream=width,height", "-of",
+                                "csv=p=0", suggested});
+        QVERIFY(probe.waitForFinished(30000));
+        QCOMPARE(QString::fromUtf8(probe.readAllStandardOutput()).trimmed(), QString("640,640"));
+        QCOMPARE(QSettings().value(snaxels::ui::kVideoWidth).toInt(), 640); // remembered
+        QCOMPARE(QSettings().value(snaxels::ui::kVideoCrf).toInt(), 30);
+        QSettings().remove(snaxels::ui::kVideoWidth);
+        QSettings().remove(snaxels::ui::kVideoCrf);
     }
 
 };
