@@ -76,9 +76,14 @@ int parse_int(const std::string& option, const std::string& text, int lo, int hi
 }
 
 std::vector<OptionSpec> scene_option_specs() {
+    std::string views;
+    for (const NamedView& v : named_views()) views += (views.empty() ? "" : ", ") + std::string(v.name);
     return {{"view-dir", "X,Y,Z",
              "orthographic view: the direction the camera looks (default: at the model's front, +Z for +Y up, from a "
              "little above and to the side)"},
+            {"view", "NAME",
+             "a named orthographic view in the model's frame (its up and front): " + views +
+                 " (iso, dimetric and trimetric are the axonometric views of technical illustration: docs/cli.md)"},
             {"eye", "X,Y,Z", "perspective view from this point"},
             {"target", "X,Y,Z", "perspective: the point looked at (default: the mesh's centre)"},
             {"fov", "DEG", "perspective: vertical field of view in degrees (default 35)"},
@@ -107,14 +112,30 @@ std::vector<OptionSpec> scene_option_specs() {
             {"check", "", "check the snaxel invariants after every iteration (slower)"}};
 }
 
+namespace {
+
+/// The direction of the named view @p name for a model standing on @p up.
+glm::dvec3 named_view_dir(const std::string& name, const glm::dvec3& up) {
+    std::string names;
+    for (const NamedView& v : named_views()) {
+        if (name == v.name) return view_dir_at(up, v.yaw, v.pitch);
+        names += (names.empty() ? "" : ", ") + std::string(v.name);
+    }
+    throw UsageError("--view " + name + ": no such view (" + names + ")");
+}
+
+} // namespace
+
 SceneOptions parse_scene_options(const Args& args) {
     SceneOptions o;
     if (args.flag("view-dir") && args.flag("eye"))
         throw UsageError("--view-dir (orthographic) and --eye (perspective) exclude each other");
+    if (args.flag("view") && (args.flag("view-dir") || args.flag("eye")))
+        throw UsageError("--view (a named orthographic view) excludes --view-dir and --eye");
     if (!args.flag("eye") && (args.flag("target") || args.flag("fov")))
         throw UsageError("--target and --fov need --eye (a perspective view)");
     if (args.flag("camera"))
-        for (const char* view : {"view-dir", "eye", "target", "fov", "up"})
+        for (const char* view : {"view-dir", "view", "eye", "target", "fov", "up"})
             if (args.flag(view)) throw UsageError(std::string("--camera and --") + view + " exclude each other (the file's camera sets the view)");
     if (args.flag("light-dir") && args.flag("light-pos"))
         throw UsageError("--light-dir and --light-pos exclude each other");
@@ -168,6 +189,7 @@ SceneOptions parse_scene_options(const Args& args) {
     }
     if (const auto up = args.value("up")) o.camera.up = parse_vec3("up", *up, true);
     if (const auto v = args.value("view-dir")) o.camera.view_dir = glm::normalize(parse_vec3("view-dir", *v, true));
+    else if (const auto name = args.value("view")) o.camera.view_dir = named_view_dir(*name, o.camera.up);
     else o.camera.view_dir = default_view_dir(o.camera.up);
     if (const auto eye = args.value("eye")) {
         o.camera.projection = Camera::Projection::Perspective;

@@ -13,13 +13,29 @@ glm::dvec3 model_front(const glm::dvec3& up_in) {
     return glm::normalize(f - glm::dot(f, up) * up);
 }
 
-glm::dvec3 default_view_dir(const glm::dvec3& up_in) {
+glm::dvec3 default_view_dir(const glm::dvec3& up_in) { return view_dir_at(up_in, kDefaultYaw, kDefaultPitch); }
+
+glm::dvec3 view_dir_at(const glm::dvec3& up_in, double yaw, double pitch) {
     const glm::dvec3 up = glm::normalize(up_in);
     const glm::dvec3 front = model_front(up), right = glm::cross(up, front);
-    // As the orbit places its eye at yaw kDefaultYaw: toward +right for a negative yaw.
-    const glm::dvec3 level = std::cos(kDefaultYaw) * front - std::sin(kDefaultYaw) * right;
-    const glm::dvec3 to_eye = std::cos(kDefaultPitch) * level + std::sin(kDefaultPitch) * up;
+    // As the orbit places its eye at a yaw: toward +right for a negative yaw.
+    const glm::dvec3 level = std::cos(yaw) * front - std::sin(yaw) * right;
+    const glm::dvec3 to_eye = std::cos(pitch) * level + std::sin(pitch) * up;
     return -glm::normalize(to_eye);
+}
+
+const std::vector<NamedView>& named_views() {
+    static const std::vector<NamedView> views{
+        {"front", 0.0, 0.0, "the model's front, level"},
+        {"back", M_PI, 0.0, "its back, level"},
+        {"left", M_PI_2, 0.0, "its left side, level"},
+        {"right", -M_PI_2, 0.0, "its right side, level"},
+        {"top", 0.0, kMaxPitch, "from above (short of straight down by the orbit's pitch limit)"},
+        {"iso", -M_PI_4, std::atan(1.0 / std::sqrt(2.0)), "isometric: 45 degrees around, 35.264 above"},
+        {"dimetric", -M_PI_4, M_PI / 6.0, "the 2:1 dimetric: 45 degrees around, 30 above"},
+        {"trimetric", -M_PI / 6.0, M_PI / 9.0, "trimetric: 30 degrees around, 20 above"},
+    };
+    return views;
 }
 
 namespace {

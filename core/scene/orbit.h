@@ -10,6 +10,7 @@
 /// front (model_front()). Yaw 0, pitch 0 looks at the front.
 
 #include <cmath>
+#include <vector>
 
 #include <glm/glm.hpp>
 
@@ -34,6 +35,29 @@ glm::dvec3 model_front(const glm::dvec3& up);
 /// of a model with up axis @p up from a little above and to the side (as
 /// kDefaultPitch and kDefaultYaw say): the command line's default view.
 glm::dvec3 default_view_dir(const glm::dvec3& up);
+
+/// The orthographic view direction (eye to scene) of an eye at @p yaw
+/// radians about the model's up axis @p up (0 at its front; negative toward
+/// its right, as the orbit's yaw) and @p pitch radians above its horizon.
+glm::dvec3 view_dir_at(const glm::dvec3& up, double yaw, double pitch);
+
+/// A named orthographic view of the command line's --view: its name, its
+/// yaw and pitch (view_dir_at), and what it is.
+struct NamedView {
+    const char* name;
+    double yaw, pitch;
+    const char* summary;
+};
+/// front, back, left, right and top (as View > Front and the others), and
+/// the axonometric views of technical illustration, each from the model's
+/// front right and above:
+/// - isometric: 45 degrees around and atan(1/sqrt 2) = 35.264 above: the
+///   three axes foreshortened alike, receding edges at 30 degrees;
+/// - dimetric: 45 around and 30 above: the 2:1 dimetric, receding edges at
+///   atan(1/2) = 26.565 degrees (a slope of 1 in 2), two axes alike;
+/// - trimetric: 30 around and 20 above: the three axes foreshortened
+///   differently.
+const std::vector<NamedView>& named_views();
 
 struct OrbitView {
     glm::dvec3 centre{0.0}; ///< the mesh's bounding-box centre

@@ -7,6 +7,8 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <string>
+#include <vector>
 
 #include <glm/glm.hpp>
 
@@ -60,3 +62,61 @@ TEST(OrbitCamera, LookingStraightAlongUpStillHasABasis) {
 }
 
 } // namespace
+
+// The named orthographic views, measured as a drawing shows them: the
+// model's three axes projected with the camera's screen basis. Isometric
+// draws them equally long with the receding ones at 30 degrees; the 2:1
+// dimetric draws its receding ones at atan(1/2) and two of them alike;
+// trimetric draws all three differently. Expected values are the
+// textbook ones, not computed by the code under test.
+TEST(OrbitCamera, NamedViewsAreTheAxonometriesTheySayTheyAre) {
+    auto view = [](const char* name, const glm::dvec3& up) {
+        for (const NamedView& v : named_views())
+            if (std::string(name) == v.name) return view_dir_at(up, v.yaw, v.pitch);
+        ADD_FAILURE() << "no view " << name;
+        return glm::dvec3(0.0);
+    };
+    const glm::dvec3 y(0.0, 1.0, 0.0), z(0.0, 0.0, 1.0);
+    // Isometric from the front right above: along the cube's diagonal.
+    const glm::dvec3 iso = view("iso", y);
+    EXPECT_NEAR(glm::length(iso - glm::normalize(glm::dvec3(-1.0, -1.0, -1.0))), 0.0, 1e-12);
+    // A Z-up model (front -Y, right +X): the same picture of it.
+    EXPECT_NEAR(glm::length(view("iso", z) - glm::normalize(glm::dvec3(-1.0, 1.0, -1.0))), 0.0, 1e-12);
+    auto projected = [](const glm::dvec3& dir, const glm::dvec3& up, const glm::dvec3& axis) {
+        Camera c;
+        c.view_dir = dir;
+        c.up = up;
+        glm::dvec3 right, screen_up;
+        c.screen_basis(right, screen_up);
+        return glm::dvec2(glm::dot(axis, right), glm::dot(axis, screen_up));
+    };
+    const glm::dvec3 axes[3] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
+    auto lengths = [&](const glm::dvec3& dir) {
+        std::vector<double> l;
+        for (const glm::dvec3& a : axes) l.push_back(glm::length(projected(dir, y, a)));
+        return l;
+    };
+    auto slope_deg = [&](const glm::dvec3& dir, const glm::dvec3& axis) {
+        const glm::dvec2 p = projected(dir, y, axis);
+        return glm::degrees(std::atan(std::abs(p.y) / std::abs(p.x)));
+    };
+    const auto li = lengths(iso);
+    EXPECT_NEAR(li[0], li[1], 1e-12);
+    EXPECT_NEAR(li[1], li[2], 1e-12);
+    EXPECT_NEAR(li[0], std::sqrt(2.0 / 3.0), 1e-12); // isometric's foreshortening
+    EXPECT_NEAR(slope_deg(iso, axes[0]), 30.0, 1e-9);
+    EXPECT_NEAR(slope_deg(iso, axes[2]), 30.0, 1e-9);
+    const glm::dvec3 di = view("dimetric", y);
+    EXPECT_NEAR(slope_deg(di, axes[0]), glm::degrees(std::atan(0.5)), 1e-9); // 2:1
+    EXPECT_NEAR(slope_deg(di, axes[2]), glm::degrees(std::atan(0.5)), 1e-9);
+    const auto ld = lengths(di);
+    EXPECT_NEAR(ld[0], ld[2], 1e-12);
+    EXPECT_GT(std::abs(ld[0] - ld[1]), 0.05);
+    const auto lt = lengths(view("trimetric", y));
+    EXPECT_GT(std::abs(lt[0] - lt[1]), 0.05);
+    EXPECT_GT(std::abs(lt[1] - lt[2]), 0.05);
+    EXPECT_GT(std::abs(lt[0] - lt[2]), 0.05);
+    // Front looks straight at the front; the default view is still the three-quarter one.
+    EXPECT_NEAR(glm::length(view("front", y) - glm::dvec3(0.0, 0.0, -1.0)), 0.0, 1e-12);
+    EXPECT_NEAR(glm::length(default_view_dir(y) - view_dir_at(y, kDefaultYaw, kDefaultPitch)), 0.0, 0.0);
+}
