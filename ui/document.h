@@ -80,6 +80,8 @@ class Document : public QObject {
     int frame() const { return frame_; }
     /// The source's frame shown now: the animation's in point plus frame().
     int sourceFrame() const { return animation_.start + frame_; }
+    /// How far a turntable or an orbiting light has turned at the frame shown (degrees).
+    double frameDegrees() const { return animation_.degrees_per_frame * sourceFrame(); }
     /// The loaded file's clips, cameras and framing sphere.
     const SceneFacts& scene() const { return facts_; }
     /// The view that frames the mesh: its front from a little above and to

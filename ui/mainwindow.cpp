@@ -282,7 +282,7 @@ void MainWindow::showFrame() {
             centred.pan = glm::dvec3(0.0);
             document_->resetView(centred); // the frame's view, not an edit
         }
-        view_->setTurntable(spec.degrees_per_frame * document_->sourceFrame());
+        view_->setTurntable(document_->frameDegrees());
     } else {
         view_->setTurntable(0.0);
     }
@@ -326,7 +326,7 @@ void MainWindow::onLightDragged(glm::dvec3 axis_a, double angle_a, glm::dvec3 ax
     const AnimationSpec& spec = document_->animation();
     const bool turns = (spec.kind == AnimationSpec::Kind::Turntable && !light.point) ||
                        spec.kind == AnimationSpec::Kind::LightOrbit;
-    const double frame_angle = turns ? glm::radians(spec.degrees_per_frame * document_->sourceFrame()) : 0.0;
+    const double frame_angle = turns ? glm::radians(document_->frameDegrees()) : 0.0;
     const glm::dvec3 y = glm::normalize(document_->view().up); // the turntable's axis
     auto turn = [&](glm::dvec3 v) {
         v = glm::rotate(v, frame_angle, y);
@@ -363,7 +363,7 @@ Light MainWindow::frameLight() const {
 Camera MainWindow::frameViewCamera() const {
     OrbitView v = document_->view();
     const AnimationSpec& spec = document_->animation();
-    if (spec.kind == AnimationSpec::Kind::Turntable) v.turntable = glm::radians(spec.degrees_per_frame * document_->sourceFrame());
+    if (spec.kind == AnimationSpec::Kind::Turntable) v.turntable = glm::radians(document_->frameDegrees());
     return orbit_camera(v);
 }
 
