@@ -50,6 +50,7 @@
 #include "snaxels/planarmap/region_tracker.h"
 #include "snaxels/planarmap/snaxel_map.h"
 
+#include "snaxels/style/page.h"
 #include "snaxels/style/style.h"
 #include "snaxels/style/style_edit.h"
 

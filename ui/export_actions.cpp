@@ -23,10 +23,12 @@
 
 #include "snaxels/export/raster.h"
 #include "snaxels/export/video.h"
+#include "snaxels/style/style_edit.h"
 #include "snaxels/util/atomic_file.h"
 #include "ui/animation_export.h"
 #include "ui/document.h"
 #include "ui/document_controller.h"
+#include "ui/page_setup.h"
 
 namespace snaxels::ui {
 
@@ -121,6 +123,29 @@ void ExportActions::addMenu() {
         if (!e.shortcut.isEmpty()) a->setShortcut(QKeySequence(e.shortcut));
         if (!e.tip.isEmpty()) a->setToolTip(e.tip);
     }
+    menu->addSeparator();
+    QAction* page = menu->addAction(tr("Page &Setup…"), this, &ExportActions::askPageSetup);
+    page->setObjectName("pageSetup");
+    page->setToolTip(tr("The paper the drawing is made for: its size, orientation, margin, and fit, fill or scale"));
+}
+
+void ExportActions::askPageSetup() {
+    controller_->flush();
+    PageSetupDialog dialog(document_->style(), window_);
+    if (dialog.exec() != QDialog::Accepted) return;
+    const auto text = with_canvas(document_->styleText().toStdString(), dialog.attributes());
+    if (!text) {
+        QMessageBox::warning(window_, tr("Page Setup"),
+                             tr("The style's text does not parse: fix it in the style editor first, then set the page."));
+        return;
+    }
+    try { // a margin too wide for the paper, say: said, and nothing changes
+        parse_style(*text, "page", nullptr);
+    } catch (const std::exception& e) {
+        QMessageBox::warning(window_, tr("Page Setup"), tr("This page cannot be drawn on: %1").arg(QString::fromStdString(e.what())));
+        return;
+    }
+    document_->setStyleText(QString::fromStdString(*text), tr("Page Setup"));
 }
 
 void ExportActions::askAndExport(const QString& title, const QString& extension, const QString& filter, bool frame) {

@@ -80,6 +80,9 @@ class ExportActions : public QObject {
     void reportExported(const QString& path);
     /// Says why nothing was exported, in the status bar and a box.
     void refuse(const QString& message);
+    /// Export > Page Setup: the style's paper, orientation, margin, fit or
+    /// scale, asked and written into its <canvas> as one undo step.
+    void askPageSetup();
     /// Asks a video's width and quality (kVideoWidth, kVideoCrf, as last
     /// chosen); false when cancelled.
     bool askVideoSettings(const QString& path);

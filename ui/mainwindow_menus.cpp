@@ -114,23 +114,7 @@ void MainWindow::createViewMenu() {
     reset->setShortcut(Qt::Key_Home);
     reset->setObjectName("resetCamera");
     reset->setToolTip(tr("Look at the model's front from a little above and to the side"));
-    // Named views in the model's frame (its up axis and front), keeping the
-    // distance and pan: one undo step each.
-    const std::pair<QString, ViewPreset> presets[] = {{tr("&Front"), ViewPreset::Front},
-                                                      {tr("&Back"), ViewPreset::Back},
-                                                      {tr("&Left"), ViewPreset::Left},
-                                                      {tr("Ri&ght"), ViewPreset::Right},
-                                                      {tr("&Top"), ViewPreset::Top}};
-    const char* presetNames[] = {"viewFront", "viewBack", "viewLeft", "viewRight", "viewTop"};
-    for (int i = 0; i < 5; ++i) {
-        const ViewPreset preset = presets[i].second;
-        const QString step = tr("%1 View").arg(QString(presets[i].first).remove('&'));
-        QAction* a = viewMenu->addAction(presets[i].first, this, [this, preset, step] {
-            if (scene_) document_->setView(preset_view(document_->view(), preset), step);
-        });
-        a->setObjectName(presetNames[i]);
-        a->setShortcut(QKeySequence(Qt::CTRL | Qt::Key(Qt::Key_1 + i)));
-    }
+    add_view_presets(viewMenu, document_);
     QMenu* upMenu = viewMenu->addMenu(tr("&Up Axis"));
     upMenu->setObjectName("upAxisMenu");
     upMenu->setToolTip(tr("The model's up axis: FBX and Collada files are turned upright on import; "

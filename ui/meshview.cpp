@@ -420,7 +420,13 @@ void MeshView::resetCamera() {
     const glm::dvec3 centre = posed ? 0.5 * (lo + hi) : centre_;
     const double radius = posed ? std::max(0.5 * glm::length(hi - lo), 1e-9) : radius_;
     const double turntable = orbit_.turntable;
+    // Home keeps the projection and the lens, as Blender's does.
+    const bool orthographic = orbit_.orthographic;
+    const double fov = orbit_.fov_deg;
     orbit_ = framing_view(centre_, radius, orbit_.up);
+    orbit_.orthographic = orthographic;
+    orbit_.fov_deg = fov;
+    orbit_.distance = framing_distance(radius, fov);
     orbit_.turntable = 0.0;
     glm::dvec3 right, up;
     orbit_camera(orbit_).screen_basis(right, up);
@@ -487,6 +493,12 @@ glm::dmat4 MeshView::projectionMatrix() const {
             return glm::ortho(-h * aspect, h * aspect, -h, h, depth - radius_ * 1.5, far);
         }
         return glm::perspective(glm::radians(c.fov_deg), aspect, std::max(depth - radius_ * 1.5, far * 1e-4), far);
+    }
+    if (orbit_.orthographic) {
+        // The height the perspective shows at the orbited point, everywhere;
+        // depth from before the mesh to beyond it, wherever the eye stands.
+        const double h = 0.5 * orbit_view_height(orbit_);
+        return glm::ortho(-h * aspect, h * aspect, -h, h, orbit_.distance - radius_ * 1.5, orbit_.distance + radius_ * 1.5);
     }
     const double near = std::max(orbit_.distance - radius_ * 1.5, orbit_.distance * 1e-3);
     return glm::perspective(glm::radians(orbit_.fov_deg), aspect, near, orbit_.distance + radius_ * 1.5);

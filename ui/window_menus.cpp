@@ -5,6 +5,7 @@
 #include <QFileDialog>
 #include <QFileInfo>
 #include <QInputDialog>
+#include <QActionGroup>
 #include <QMainWindow>
 #include <QMenuBar>
 #include <QMessageBox>
@@ -23,6 +24,27 @@
 
 namespace snaxels::ui {
 namespace {
+
+/// View > Field of View: the orbit's vertical field of view, asked for in
+/// degrees with the 35 mm film focal length it equals (a 24 mm high frame).
+void ask_field_of_view(QWidget* parent, Document* document) {
+    OrbitView view = document->view();
+    const double focal = 12.0 / std::tan(0.5 * view.fov_deg * M_PI / 180.0);
+    bool ok = false;
+    const double fov = QInputDialog::getDouble(
+        parent, QObject::tr("Field of View"),
+        QObject::tr("Vertical field of view in degrees (1 to 120); now %1° (a %2 mm lens on 35 mm film).\n"
+                    "Narrow flattens the perspective, wide deepens it; the view keeps its framing.")
+            .arg(view.fov_deg, 0, 'f', 1)
+            .arg(focal, 0, 'f', 0),
+        view.fov_deg, 1.0, 120.0, 1, &ok);
+    if (!ok || fov == view.fov_deg) return;
+    // The distance follows, so what the view frames at the orbited point stays.
+    const double before = orbit_view_height(view);
+    view.fov_deg = fov;
+    view.distance *= before / orbit_view_height(view);
+    document->setView(view, QObject::tr("Field of View"));
+}
 
 /// Style > Sharp Edges: the style's <surface sharp-angle>, asked for.
 void ask_sharp_edges(QWidget* parent, const Document* document, StyleEditor* editor) {
@@ -124,6 +146,56 @@ void add_style_menu(QMainWindow* window, const Document* document, StyleEditor* 
             QMessageBox::warning(window, QObject::tr("Save Style"), QString::fromStdString(e.what()));
         }
     });
+}
+
+void add_view_presets(QMenu* menu, Document* document) {
+    // Named views in the model's frame (its up axis and front), keeping the
+    // distance and pan: one undo step each.
+    const struct {
+        const char* name;
+        QString label;
+        const char* object;
+    } presets[] = {{"front", QObject::tr("&Front"), "viewFront"},
+                   {"back", QObject::tr("&Back"), "viewBack"},
+                   {"left", QObject::tr("&Left"), "viewLeft"},
+                   {"right", QObject::tr("Ri&ght"), "viewRight"},
+                   {"top", QObject::tr("&Top"), "viewTop"},
+                   {"iso", QObject::tr("&Isometric"), "viewIso"},
+                   {"dimetric", QObject::tr("&Dimetric (2:1)"), "viewDimetric"},
+                   {"trimetric", QObject::tr("T&rimetric"), "viewTrimetric"}};
+    int key = 0;
+    for (const auto& p : presets) {
+        const NamedView* preset = find_named_view(p.name);
+        if (preset->axonometric && key == 5) menu->addSeparator();
+        const QString step = QObject::tr("%1 View").arg(QString(p.label).remove('&'));
+        QAction* a = menu->addAction(p.label, document, [document, preset, step] {
+            if (document->mesh()) document->setView(preset_view(document->view(), *preset), step);
+        });
+        a->setObjectName(p.object);
+        a->setShortcut(QKeySequence(Qt::CTRL | Qt::Key(Qt::Key_1 + key++)));
+        if (preset->axonometric)
+            a->setToolTip(QObject::tr("An orthographic view of technical illustration: %1").arg(preset->summary));
+    }
+    menu->addSeparator();
+    QAction* ortho = menu->addAction(QObject::tr("&Orthographic"));
+    ortho->setObjectName("orthographic");
+    ortho->setCheckable(true);
+    ortho->setShortcut(QKeySequence(QObject::tr("Ctrl+Shift+O")));
+    ortho->setToolTip(QObject::tr("Parallel projection, as technical drawings use: no perspective, parallel edges "
+                                  "stay parallel (off: perspective)"));
+    QObject::connect(ortho, &QAction::triggered, document, [document](bool on) {
+        OrbitView v = document->view();
+        if (!document->mesh() || v.orthographic == on) return;
+        v.orthographic = on;
+        document->setView(v, on ? QObject::tr("Orthographic") : QObject::tr("Perspective"));
+    });
+    auto show = [ortho, document] { ortho->setChecked(document->view().orthographic); };
+    QObject::connect(document, &Document::viewChanged, ortho, show);
+    show();
+    QAction* fov = menu->addAction(QObject::tr("Field of &View…"), document,
+                                   [menu, document] { if (document->mesh()) ask_field_of_view(menu->parentWidget(), document); });
+    fov->setObjectName("fieldOfView");
+    fov->setToolTip(QObject::tr("The perspective's vertical field of view (or the lens's focal length)"));
 }
 
 void add_help_menu(QMainWindow* window) {

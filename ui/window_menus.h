@@ -5,6 +5,7 @@
 // bundled documents, the shortcuts read from the menus, About).
 
 class QMainWindow;
+class QMenu;
 
 namespace snaxels::ui {
 
@@ -13,6 +14,12 @@ class StyleEditor;
 
 /// Adds the Style menu to @p window's menu bar: its edits go through @p editor.
 void add_style_menu(QMainWindow* window, const Document* document, StyleEditor* editor);
+
+/// Adds to the View menu @p menu the named views (Front to Top, and the
+/// axonometric ones, which turn orthographic), the Orthographic toggle and
+/// the field of view: each one undo step of @p document's camera, taken
+/// only while it has a mesh.
+void add_view_presets(QMenu* menu, Document* document);
 
 /// Adds the Help menu to @p window's menu bar.
 void add_help_menu(QMainWindow* window);

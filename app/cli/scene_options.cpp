@@ -84,6 +84,9 @@ std::vector<OptionSpec> scene_option_specs() {
             {"view", "NAME",
              "a named orthographic view in the model's frame (its up and front): " + views +
                  " (iso, dimetric and trimetric are the axonometric views of technical illustration: docs/cli.md)"},
+            {"projection", "orthographic|perspective",
+             "perspective without --eye: an eye along the view's direction (--view, --view-dir or the default) "
+             "that frames the model at --fov (default: orthographic, or perspective with --eye)"},
             {"eye", "X,Y,Z", "perspective view from this point"},
             {"target", "X,Y,Z", "perspective: the point looked at (default: the mesh's centre)"},
             {"fov", "DEG", "perspective: vertical field of view in degrees (default 35)"},
@@ -98,6 +101,18 @@ std::vector<OptionSpec> scene_option_specs() {
             {"kind", "KIND", "contour to find: " + contour_kind_usages(", ") + " (default visual)", true},
             {"style", "FILE.xml", "how to draw: strokes per contour kind, canvas, light (docs/styles.md)"},
             {"size", "WxH", "image size in pixels (default: the style's canvas, 800x800)"},
+            {"paper", "NAME|WxHmm",
+             "draw on a page of paper: " + paper_names() + "; the SVG's size is the paper's and a PDF's page is it "
+             "(the canvas in pixels at 96 to the inch); excludes --size"},
+            {"orientation", "portrait|landscape", "the paper upright or on its side (default: portrait, or as WxH says)"},
+            {"margin", "LENGTH",
+             "the page's margin, which the view stays inside: pixels, or with mm, cm, in or pt (default: 10mm on paper, "
+             "else the style's)"},
+            {"fit", "fit|fill", "the view fits inside the page (default) or fills it, cropped at its edges"},
+            {"scale", "1:N",
+             "an orthographic view drawn at 1:N: a model unit --model-units long on paper divided by N (centred on "
+             "the view; excludes --fit)"},
+            {"model-units", "m|cm|mm|in|ft", "the length of the model's unit, for --scale (default m)"},
             {"no-visibility", "", "skip hidden-line classification (no qi, no dashed runs)"},
             {"planar-map", "snaxel|post",
              "the planar map the style's fills come from: snaxel (the snaxel-defined visible-surface map, default) "
@@ -116,12 +131,80 @@ namespace {
 
 /// The direction of the named view @p name for a model standing on @p up.
 glm::dvec3 named_view_dir(const std::string& name, const glm::dvec3& up) {
+    if (const NamedView* v = find_named_view(name)) return view_dir_at(up, v->yaw, v->pitch);
     std::string names;
-    for (const NamedView& v : named_views()) {
-        if (name == v.name) return view_dir_at(up, v.yaw, v.pitch);
-        names += (names.empty() ? "" : ", ") + std::string(v.name);
-    }
+    for (const NamedView& v : named_views()) names += (names.empty() ? "" : ", ") + std::string(v.name);
     throw UsageError("--view " + name + ": no such view (" + names + ")");
+}
+
+/// --paper, --orientation, --margin, --fit, --scale and --model-units over
+/// the style's canvas; --size makes it a canvas of pixels.
+void apply_page_options(const Args& args, Style& style) {
+    if (args.flag("size")) {
+        if (args.flag("paper")) throw UsageError("--size and --paper both set the canvas's size: give one");
+        style.page.width_mm = style.page.height_mm = 0.0;
+    }
+    const auto orientation = args.value("orientation");
+    if (orientation && *orientation != "portrait" && *orientation != "landscape")
+        throw UsageError("--orientation takes portrait or landscape, not '" + *orientation + "'");
+    glm::dvec2 paper(style.page.width_mm, style.page.height_mm);
+    if (const auto name = args.value("paper")) {
+        const auto mm = paper_size(*name);
+        if (!mm) throw UsageError("--paper " + *name + ": no such paper (" + paper_names() + ")");
+        paper = *mm;
+    } else if (orientation && !style.page.paper()) {
+        throw UsageError("--orientation turns a paper: give --paper (or a style whose canvas has one)");
+    }
+    if (args.flag("paper") || orientation) {
+        const bool landscape = orientation ? *orientation == "landscape" : paper.x > paper.y;
+        const double margin = style.margin;
+        try {
+            set_paper(style, paper, landscape);
+        } catch (const Error& e) {
+            throw UsageError(std::string("--paper: ") + e.what());
+        }
+        if (!args.flag("paper")) style.margin = margin; // turned: the style's margin stays
+    }
+    if (const auto m = args.value("margin")) {
+        const auto px = length_pixels(*m);
+        if (!px) throw UsageError("--margin takes a length (pixels, or with mm, cm, in or pt), not '" + *m + "'");
+        style.margin = *px;
+    }
+    if (2.0 * style.margin >= std::min(style.width, style.height))
+        throw UsageError("the margin (" + std::to_string(int(style.margin)) + " px) leaves no room for the drawing");
+    if (args.flag("fit") && args.flag("scale")) throw UsageError("--scale sets the drawing's size: it excludes --fit");
+    if (const auto fit = args.value("fit")) {
+        if (*fit != "fit" && *fit != "fill") throw UsageError("--fit takes fit or fill, not '" + *fit + "'");
+        style.page.fit = *fit == "fill" ? Page::Fit::Fill : Page::Fit::Fit;
+        style.page.scale = 0.0;
+    }
+    if (const auto scale = args.value("scale")) {
+        const auto n = parse_scale(*scale);
+        if (!n) throw UsageError("--scale takes a ratio such as 1:50, not '" + *scale + "'");
+        style.page.scale = *n;
+        style.page.fit = Page::Fit::Fit;
+    }
+    if (const auto units = args.value("model-units")) {
+        const auto mm = model_unit_mm(*units);
+        if (!mm) throw UsageError("--model-units takes m, cm, mm, in or ft, not '" + *units + "'");
+        style.page.unit_mm = *mm;
+    }
+}
+
+/// --up, --view-dir, --view, --eye, --target and --fov into @p o's camera
+/// (@p perspective: an eye given or asked for).
+void parse_view(const Args& args, bool perspective, SceneOptions& o) {
+    if (const auto up = args.value("up")) o.camera.up = parse_vec3("up", *up, true);
+    if (const auto v = args.value("view-dir")) o.camera.view_dir = glm::normalize(parse_vec3("view-dir", *v, true));
+    else if (const auto name = args.value("view")) o.camera.view_dir = named_view_dir(*name, o.camera.up);
+    else o.camera.view_dir = default_view_dir(o.camera.up);
+    if (perspective) {
+        o.camera.projection = Camera::Projection::Perspective;
+        if (const auto eye = args.value("eye")) o.camera.eye = parse_vec3("eye", *eye, false);
+        else o.place_eye = true;
+        if (const auto t = args.value("target")) o.target = parse_vec3("target", *t, false);
+        if (const auto fov = args.value("fov")) o.camera.fov_deg = parse_number("fov", *fov, 0.0, 180.0);
+    }
 }
 
 } // namespace
@@ -132,10 +215,16 @@ SceneOptions parse_scene_options(const Args& args) {
         throw UsageError("--view-dir (orthographic) and --eye (perspective) exclude each other");
     if (args.flag("view") && (args.flag("view-dir") || args.flag("eye")))
         throw UsageError("--view (a named orthographic view) excludes --view-dir and --eye");
-    if (!args.flag("eye") && (args.flag("target") || args.flag("fov")))
-        throw UsageError("--target and --fov need --eye (a perspective view)");
+    const std::optional<std::string> projection = args.value("projection");
+    if (projection && *projection != "orthographic" && *projection != "perspective")
+        throw UsageError("--projection takes orthographic or perspective, not '" + *projection + "'");
+    const bool perspective = args.flag("eye") || projection == "perspective";
+    if (args.flag("eye") && projection == "orthographic")
+        throw UsageError("--eye places a perspective eye: it excludes --projection orthographic");
+    if (!perspective && (args.flag("target") || args.flag("fov")))
+        throw UsageError("--target and --fov need a perspective view (--eye, or --projection perspective)");
     if (args.flag("camera"))
-        for (const char* view : {"view-dir", "view", "eye", "target", "fov", "up"})
+        for (const char* view : {"view-dir", "view", "eye", "target", "fov", "up", "projection"})
             if (args.flag(view)) throw UsageError(std::string("--camera and --") + view + " exclude each other (the file's camera sets the view)");
     if (args.flag("light-dir") && args.flag("light-pos"))
         throw UsageError("--light-dir and --light-pos exclude each other");
@@ -187,16 +276,8 @@ SceneOptions parse_scene_options(const Args& args) {
         }
         if (!ok) throw UsageError("--size takes WIDTHxHEIGHT in pixels (16 to 20000), not '" + *size + "'");
     }
-    if (const auto up = args.value("up")) o.camera.up = parse_vec3("up", *up, true);
-    if (const auto v = args.value("view-dir")) o.camera.view_dir = glm::normalize(parse_vec3("view-dir", *v, true));
-    else if (const auto name = args.value("view")) o.camera.view_dir = named_view_dir(*name, o.camera.up);
-    else o.camera.view_dir = default_view_dir(o.camera.up);
-    if (const auto eye = args.value("eye")) {
-        o.camera.projection = Camera::Projection::Perspective;
-        o.camera.eye = parse_vec3("eye", *eye, false);
-        if (const auto t = args.value("target")) o.target = parse_vec3("target", *t, false);
-        if (const auto fov = args.value("fov")) o.camera.fov_deg = parse_number("fov", *fov, 0.0, 180.0);
-    }
+    apply_page_options(args, o.style);
+    parse_view(args, perspective, o);
     if (const auto d = args.value("light-dir")) {
         Light l;
         l.dir = glm::normalize(parse_vec3("light-dir", *d, true));
@@ -247,12 +328,18 @@ SceneSettings complete_scene(const SceneOptions& o, const MeshReport& report, co
     if (o.file_camera) {
         const CameraTrack track(mesh_path, *o.file_camera);
         camera = track.at(seconds);
-        if (!o.size_given) style.height = canvas_height_for(track.info(), style.width, style.height);
+        if (!o.size_given && !style.page.paper()) style.height = canvas_height_for(track.info(), style.width, style.height);
         // Lit from the camera's upper left where it starts, as the
         // application and a project render light it.
         overrides.light = job_light(style, track.info().first, overrides.light);
     } else if (!camera.orthographic()) {
         camera.target = o.target.value_or(report.centre());
+        if (o.place_eye) {
+            // As the application frames a model: its bounding sphere fills
+            // the field of view, with a little room.
+            const double radius = std::max(0.5 * glm::length(report.bbox_max - report.bbox_min), 1e-9);
+            camera.eye = camera.target - camera.view_dir * framing_distance(radius, camera.fov_deg);
+        }
         if (glm::length(camera.target - camera.eye) < 1e-12)
             throw UsageError("--eye and --target are the same point");
     }

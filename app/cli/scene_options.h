@@ -23,6 +23,9 @@ namespace snaxels::cli {
 struct SceneOptions {
     Camera camera;
     std::optional<glm::dvec3> target; ///< perspective target, if given
+    /// --projection perspective without --eye: the eye stands along the
+    /// view's direction from the target, framing the mesh (complete_scene).
+    bool place_eye = false;
     Style style = default_style();    ///< --style, with --size applied to its canvas
     /// --light-*, --kind, --no-visibility, --planar-map (for contours, also
     /// listing its regions), --refine and --check over the style.

@@ -339,8 +339,7 @@ class FrameStages {
     }
 
     ImageProjection projection(const Camera& camera) const {
-        return ImageProjection(camera, image_.centre, image_.radius, job_.scene.style.width, job_.scene.style.height,
-                               job_.scene.style.margin);
+        return drawing_projection(job_.scene.style, camera, image_.centre, image_.radius);
     }
 
     const AnimationJob& job_;

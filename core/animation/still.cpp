@@ -176,7 +176,7 @@ StillOutput render_still(const LoadedMesh& mesh, const MeshTopology& topology, c
     const std::vector<ContourResult> fill_results(std::make_move_iterator(all.begin() + std::ptrdiff_t(scene.kinds.size())),
                                                   std::make_move_iterator(all.end()));
 
-    const ImageProjection projection(scene.camera, centre, radius, scene.style.width, scene.style.height, scene.style.margin);
+    const ImageProjection projection = drawing_projection(scene.style, scene.camera, centre, radius);
     // The lines (hidden lines of every kind at once, the drawing) and the
     // planar map are made at once: they share only what they read.
     auto lines = [&] {

@@ -276,10 +276,10 @@ struct AnimationWriter::Impl {
 
     void write_svg(const std::function<void(std::string_view)>& sink, AnimatedSvgStats& st) {
         if (!header) {
-            sink(svg::document_start(16, 16, style.background, true) + "</svg>\n");
+            sink(svg::document_start(16, 16, style.background, {}, true) + "</svg>\n");
             return;
         }
-        sink(svg::document_start(width, height, style.background, true));
+        sink(svg::document_start(width, height, style.background, style.page, true));
         const std::vector<const Record*> order = drawing_order();
         auto path = [&](const Record& r, const std::string& attributes, const std::string& label,
                         const std::string& children) {

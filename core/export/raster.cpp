@@ -122,6 +122,9 @@ void write_png(const std::string& path, const RgbaImage& image) {
 
 void write_pdf(const std::string& path, const std::string& svg) {
     const Handle h = read_svg(svg);
+    // A point a pixel at 72 to the inch: a page of paper (width and height
+    // in mm) is its size in points, a canvas of pixels a point a pixel.
+    rsvg_handle_set_dpi(h.get(), 72.0);
     double width = 0.0, height = 0.0;
     svg_size(h.get(), width, height);
     std::string pdf;

@@ -26,8 +26,9 @@ RgbaImage render_svg(const std::string& svg, int width, int height, bool opaque)
 void write_png(const std::string& path, const RgbaImage& image);
 
 /// @p svg as a one-page vector PDF at @p path (atomically): a page of the
-/// document's width x height in points (a pixel of the canvas a point), its
-/// strokes and fills PDF paths.
+/// document's width x height in points (a pixel of the canvas a point; a
+/// size in mm, a page on paper, that paper's size), its strokes and fills
+/// PDF paths.
 void write_pdf(const std::string& path, const std::string& svg);
 
 } // namespace snaxels

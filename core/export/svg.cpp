@@ -98,13 +98,21 @@ void append_compact_path_data(std::string& out, const std::vector<glm::dvec2>& q
     out += d;
 }
 
-std::string document_start(int width, int height, const std::string& background, bool inkscape) {
+std::string document_start(int width, int height, const std::string& background, const Page& page, bool inkscape) {
     const std::string w = std::to_string(width), h = std::to_string(height);
+    std::string size = "width=\"" + w + "\" height=\"" + h + "\"";
+    if (page.paper()) {
+        // The paper's size, for print and for drawing programs' page.
+        size = "width=\"";
+        append_number(size, page.width_mm);
+        size += "mm\" height=\"";
+        append_number(size, page.height_mm);
+        size += "mm\"";
+    }
     std::string out = "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n"
                       "<svg xmlns=\"http://www.w3.org/2000/svg\"" +
                       std::string(inkscape ? " xmlns:inkscape=\"http://www.inkscape.org/namespaces/inkscape\"" : "") +
-                      " version=\"1.1\" width=\"" + w + "\" height=\"" + h +
-                      "\" viewBox=\"0 0 " + w + " " + h + "\">\n";
+                      " version=\"1.1\" " + size + " viewBox=\"0 0 " + w + " " + h + "\">\n";
     // Sizes in user units, not percentages: some renderers (QtSvg) resolve
     // percentages against the widget rather than the viewBox.
     if (background != "none")
@@ -377,7 +385,7 @@ std::string strokes_svg(const Drawing& drawing, const Style& style, bool by_obje
 
 std::string to_svg(const Drawing& drawing, const Style& style, const std::vector<MapRegion>* regions) {
     const bool by_object = groups_by_object(drawing);
-    std::string out = svg::document_start(drawing.width, drawing.height, style.background, true);
+    std::string out = svg::document_start(drawing.width, drawing.height, style.background, style.page, true);
     // The fills (eroded and made a partition again with Clipper) and the
     // strokes (curves fitted) are made at once.
     std::string fills, strokes;

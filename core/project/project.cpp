@@ -111,16 +111,18 @@ std::string project_text(const Project& p) {
     }
     json light = nullptr;
     if (p.light) light = p.light->point ? json{{"pos", vec(p.light->pos)}} : json{{"dir", vec(p.light->dir)}};
+    json view{{"yaw", p.view.yaw},
+              {"pitch", p.view.pitch},
+              {"distance", p.view.distance},
+              {"pan", vec(p.view.pan)},
+              {"up", vec(p.view.up)},
+              {"fov_deg", p.view.fov_deg}};
+    // Written only when set, so a perspective project's text is as before.
+    if (p.view.orthographic) view["projection"] = "orthographic";
     const json doc{{"format", kFormat},
                    {"version", kVersion},
                    {"mesh", p.mesh},
-                   {"view",
-                    {{"yaw", p.view.yaw},
-                     {"pitch", p.view.pitch},
-                     {"distance", p.view.distance},
-                     {"pan", vec(p.view.pan)},
-                     {"up", vec(p.view.up)},
-                     {"fov_deg", p.view.fov_deg}}},
+                   {"view", view},
                    {"light", light},
                    {"animation", anim},
                    {"frame", p.frame},
@@ -176,6 +178,12 @@ Project read_project(const std::string& path) {
         if (!(glm::length(p.view.up) > 1e-9)) view.fail_field("up", "must be a direction, not zero");
     }
     if (view.has("fov_deg")) p.view.fov_deg = view.number("fov_deg", 1.0, 179.0);
+    if (view.has("projection")) {
+        const std::string projection = view.string("projection");
+        if (projection != "orthographic" && projection != "perspective")
+            view.fail_field("projection", "must be orthographic or perspective (not \"" + projection + "\")");
+        p.view.orthographic = projection == "orthographic";
+    }
     if (top.has("light")) {
         const Reader light = top.object("light");
         Light l;

@@ -56,7 +56,7 @@ ImageProjection::ImageProjection(const Camera& camera, const glm::dvec3& centre,
     camera.screen_basis(right_, up_);
     forward_ = camera.forward();
     const double half = 0.5 * (camera.own_frame ? height : std::min(width, height));
-    if (camera.orthographic() && camera.own_frame) {
+    if (camera.orthographic() && (camera.own_frame || camera.ortho_height > 0.0)) {
         // Centred on the eye's line, at the bounding sphere's depth (where
         // pixel rays start from, `back` before it).
         centre_ = camera.eye + forward_ * glm::dot(centre - camera.eye, forward_);
@@ -99,13 +99,12 @@ nlohmann::json to_json(const Camera& c) {
              {"eye", {c.eye.x, c.eye.y, c.eye.z}},
              {"target", {c.target.x, c.target.y, c.target.z}},
              {"fov_deg", c.fov_deg}};
-    if (c.own_frame) {
-        // A file's camera: where it stands and what it frames.
-        j["up"] = {c.up.x, c.up.y, c.up.z};
-        if (c.orthographic()) {
-            j["eye"] = {c.eye.x, c.eye.y, c.eye.z};
-            j["ortho_height"] = c.ortho_height;
-        }
+    // A file's camera: where it stands and what it frames; an orthographic
+    // view of the application's orbit: what it frames.
+    if (c.own_frame) j["up"] = {c.up.x, c.up.y, c.up.z};
+    if (c.orthographic() && (c.own_frame || c.ortho_height > 0.0)) {
+        j["eye"] = {c.eye.x, c.eye.y, c.eye.z};
+        j["ortho_height"] = c.ortho_height;
     }
     return j;
 }

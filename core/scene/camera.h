@@ -20,12 +20,14 @@ struct Camera {
     glm::dvec3 up{0.0, 1.0, 0.0};       ///< world direction that appears upward
     /// A camera that frames the picture itself (a file's camera): the
     /// perspective field of view spans the image's height, and an
-    /// orthographic view shows ortho_height world units from top to bottom
-    /// about the line through `eye` along view_dir. Otherwise the field of
-    /// view spans the image's smaller side and an orthographic view fits
-    /// the mesh's bounding sphere into the image.
+    /// orthographic view shows ortho_height world units from top to bottom.
+    /// Otherwise the field of view spans the image's smaller side, and an
+    /// orthographic view shows ortho_height across that side, or, with no
+    /// ortho_height (0), fits the mesh's bounding sphere into the image.
     bool own_frame = false;
-    double ortho_height = 0.0; ///< orthographic, own_frame: the view's height in world units
+    /// Orthographic: the world units the view shows (see own_frame), about
+    /// the line through `eye` along view_dir; 0: fit the bounding sphere.
+    double ortho_height = 0.0;
 
     bool operator==(const Camera&) const = default;
     bool orthographic() const { return projection == Projection::Orthographic; }

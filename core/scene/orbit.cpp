@@ -31,9 +31,9 @@ const std::vector<NamedView>& named_views() {
         {"left", M_PI_2, 0.0, "its left side, level"},
         {"right", -M_PI_2, 0.0, "its right side, level"},
         {"top", 0.0, kMaxPitch, "from above (short of straight down by the orbit's pitch limit)"},
-        {"iso", -M_PI_4, std::atan(1.0 / std::sqrt(2.0)), "isometric: 45 degrees around, 35.264 above"},
-        {"dimetric", -M_PI_4, M_PI / 6.0, "the 2:1 dimetric: 45 degrees around, 30 above"},
-        {"trimetric", -M_PI / 6.0, M_PI / 9.0, "trimetric: 30 degrees around, 20 above"},
+        {"iso", -M_PI_4, std::atan(1.0 / std::sqrt(2.0)), "isometric: 45 degrees around, 35.264 above", true},
+        {"dimetric", -M_PI_4, M_PI / 6.0, "the 2:1 dimetric: 45 degrees around, 30 above", true},
+        {"trimetric", -M_PI / 6.0, M_PI / 9.0, "trimetric: 30 degrees around, 20 above", true},
     };
     return views;
 }
@@ -57,11 +57,15 @@ glm::dmat4 model_frame(const glm::dvec3& up_in) {
 
 } // namespace
 
+double framing_distance(double radius, double fov_deg) {
+    return radius / std::sin(glm::radians(fov_deg * 0.5)) * 1.05;
+}
+
 OrbitView framing_view(const glm::dvec3& centre, double radius, const glm::dvec3& up) {
     OrbitView v;
     v.centre = centre;
     v.up = glm::normalize(up);
-    v.distance = radius / std::sin(glm::radians(v.fov_deg * 0.5)) * 1.05;
+    v.distance = framing_distance(radius, v.fov_deg);
     return v;
 }
 
@@ -74,33 +78,37 @@ glm::dmat4 orbit_view_matrix(const OrbitView& o) {
     return glm::translate(v, -o.centre);
 }
 
-OrbitView preset_view(OrbitView view, ViewPreset preset) {
-    view.pitch = 0.0;
-    switch (preset) {
-    case ViewPreset::Front: view.yaw = 0.0; break;
-    case ViewPreset::Back: view.yaw = M_PI; break;
+const NamedView* find_named_view(const std::string& name) {
+    for (const NamedView& v : named_views())
+        if (name == v.name) return &v;
+    return nullptr;
+}
+
+OrbitView preset_view(OrbitView view, const NamedView& preset) {
     // Right looks from +X of the model's frame (right = up x front), the
     // front view's right hand, as Blender's and Maya's right views do.
-    case ViewPreset::Left: view.yaw = M_PI_2; break;
-    case ViewPreset::Right: view.yaw = -M_PI_2; break;
-    case ViewPreset::Top:
-        view.yaw = 0.0;
-        view.pitch = kMaxPitch;
-        break;
-    }
+    view.yaw = preset.yaw;
+    view.pitch = preset.pitch;
+    if (preset.axonometric) view.orthographic = true;
     return view;
 }
+
+double orbit_view_height(const OrbitView& o) { return 2.0 * o.distance * std::tan(glm::radians(o.fov_deg * 0.5)); }
 
 Camera orbit_camera(const OrbitView& o) {
     // The inverse view matrix gives the eye and its axes in world space.
     const glm::dmat4 inv = glm::inverse(orbit_view_matrix(o));
     Camera c;
-    c.projection = Camera::Projection::Perspective;
+    c.projection = o.orthographic ? Camera::Projection::Orthographic : Camera::Projection::Perspective;
     c.eye = glm::dvec3(inv * glm::dvec4(0, 0, 0, 1));
     const glm::dvec3 forward = glm::normalize(glm::dvec3(inv * glm::dvec4(0, 0, -1, 0)));
     c.target = c.eye + forward * o.distance;
     c.up = glm::normalize(glm::dvec3(inv * glm::dvec4(0, 1, 0, 0)));
     c.fov_deg = o.fov_deg;
+    if (o.orthographic) {
+        c.view_dir = forward;
+        c.ortho_height = orbit_view_height(o);
+    }
     return c;
 }
 

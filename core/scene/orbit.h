@@ -10,6 +10,7 @@
 /// front (model_front()). Yaw 0, pitch 0 looks at the front.
 
 #include <cmath>
+#include <string>
 #include <vector>
 
 #include <glm/glm.hpp>
@@ -47,6 +48,9 @@ struct NamedView {
     const char* name;
     double yaw, pitch;
     const char* summary;
+    /// An axonometric view (isometric, dimetric, trimetric): orthographic
+    /// by definition, so the application's preset turns orthographic too.
+    bool axonometric = false;
 };
 /// front, back, left, right and top (as View > Front and the others), and
 /// the axonometric views of technical illustration, each from the model's
@@ -68,21 +72,36 @@ struct OrbitView {
     double distance = 3.0;  ///< eye to the orbited point
     double turntable = 0.0; ///< radians; the camera orbits by this about world +Y
     double fov_deg = 35.0;  ///< vertical field of view
+    /// An orthographic view: parallel projection along the line of sight,
+    /// showing the height the perspective view shows at the orbited point
+    /// (2 distance tan(fov/2)), so zooming still changes the distance.
+    bool orthographic = false;
 
     bool operator==(const OrbitView&) const = default;
 };
+
+/// How far from the centre of a sphere of @p radius an eye with a vertical
+/// field of view of @p fov_deg stands to frame it, with a little room.
+double framing_distance(double radius, double fov_deg);
 
 /// A view of the model's front from a little above and to the side that
 /// frames a sphere of @p radius about @p centre, the model standing on @p up.
 OrbitView framing_view(const glm::dvec3& centre, double radius, const glm::dvec3& up = {0.0, 1.0, 0.0});
 
-/// The named views of the View menu and the command line.
-enum class ViewPreset { Front, Back, Left, Right, Top };
+/// The named view called @p name (named_views()), or null.
+const NamedView* find_named_view(const std::string& name);
 
-/// @p view turned to look at the model from @p preset (level, or from
-/// straight above for Top, short of the pole by the orbit's pitch limit),
-/// keeping its distance, pan, up and field of view.
-OrbitView preset_view(OrbitView view, ViewPreset preset);
+/// @p view turned to look at the model from @p preset (front, back, left
+/// and right level, top from above short of the pole by the orbit's pitch
+/// limit, the axonometric ones as named_views() says), keeping its
+/// distance, pan, up and field of view; an axonometric preset makes it
+/// orthographic, the others keep its projection.
+OrbitView preset_view(OrbitView view, const NamedView& preset);
+
+/// The height in world units an orbit view shows at the orbited point,
+/// from the bottom of the 3-D view to its top (an orthographic view shows
+/// this height everywhere).
+double orbit_view_height(const OrbitView& view);
 
 /// The orbit's pitch limit: a little short of straight above or below, where
 /// the up axis would lie along the line of sight.
@@ -91,7 +110,9 @@ inline constexpr double kMaxPitch = 1.55;
 /// World to eye space (OpenGL convention: the eye looks down -Z).
 glm::dmat4 orbit_view_matrix(const OrbitView& view);
 
-/// The perspective camera of @p view.
+/// The camera of @p view: perspective, or orthographic along its line of
+/// sight with ortho_height orbit_view_height() (spanning the image's smaller
+/// side, as the perspective field of view does).
 Camera orbit_camera(const OrbitView& view);
 
 /// The camera of @p view before the turntable turns, with the model's up

@@ -86,8 +86,14 @@ const std::vector<StyleElement>& style_vocabulary() {
              "the image: its size, margin and background",
              {{"width", {}, "image width"},
               {"height", {}, "image height"},
-              {"margin", {}, "space between the mesh's bounding circle and the image edge"},
-              {"background", {"none"}, "the background fill"}}},
+              {"margin", {}, "space between the mesh's bounding circle and the image edge; on paper, the page's margin"},
+              {"background", {"none"}, "the background fill"},
+              {"paper", {"A0", "A1", "A2", "A3", "A4", "A5", "A6", "B4", "B5", "letter", "legal", "tabloid"},
+               "the page: a paper size, or WxH in mm, cm or in"},
+              {"orientation", {"portrait", "landscape"}, "the paper turned upright or on its side"},
+              {"fit", {"fit", "fill"}, "whether the view fits inside the page or fills it"},
+              {"scale", {}, "an orthographic view drawn at 1:N in the model's units"},
+              {"model-units", {"m", "cm", "mm", "in", "ft"}, "the length of the model's unit, for scale"}}},
             {"light",
              "the light: a direction or a point",
              {{"dir", {}, "a directional light: the direction from the surface toward it"},
@@ -546,6 +552,49 @@ struct Parser {
         }
     }
 
+    // A length attribute: pixels, or a number with a unit (10mm, 0.5in).
+    double length(const pugi::xml_node& node, const char* name, double fallback, double hi) const {
+        const pugi::xml_attribute a = node.attribute(name);
+        if (!a) return fallback;
+        const auto px = length_pixels(a.value());
+        if (!px) fail(node, std::string(name) + "=\"" + a.value() + "\" is not a length (a number of pixels, or with mm, cm, in or pt)");
+        if (*px > hi) fail(node, std::string(name) + "=\"" + a.value() + "\" is longer than " + std::to_string(int(hi)) + " pixels");
+        return *px;
+    }
+    void canvas_element(const pugi::xml_node& node, Style& style) const {
+        check_attributes(node);
+        Page& page = style.page;
+        if (const pugi::xml_attribute paper = node.attribute("paper")) {
+            for (const char* size : {"width", "height"})
+                if (node.attribute(size)) fail(node, std::string("paper sets the canvas's size: it excludes ") + size);
+            const auto mm = paper_size(paper.value());
+            if (!mm) fail(node, "paper=\"" + std::string(paper.value()) + "\" must be " + paper_names());
+            const std::string turn = choice(node, "orientation", mm->x > mm->y ? "landscape" : "portrait");
+            try {
+                set_paper(style, *mm, turn == "landscape"); // a 10 mm margin, unless the margin says
+            } catch (const Error& e) {
+                fail(node, "paper=\"" + std::string(paper.value()) + "\": " + e.what());
+            }
+        } else if (node.attribute("orientation")) {
+            fail(node, "orientation turns a paper: it needs paper=\"...\"");
+        }
+        style.width = int(number(node, "width", style.width, 16, 20000));
+        style.height = int(number(node, "height", style.height, 16, 20000));
+        style.margin = length(node, "margin", style.margin, 10000.0);
+        style.background = colour(node, "background", style.background, true);
+        page.fit = choice(node, "fit", "fit") == "fill" ? Page::Fit::Fill : Page::Fit::Fit;
+        if (const pugi::xml_attribute scale = node.attribute("scale")) {
+            const auto n = parse_scale(scale.value());
+            if (!n) fail(node, "scale=\"" + std::string(scale.value()) + "\" must be a ratio such as 1:50");
+            if (node.attribute("fit")) fail(node, "scale sets the drawing's size: it excludes fit");
+            page.scale = *n;
+        }
+        if (const pugi::xml_attribute units = node.attribute("model-units")) {
+            if (!node.attribute("scale")) warn(node, "model-units says what scale measures: without scale it does nothing");
+            page.unit_mm = *model_unit_mm(choice(node, "model-units", "m"));
+        }
+    }
+
     Style parse() const {
         pugi::xml_document doc;
         const pugi::xml_parse_result result = doc.load_buffer(text.data(), text.size());
@@ -561,11 +610,7 @@ struct Parser {
             if (child.type() != pugi::node_element) continue;
             const std::string name = child.name();
             if (name == "canvas") {
-                check_attributes(child);
-                style.width = int(number(child, "width", style.width, 16, 20000));
-                style.height = int(number(child, "height", style.height, 16, 20000));
-                style.margin = number(child, "margin", style.margin, 0.0, 10000.0);
-                style.background = colour(child, "background", style.background, true);
+                canvas_element(child, style);
             } else if (name == "light") {
                 light_element(child, style);
             } else if (name == "surface") {

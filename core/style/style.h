@@ -12,6 +12,7 @@
 #include "snaxels/mesh/sharp_edges.h"
 #include "snaxels/planarmap/region.h"
 #include "snaxels/scene/camera.h"
+#include "snaxels/style/page.h"
 #include "snaxels/snaxel/contour_function.h"
 
 namespace snaxels {
@@ -104,8 +105,11 @@ struct RegionStyle {
 };
 
 struct Style {
-    int width = 800, height = 800;
-    double margin = 32.0;               ///< pixels between the mesh's bounding circle and the edge
+    int width = 800, height = 800;      ///< the canvas in CSS pixels (from the paper, when it has one)
+    /// Pixels between the mesh's bounding circle and the edge; on paper,
+    /// the page's margin, which every view stays inside.
+    double margin = 32.0;
+    Page page; ///< the paper, fit and scale (core/style/page.h); none by default
     std::string background = "#ffffff"; ///< or "none"
     std::optional<Light> light;
     SurfaceOptions surface; ///< where the surface's edges are sharp

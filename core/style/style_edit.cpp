@@ -210,18 +210,41 @@ std::optional<std::string> with_intersection_lines(const std::string& text, cons
         element);
 }
 
-std::optional<TextSplice> sharp_angle_splice(const std::string& text, const std::string& value) {
+std::optional<TextSplice> attribute_splice(const std::string& text, const std::string& element, const std::string& name,
+                                          const std::optional<std::string>& value) {
     ParsedStyle style;
     if (!parsed(text, style)) return std::nullopt;
-    const std::string attribute = "sharp-angle=\"" + xml_text(value) + "\"";
-    if (const pugi::xml_node surface = style.root.child("surface")) {
-        const std::size_t start = element_start(surface);
-        if (const auto a = attribute_span(text, start, "sharp-angle")) return TextSplice{a->at, a->end - a->at, attribute};
-        return TextSplice{start + 1 + std::char_traits<char>::length("surface"), 0, " " + attribute};
+    const std::string attribute = value ? name + "=\"" + xml_text(*value) + "\"" : std::string();
+    if (const pugi::xml_node node = style.root.child(element.c_str())) {
+        const std::size_t start = element_start(node);
+        if (const auto a = attribute_span(text, start, name)) {
+            if (value) return TextSplice{a->at, a->end - a->at, attribute};
+            std::size_t at = a->at; // removed with the blank before it
+            while (at > start && (text[at - 1] == ' ' || text[at - 1] == '\t')) --at;
+            return TextSplice{at, a->end - at, ""};
+        }
+        if (!value) return TextSplice{start, 0, ""}; // nothing to remove
+        return TextSplice{start + 1 + element.size(), 0, " " + attribute};
     }
+    if (!value) return TextSplice{0, 0, ""};
     const std::size_t root = element_start(style.root), root_tag = tag_end(text, root);
     if (root_tag >= 2 && text[root_tag - 2] == '/') return std::nullopt; // <style/>: no content to add to
-    return TextSplice{root_tag, 0, "\n  <surface " + attribute + "/>"};
+    return TextSplice{root_tag, 0, "\n  <" + element + " " + attribute + "/>"};
+}
+
+std::optional<TextSplice> sharp_angle_splice(const std::string& text, const std::string& value) {
+    return attribute_splice(text, "surface", "sharp-angle", value);
+}
+
+std::optional<std::string> with_canvas(const std::string& text,
+                                       const std::vector<std::pair<std::string, std::optional<std::string>>>& attributes) {
+    std::string out = text;
+    for (const auto& [name, value] : attributes) {
+        const auto splice = attribute_splice(out, "canvas", name, value);
+        if (!splice) return std::nullopt;
+        out = splice->applied_to(out);
+    }
+    return out;
 }
 
 std::optional<std::string> without_absent_objects(const std::string& text,

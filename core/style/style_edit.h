@@ -13,6 +13,8 @@
 #include <functional>
 #include <optional>
 #include <string>
+#include <utility>
+#include <vector>
 
 namespace snaxels {
 
@@ -58,10 +60,21 @@ struct ObjectLines {
 std::optional<std::string> with_object_lines(const std::string& text, const std::string& name,
                                              const std::optional<ObjectLines>& lines);
 
-/// The replacement that sets <surface sharp-angle="VALUE">: the attribute's
-/// value replaced where it is given, added to a <surface> without it, or a
-/// <surface> element made first in <style>.
+/// The replacement that sets attribute @p name of the first <@p element>
+/// in <style> to @p value: the value replaced where it is given, the
+/// attribute added to an element without it, or the element made first in
+/// <style>; without @p value, the attribute removed (an empty splice where
+/// there is none).
+std::optional<TextSplice> attribute_splice(const std::string& text, const std::string& element, const std::string& name,
+                                          const std::optional<std::string>& value);
+
+/// The replacement that sets <surface sharp-angle="VALUE"> (attribute_splice).
 std::optional<TextSplice> sharp_angle_splice(const std::string& text, const std::string& value);
+
+/// @p text with <canvas>'s @p attributes set (a value) or removed (none),
+/// in order, as attribute_splice does: the page setup's edit.
+std::optional<std::string> with_canvas(const std::string& text,
+                                       const std::vector<std::pair<std::string, std::optional<std::string>>>& attributes);
 
 /// @p text without the elements that name, exactly (a name with no glob
 /// character), an object @p has_object denies: <object name="NAME"> and

@@ -50,6 +50,7 @@
 #include <QHeaderView>
 #include <QTreeWidget>
 #include <QDoubleSpinBox>
+#include <QInputDialog>
 #include <QPlainTextEdit>
 #include <QProcess>
 #include <QMimeData>
@@ -61,6 +62,7 @@
 
 #include "snaxels/mesh/procedural.h"
 #include "snaxels/project/project.h"
+#include "snaxels/scene/orbit.h"
 #include "ui/document.h"
 #include "ui/mainwindow.h"
 #include "ui/export_actions.h"
@@ -2384,7 +2386,7 @@ class TestMainWindow : public QObject {
         QCOMPARE(shown.frame(), 4);
         QVERIFY(shown.light().has_value());
         // Left, then dragged 40 px to the right and 10 down: 0.01 rad a pixel.
-        const snaxels::OrbitView left = snaxels::preset_view(shown.view(), snaxels::ViewPreset::Left);
+        const snaxels::OrbitView left = snaxels::preset_view(shown.view(), *snaxels::find_named_view("left"));
         QVERIFY(std::abs(shown.view().yaw - (left.yaw + 0.4)) < 1e-9);
         QVERIFY(std::abs(shown.view().pitch - (left.pitch + 0.1)) < 1e-9);
         QVERIFY(shown.styleText() != snaxels::ui::initial_style_text());
@@ -2605,6 +2607,123 @@ class TestMainWindow : public QObject {
 
     // Export > Video asks the video's size and quality, remembers them, and
     // the file written has that size (ffprobe reads it).
+    // View > Orthographic and the axonometric presets: one undo step each,
+    // the engine's camera parallel along the view, kept by Home and by the
+    // project file; Field of View keeps what the view frames.
+    void orthographicAndAxonometricViews() {
+        QTemporaryDir dir;
+        MainWindow window;
+        QVERIFY(showWithMesh(window, QString(SNAXELS_TEST_ASSETS) + "/spot.obj"));
+        auto action = [&](const char* name) {
+            QAction* a = window.findChild<QAction*>(name);
+            if (!a) qFatal("no action %s", name);
+            return a;
+        };
+        QVERIFY(!action("orthographic")->isChecked());
+        QVERIFY(!window.meshView()->camera().orthographic());
+        const int steps = window.undoStack()->count();
+        window.activateWindow();
+        QVERIFY(QTest::qWaitForWindowActive(&window));
+        QTest::keyClick(window.meshView(), Qt::Key_O, Qt::ControlModifier | Qt::ShiftModifier); // the menu's key
+        QVERIFY(action("orthographic")->isChecked());
+        QVERIFY(window.document()->view().orthographic);
+        const snaxels::Camera ortho = window.meshView()->camera();
+        QVERIFY(ortho.orthographic());
+        QCOMPARE(ortho.ortho_height, snaxels::orbit_view_height(window.document()->view()));
+        QCOMPARE(window.undoStack()->count(), steps + 1);
+        window.undoStack()->undo();
+        QVERIFY(!action("orthographic")->isChecked() && !window.meshView()->camera().orthographic());
+
+        // Isometric: the command line's iso direction, orthographic.
+        action("viewIso")->trigger();
+        QCOMPARE(window.undoStack()->count(), steps + 1);
+        QVERIFY(action("orthographic")->isChecked());
+        const snaxels::NamedView& iso = *snaxels::find_named_view("iso");
+        QVERIFY(glm::length(window.meshView()->camera().forward() - snaxels::view_dir_at(window.document()->view().up, iso.yaw, iso.pitch)) < 1e-9);
+        window.meshView()->resetCamera(); // Home keeps the projection
+        QVERIFY(window.document()->view().orthographic);
+
+        // Field of view: asked in degrees; the framing at the orbited point stays.
+        const double height = snaxels::orbit_view_height(window.document()->view());
+        QTimer poll;
+        poll.setInterval(20);
+        QObject::connect(&poll, &QTimer::timeout, [&] {
+            auto* dialog = qobject_cast<QInputDialog*>(QApplication::activeModalWidget());
+            if (!dialog) return;
+            poll.stop();
+            dialog->setDoubleValue(20.0);
+            dialog->accept();
+        });
+        poll.start();
+        action("fieldOfView")->trigger();
+        QCOMPARE(window.document()->view().fov_deg, 20.0);
+        QVERIFY(std::abs(snaxels::orbit_view_height(window.document()->view()) - height) < 1e-9 * height);
+
+        // Saved and read back.
+        const QString project = dir.filePath("iso.snaxels");
+        window.document()->save(project);
+        const snaxels::Project read = snaxels::read_project(project.toStdString());
+        QVERIFY(read.view.orthographic);
+        QCOMPARE(read.view.fov_deg, 20.0);
+    }
+
+    // Export > Page Setup on the milk truck's isometric view: A4 landscape
+    // at 1:30, written into the style's <canvas> as one undo step; the frame
+    // exported as PDF is an A4 landscape page whose vertical edges are
+    // parallel, as poppler reads them (the command line's check).
+    void isometricTruckOnAnA4PageAtScale() {
+        if (QStandardPaths::findExecutable("pdfinfo").isEmpty()) QSKIP("poppler-utils is not installed");
+        QTemporaryDir dir;
+        QSettings().setValue(snaxels::ui::kExportFolder, dir.path());
+        MainWindow window;
+        QVERIFY(showWithMesh(window, QString(SNAXELS_TEST_ASSETS) + "/hard/CesiumMilkTruck.gltf"));
+        window.findChild<QAction*>("viewIso")->trigger();
+        QVERIFY(contoursSettle(window));
+        const int steps = window.undoStack()->count();
+        bool asked = false;
+        QTimer poll;
+        poll.setInterval(20);
+        QObject::connect(&poll, &QTimer::timeout, [&] {
+            auto* dialog = qobject_cast<QDialog*>(QApplication::activeModalWidget());
+            if (!dialog || dialog->objectName() != "pageSetup") return;
+            poll.stop();
+            asked = true;
+            auto pick = [&](const char* name, const QString& data) {
+                auto* box = dialog->findChild<QComboBox*>(name);
+                box->setCurrentIndex(box->findData(data));
+                QVERIFY(box->currentIndex() >= 0);
+            };
+            pick("paper", "A4");
+            pick("orientation", "landscape");
+            pick("size", "scale");
+            dialog->findChild<QDoubleSpinBox*>("scale")->setValue(30.0);
+            QVERIFY(dialog->findChild<QLabel*>("pageSummary")->text().contains("297 × 210 mm"));
+            dialog->accept();
+        });
+        poll.start();
+        window.findChild<QAction*>("pageSetup")->trigger();
+        QVERIFY(asked);
+        const QString style = window.document()->styleText();
+        QVERIFY2(style.contains("paper=\"A4\"") && style.contains("orientation=\"landscape\"") &&
+                     style.contains("scale=\"1:30\""),
+                 qPrintable(style));
+        QCOMPARE(window.undoStack()->count(), steps + 1);
+        QCOMPARE(window.document()->style().width, 1123);
+        QVERIFY(contoursSettle(window));
+        QSignalSpy finished(&window, &MainWindow::exportFinished);
+        const QString pdf = answerFileDialog([&] { window.findChild<QAction*>("exportFramePdf")->trigger(); }, true);
+        QVERIFY(QFileInfo(pdf).suffix() == "pdf");
+        QCOMPARE(finished.count(), 1);
+        QProcess check;
+        check.start("python3", {QString(SNAXELS_TEST_SCRIPTS) + "/page_pdf_test.py", "--check", pdf});
+        QVERIFY(check.waitForFinished(60000));
+        const QString said = QString::fromUtf8(check.readAllStandardOutput() + check.readAllStandardError());
+        qInfo("%s", qPrintable(said.trimmed()));
+        QVERIFY2(check.exitCode() == 0, qPrintable(said));
+        window.undoStack()->undo(); // the page goes with one undo
+        QVERIFY(!window.document()->styleText().contains("paper="));
+    }
+
     void videoExportTakesItsSettings() {
         if (QStandardPaths::findExecutable("ffprobe").isEmpty()) QSKIP("ffprobe is not installed");
         QTemporaryDir dir;

@@ -33,8 +33,11 @@ void append_chain_data(std::string& out, const BezierChain& chain);
 void append_compact_chain_data(std::string& out, const BezierChain& chain, glm::dvec2 from = glm::dvec2(0.0));
 
 /// XML declaration, <svg> start tag and the background (unless "none");
-/// with @p inkscape, the namespace of Inkscape's layer attributes.
-std::string document_start(int width, int height, const std::string& background, bool inkscape = false);
+/// with @p inkscape, the namespace of Inkscape's layer attributes. On
+/// @p page's paper the width and height are the paper's, in millimetres,
+/// and the viewBox the canvas's pixels.
+std::string document_start(int width, int height, const std::string& background, const Page& page = {},
+                           bool inkscape = false);
 /// The opening tag of an object's sublayer inside a kind's group: class
 /// "object", data-object its path, an Inkscape layer labelled with its name.
 std::string object_group(const SceneObject& object);

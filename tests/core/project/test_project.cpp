@@ -48,6 +48,7 @@ TEST_F(ProjectFile, EveryNumberReadsBackExactly) {
         p.view.pan = {u(rng) * 1e-7, u(rng), u(rng) * 1e9};
         p.view.fov_deg = 20.0 + std::abs(u(rng));
         if (trial % 2) p.view.up = glm::normalize(glm::dvec3(u(rng), u(rng), u(rng)));
+        p.view.orthographic = trial % 5 == 1;
         if (trial % 3) {
             Light l;
             l.point = trial % 3 == 2;
@@ -134,6 +135,22 @@ TEST_F(ProjectFile, TheUpAxisRoundTripsAndOldProjectsStandOnY) {
     const Project back = read_project(write("old.snaxels", old));
     EXPECT_EQ(back.view.up, glm::dvec3(0.0, 1.0, 0.0));
     EXPECT_EQ(back.view.yaw, p.view.yaw);
+}
+
+TEST_F(ProjectFile, AnOrthographicViewRoundTripsAndAPerspectiveOneReadsAsBefore) {
+    Project p;
+    p.mesh = "truck.glb";
+    const std::string perspective = project_text(p);
+    EXPECT_EQ(perspective.find("projection"), std::string::npos); // a perspective project's text is unchanged
+    EXPECT_FALSE(read_project(write("p.snaxels", perspective)).view.orthographic);
+    p.view.orthographic = true;
+    const std::string ortho = project_text(p);
+    EXPECT_NE(ortho.find("\"projection\": \"orthographic\""), std::string::npos);
+    EXPECT_TRUE(read_project(write("o.snaxels", ortho)).view.orthographic);
+    std::string bad = ortho;
+    bad.replace(bad.find("\"orthographic\""), 14, "\"isometric\"");
+    EXPECT_NE(error_of(write("bad.snaxels", bad)).find("\"view.projection\" must be orthographic or perspective"),
+              std::string::npos);
 }
 
 TEST_F(ProjectFile, BadFilesNameTheProblem) {

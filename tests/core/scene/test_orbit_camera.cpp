@@ -120,3 +120,69 @@ TEST(OrbitCamera, NamedViewsAreTheAxonometriesTheySayTheyAre) {
     EXPECT_NEAR(glm::length(view("front", y) - glm::dvec3(0.0, 0.0, -1.0)), 0.0, 1e-12);
     EXPECT_NEAR(glm::length(default_view_dir(y) - view_dir_at(y, kDefaultYaw, kDefaultPitch)), 0.0, 0.0);
 }
+
+// The application's orthographic orbit: parallel projection along the
+// perspective view's line of sight, showing across the image's smaller side
+// the height the perspective view shows at the orbited point, 2 d tan(fov/2),
+// so a toggle keeps what stands at the orbited point the same size. The
+// expected pixels are worked out here from the definition.
+TEST(OrbitCamera, TheOrthographicOrbitShowsThePerspectivesHeightAtTheOrbitedPoint) {
+    OrbitView view;
+    view.centre = glm::dvec3(1.0, 2.0, -0.5);
+    view.yaw = 0.4;
+    view.pitch = 0.3;
+    view.distance = 6.0;
+    view.fov_deg = 40.0;
+    const Camera perspective = orbit_camera(view);
+    view.orthographic = true;
+    const Camera ortho = orbit_camera(view);
+    ASSERT_TRUE(ortho.orthographic());
+    EXPECT_NEAR(glm::length(ortho.forward() - perspective.forward()), 0.0, 1e-12);
+    const double height = 2.0 * 6.0 * std::tan(20.0 * M_PI / 180.0);
+    EXPECT_NEAR(ortho.ortho_height, height, 1e-12);
+
+    const int width = 1200, image_height = 800; // landscape: the height is the smaller side
+    const ImageProjection p(ortho, glm::dvec3(0.0), 100.0, width, image_height);
+    glm::dvec3 right, up;
+    ortho.screen_basis(right, up);
+    // The orbited point lands at the image's centre; a step of the shown
+    // height along screen up spans the image's height, wherever along the
+    // line of sight it stands (parallel projection).
+    for (const double depth : {-50.0, 0.0, 3.0}) {
+        const glm::dvec3 at = view.centre + depth * ortho.forward();
+        const glm::dvec2 c = p.project(at);
+        EXPECT_NEAR(c.x, 600.0, 1e-9);
+        EXPECT_NEAR(c.y, 400.0, 1e-9);
+        const glm::dvec2 top = p.project(at + 0.5 * height * up), rightmost = p.project(at + 0.25 * height * right);
+        EXPECT_NEAR(top.y, 0.0, 1e-9);
+        EXPECT_NEAR(rightmost.x, 600.0 + 200.0, 1e-9);
+    }
+    // The perspective camera shows a small step at the orbited point the same size.
+    const ImageProjection q(perspective, glm::dvec3(0.0), 100.0, width, image_height);
+    const double step = 0.01 * height;
+    EXPECT_NEAR(glm::length(q.project(view.centre + step * up) - q.project(view.centre)), 8.0, 1e-3);
+    EXPECT_NEAR(glm::length(p.project(view.centre + step * up) - p.project(view.centre)), 8.0, 1e-9);
+}
+
+// The View menu's axonometric presets look along the command line's named
+// views and turn the orbit orthographic; the others keep its projection.
+TEST(OrbitCamera, AxonometricPresetsTurnTheOrbitOrthographic) {
+    for (const glm::dvec3 up : {glm::dvec3(0, 1, 0), glm::dvec3(0, 0, 1)})
+        for (const NamedView& named : named_views()) {
+            OrbitView view;
+            view.up = up;
+            view.pan = glm::dvec3(0.3, -0.2, 0.0);
+            const OrbitView turned = preset_view(view, named);
+            EXPECT_EQ(turned.orthographic, named.axonometric) << named.name;
+            EXPECT_NEAR(glm::length(orbit_camera(turned).forward() - view_dir_at(up, named.yaw, named.pitch)), 0.0, 1e-9)
+                << named.name;
+            EXPECT_EQ(turned.distance, view.distance);
+            EXPECT_EQ(turned.pan, view.pan);
+            view.orthographic = true;
+            EXPECT_TRUE(preset_view(view, named).orthographic) << named.name << " keeps orthographic";
+        }
+    ASSERT_NE(find_named_view("iso"), nullptr);
+    EXPECT_TRUE(find_named_view("iso")->axonometric);
+    EXPECT_FALSE(find_named_view("front")->axonometric);
+    EXPECT_EQ(find_named_view("isometric"), nullptr);
+}
