@@ -157,6 +157,8 @@ OverlayResult compute_overlay(const LoadedMesh& mesh, ContourScene& scene, const
     // Curves found before the surface was split anew lie on other edges.
     if (parabolic && parabolic->mesh_edges != scene.topology.n_edges()) parabolic.reset();
     keep_parabolic(scene.topology, ParabolicOptions{}, parabolic);
+    out.canvas_width = framed.width;
+    out.canvas_height = framed.height;
     StillJob job = make_still_job(framed, out.camera, light);
     auto is_parabolic = [](const ContourSpec& k) { return k.kind == ContourKind::Parabolic; };
     if (!parabolic) job.scene.kinds.erase(std::remove_if(job.scene.kinds.begin(), job.scene.kinds.end(), is_parabolic), job.scene.kinds.end());

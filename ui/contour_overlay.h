@@ -75,6 +75,9 @@ struct OverlayResult {
     Light light;   ///< the light the frame was computed with
     Camera camera; ///< the camera it was computed for
     int frame = 0; ///< the timeline frame it was computed for
+    /// The canvas drawn on: the style's, its height following a file
+    /// camera's aspect when seen through one.
+    int canvas_width = 0, canvas_height = 0;
 };
 
 /// The region colouring of @p style lit by @p light: the style's fills

@@ -12,6 +12,7 @@
 #include "ui/resources.h"
 #include "ui/styleeditor.h"
 #include "ui/timeline.h"
+#include "ui/preferences.h"
 
 namespace snaxels::ui {
 
@@ -120,7 +121,7 @@ void DocumentController::onLoaded(const LoadResult& result) {
         // A new untitled document: this one's style (File > New: the
         // default), the mesh's own framing and the animation a new mesh
         // starts with.
-        if (std::exchange(pendingDefaultStyle_, false)) document_->resetStyleText(initial_style_text());
+        if (std::exchange(pendingDefaultStyle_, false)) document_->resetStyleText(preferred_style_text());
         document_->startNew(spec, result.mesh, facts, first_look(facts));
         if (!document_->animation().camera.empty())
             emit status(tr("Looking through the file's camera \"%1\": choose View camera in the timeline to orbit")

@@ -29,6 +29,7 @@
 #include "ui/document.h"
 #include "ui/document_controller.h"
 #include "ui/page_setup.h"
+#include "ui/preferences.h"
 
 namespace snaxels::ui {
 
@@ -41,12 +42,14 @@ QString first_writable_folder(const QStringList& folders) {
     return QFileInfo(documents).isDir() && QFileInfo(documents).isWritable() ? documents : QDir::homePath();
 }
 
-QString suggested_save_path(const QString& meshSpec, const char* folderKey, const QString& extension) {
-    // The folder last used for this kind of file, else the mesh's, else
-    // documents or home: the first that can be written to. The name, the mesh's.
+QString suggested_save_path(const QString& meshSpec, const char* folderKey, const QString& extension,
+                            const QString& projectPath) {
     const bool file = !meshSpec.isEmpty() && !meshSpec.startsWith("proc:");
-    const QString folder = first_writable_folder(
-        {QSettings().value(folderKey).toString(), file ? QFileInfo(meshSpec).absolutePath() : QString()});
+    const QSettings settings;
+    const QString preferred = QString(folderKey) == kExportFolder ? settings.value(kPrefExportFolder).toString() : QString();
+    const QString folder = first_writable_folder({preferred, settings.value(folderKey).toString(),
+                                                  projectPath.isEmpty() ? QString() : QFileInfo(projectPath).absolutePath(),
+                                                  file ? QFileInfo(meshSpec).absolutePath() : QString()});
     const QString name = file               ? QFileInfo(meshSpec).completeBaseName()
                          : meshSpec.isEmpty() ? QObject::tr("untitled")
                                               : meshSpec.section(':', 1, 1);
@@ -54,9 +57,9 @@ QString suggested_save_path(const QString& meshSpec, const char* folderKey, cons
 }
 
 QString ask_save_path(QWidget* parent, const QString& meshSpec, const QString& title, const char* folderKey,
-                      const QString& extension, const QString& filter) {
+                      const QString& extension, const QString& filter, const QString& projectPath) {
     QString chosen_filter;
-    QString path = QFileDialog::getSaveFileName(parent, title, suggested_save_path(meshSpec, folderKey, extension),
+    QString path = QFileDialog::getSaveFileName(parent, title, suggested_save_path(meshSpec, folderKey, extension, projectPath),
                                                 filter, &chosen_filter);
     if (path.isEmpty()) return path;
     if (QFileInfo(path).suffix().isEmpty()) {
@@ -149,7 +152,8 @@ void ExportActions::askPageSetup() {
 }
 
 void ExportActions::askAndExport(const QString& title, const QString& extension, const QString& filter, bool frame) {
-    const QString path = ask_save_path(window_, document_->meshSpec(), title, kExportFolder, extension, filter);
+    const QString path =
+        ask_save_path(window_, document_->meshSpec(), title, kExportFolder, extension, filter, document_->projectPath());
     if (path.isEmpty()) return;
     if (frame) exportFrame(path);
     else if (!is_video(output_kind_for(path.toStdString()).value_or(OutputKind::Svg)) || askVideoSettings(path))

@@ -32,17 +32,19 @@ inline constexpr const char* kVideoCrf = "video/crf";
 /// packaged model's folder is a system folder the user cannot write).
 QString first_writable_folder(const QStringList& folders);
 
-/// Where a save dialog for a kind of file starts: the folder last used for
-/// it (the QSettings key @p folderKey), else the folder of @p meshSpec (a
-/// file), else documents or home, whichever first can be written to; named
-/// after the mesh, with @p extension.
-QString suggested_save_path(const QString& meshSpec, const char* folderKey, const QString& extension);
+/// Where a save dialog for a kind of file starts: for exports, the export
+/// folder of the preferences; the folder last used for the kind (the
+/// QSettings key @p folderKey); the project's folder (@p projectPath, when
+/// saved); the folder of @p meshSpec (a file); documents or home: the first
+/// of these that can be written to. Named after the mesh, with @p extension.
+QString suggested_save_path(const QString& meshSpec, const char* folderKey, const QString& extension,
+                            const QString& projectPath = {});
 
 /// Asks where to save a kind of file (starting at suggested_save_path), adds
 /// the extension of the filter chosen when the name has none, and
 /// remembers the folder; empty when cancelled.
 QString ask_save_path(QWidget* parent, const QString& meshSpec, const QString& title, const char* folderKey,
-                      const QString& extension, const QString& filter);
+                      const QString& extension, const QString& filter, const QString& projectPath = {});
 
 class ExportActions : public QObject {
     Q_OBJECT

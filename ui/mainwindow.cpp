@@ -33,6 +33,7 @@
 #include "ui/styleeditor.h"
 #include "ui/svgpane.h"
 #include "ui/timeline.h"
+#include "ui/preferences.h"
 
 namespace snaxels::ui {
 
@@ -50,6 +51,7 @@ MainWindow::MainWindow(QWidget* parent)
     splitter->setStretchFactor(1, 2);
     splitter->setSizes({600, 400});
     setCentralWidget(splitter);
+    styleEditor_->showText(preferred_style_text()); // Edit > Preferences' default style
     document_ = new Document(styleEditor_->text(), this);
     document_->resetAnimation(initial_animation());
     controller_ = new DocumentController(document_, this);
@@ -152,6 +154,9 @@ void MainWindow::connectControllers() {
         statusBar()->showMessage(text, ms);
     });
     connect(controller_, &DocumentController::meshLoaded, this, &MainWindow::meshLoaded);
+    connect(controller_, &DocumentController::meshLoaded, this, [this] {
+        framePose_ = document_->projectPath().isEmpty() && document_->animation().kind == AnimationSpec::Kind::Clip;
+    });
     connect(controller_, &DocumentController::loadFailed, this, &MainWindow::loadFailed);
     connect(controller_, &DocumentController::projectOpened, this, &MainWindow::projectOpened);
     connect(controller_, &DocumentController::projectFailed, this, &MainWindow::projectFailed);
@@ -425,12 +430,18 @@ void MainWindow::onContoursReady(const OverlayResult& ready) {
         emit contoursUpdated();
         return;
     }
-    if (result.geometry) view_->setPose(std::move(*result.geometry));
+    const bool posed = result.geometry != nullptr;
+    if (posed) view_->setPose(std::move(*result.geometry));
+    // A new file on its clip: framed as posed, once its first frame is (not
+    // an edit), unless the user has moved the camera (or edited) meanwhile.
+    if (std::exchange(framePose_, false) && posed && document_->undoStack()->count() == 0)
+        document_->resetView(view_->poseFraming());
     view_->setRegionShading(region_shading(document_->style(), result.light, regionsAction_->isChecked()));
     contourLoops_ = result.loops;
     contourLabel_->setText(tr("%1 loops, %2 snaxels, %3 ms").arg(result.loops).arg(result.snaxels).arg(result.ms, 0, 'f', 1));
     // Through a file's camera, the 3-D view looks through it too.
     view_->setFileCamera(document_->animation().camera.empty() ? std::nullopt : std::optional<Camera>(result.camera));
+    view_->setCanvas(result.canvas_width, result.canvas_height, document_->style().margin, document_->style().page);
     view_->setContours(std::move(result.strips), result.camera);
     timeline_->frameShown(result.frame);
     exports_->setFrame(QByteArray::fromStdString(result.svg), {});

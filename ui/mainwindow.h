@@ -174,6 +174,7 @@ class MainWindow : public QMainWindow {
     QProgressBar* busy_;
     QLabel* contourLabel_;
     std::size_t contourLoops_ = 0;
+    bool framePose_ = false; ///< a file just opened on its clip: frame its first pose when drawn
     std::shared_ptr<ContourScene> scene_; ///< the loaded mesh's, posed by the contour thread
 
     // The document: what a project file keeps, its undo stack and state. The

@@ -52,6 +52,7 @@ void MainWindow::createMenus() {
     });
     edit->addAction(undo);
     edit->addAction(redo);
+    add_preferences_action(edit, this);
     add_style_menu(this, document_, styleEditor_);
     exports_->addMenu();
     QMenu* playMenu = menuBar()->addMenu(tr("&Play"));
@@ -69,6 +70,7 @@ void MainWindow::createFileMenu() {
     QMenu* file = menuBar()->addMenu(tr("&File"));
     QAction* fresh = file->addAction(tr("&New"), controller_, &DocumentController::newDocument);
     fresh->setShortcut(QKeySequence::New);
+    fresh->setObjectName("newDocument");
     fresh->setToolTip(tr("A new untitled document on the default scene, with the default style"));
     auto ask = [this](const QString& title, const QString& filter) {
         const QString path = QFileDialog::getOpenFileName(this, title, QSettings().value("paths/lastDir").toString(), filter);
@@ -114,6 +116,10 @@ void MainWindow::createViewMenu() {
     reset->setShortcut(Qt::Key_Home);
     reset->setObjectName("resetCamera");
     reset->setToolTip(tr("Look at the model's front from a little above and to the side"));
+    QAction* selected = viewMenu->addAction(tr("Frame &Selected"), view_, &MeshView::frameSelected);
+    selected->setShortcut(QKeySequence(tr("Shift+Home")));
+    selected->setObjectName("frameSelected");
+    selected->setToolTip(tr("Frame the objects selected in the Objects panel (all, with none selected)"));
     add_view_presets(viewMenu, document_);
     QMenu* upMenu = viewMenu->addMenu(tr("&Up Axis"));
     upMenu->setObjectName("upAxisMenu");
@@ -168,6 +174,13 @@ void MainWindow::createViewMenu() {
         parabolic_->ensure();
         scheduleContours();
     });
+    QAction* frame = viewMenu->addAction(tr("Camera Fra&me"), view_, &MeshView::setFrameShown);
+    frame->setObjectName("cameraFrame");
+    frame->setCheckable(true);
+    frame->setToolTip(tr("Darken the 3-D view outside the drawing's frame, as the export and the SVG pane show it"));
+    frame->setChecked(QSettings().value("view/frame", true).toBool());
+    connect(frame, &QAction::toggled, this, [](bool on) { QSettings().setValue("view/frame", on); });
+    view_->setFrameShown(frame->isChecked());
     viewMenu->addAction(tr("&Fit SVG Pane"), svgPane_, &SvgPane::fit);
     viewMenu->addSeparator();
     // Every dock can be closed and brought back from here.

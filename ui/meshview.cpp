@@ -376,20 +376,21 @@ void MeshView::uploadContours() {
         }
         lineRanges_.push_back({first, static_cast<int>(n)});
     }
-    QOpenGLVertexArrayObject::Binder bind(&lineVao_);
-    lineVbo_.bind();
-    lineVbo_.allocate(lineVertices_.data(), static_cast<int>(lineVertices_.size() * sizeof(float)));
-    const int stride = 8 * sizeof(float);
-    glEnableVertexAttribArray(0);
-    glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, stride, nullptr);
-    glEnableVertexAttribArray(1);
-    glVertexAttribPointer(1, 3, GL_FLOAT, GL_FALSE, stride, reinterpret_cast<void*>(3 * sizeof(float)));
-    glEnableVertexAttribArray(2);
-    glVertexAttribPointer(2, 1, GL_FLOAT, GL_FALSE, stride, reinterpret_cast<void*>(6 * sizeof(float)));
-    glEnableVertexAttribArray(3);
-    glVertexAttribPointer(3, 1, GL_FLOAT, GL_FALSE, stride, reinterpret_cast<void*>(7 * sizeof(float)));
-    lineVbo_.release();
+    uploadLineVertices(lineVao_, lineVbo_, lineVertices_);
     linesDirty_ = false;
+}
+
+void MeshView::uploadLineVertices(QOpenGLVertexArrayObject& vao, QOpenGLBuffer& vbo, const std::vector<float>& data) {
+    QOpenGLVertexArrayObject::Binder bind(&vao);
+    vbo.bind();
+    vbo.allocate(data.data(), static_cast<int>(data.size() * sizeof(float)));
+    const int stride = 8 * sizeof(float);
+    for (int a = 0; a < 4; ++a) glEnableVertexAttribArray(GLuint(a));
+    glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, stride, nullptr);
+    glVertexAttribPointer(1, 3, GL_FLOAT, GL_FALSE, stride, reinterpret_cast<void*>(3 * sizeof(float)));
+    glVertexAttribPointer(2, 1, GL_FLOAT, GL_FALSE, stride, reinterpret_cast<void*>(6 * sizeof(float)));
+    glVertexAttribPointer(3, 1, GL_FLOAT, GL_FALSE, stride, reinterpret_cast<void*>(7 * sizeof(float)));
+    vbo.release();
 }
 
 void MeshView::setTurntable(double degrees) {
@@ -405,37 +406,53 @@ void MeshView::centreView() {
     emit cameraChanged();
 }
 
-void MeshView::resetCamera() {
-    // The model's front from a little above and to the side, standing on its
-    // up axis, framing the pose drawn (a clip's frame may stand far from the
-    // rest pose): its bounding sphere, reached by a pan from the orbit's
-    // centre, which stays the mesh's (turntables turn about it).
-    glm::dvec3 lo(std::numeric_limits<double>::max()), hi(-std::numeric_limits<double>::max());
-    for (std::size_t i = 0; i + 5 < vertices_.size(); i += 6)
-        for (std::size_t k = 0; k < 3; ++k) {
-            lo[int(k)] = std::min(lo[int(k)], double(vertices_[i + k]));
-            hi[int(k)] = std::max(hi[int(k)], double(vertices_[i + k]));
-        }
-    const bool posed = vertexCount_ > 0;
-    const glm::dvec3 centre = posed ? 0.5 * (lo + hi) : centre_;
-    const double radius = posed ? std::max(0.5 * glm::length(hi - lo), 1e-9) : radius_;
-    const double turntable = orbit_.turntable;
-    // Home keeps the projection and the lens, as Blender's does.
-    const bool orthographic = orbit_.orthographic;
-    const double fov = orbit_.fov_deg;
-    orbit_ = framing_view(centre_, radius, orbit_.up);
-    orbit_.orthographic = orthographic;
-    orbit_.fov_deg = fov;
-    orbit_.distance = framing_distance(radius, fov);
-    orbit_.turntable = 0.0;
-    glm::dvec3 right, up;
-    orbit_camera(orbit_).screen_basis(right, up);
-    // In eye space the pan adds to the offset from the centre: it cancels the pose's.
-    orbit_.pan = -glm::dvec3(glm::dot(centre - centre_, right), glm::dot(centre - centre_, up), 0.0);
-    orbit_.turntable = turntable;
+void MeshView::resetCamera() { frame(drawnPoints()); }
+
+std::vector<glm::vec3> MeshView::drawnPoints() const {
+    // The pose drawn (a clip's frame may stand far from the rest pose).
+    std::vector<glm::vec3> points;
+    points.reserve(vertices_.size() / 6);
+    for (std::size_t i = 0; i + 5 < vertices_.size(); i += 6) points.emplace_back(vertices_[i], vertices_[i + 1], vertices_[i + 2]);
+    return points;
+}
+
+OrbitView MeshView::poseFraming() const { return framing(drawnPoints()); }
+
+void MeshView::frameSelected() {
+    if (highlight_.empty()) resetCamera();
+    else frame(highlight_);
+}
+
+void MeshView::frame(const std::vector<glm::vec3>& points) {
+    orbit_ = framing(points);
     update();
     emit cameraChanged();
     emit viewEdited();
+}
+
+OrbitView MeshView::framing(const std::vector<glm::vec3>& points) const {
+    // The model's front from a little above and to the side, standing on its
+    // up axis, framing the points' bounding sphere, reached by a pan from
+    // the orbit's centre, which stays the mesh's (turntables turn about it).
+    glm::dvec3 lo(std::numeric_limits<double>::max()), hi(-std::numeric_limits<double>::max());
+    for (const glm::vec3& p : points) {
+        lo = glm::min(lo, glm::dvec3(p));
+        hi = glm::max(hi, glm::dvec3(p));
+    }
+    const bool any = !points.empty();
+    const glm::dvec3 centre = any ? 0.5 * (lo + hi) : centre_;
+    const double radius = any ? std::max(0.5 * glm::length(hi - lo), 1e-9) : radius_;
+    // Home keeps the projection and the lens, as Blender's does.
+    OrbitView v = framing_view(centre_, radius, orbit_.up);
+    v.orthographic = orbit_.orthographic;
+    v.fov_deg = orbit_.fov_deg;
+    v.distance = framing_distance(radius, v.fov_deg);
+    glm::dvec3 right, up;
+    orbit_camera(v).screen_basis(right, up);
+    // In eye space the pan adds to the offset from the centre: it cancels the pose's.
+    v.pan = -glm::dvec3(glm::dot(centre - centre_, right), glm::dot(centre - centre_, up), 0.0);
+    v.turntable = orbit_.turntable;
+    return v;
 }
 
 void MeshView::initializeGL() {
@@ -454,6 +471,8 @@ void MeshView::initializeGL() {
     lineVbo_.create();
     highlightVao_.create();
     highlightVbo_.create();
+    frameVao_.create();
+    frameVbo_.create();
     highlightDirty_ = true;
     glReady_ = true;
     dirty_ = true;
@@ -480,32 +499,101 @@ glm::dmat4 MeshView::viewMatrix() const {
     return glm::lookAt(c.eye, c.eye + c.forward(), up);
 }
 
+void MeshView::setCanvas(int width, int height, double margin, const Page& page) {
+    if (canvas_.width == width && canvas_.height == height && canvas_.margin == margin && canvas_.page == page) return;
+    canvas_.width = width;
+    canvas_.height = height;
+    canvas_.margin = margin;
+    canvas_.page = page;
+    update();
+}
+
+void MeshView::setFrameShown(bool shown) {
+    if (frameShown_ == shown) return;
+    frameShown_ = shown;
+    update();
+}
+
+QRectF MeshView::frameRect() const {
+    const double s = frameScale(), w = canvas_.width * s, h = canvas_.height * s;
+    return {0.5 * (width() - w), 0.5 * (height() - h), w, h};
+}
+
+double MeshView::frameScale() const {
+    // A little room around the frame, so its border shows.
+    const double room = 12.0;
+    return std::max(std::min((width() - 2.0 * room) / canvas_.width, (height() - 2.0 * room) / canvas_.height), 1e-3);
+}
+
+ImageProjection MeshView::drawingProjection() const {
+    return drawing_projection(canvas_, camera(), centre_, radius_);
+}
+
+double MeshView::worldPerPixel() const {
+    const Camera c = camera();
+    const double px = frameScale() * drawingProjection().scale(); // view pixels per unit (at unit depth)
+    if (c.orthographic()) return 1.0 / px;
+    return (fileCamera_ ? std::max(glm::dot(centre_ - c.eye, c.forward()), 1e-9) : orbit_.distance) / px;
+}
+
 glm::dmat4 MeshView::projectionMatrix() const {
+    // As the drawing projects onto its canvas, the canvas scaled into the
+    // frame at the view's centre: the same picture.
+    const Camera c = camera();
     const double aspect = double(std::max(width(), 1)) / std::max(height(), 1);
-    if (fileCamera_) {
-        // The file's framing: its field of view (or height) spans the
-        // view's height, as it spans the drawing's.
-        const Camera& c = *fileCamera_;
-        const double depth = glm::dot(centre_ - c.eye, c.forward());
-        const double far = std::max(depth + radius_ * 1.5, radius_ * 1e-3);
-        if (c.orthographic()) {
-            const double h = 0.5 * c.ortho_height;
-            return glm::ortho(-h * aspect, h * aspect, -h, h, depth - radius_ * 1.5, far);
-        }
-        return glm::perspective(glm::radians(c.fov_deg), aspect, std::max(depth - radius_ * 1.5, far * 1e-4), far);
-    }
-    if (orbit_.orthographic) {
-        // The height the perspective shows at the orbited point, everywhere;
-        // depth from before the mesh to beyond it, wherever the eye stands.
-        const double h = 0.5 * orbit_view_height(orbit_);
-        return glm::ortho(-h * aspect, h * aspect, -h, h, orbit_.distance - radius_ * 1.5, orbit_.distance + radius_ * 1.5);
-    }
-    const double near = std::max(orbit_.distance - radius_ * 1.5, orbit_.distance * 1e-3);
-    return glm::perspective(glm::radians(orbit_.fov_deg), aspect, near, orbit_.distance + radius_ * 1.5);
+    const double px = frameScale() * drawingProjection().scale(); // view pixels per unit (at unit depth)
+    const double half = 0.5 * std::max(height(), 1) / px;         // the view's half height (at unit depth)
+    const double depth = glm::dot(centre_ - c.eye, c.forward());
+    const double far = std::max(depth + radius_ * 1.5, radius_ * 1e-3);
+    if (c.orthographic()) return glm::ortho(-half * aspect, half * aspect, -half, half, depth - radius_ * 1.5, far);
+    return glm::perspective(2.0 * std::atan(half), aspect, std::max(depth - radius_ * 1.5, far * 1e-4), far);
+}
+
+void MeshView::drawFrame() {
+    // In normalized device coordinates, through the line shader: the four
+    // bands outside the frame darkened (its translucent "hidden" colour
+    // without dashes), then the frame's border.
+    const QRectF f = frameRect();
+    const float w = float(std::max(width(), 1)), h = float(std::max(height(), 1));
+    const float l = float(2.0 * f.left() / w - 1.0), r = float(2.0 * f.right() / w - 1.0);
+    const float t = float(1.0 - 2.0 * f.top() / h), b = float(1.0 - 2.0 * f.bottom() / h);
+    std::vector<float> data;
+    auto corner = [&](float x, float y, float grey, float translucent) {
+        data.insert(data.end(), {x, y, 0.0f, grey, grey, grey, translucent, 0.0f});
+    };
+    auto quad = [&](float x0, float y0, float x1, float y1) {
+        for (const auto& [x, y] : {std::pair{x0, y0}, {x1, y0}, {x1, y1}, {x0, y0}, {x1, y1}, {x0, y1}}) corner(x, y, 0.0f, 1.0f);
+    };
+    quad(-1.0f, t, 1.0f, 1.0f);  // above
+    quad(-1.0f, -1.0f, 1.0f, b); // below
+    quad(-1.0f, b, l, t);        // left
+    quad(r, b, 1.0f, t);         // right
+    for (const auto& [x, y] : {std::pair{l, t}, {r, t}, {r, b}, {l, b}}) corner(x, y, 0.78f, 0.0f);
+    uploadLineVertices(frameVao_, frameVbo_, data);
+    QOpenGLVertexArrayObject::Binder bind(&frameVao_);
+    glDisable(GL_DEPTH_TEST);
+    glEnable(GL_BLEND);
+    glBlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ZERO, GL_ONE);
+    lineProgram_.bind();
+    const glm::mat4 identity(1.0f);
+    glUniformMatrix4fv(lineProgram_.uniformLocation("mvp"), 1, GL_FALSE, glm::value_ptr(identity));
+    lineProgram_.setUniformValue("dashLength", 1e30f);
+    lineProgram_.setUniformValue("depthBias", 0.0f);
+    glDrawArrays(GL_TRIANGLES, 0, 24);
+    glDrawArrays(GL_LINE_LOOP, 24, 4);
+    lineProgram_.release();
+    glDisable(GL_BLEND);
 }
 
 void MeshView::paintGL() {
     globe_->update(); // the camera or the light may have turned
+    // The frame's painter leaves its own state: set what the drawing needs.
+    glViewport(0, 0, int(width() * devicePixelRatioF()), int(height() * devicePixelRatioF()));
+    glDisable(GL_BLEND);
+    glDisable(GL_SCISSOR_TEST);
+    glDisable(GL_STENCIL_TEST);
+    glDepthMask(GL_TRUE);
+    glDepthFunc(GL_LESS);
     glClearColor(0.16f, 0.17f, 0.19f, 1.0f);
     glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
     if (!vertexCount_) return;
@@ -532,6 +620,7 @@ void MeshView::paintGL() {
     // behind the mesh is hidden by it instead of crossing its face.
     if (linesDirty_) uploadContours();
     if (!lineRanges_.empty()) drawContours(mvp, contoursStale());
+    if (frameShown_) drawFrame();
 }
 
 void MeshView::setHighlight(std::vector<glm::vec3> triangles) {
@@ -547,16 +636,7 @@ void MeshView::drawHighlight(const glm::mat4& mvp) {
         std::vector<float> data;
         data.reserve(highlight_.size() * 8);
         for (const glm::vec3& p : highlight_) data.insert(data.end(), {p.x, p.y, p.z, 1.0f, 0.55f, 0.1f, 1.0f, 0.0f});
-        QOpenGLVertexArrayObject::Binder bind(&highlightVao_);
-        highlightVbo_.bind();
-        highlightVbo_.allocate(data.data(), static_cast<int>(data.size() * sizeof(float)));
-        const int stride = 8 * sizeof(float);
-        for (int a = 0; a < 4; ++a) glEnableVertexAttribArray(GLuint(a));
-        glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, stride, nullptr);
-        glVertexAttribPointer(1, 3, GL_FLOAT, GL_FALSE, stride, reinterpret_cast<void*>(3 * sizeof(float)));
-        glVertexAttribPointer(2, 1, GL_FLOAT, GL_FALSE, stride, reinterpret_cast<void*>(6 * sizeof(float)));
-        glVertexAttribPointer(3, 1, GL_FLOAT, GL_FALSE, stride, reinterpret_cast<void*>(7 * sizeof(float)));
-        highlightVbo_.release();
+        uploadLineVertices(highlightVao_, highlightVbo_, data);
         highlightVertices_ = static_cast<int>(highlight_.size());
         highlightDirty_ = false;
     }
@@ -594,8 +674,7 @@ void MeshView::drawContours(const glm::mat4& mvp, bool stale) {
     lineProgram_.bind();
     glUniformMatrix4fv(lineProgram_.uniformLocation("mvp"), 1, GL_FALSE, glm::value_ptr(mvp));
     // Dashes of about 6 pixels at the mesh's distance.
-    const double worldPerPixel = 2.0 * orbit_.distance * std::tan(glm::radians(orbit_.fov_deg * 0.5)) / std::max(height(), 1);
-    lineProgram_.setUniformValue("dashLength", float(6.0 * worldPerPixel));
+    lineProgram_.setUniformValue("dashLength", float(6.0 * worldPerPixel()));
     lineProgram_.setUniformValue("depthBias", stale ? 2e-4f : 0.0f);
     QOpenGLVertexArrayObject::Binder bind(&lineVao_);
     for (const bool hiddenPass : {true, false}) {
@@ -655,8 +734,7 @@ void MeshView::mouseMoveEvent(QMouseEvent* event) {
         orbit_.yaw += d.x() * 0.01;
         orbit_.pitch = std::clamp(orbit_.pitch + d.y() * 0.01, -kMaxPitch, kMaxPitch);
     } else if (event->buttons() & (Qt::RightButton | Qt::MiddleButton)) {
-        const double perPixel = 2.0 * orbit_.distance * std::tan(glm::radians(orbit_.fov_deg * 0.5)) /
-                                std::max(height(), 1);
+        const double perPixel = worldPerPixel(); // the grabbed point follows the cursor
         orbit_.pan += glm::dvec3(d.x() * perPixel, -d.y() * perPixel, 0.0);
     } else {
         return;

@@ -13,12 +13,14 @@
 #include <QOpenGLVertexArrayObject>
 #include <QOpenGLWidget>
 #include <QPoint>
+#include <QRectF>
 #include <glm/glm.hpp>
 
 #include "snaxels/mesh/mesh.h"
 #include "snaxels/mesh/topology.h"
 #include "snaxels/scene/camera.h"
 #include "snaxels/scene/orbit.h"
+#include "snaxels/style/style.h"
 
 namespace snaxels::ui {
 
@@ -78,6 +80,12 @@ class MeshView : public QOpenGLWidget, protected QOpenGLFunctions_3_3_Core {
     /// Frames the whole mesh, its front seen from a little above and to the
     /// side (View > Reset Camera): an edit (viewEdited).
     void resetCamera();
+    /// Frames the parts selected in the Objects panel (the tinted
+    /// triangles) as resetCamera frames the whole: View > Frame Selected.
+    /// With none selected, frames the whole.
+    void frameSelected();
+    /// The orbit resetCamera moves to: the pose drawn, framed.
+    OrbitView poseFraming() const;
     /// Looks through @p camera (one of the file's cameras, posed for the
     /// frame) instead of the orbit; nullopt goes back to the orbit. Orbit,
     /// pan and zoom then leave the view as it is and say why
@@ -114,6 +122,17 @@ class MeshView : public QOpenGLWidget, protected QOpenGLFunctions_3_3_Core {
     /// selected in the Objects panel. Empty: no tint.
     void setHighlight(std::vector<glm::vec3> triangles);
     std::size_t highlightTriangles() const { return highlight_.size() / 3; }
+    /// The canvas the drawing is made on (its pixels, margin and page, a
+    /// file camera's aspect applied): the view shows the drawing's frame,
+    /// the canvas fitted inside it, with what lies outside darkened, and
+    /// projects as the drawing does, so the two show the same picture.
+    void setCanvas(int width, int height, double margin, const Page& page);
+    /// The drawing's frame in the view's pixels.
+    QRectF frameRect() const;
+    /// Whether the frame's border and darkened surround are drawn (View >
+    /// Camera Frame); the view frames the picture as the drawing does either way.
+    void setFrameShown(bool shown);
+    bool frameShown() const { return frameShown_; }
 
   signals:
     /// The camera moved (orbit, pan, zoom, reset or a new mesh).
@@ -142,14 +161,31 @@ class MeshView : public QOpenGLWidget, protected QOpenGLFunctions_3_3_Core {
 
   private:
     void upload();
+    /// Frames the bounding sphere of @p points (the whole mesh's, without): an edit.
+    void frame(const std::vector<glm::vec3>& points);
+    /// The orbit that frames @p points, keeping the projection, lens and turntable.
+    OrbitView framing(const std::vector<glm::vec3>& points) const;
+    /// The corners of the triangles drawn (the pose shown).
+    std::vector<glm::vec3> drawnPoints() const;
     void setRegionUniforms();
     void buildSurfaceProgram();
     void drawContours(const glm::mat4& mvp, bool stale);
     void drawHighlight(const glm::mat4& mvp);
     void resizeEvent(QResizeEvent* event) override;
     void uploadContours();
+    /// Puts @p data, in the line shader's layout (position, colour, hidden
+    /// flag, arc length), into @p vbo with @p vao's attributes.
+    void uploadLineVertices(QOpenGLVertexArrayObject& vao, QOpenGLBuffer& vbo, const std::vector<float>& data);
     glm::dmat4 viewMatrix() const;
     glm::dmat4 projectionMatrix() const;
+    /// View pixels per canvas pixel: the canvas fitted into the view.
+    double frameScale() const;
+    /// The drawing's projection of the view's camera onto the canvas.
+    ImageProjection drawingProjection() const;
+    /// World units a view pixel spans at the orbited point.
+    double worldPerPixel() const;
+    /// Darkens the view outside the frame and draws its border.
+    void drawFrame();
 
     std::vector<float> vertices_; // interleaved position, normal per face corner
     bool dirty_ = false;
@@ -160,6 +196,8 @@ class MeshView : public QOpenGLWidget, protected QOpenGLFunctions_3_3_Core {
     double radius_ = 1.0;
     OrbitView orbit_;
     std::optional<Camera> fileCamera_;
+    Style canvas_; ///< the drawing's canvas (its size, margin and page only)
+    bool frameShown_ = true;
     QPoint lastPos_;
     /// A press this view had, not released yet: only its drag can be an
     /// edit (a release whose press went elsewhere, a menu's, is none).
@@ -180,6 +218,8 @@ class MeshView : public QOpenGLWidget, protected QOpenGLFunctions_3_3_Core {
     int highlightVertices_ = 0;
     QOpenGLVertexArrayObject highlightVao_;
     QOpenGLBuffer highlightVbo_{QOpenGLBuffer::VertexBuffer};
+    QOpenGLVertexArrayObject frameVao_; ///< the frame's darkened surround and border
+    QOpenGLBuffer frameVbo_{QOpenGLBuffer::VertexBuffer};
 
     QOpenGLShaderProgram program_;
     int bandCapacity_ = 8, highlightCapacity_ = 4; ///< levels the surface shader's arrays hold

@@ -9,6 +9,11 @@
 #include <QMenu>
 #include <QColorDialog>
 #include <QHeaderView>
+#include <QTimer>
+#include <QScrollBar>
+#include <QMainWindow>
+#include <QDockWidget>
+#include <QEvent>
 #include <QPainter>
 #include <QPixmap>
 #include <QTreeWidget>
@@ -67,6 +72,33 @@ bool draws_intersections(const Style& style, const FaceParts& parts, std::uint32
     return false;
 }
 
+QSize ObjectsPanel::sizeHint() const {
+    const int scrollBar = tree_->verticalScrollBar()->sizeHint().width();
+    return {tree_->header()->length() + 2 * tree_->frameWidth() + scrollBar, QWidget::sizeHint().height()};
+}
+
+bool ObjectsPanel::event(QEvent* event) {
+    // Put in a dock: fitted whenever its tab is raised (the dock says so;
+    // a tabbed-away panel stays "visible").
+    if (event->type() == QEvent::ParentChange)
+        if (auto* dock = qobject_cast<QDockWidget*>(parentWidget()))
+            connect(dock, &QDockWidget::visibilityChanged, this, &ObjectsPanel::dockShown, Qt::UniqueConnection);
+    return QWidget::event(event);
+}
+
+void ObjectsPanel::dockShown(bool shown) {
+    // After the layout has sized the columns to the rows shown.
+    if (shown) QTimer::singleShot(0, this, &ObjectsPanel::fitDock);
+}
+
+void ObjectsPanel::fitDock() {
+    auto* dock = qobject_cast<QDockWidget*>(parentWidget());
+    auto* window = dock ? qobject_cast<QMainWindow*>(dock->parentWidget()) : nullptr;
+    if (!window || !isVisible() || visibleRegion().isEmpty() || dock->isFloating()) return; // its tab raised
+    const int wanted = std::min(sizeHint().width(), window->width() / 2);
+    if (dock->width() < wanted) window->resizeDocks({dock}, {wanted}, Qt::Horizontal);
+}
+
 ObjectsPanel::ObjectsPanel(QWidget* parent) : QWidget(parent), tree_(new QTreeWidget(this)) {
     auto* layout = new QVBoxLayout(this);
     layout->setContentsMargins(0, 0, 0, 0);
@@ -77,8 +109,7 @@ ObjectsPanel::ObjectsPanel(QWidget* parent) : QWidget(parent), tree_(new QTreeWi
     tree_->setHeaderLabels({tr("Part"), tr("Drawn as"), tr("Faces"), tr("Line sets"), tr("Meets"), tr("Lines")});
     tree_->headerItem()->setToolTip(4, tr("Draw the object's intersection lines: where it passes into another object or "
                                           "into itself"));
-    tree_->header()->setSectionResizeMode(0, QHeaderView::Interactive);
-    tree_->header()->resizeSection(0, 160);
+    tree_->header()->setSectionResizeMode(0, QHeaderView::ResizeToContents);
     tree_->header()->setSectionResizeMode(1, QHeaderView::ResizeToContents);
     tree_->header()->setSectionResizeMode(2, QHeaderView::ResizeToContents);
     tree_->header()->setSectionResizeMode(3, QHeaderView::ResizeToContents);
@@ -116,6 +147,7 @@ void ObjectsPanel::setMesh(std::shared_ptr<const LoadedMesh> mesh) {
     mesh_ = std::move(mesh);
     parts_ = mesh_ ? loaded_parts(*mesh_) : nullptr; // once per mesh, not per style edit
     rebuild();
+    if (isVisible()) QTimer::singleShot(0, this, &ObjectsPanel::fitDock); // other names, other widths
 }
 
 void ObjectsPanel::setStyle(const QString& text, const Style& style) {

@@ -50,6 +50,8 @@ class ObjectsPanel : public QWidget {
     /// follow the style; edits are made to the text.
     void setStyle(const QString& text, const Style& style);
     QTreeWidget* tree() const { return tree_; }
+    /// As wide as its columns, so none hides behind a scroll bar.
+    QSize sizeHint() const override;
 
   signals:
     /// The user chose a state: the style text that sets it.
@@ -60,7 +62,15 @@ class ObjectsPanel : public QWidget {
     /// Something worth a line in the status bar.
     void notice(const QString& message);
 
+  protected:
+    /// Put in a dock: follows the dock's tab (dockShown).
+    bool event(QEvent* event) override;
+
   private:
+    /// The dock's tab raised (@p shown): widens the dock to the columns.
+    void dockShown(bool shown);
+    /// Widens the dock holding the panel to sizeHint(), up to half the window.
+    void fitDock();
     void rebuild();
     /// The Lines button of object @p o's row: its outline's colour, width
     /// and hidden lines, written as the object's own line set.

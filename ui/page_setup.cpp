@@ -10,6 +10,7 @@
 #include <QLabel>
 
 #include "snaxels/style/style.h"
+#include "ui/preferences.h"
 
 namespace snaxels::ui {
 namespace {
@@ -130,7 +131,9 @@ void PageSetupDialog::showPage(const Style& style) {
     }
     size_->setCurrentIndex(page.scale > 0.0 ? 2 : page.fit == Page::Fit::Fill ? 1 : 0);
     scale_->setValue(page.scale > 0.0 ? page.scale : 50.0);
-    for (int i = 0; i < units_->count(); ++i)
+    // The page's unit when it has a scale, else the preferences'.
+    units_->setCurrentIndex(std::max(units_->findData(preferred_model_units()), 0));
+    for (int i = 0; page.scale > 0.0 && i < units_->count(); ++i)
         if (*model_unit_mm(units_->itemData(i).toString().toStdString()) == page.unit_mm) units_->setCurrentIndex(i);
 
 }

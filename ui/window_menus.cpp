@@ -19,6 +19,7 @@
 #include "snaxels/version.h"
 #include "ui/document.h"
 #include "ui/export_actions.h"
+#include "ui/preferences.h"
 #include "ui/resources.h"
 #include "ui/styleeditor.h"
 
@@ -196,6 +197,21 @@ void add_view_presets(QMenu* menu, Document* document) {
                                    [menu, document] { if (document->mesh()) ask_field_of_view(menu->parentWidget(), document); });
     fov->setObjectName("fieldOfView");
     fov->setToolTip(QObject::tr("The perspective's vertical field of view (or the lens's focal length)"));
+}
+
+void add_preferences_action(QMenu* edit, QWidget* window) {
+    edit->addSeparator();
+    QAction* prefs = edit->addAction(QObject::tr("&Preferences…"), window, [window] {
+        PreferencesDialog dialog(window);
+        dialog.exec();
+    });
+    prefs->setObjectName("preferences");
+    // The platform's key, which some platforms leave without one.
+    prefs->setShortcut(QKeySequence(QKeySequence::Preferences).isEmpty() ? QKeySequence(QObject::tr("Ctrl+,"))
+                                                                        : QKeySequence(QKeySequence::Preferences));
+    prefs->setMenuRole(QAction::PreferencesRole);
+    prefs->setToolTip(QObject::tr("The style new documents start with, their sharp edges, the model's unit and the "
+                                  "export folder"));
 }
 
 void add_help_menu(QMainWindow* window) {

@@ -6,6 +6,7 @@
 
 class QMainWindow;
 class QMenu;
+class QWidget;
 
 namespace snaxels::ui {
 
@@ -20,6 +21,9 @@ void add_style_menu(QMainWindow* window, const Document* document, StyleEditor* 
 /// the field of view: each one undo step of @p document's camera, taken
 /// only while it has a mesh.
 void add_view_presets(QMenu* menu, Document* document);
+
+/// Adds Edit > Preferences to @p edit: the dialog, for @p window.
+void add_preferences_action(QMenu* edit, QWidget* window);
 
 /// Adds the Help menu to @p window's menu bar.
 void add_help_menu(QMainWindow* window);

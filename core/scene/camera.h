@@ -81,6 +81,9 @@ class ImageProjection {
     void pixel_ray(const glm::dvec2& pixel, double back, glm::dvec3& origin, glm::dvec3& dir) const;
     int width() const { return width_; }
     int height() const { return height_; }
+    /// Pixels per world unit across the line of sight (orthographic), or the
+    /// focal length in pixels (perspective: pixels per unit at unit depth).
+    double scale() const { return scale_; }
 
   private:
     Camera camera_;

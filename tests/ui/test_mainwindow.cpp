@@ -51,7 +51,10 @@
 #include <QTreeWidget>
 #include <QDoubleSpinBox>
 #include <QInputDialog>
+#include <QPainter>
 #include <QPlainTextEdit>
+#include <QDialogButtonBox>
+#include <QLineEdit>
 #include <QProcess>
 #include <QMimeData>
 #include <QUrl>
@@ -60,6 +63,7 @@
 
 #include "snaxels/mesh/isolated_import.h"
 
+#include "snaxels/mesh/parts.h"
 #include "snaxels/mesh/procedural.h"
 #include "snaxels/project/project.h"
 #include "snaxels/scene/orbit.h"
@@ -69,6 +73,7 @@
 #include "ui/mesh_loader.h"
 #include "ui/meshview.h"
 #include "ui/objects_panel.h"
+#include "ui/preferences.h"
 #include "ui/resources.h"
 #include "ui/styleeditor.h"
 #include "ui/svgpane.h"
@@ -126,6 +131,14 @@ void answerUnsavedPrompt(QMessageBox::StandardButton button, bool* asked) {
         poll->deleteLater();
     });
     poll->start();
+}
+
+/// The Objects panel's row of the object called @p name, or null.
+QTreeWidgetItem* objectItem(MainWindow& window, const QString& name) {
+    QTreeWidgetItem* objects = window.objectsPanel()->tree()->topLevelItem(0);
+    for (int i = 0; objects && i < objects->childCount(); ++i)
+        if (objects->child(i)->text(0) == name) return objects->child(i);
+    return nullptr;
 }
 
 QByteArray readAll(const QString& path) {
@@ -390,7 +403,9 @@ class TestMainWindow : public QObject {
                 lit += near(p, QColor("#f6c86b"), 0.85);
                 shadow += near(p, QColor("#c0603e"), 0.85);
             }
-        QVERIFY2(lit > 2000 && shadow > 2000, qPrintable(QString("lit %1, shadow %2 pixels").arg(lit).arg(shadow)));
+        // Each a good part of the cow (drawn in the view's frame, the canvas fitted).
+        QVERIFY2(lit > 1000 && shadow > 1000 && std::min(lit, shadow) > 0.1 * double(lit + shadow),
+                 qPrintable(QString("lit %1, shadow %2 pixels").arg(lit).arg(shadow)));
         window.regionsAction()->setChecked(false);
 
         // A broken style is reported at its line and column; the last good
@@ -1520,9 +1535,7 @@ class TestMainWindow : public QObject {
         dock->raise();
         QTreeWidget* tree = window.objectsPanel()->tree();
         QTreeWidgetItem* objects = tree->topLevelItem(0);
-        QTreeWidgetItem* ball = nullptr;
-        for (int i = 0; i < objects->childCount(); ++i)
-            if (objects->child(i)->text(0) == "Ball") ball = objects->child(i);
+        QTreeWidgetItem* ball = objectItem(window, "Ball");
         QVERIFY(ball);
         QCOMPARE(ball->checkState(4), Qt::Unchecked);
         QVERIFY(!window.currentSvg().contains("data-kind=\"intersection\""));
@@ -1716,6 +1729,7 @@ class TestMainWindow : public QObject {
         QVERIFY(writeEllipsoid(path));
         MainWindow window;
         QVERIFY(showWithMesh(window, path, {1000, 700}));
+        window.meshView()->setFrameShown(false); // the background all around
         QTest::qWait(300);
         snaxels::ui::MeshView* view = window.meshView();
         const QImage still = view->grabFramebuffer().convertToFormat(QImage::Format_RGB32);
@@ -2176,6 +2190,7 @@ class TestMainWindow : public QObject {
     void shadingFollowsTheLight() {
         MainWindow window;
         QVERIFY(showWithMesh(window, "proc:sphere:20000"));
+        window.meshView()->setFrameShown(false); // the background all around
         window.regionsAction()->setChecked(false);
         QSignalSpy contours(&window, &MainWindow::contoursUpdated);
         // Brightness of the sphere's left and right halves in the framebuffer.
@@ -2183,10 +2198,11 @@ class TestMainWindow : public QObject {
             const QImage image = window.meshView()->grabFramebuffer().convertToFormat(QImage::Format_RGB32);
             double left = 0.0, right = 0.0;
             const int mid = image.width() / 2;
+            const QRgb background = image.pixel(0, 0);
             for (int y = 0; y < image.height(); ++y)
                 for (int x = 0; x < image.width(); ++x) {
                     const QRgb c = image.pixel(x, y);
-                    (x < mid ? left : right) += qGray(c);
+                    if (c != background) (x < mid ? left : right) += qGray(c); // the sphere's pixels
                 }
             return std::pair<double, double>(left, right);
         };
@@ -2543,6 +2559,7 @@ class TestMainWindow : public QObject {
         window.timeline()->setFrame(window.document()->animation().frames / 2); // bent
         QVERIFY(contoursSettle(window));
         snaxels::ui::MeshView* view = window.meshView();
+        view->setFrameShown(false); // the background all around
         // Pan it out of sight with a right drag.
         QTest::mousePress(view, Qt::RightButton, {}, QPoint(100, 100));
         for (int x = 120; x <= 900; x += 60) QTest::mouseMove(view, QPoint(x, 100));
@@ -2722,6 +2739,278 @@ class TestMainWindow : public QObject {
         QVERIFY2(check.exitCode() == 0, qPrintable(said));
         window.undoStack()->undo(); // the page goes with one undo
         QVERIFY(!window.document()->styleText().contains("paper="));
+    }
+
+    // Through the still life's 16:9 camera, the 3-D view's frame shows the
+    // picture the drawing shows. Object by object (the others hidden by the
+    // style), the object's pixels in a grab of the 3-D view, mapped from
+    // the frame to the canvas, and the ink of the SVG rendered by QtSvg have
+    // bounding boxes whose edges agree within 2% of the frame's width.
+    void theViewsFrameShowsTheDrawingsPicture() {
+        MainWindow window;
+        QVERIFY(showWithMesh(window, QString(SNAXELS_TEST_ASSETS) + "/meet/still-life.gltf"));
+        QVERIFY(window.meshView()->looksThroughFileCamera()); // the file's first look: its camera
+        const auto parts = snaxels::loaded_parts(*window.document()->mesh());
+        QVERIFY(parts);
+        double worst = 0.0;
+        QString worstObject;
+        for (const snaxels::SceneObject& object : parts->objects) {
+            if (object.name == "Floor") continue; // larger than the frame: cut by it in both
+            QString style = "<style><canvas width=\"800\" height=\"800\"/><contour kind=\"visual\"/>";
+            for (const snaxels::SceneObject& other : parts->objects)
+                if (other.name != object.name) style += QString("<object name=\"%1\" hide=\"true\"/>").arg(QString::fromStdString(other.name));
+            window.document()->setStyleText(style + "</style>");
+            QVERIFY(contoursSettle(window));
+            QTest::qWait(50);
+            // The 3-D view: pixels other than the background inside the frame.
+            const QImage view = window.meshView()->grabFramebuffer().convertToFormat(QImage::Format_RGB32);
+            const QRectF frame = window.meshView()->frameRect();
+            const QRgb background = qRgb(41, 43, 48);
+            auto inkBox = [](const QImage& image, const QRect& within, auto&& isInk) {
+                int x0 = INT_MAX, y0 = INT_MAX, x1 = -1, y1 = -1;
+                for (int y = within.top(); y <= within.bottom(); ++y)
+                    for (int x = within.left(); x <= within.right(); ++x)
+                        if (isInk(image.pixel(x, y))) {
+                            x0 = std::min(x0, x), y0 = std::min(y0, y), x1 = std::max(x1, x), y1 = std::max(y1, y);
+                        }
+                return QRectF(QPointF(x0, y0), QPointF(x1 + 1, y1 + 1));
+            };
+            auto far = [](QRgb a, QRgb b) {
+                return std::abs(qRed(a) - qRed(b)) + std::abs(qGreen(a) - qGreen(b)) + std::abs(qBlue(a) - qBlue(b)) > 24;
+            };
+            const QRect inside = frame.toAlignedRect().adjusted(2, 2, -2, -2) & view.rect();
+            const QRectF seen = inkBox(view, inside, [&](QRgb p) { return far(p, background); });
+            // The drawing: its SVG rendered at the canvas's size.
+            QSvgRenderer svg(window.currentSvg());
+            QVERIFY(svg.isValid());
+            const QSize canvas = svg.viewBox().size();
+            QCOMPARE(canvas, QSize(800, 450)); // the camera's 16:9
+            QImage drawn(canvas, QImage::Format_RGB32);
+            drawn.fill(Qt::white);
+            QPainter painter(&drawn);
+            svg.render(&painter);
+            painter.end();
+            const QRectF ink = inkBox(drawn, drawn.rect(), [&](QRgb p) { return far(p, qRgb(255, 255, 255)); });
+            QVERIFY2(ink.isValid() && seen.isValid(), qPrintable(QString::fromStdString(object.name)));
+            // The view's box in canvas pixels.
+            const double k = canvas.width() / frame.width();
+            const QRectF mapped((seen.left() - frame.left()) * k, (seen.top() - frame.top()) * k, seen.width() * k,
+                                seen.height() * k);
+            for (const double d : {mapped.left() - ink.left(), mapped.right() - ink.right(), mapped.top() - ink.top(),
+                                   mapped.bottom() - ink.bottom()}) {
+                const double part = std::abs(d) / canvas.width();
+                if (part > worst) worst = part, worstObject = QString::fromStdString(object.name);
+            }
+        }
+        qInfo("worst edge apart: %.2f%% of the frame's width (%s)", 100.0 * worst, qPrintable(worstObject));
+        QVERIFY2(worst <= 0.02, qPrintable(worstObject));
+    }
+
+    // View > Frame Selected frames the objects selected in the Objects
+    // panel: the still life's ball, seen through the view's camera, then
+    // stands at the drawing's centre and fills most of it.
+    void frameSelectedFramesTheSelection() {
+        MainWindow window;
+        QVERIFY(showWithMesh(window, QString(SNAXELS_TEST_ASSETS) + "/meet/still-life.gltf"));
+        snaxels::AnimationSpec still = window.document()->animation();
+        still.camera.clear(); // the view's camera
+        window.document()->setAnimation(still);
+        QVERIFY(contoursSettle(window));
+        QTreeWidgetItem* ball = objectItem(window, "Ball");
+        QVERIFY(ball);
+        window.objectsPanel()->tree()->setCurrentItem(ball);
+        QVERIFY(window.meshView()->highlightTriangles() > 100);
+        const int steps = window.undoStack()->count();
+        window.findChild<QAction*>("frameSelected")->trigger();
+        QCOMPARE(window.undoStack()->count(), steps + 1); // a camera edit
+        QVERIFY(contoursSettle(window));
+        // The ball's vertices as the drawing projects them.
+        const snaxels::LoadedMesh& mesh = *window.document()->mesh();
+        std::uint32_t index = 0;
+        for (std::uint32_t i = 0; i < mesh.objects.size(); ++i)
+            if (mesh.objects[i].name == "Ball") index = i;
+        const snaxels::ImageProjection projection(window.meshView()->camera(), mesh.report.centre(), 1.0, 800, 800);
+        QRectF box;
+        for (const auto f : mesh.mesh.faces()) {
+            if (mesh.face_object[std::size_t(f.idx())] != index) continue;
+            for (const auto v : mesh.mesh.fv_range(f)) {
+                const auto p = mesh.mesh.point(v);
+                const glm::dvec2 q = projection.project({p[0], p[1], p[2]});
+                box |= QRectF(q.x, q.y, 1e-6, 1e-6);
+            }
+        }
+        qInfo("the ball's box on the 800 px canvas: %.0f,%.0f %.0f x %.0f", box.x(), box.y(), box.width(), box.height());
+        QVERIFY(std::abs(box.center().x() - 400.0) < 16.0 && std::abs(box.center().y() - 400.0) < 16.0);
+        QVERIFY(std::max(box.width(), box.height()) > 0.6 * 800.0 && QRectF(0, 0, 800, 800).contains(box));
+    }
+
+    // A skinned character from Debian's assimp test models opens ready to
+    // play: on its clip, its first frame posed and framed in both panes
+    // (the ink inside the 3-D view's frame and the SVG's canvas, filling a
+    // good part of each, near the centre), not modified; the first Play
+    // plays the clip.
+    void aSkinnedCharacterOpensPlayingReadyAndFramed() {
+        QString wuson = "/usr/share/assimp/models/X/Testwuson.X";
+        if (!QFileInfo::exists(wuson)) wuson = QString(SNAXELS_TEST_ASSETS) + "/anim/Testwuson.X"; // the same file
+        MainWindow window;
+        QVERIFY(showWithMesh(window, wuson, {1000, 700}));
+        QVERIFY(contoursSettle(window));
+        QTest::qWait(300);
+        QVERIFY(contoursSettle(window)); // drawn again, framed as posed
+        QCOMPARE(window.document()->animation().kind, snaxels::AnimationSpec::Kind::Clip);
+        QVERIFY(!window.isModified());
+        auto check = [](const QRectF& ink, const QRectF& within, const char* where) {
+            const QString what = QString("%1: ink %2,%3 %4x%5 in %6,%7 %8x%9")
+                                     .arg(where)
+                                     .arg(ink.x()).arg(ink.y()).arg(ink.width()).arg(ink.height())
+                                     .arg(within.x()).arg(within.y()).arg(within.width()).arg(within.height());
+            qInfo("%s", qPrintable(what));
+            QVERIFY2(within.contains(ink), qPrintable(what));
+            QVERIFY2(std::max(ink.width() / within.width(), ink.height() / within.height()) > 0.5, qPrintable(what));
+            const QPointF off = ink.center() - within.center();
+            QVERIFY2(std::abs(off.x()) < 0.15 * within.width() && std::abs(off.y()) < 0.15 * within.height(), qPrintable(what));
+        };
+        // The 3-D view: the character's pixels inside the frame.
+        snaxels::ui::MeshView* view = window.meshView();
+        view->setFrameShown(false);
+        QTest::qWait(100);
+        const QImage image = view->grabFramebuffer().convertToFormat(QImage::Format_RGB32);
+        check(QRectF(inkBox(image)), view->frameRect(), "3-D view");
+        view->setFrameShown(true);
+        // The drawing: its SVG's ink on its canvas.
+        QSvgRenderer svg(window.currentSvg());
+        QImage drawn(svg.viewBox().size(), QImage::Format_RGB32);
+        drawn.fill(Qt::white);
+        QPainter painter(&drawn);
+        svg.render(&painter);
+        painter.end();
+        check(QRectF(inkBox(drawn)), QRectF(drawn.rect()), "drawing");
+        // The first Play plays the clip.
+        QPushButton* play = childWithText<QPushButton>(window.timeline(), tr("Play"));
+        QVERIFY(play);
+        const QByteArray first = window.currentSvg();
+        QTest::mouseClick(play, Qt::LeftButton);
+        QTRY_VERIFY_WITH_TIMEOUT(window.timeline()->frame() > 2 && window.currentSvg() != first, 30000);
+        QTest::mouseClick(play, Qt::LeftButton);
+    }
+
+    // Edit > Preferences, answered in its dialog: a style file and a sharp
+    // angle for new documents, the model's unit for Page Setup and the
+    // export folder. File > New starts with that style and angle; export
+    // dialogs start in that folder; a style file that does not parse is
+    // refused with a message and nothing is kept.
+    void preferencesSetWhatANewDocumentStartsWith() {
+        QTemporaryDir dir;
+        const QString style = dir.filePath("mine.xml");
+        {
+            QFile f(style);
+            QVERIFY(f.open(QIODevice::WriteOnly));
+            f.write("<style>\n  <contour kind=\"visual\"><visible stroke=\"#aa2200\" width=\"2.5\"/></contour>\n</style>\n");
+        }
+        const QString broken = dir.filePath("broken.xml");
+        {
+            QFile f(broken);
+            QVERIFY(f.open(QIODevice::WriteOnly));
+            f.write("<style><contour kind=\"visual\">");
+        }
+        QVERIFY(QDir(dir.path()).mkdir("exports"));
+        const QString exports = dir.filePath("exports");
+        MainWindow window;
+        QVERIFY(showWithMesh(window, QString(SNAXELS_TEST_ASSETS) + "/spot.obj"));
+        auto answer = [&](const QString& path, bool expectRefusal) {
+            bool refused = false, asked = false;
+            QTimer poll;
+            poll.setInterval(20);
+            QObject::connect(&poll, &QTimer::timeout, [&] {
+                QWidget* modal = QApplication::activeModalWidget();
+                if (auto* box = qobject_cast<QMessageBox*>(modal)) { // the refusal
+                    refused = true;
+                    box->accept();
+                    return;
+                }
+                auto* dialog = qobject_cast<QDialog*>(modal);
+                if (!dialog || dialog->objectName() != "preferences") return;
+                if (asked) { // refused: cancel it
+                    if (refused) {
+                        poll.stop();
+                        dialog->reject();
+                    }
+                    return;
+                }
+                asked = true;
+                auto* edit = dialog->findChild<QLineEdit*>("prefStyle");
+                edit->clear();
+                QTest::keyClicks(edit, path);
+                auto* sharp = dialog->findChild<QComboBox*>("prefSharpAngle");
+                sharp->setCurrentIndex(sharp->findData("45"));
+                auto* units = dialog->findChild<QComboBox*>("prefModelUnits");
+                units->setCurrentIndex(units->findData("cm"));
+                dialog->findChild<QLineEdit*>("prefExportFolder")->setText(exports);
+                QPushButton* ok = dialog->findChild<QDialogButtonBox*>()->button(QDialogButtonBox::Ok);
+                // Clicked once this tick is over: a refusal's box opens its own
+                // loop, where this timer (still in its slot) could not answer it.
+                QTimer::singleShot(0, ok, [ok] { QTest::mouseClick(ok, Qt::LeftButton); });
+                if (!expectRefusal) poll.stop();
+            });
+            poll.start();
+            window.findChild<QAction*>("preferences")->trigger();
+            QVERIFY(asked);
+            QCOMPARE(refused, expectRefusal);
+        };
+        answer(broken, true);
+        QVERIFY(QSettings().value(snaxels::ui::kPrefStyle).toString().isEmpty()); // nothing kept
+        answer(style, false);
+        QCOMPARE(QSettings().value(snaxels::ui::kPrefStyle).toString(), style);
+        QCOMPARE(QSettings().value(snaxels::ui::kPrefSharpAngle).toString(), QString("45"));
+        QCOMPARE(QSettings().value(snaxels::ui::kPrefModelUnits).toString(), QString("cm"));
+        // File > New: the preferred style with its sharp angle.
+        QSignalSpy loaded(&window, &MainWindow::meshLoaded);
+        window.findChild<QAction*>("newDocument")->trigger();
+        QVERIFY(loaded.wait(60000));
+        QVERIFY(contoursSettle(window));
+        const QString text = window.document()->styleText();
+        QVERIFY2(text.contains("#aa2200") && text.contains("sharp-angle=\"45\""), qPrintable(text));
+        QCOMPARE(window.document()->style().surface.sharp_angle, 45.0);
+        // Exports start in the preferred folder.
+        const QString suggested = answerFileDialog([&] { window.findChild<QAction*>("exportFrame")->trigger(); }, false);
+        QCOMPARE(QFileInfo(suggested).absolutePath(), QFileInfo(exports).absoluteFilePath());
+        // Page Setup's scale measures in the preferred unit.
+        QTimer poll;
+        poll.setInterval(20);
+        QString unit;
+        QObject::connect(&poll, &QTimer::timeout, [&] {
+            auto* dialog = qobject_cast<QDialog*>(QApplication::activeModalWidget());
+            if (!dialog || dialog->objectName() != "pageSetup") return;
+            poll.stop();
+            unit = dialog->findChild<QComboBox*>("modelUnits")->currentData().toString();
+            dialog->reject();
+        });
+        poll.start();
+        window.findChild<QAction*>("pageSetup")->trigger();
+        QCOMPARE(unit, QString("cm"));
+        for (const char* key : {snaxels::ui::kPrefStyle, snaxels::ui::kPrefSharpAngle, snaxels::ui::kPrefModelUnits,
+                                snaxels::ui::kPrefExportFolder})
+            QSettings().remove(key);
+    }
+
+    // The Objects panel, raised at 1280 x 800 on a scene of eleven objects,
+    // widens its dock to show every column: no horizontal scroll bar, and
+    // the 3-D view and the SVG pane keep room.
+    void objectsPanelShowsItsColumns() {
+        MainWindow window;
+        QVERIFY(showWithMesh(window, QString(SNAXELS_TEST_ASSETS) + "/meet/still-life.gltf", {1280, 760}));
+        auto* dock = window.findChild<QDockWidget*>("objectsDock");
+        QVERIFY(dock);
+        const int before = dock->width(); // the Style tab's width: too narrow for the columns
+        dock->raise(); // as a click on its tab does
+        QTest::qWait(300);
+        QTreeWidget* tree = window.objectsPanel()->tree();
+        const int columns = tree->header()->length();
+        QVERIFY2(before < columns, qPrintable(QString("the dock was %1 px already").arg(before)));
+        qInfo("columns %d px, the tree's viewport %d px, the dock %d px", columns, tree->viewport()->width(), dock->width());
+        QVERIFY2(columns <= tree->viewport()->width(), qPrintable(QString("%1 > %2").arg(columns).arg(tree->viewport()->width())));
+        QVERIFY(!tree->horizontalScrollBar()->isVisible());
+        QVERIFY(window.meshView()->width() >= 300 && window.svgPane()->width() >= 250);
     }
 
     void videoExportTakesItsSettings() {

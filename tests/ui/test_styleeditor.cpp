@@ -88,6 +88,8 @@ class TestStyleEditor : public QObject {
                     if (e.name == "contour" && a.name == "test") attrs += " kind=\"suggestive\"";
                     if (e.name == "object" && a.name != "name") attrs += " name=\"Ground\"";
                     if (e.name == "region" && a.name != "class") attrs += " class=\"lit\"";
+                    if (e.name == "canvas" && a.name == "orientation") attrs += " paper=\"A4\""; // it turns a paper
+                    if (e.name == "canvas" && a.name == "model-units") attrs += " scale=\"1:10\""; // what scale measures
                     const QString inner = QString("<%1 %2/>").arg(QString::fromStdString(e.name), attrs);
                     // (width-by="strength" follows a suggestive contour's test.)
                     const QString kind = word == "strength" ? "suggestive" : "visual";
@@ -302,7 +304,7 @@ class TestStyleEditor : public QObject {
         QStringList shown;
         for (int row = 0; row < editor.completer()->completionModel()->rowCount(); ++row)
             shown << editor.completer()->completionModel()->index(row, 0).data(Qt::DisplayRole).toString();
-        QVERIFY2(shown.contains("margin  —  space between the mesh's bounding circle and the image edge"), qPrintable(shown.join(" | ")));
+        QVERIFY2(shown.contains("margin  —  space between the mesh's bounding circle and the image edge; on paper, the page's margin"), qPrintable(shown.join(" | ")));
         QVERIFY2(shown.contains("background  —  the background fill"), qPrintable(shown.join(" | ")));
         QTest::keyClick(editor.completer()->popup(), Qt::Key_Return); // takes the word alone
         QCOMPARE(edit->toPlainText(), QString("<style version=\"1\">\n  <canvas width=\"\""));
