@@ -75,8 +75,12 @@ int run_render(const std::vector<std::string>& argv) {
         set_output(job, *output); // written as the frames are made, atomically
         job.png_dir = args.value("png-dir").value_or("");
         const AnimationOutput result = run_animation_with_progress(loaded, mesh_path, job);
-        std::printf("%s: %d frames at %g fps, %zu paths, %zu bytes\n", output->c_str(), result.frames,
-                    project.animation.fps, result.stats.paths, result.bytes);
+        if (is_video(*output_kind_for(*output))) // the encoder's file: no paths, its size on disk
+            std::printf("%s: %d frames at %g fps, %ju bytes\n", output->c_str(), result.frames, project.animation.fps,
+                        std::uintmax_t(std::filesystem::file_size(*output)));
+        else
+            std::printf("%s: %d frames at %g fps, %zu paths, %zu bytes\n", output->c_str(), result.frames,
+                        project.animation.fps, result.stats.paths, result.bytes);
         return 0;
     }
     const int frame = args.value("frame") ? parse_int("frame", *args.value("frame"), 0, 100000) : project.frame;
