@@ -27,7 +27,7 @@ Drawing make_drawing(const SnaxelEngine& engine, const std::vector<ContourResult
     const bool several = drawing.parts && drawing.parts->several();
     for (std::size_t c = 0; c < results.size(); ++c) {
         const ContourResult& r = results[c];
-        const ContourVisibility runs = visibility ? ContourVisibility{} : drawn_parts(engine, r);
+        const ContourVisibility runs = visibility ? ContourVisibility{} : drawn_parts(engine, r, &projection.camera());
         const ContourVisibility* cut = visibility ? &(*visibility)[c] : runs.loops.empty() ? nullptr : &runs;
         DrawnContour contour;
         contour.spec = r.spec;

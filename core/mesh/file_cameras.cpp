@@ -162,6 +162,9 @@ Camera pose_camera(const aiScene* scene, const aiCamera& c, const LocalCamera& l
     cam.own_frame = true;
     cam.eye = turned(g, local.position, 1.0);
     glm::dvec3 forward = turned(g, local.look, 0.0), up = turned(g, local.up, 0.0);
+    // The clip start as the file gives it, in the mesh's units: an FBX in
+    // centimetres gives centimetres, though its camera's node scales by 100.
+    cam.near_clip = info.orthographic ? 0.0 : info.clip_start;
     forward = glm::length(forward) > 0.0 ? glm::normalize(forward) : glm::dvec3(0.0, 0.0, -1.0);
     up -= glm::dot(up, forward) * forward;
     cam.up = glm::length(up) > 1e-12 ? glm::normalize(up) : glm::dvec3(0.0, 1.0, 0.0);
@@ -190,6 +193,8 @@ std::vector<FileCamera> cameras_of(const aiScene* scene, const std::string& path
         FileCamera cam;
         cam.name = c.mName.C_Str();
         if (!gltf_framing(gltf, cam.name, cam) && !(collada && collada_ortho(dae, cam.name, cam))) assimp_framing(c, cam);
+        if (!cam.orthographic && std::isfinite(c.mClipPlaneNear) && c.mClipPlaneNear > 0.0f)
+            cam.clip_start = double(c.mClipPlaneNear);
         const aiAnimation* anim = nullptr;
         if (const aiNode* node = scene->mRootNode->FindNode(c.mName))
             for (unsigned a = 0; a < scene->mNumAnimations && !anim; ++a)

@@ -20,6 +20,9 @@ struct FileCamera {
     double fov_deg = 0.0;      ///< perspective: vertical field of view
     double ortho_height = 0.0; ///< orthographic: the view's height in world units
     double aspect = 0.0;       ///< width over height; 0 when the file does not say
+    /// Perspective: its near clipping distance (glTF's znear, Blender's clip
+    /// start), in the camera's own units; 0 when the file gives none.
+    double clip_start = 0.0;
     std::string clip;          ///< the first clip that moves it ("" when none does)
     double clip_seconds = 0.0; ///< that clip's length
     /// Where it stands at the start of that clip (or at rest): what the

@@ -37,17 +37,19 @@ Light default_light(const Camera& camera) {
 void require_mesh_in_front(const Camera& camera, std::span<const glm::dvec3> positions, double radius) {
     if (camera.orthographic()) return;
     const glm::dvec3 f = camera.forward();
-    const double near = 1e-3 * radius;
+    const double near = camera.near_plane(radius);
     std::size_t behind = 0;
     for (const glm::dvec3& p : positions)
         if (glm::dot(p - camera.eye, f) < near) ++behind;
     if (behind == 0) return;
-    char eye[96];
+    char eye[96], plane[48];
     std::snprintf(eye, sizeof eye, "(%g, %g, %g)", camera.eye.x, camera.eye.y, camera.eye.z);
+    std::snprintf(plane, sizeof plane, "%g", near);
     throw Error(std::string("the eye ") + eye + " is inside the mesh or the mesh surrounds it: " +
                 std::to_string(behind) + " of its " + std::to_string(positions.size()) +
-                " vertices lie at or behind the eye, where a drawing cannot show them; move the eye "
-                "back (farther from the mesh) or use an orthographic view");
+                " vertices lie at or behind the eye, or nearer than its near plane (" + plane +
+                "), where a drawing cannot show them; move the eye back (farther from the mesh) or use an "
+                "orthographic view");
 }
 
 ImageProjection::ImageProjection(const Camera& camera, const glm::dvec3& centre, double radius,

@@ -9,6 +9,10 @@
 
 namespace snaxels {
 
+/// A perspective camera's default near plane, as a fraction of the mesh's
+/// bounding radius: what lies nearer the eye than this is clipped.
+inline constexpr double kDefaultNearFraction = 1e-3;
+
 /// Orthographic (a view direction) or perspective (eye, target, field of view).
 struct Camera {
     enum class Projection { Orthographic, Perspective };
@@ -28,6 +32,10 @@ struct Camera {
     /// Orthographic: the world units the view shows (see own_frame), about
     /// the line through `eye` along view_dir; 0: fit the bounding sphere.
     double ortho_height = 0.0;
+    /// Perspective: the near plane's distance from the eye along the line
+    /// of sight (a file camera's clip start); 0: kDefaultNearFraction of
+    /// the mesh's bounding radius. What lies nearer is clipped.
+    double near_clip = 0.0;
 
     bool operator==(const Camera&) const = default;
     bool orthographic() const { return projection == Projection::Orthographic; }
@@ -39,6 +47,8 @@ struct Camera {
     glm::dvec3 forward() const {
         return glm::normalize(orthographic() ? view_dir : target - eye);
     }
+    /// The near plane's distance for a mesh of bounding radius @p radius.
+    double near_plane(double radius) const { return near_clip > 0.0 ? near_clip : kDefaultNearFraction * radius; }
     /// Screen right and up vectors in world space (unit, orthogonal to forward()).
     void screen_basis(glm::dvec3& right, glm::dvec3& screen_up) const;
 };
@@ -61,8 +71,9 @@ Light default_light(const Camera& camera);
 /// A perspective eye must see the whole mesh in front of it: a point at or
 /// behind the eye has no place in the picture (its projection would be
 /// mirrored or infinitely far). Throws snaxels::Error saying so, and what to
-/// do, when any of @p positions lies less than a thousandth of @p radius in
-/// front of the eye (the eye inside the mesh, or the mesh around it).
+/// do, when any of @p positions lies nearer the eye than its near plane
+/// (Camera::near_plane of @p radius: the eye inside the mesh, or the mesh
+/// around it).
 void require_mesh_in_front(const Camera& camera, std::span<const glm::dvec3> positions, double radius);
 
 /// Maps world points to image pixels (x right, y down). Orthographic views
@@ -84,6 +95,8 @@ class ImageProjection {
     /// Pixels per world unit across the line of sight (orthographic), or the
     /// focal length in pixels (perspective: pixels per unit at unit depth).
     double scale() const { return scale_; }
+    /// The camera it projects through.
+    const Camera& camera() const { return camera_; }
 
   private:
     Camera camera_;

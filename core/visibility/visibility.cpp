@@ -68,6 +68,31 @@ std::vector<std::uint8_t> selected_stretches(const MeshTopology& topo, const Con
     return out;
 }
 
+double near_plane_of(const Camera& camera, const MeshTopology& topology) {
+    if (camera.orthographic()) return 0.0;
+    if (camera.near_clip > 0.0 || topology.positions().empty()) return camera.near_plane(0.0);
+    glm::dvec3 lo(std::numeric_limits<double>::max()), hi(-std::numeric_limits<double>::max());
+    for (const glm::dvec3& p : topology.positions()) lo = glm::min(lo, p), hi = glm::max(hi, p);
+    return camera.near_plane(0.5 * glm::length(hi - lo));
+}
+
+VisibilitySampler::VisibilitySampler(const RayScene& scene, const Camera& camera, VisibilityOptions options)
+    : scene_(scene), camera_(camera), options_(options), near_(near_plane_of(camera, scene.topology())),
+      forward_(camera.forward()) {}
+
+double VisibilitySampler::past_near(const glm::dvec3& p) const {
+    if (camera_.orthographic()) return std::numeric_limits<double>::infinity();
+    return glm::dot(p - camera_.eye, forward_) - near_;
+}
+
+void VisibilitySampler::stop_at_near(VisibilityRay& ray) const {
+    if (camera_.orthographic() || !(ray.tfar > 0.0)) return;
+    // Depth falls linearly along the ray to 0 at the eye: the near plane
+    // is reached at the fraction (depth - near) / depth of the way.
+    const double depth = glm::dot(ray.origin - camera_.eye, forward_);
+    ray.tfar = depth > near_ ? ray.tfar * (depth - near_) / depth : 0.0;
+}
+
 VisibilityRay VisibilitySampler::make_ray(const glm::dvec3& p, const glm::dvec3& n,
                                           double scale) const {
     VisibilityRay ray;
@@ -80,6 +105,7 @@ VisibilityRay VisibilitySampler::make_ray(const glm::dvec3& p, const glm::dvec3&
         const glm::dvec3 to_eye = camera_.eye - ray.origin;
         ray.tfar = glm::length(to_eye);
         ray.dir = ray.tfar > 0.0 ? to_eye / ray.tfar : glm::dvec3(0, 0, 1);
+        stop_at_near(ray);
     }
     return ray;
 }
@@ -288,8 +314,10 @@ std::vector<std::uint8_t> VisibilitySampler::over_other_objects(const SnaxelEngi
         // (the floor in front of a box's bottom edge).
         const glm::dvec3 q = p + step * across / len;
         VisibilityRay ray;
-        ray.origin = camera_.orthographic() ? q + reach * camera_.to_viewer(q) : camera_.eye;
         ray.dir = -camera_.to_viewer(q);
+        // From in front of everything (perspective: from the near plane, past what it clips).
+        ray.origin = camera_.orthographic() ? q + reach * camera_.to_viewer(q)
+                                            : camera_.eye + ray.dir * (near_ / std::max(glm::dot(ray.dir, forward_), 1e-12));
         ray.tfar = std::numeric_limits<double>::infinity();
         const RayHit hit = scene_.nearest(ray);
         out[i] = hit.hit() && object_of(topo, hit.face) != own;
@@ -303,6 +331,7 @@ int VisibilitySampler::qi_from(const VisibilityRay& ray, const glm::dvec3& origi
     if (!camera_.orthographic()) {
         moved.tfar = glm::length(camera_.eye - origin);
         moved.dir = moved.tfar > 0.0 ? (camera_.eye - origin) / moved.tfar : ray.dir;
+        stop_at_near(moved);
     }
     return qi(moved);
 }
@@ -422,13 +451,17 @@ ContourVisibility VisibilitySampler::classify(const SnaxelEngine& engine, const 
     const bool meeting = contour.spec.kind == ContourKind::Intersection;
     const bool where_seen = levels == HiddenLevels::WhereSeen && !meeting;
     auto edge_length = [&](const Snaxel& s) { return glm::length(topo.positions()[s.inside] - topo.positions()[s.outside]); };
+    // Snaxels nearer the eye than the near plane are clipped: not drawn.
+    std::vector<std::uint8_t> clipped(camera_.orthographic() ? 0 : fronts.snaxels.size());
     parallel_for(fronts.snaxels.size(), [&](std::size_t i) {
         const Snaxel& s = fronts.snaxels[i];
-        if ((margins && contour.snaxel_margin[i] < 0.0) || (!selected.empty() && !selected[i])) {
+        const glm::dvec3 p = engine.position(s);
+        if (!clipped.empty()) clipped[i] = past_near(p) < 0.0;
+        if ((margins && contour.snaxel_margin[i] < 0.0) || (!selected.empty() && !selected[i]) ||
+            (!clipped.empty() && clipped[i])) {
             snaxel_qi[i] = kNotDrawn;
             return;
         }
-        const glm::dvec3 p = engine.position(s);
         if (meeting) {
             snaxel_qi[i] = qi(meeting_ray(p, edge_length(s)));
             return;
@@ -442,6 +475,13 @@ ContourVisibility VisibilitySampler::classify(const SnaxelEngine& engine, const 
 
     // The point where QI stops being `from` between snaxels a and b.
     auto change_point = [&](std::int32_t ia, std::int32_t ib, int from) {
+        // Across the near plane: where the segment meets it (depth is linear along it).
+        if (!clipped.empty() && clipped[ia] != clipped[ib]) {
+            const glm::dvec3 pa = engine.position(fronts.snaxels[ia]), pb = engine.position(fronts.snaxels[ib]);
+            const double da = past_near(pa), db = past_near(pb);
+            const double u = std::clamp(da / (da - db), 0.0, 1.0);
+            return (1.0 - u) * pa + u * pb;
+        }
         // From one part to another: at the snaxel on the edge between them.
         if (!selected.empty() && selected[ia] != selected[ib]) return engine.position(fronts.snaxels[ib]);
         if (margins && (snaxel_qi[ia] == kNotDrawn || snaxel_qi[ib] == kNotDrawn)) return margin_zero(engine, contour, ia, ib);
@@ -478,15 +518,35 @@ ContourVisibility VisibilitySampler::classify(const SnaxelEngine& engine, const 
     return cut_runs(engine, contour, snaxel_qi, change_point);
 }
 
-ContourVisibility drawn_parts(const SnaxelEngine& engine, const ContourResult& contour) {
+ContourVisibility drawn_parts(const SnaxelEngine& engine, const ContourResult& contour, const Camera* camera) {
     std::vector<std::uint8_t> selected = selected_stretches(engine.topology(), contour);
     if (contour.spec.parts.over_objects) selected.assign(contour.fronts.snaxels.size(), 0); // needs the rays
     const bool margins = !contour.snaxel_margin.empty();
-    if (!margins && selected.empty()) return {};
+    // How far each snaxel lies past a perspective camera's near plane (clipped below 0).
+    std::vector<double> past;
+    if (camera && !camera->orthographic()) {
+        const double near = near_plane_of(*camera, engine.topology());
+        const glm::dvec3 forward = camera->forward();
+        past.resize(contour.fronts.snaxels.size());
+        bool any = false;
+        for (std::size_t i = 0; i < past.size(); ++i) {
+            past[i] = glm::dot(engine.position(contour.fronts.snaxels[i]) - camera->eye, forward) - near;
+            any = any || past[i] < 0.0;
+        }
+        if (!any) past.clear(); // nothing clipped: as without a camera
+    }
+    if (!margins && selected.empty() && past.empty()) return {};
     std::vector<int> cls(contour.fronts.snaxels.size());
     for (std::size_t i = 0; i < cls.size(); ++i)
-        cls[i] = (margins && contour.snaxel_margin[i] < 0.0) || (!selected.empty() && !selected[i]) ? kNotDrawn : 0;
+        cls[i] = (margins && contour.snaxel_margin[i] < 0.0) || (!selected.empty() && !selected[i]) ||
+                         (!past.empty() && past[i] < 0.0)
+                     ? kNotDrawn
+                     : 0;
     return cut_runs(engine, contour, cls, [&](std::int32_t a, std::int32_t b, int) {
+        if (!past.empty() && (past[a] < 0.0) != (past[b] < 0.0)) { // on the near plane
+            const double u = std::clamp(past[a] / (past[a] - past[b]), 0.0, 1.0);
+            return (1.0 - u) * engine.position(contour.fronts.snaxels[a]) + u * engine.position(contour.fronts.snaxels[b]);
+        }
         if (!selected.empty() && selected[a] != selected[b]) return engine.position(contour.fronts.snaxels[b]);
         return margin_zero(engine, contour, a, b);
     });

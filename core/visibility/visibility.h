@@ -60,8 +60,14 @@ struct ContourVisibility {
 
 class VisibilitySampler {
   public:
-    VisibilitySampler(const RayScene& scene, const Camera& camera, VisibilityOptions options = {})
-        : scene_(scene), camera_(camera), options_(options) {}
+    /// A perspective @p camera clips at its near plane (Camera::near_plane
+    /// of the scene's bounding radius): points nearer the eye are not
+    /// drawn, and nothing nearer hides anything.
+    VisibilitySampler(const RayScene& scene, const Camera& camera, VisibilityOptions options = {});
+
+    /// How far @p p lies past the near plane along the line of sight
+    /// (negative: nearer the eye, clipped); +infinity for orthographic views.
+    double past_near(const glm::dvec3& p) const;
 
     /// The ray from a snaxel: its edge's end vertices' faces are ignored.
     VisibilityRay snaxel_ray(const Snaxel& s, const glm::dvec3& p, const glm::dvec3& n) const;
@@ -139,9 +145,14 @@ class VisibilitySampler {
     /// the others their stretch's.
     void count_where_seen(const SnaxelEngine& engine, const ContourResult& contour, std::vector<int>& snaxel_qi) const;
 
+    /// @p ray (toward the eye) ended at the near plane: what lies nearer hides nothing.
+    void stop_at_near(VisibilityRay& ray) const;
+
     const RayScene& scene_;
     Camera camera_;
     VisibilityOptions options_;
+    double near_ = 0.0;        ///< perspective: the near plane's distance from the eye
+    glm::dvec3 forward_{0.0};  ///< the line of sight (unit)
 };
 
 /// How far past a silhouette over_other_objects looks, as a fraction of
@@ -150,11 +161,16 @@ class VisibilitySampler {
 inline constexpr double kOverObjectsStep = 0.004;
 
 /// Without hidden lines: the loops of a contour that leaves parts out
-/// (snaxel_margin, or a part selector) cut into drawn runs (QI 0) and
-/// kNotDrawn ones, as classify() cuts them; empty (every loop drawn whole)
-/// for the others. A contour drawn only over other objects needs the rays
-/// classify() casts: without them none of it is drawn.
-ContourVisibility drawn_parts(const SnaxelEngine& engine, const ContourResult& contour);
+/// (snaxel_margin, or a part selector), or that a perspective @p camera's
+/// near plane clips, cut into drawn runs (QI 0) and kNotDrawn ones, as
+/// classify() cuts them; empty (every loop drawn whole) for the others. A
+/// contour drawn only over other objects needs the rays classify() casts:
+/// without them none of it is drawn.
+ContourVisibility drawn_parts(const SnaxelEngine& engine, const ContourResult& contour, const Camera* camera = nullptr);
+
+/// The near plane's distance of perspective @p camera over @p topology
+/// (Camera::near_plane of its bounding radius); 0 for orthographic views.
+double near_plane_of(const Camera& camera, const MeshTopology& topology);
 
 /// Per snaxel of @p contour: whether the stretch of its loop from it to the
 /// next snaxel (an open loop's last snaxel: from the one before) lies on a

@@ -47,6 +47,8 @@ TEST_P(BlenderCameras, ReadAsTheSceneMadeThem) {
     const CameraTrack track(path, "ShotCam");
     const Camera first = track.at(0.0), last = track.at(shot->clip_seconds);
     EXPECT_TRUE(first.own_frame);
+    // Blender's default clip start, 0.1 m, in the mesh's units: where the picture is cut.
+    EXPECT_NEAR(first.near_clip, 0.1 * unit, 1e-6 * unit) << GetParam();
     EXPECT_NEAR(glm::length(first.eye / unit - upright(0.0, -6.0, 1.5)), 0.0, 1e-4);
     EXPECT_NEAR(glm::length(first.forward() - blender_forward(80.0, 0.0)), 0.0, 1e-4);
     EXPECT_NEAR(glm::length(last.eye / unit - upright(6.0, 0.0, 1.5)), 0.0, 1e-4);

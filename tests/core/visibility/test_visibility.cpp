@@ -357,3 +357,73 @@ TEST(Visibility, ObjectBoxesAndFacePlanesFollowThePose) {
     rays.refit(posed);
     check(posed);
 }
+
+// Near-plane clipping: a unit sphere seen from (0, 0, 3) looking along
+// (1, 0, -1): its visual contour is the circle z = 1/3 of radius sqrt(8)/3,
+// whose depth along the line of sight runs from 1.22 to 2.55. With the near
+// plane at 1.9 the part nearer the eye (x < 1.9 sqrt 2 - 8/3) is not drawn,
+// cut exactly at the plane; a small ball between the eye and the plane,
+// over the contour in the image, hides nothing (with the plane nearer than
+// it, it does). Expected lengths worked out from the circle.
+TEST(Visibility, TheNearPlaneClipsAndWhatLiesNearerHidesNothing) {
+    TriangleSoup soup = make_sphere(40000);
+    TriangleSoup ball = make_sphere(4000);
+    const glm::dvec3 eye(0.0, 0.0, 3.0), forward = glm::normalize(glm::dvec3(1.0, 0.0, -1.0));
+    // The ball on the way from the eye to the contour point (0.7, 0.3, 1/3), 0.6 of the way to it.
+    const glm::dvec3 seen(0.7, 0.3, 1.0 / 3.0);
+    const glm::dvec3 centre = eye + 0.25 * (seen - eye);
+    const auto base = static_cast<std::uint32_t>(soup.positions.size());
+    for (const auto& p : ball.positions) soup.positions.push_back(centre + 0.08 * p);
+    for (const auto& t : ball.triangles) soup.triangles.push_back({t[0] + base, t[1] + base, t[2] + base});
+    const LoadedMesh m = build_mesh(soup, "sphere and ball");
+    const MeshTopology topo = build_topology(m.mesh);
+    const SnaxelEngine engine(topo);
+    const RayScene rays(topo);
+    Camera cam;
+    cam.projection = Camera::Projection::Perspective;
+    cam.eye = eye;
+    cam.target = eye + forward;
+    cam.up = {0.0, 1.0, 0.0};
+    const ContourResult r = engine.compute({}, cam, Light{});
+    const double r0 = std::sqrt(8.0) / 3.0;
+    auto depth = [&](const glm::dvec3& p) { return glm::dot(p - eye, forward); };
+
+    cam.near_clip = 1.9;
+    const ContourVisibility vis = VisibilitySampler(rays, cam).classify(engine, r);
+    double drawn = 0.0;
+    int cuts = 0;
+    for (const auto& loop : vis.loops)
+        for (const auto& run : loop.runs) {
+            if (run.qi == kNotDrawn) continue;
+            EXPECT_EQ(run.qi, 0) << "hidden by what lies nearer than the near plane";
+            for (const glm::dvec3& p : run.points) {
+                ASSERT_GE(depth(p), 1.9 - 1e-9) << "a drawn point nearer than the near plane";
+                EXPECT_GT(glm::length(p), 0.99) << "the ball's contour, nearer than the plane, drawn";
+            }
+            for (const glm::dvec3* end : {&run.points.front(), &run.points.back()})
+                if (!run.closed && std::abs(depth(*end) - 1.9) < 1e-9) ++cuts;
+            drawn += run_length(run);
+        }
+    EXPECT_EQ(cuts, 2); // the circle's arc cut at both its ends, on the plane
+    const double x0 = 1.9 * std::sqrt(2.0) - 8.0 / 3.0;
+    const double expected = 2.0 * std::acos(x0 / r0) * r0;
+    EXPECT_NEAR(drawn, expected, 0.01 * expected);
+    std::printf("drawn past the near plane %.5f, expected %.5f\n", drawn, expected);
+    // Without hidden lines, the drawing's runs are clipped the same.
+    double parts = 0.0;
+    for (const auto& loop : drawn_parts(engine, r, &cam).loops)
+        for (const auto& run : loop.runs)
+            if (run.qi != kNotDrawn) {
+                for (const glm::dvec3& p : run.points) ASSERT_GE(depth(p), 1.9 - 1e-9);
+                parts += glm::length(run.points.front()) > 0.99 ? run_length(run) : 0.0;
+            }
+    EXPECT_NEAR(parts, expected, 0.01 * expected);
+
+    // The plane nearer than the ball: the ball hides a stretch of the contour.
+    cam.near_clip = 0.1;
+    double hidden = 0.0;
+    for (const auto& loop : VisibilitySampler(rays, cam).classify(engine, r).loops)
+        for (const auto& run : loop.runs)
+            if (run.qi > 0 && glm::length(run.points.front()) > 0.99) hidden += run_length(run);
+    EXPECT_GT(hidden, 0.05);
+}
