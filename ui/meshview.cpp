@@ -546,7 +546,9 @@ glm::dmat4 MeshView::projectionMatrix() const {
     const double depth = glm::dot(centre_ - c.eye, c.forward());
     const double far = std::max(depth + radius_ * 1.5, radius_ * 1e-3);
     if (c.orthographic()) return glm::ortho(-half * aspect, half * aspect, -half, half, depth - radius_ * 1.5, far);
-    return glm::perspective(2.0 * std::atan(half), aspect, std::max(depth - radius_ * 1.5, far * 1e-4), far);
+    // Nothing nearer than the camera's near plane, as the drawing clips there.
+    const double near = std::max({depth - radius_ * 1.5, far * 1e-4, c.near_plane(radius_)});
+    return glm::perspective(2.0 * std::atan(half), aspect, near, far);
 }
 
 void MeshView::drawFrame() {
