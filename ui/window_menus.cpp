@@ -15,6 +15,7 @@
 #include <QTextBrowser>
 #include <QUrl>
 
+#include "snaxels/style/style_edit.h"
 #include "snaxels/util/atomic_file.h"
 #include "snaxels/version.h"
 #include "ui/document.h"
@@ -117,13 +118,18 @@ std::optional<QString> read_style_file(QMainWindow* window, const QString& path)
 void add_style_menu(QMainWindow* window, const Document* document, StyleEditor* editor) {
     QMenu* menu = window->menuBar()->addMenu(QObject::tr("&Style"));
     QMenu* presets = menu->addMenu(QObject::tr("&Presets"));
-    presets->addAction(QObject::tr("Default"), editor, [editor] { editor->setText(initial_style_text()); })
+    // A preset keeps the page the document's style is on (its paper, fit or scale).
+    auto apply = [document, editor](const QString& text) {
+        const auto paged = with_page_of(text.toStdString(), document->styleText().toStdString());
+        editor->setText(paged ? QString::fromStdString(*paged) : text);
+    };
+    presets->addAction(QObject::tr("Default"), editor, [apply] { apply(initial_style_text()); })
         ->setToolTip(QObject::tr("The style a new window starts with: an ink outline with dashed hidden lines, and the shadow line"));
     presets->addSeparator();
     const QDir dir(dataDirectory() + "/styles");
     for (const QFileInfo& file : dir.entryInfoList({"*.xml"}, QDir::Files, QDir::Name))
-        presets->addAction(file.completeBaseName(), editor, [window, editor, path = file.absoluteFilePath()] {
-            if (const auto text = read_style_file(window, path)) editor->setText(*text);
+        presets->addAction(file.completeBaseName(), editor, [window, apply, path = file.absoluteFilePath()] {
+            if (const auto text = read_style_file(window, path)) apply(*text);
         });
     presets->setEnabled(!presets->isEmpty());
     menu->addAction(QObject::tr("S&harp Edges…"), editor, [window, document, editor] { ask_sharp_edges(window, document, editor); })

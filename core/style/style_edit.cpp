@@ -247,6 +247,22 @@ std::optional<std::string> with_canvas(const std::string& text,
     return out;
 }
 
+std::optional<std::string> with_page_of(const std::string& text, const std::string& from) {
+    ParsedStyle source;
+    if (!parsed(from, source)) return text; // no page to keep
+    const pugi::xml_node canvas = source.root.child("canvas");
+    const bool paper = canvas.attribute("paper");
+    std::vector<std::pair<std::string, std::optional<std::string>>> page;
+    if (paper) page = {{"width", std::nullopt}, {"height", std::nullopt}};
+    // The margin is the page's on paper; on pixels it is the canvas's own.
+    for (const char* name : {"paper", "orientation", "margin", "fit", "scale", "model-units"}) {
+        if (!paper && (std::string(name) == "margin" || std::string(name) == "orientation")) continue;
+        if (const pugi::xml_attribute a = canvas.attribute(name)) page.emplace_back(name, std::string(a.value()));
+    }
+    if (page.empty()) return text;
+    return with_canvas(text, page);
+}
+
 std::optional<std::string> without_absent_objects(const std::string& text,
                                                   const std::function<bool(const std::string&)>& has_object) {
     ParsedStyle style;

@@ -76,6 +76,13 @@ std::optional<TextSplice> sharp_angle_splice(const std::string& text, const std:
 std::optional<std::string> with_canvas(const std::string& text,
                                        const std::vector<std::pair<std::string, std::optional<std::string>>>& attributes);
 
+/// @p text on the page of style @p from: its <canvas> takes @p from's
+/// paper, orientation and margin (on paper, replacing its own width and
+/// height), fit, scale and model-units, where @p from gives them. What a
+/// preset chosen keeps of the style it replaces. @p text as it is when
+/// @p from gives none of these (or is no style).
+std::optional<std::string> with_page_of(const std::string& text, const std::string& from);
+
 /// @p text without the elements that name, exactly (a name with no glob
 /// character), an object @p has_object denies: <object name="NAME"> and
 /// <contour kind="intersection" object="NAME"> (with the line each stands

@@ -2737,6 +2737,15 @@ class TestMainWindow : public QObject {
         const QString said = QString::fromUtf8(check.readAllStandardOutput() + check.readAllStandardError());
         qInfo("%s", qPrintable(said.trimmed()));
         QVERIFY2(check.exitCode() == 0, qPrintable(said));
+        // A preset chosen keeps the page.
+        QAction* toon = nullptr;
+        for (QAction* a : window.findChildren<QAction*>())
+            if (a->text() == "toon") toon = a;
+        QVERIFY(toon);
+        toon->trigger();
+        QTRY_VERIFY(window.document()->styleText().contains("#f6c86b")); // the toon preset's
+        QVERIFY(window.document()->styleText().contains("paper=\"A4\"") && window.document()->style().page.scale == 30.0);
+        window.undoStack()->undo(); // the preset
         window.undoStack()->undo(); // the page goes with one undo
         QVERIFY(!window.document()->styleText().contains("paper="));
     }

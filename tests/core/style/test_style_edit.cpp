@@ -187,3 +187,32 @@ TEST(StyleEdit, AnObjectsOwnLinesTakeItFromTheLineSetsOfAll) {
     EXPECT_EQ(snaxels::with_object_lines(*cut, "Cube", std::nullopt), plain);
     EXPECT_FALSE(snaxels::with_object_lines("not a style", "Cube", red));
 }
+
+// A preset chosen keeps the page of the style it replaces: the paper, its
+// orientation and margin (the preset's pixel size dropped), fit and scale;
+// a style of pixels passes on only its fit or scale.
+TEST(StyleEdit, APresetKeepsThePageOfTheStyleItReplaces) {
+    using namespace snaxels;
+    const std::string preset = "<style>\n  <canvas width=\"800\" height=\"600\" margin=\"32\" background=\"#fff\"/>\n  <contour kind=\"visual\"/>\n</style>\n";
+    const std::string page = "<style><canvas paper=\"A4\" orientation=\"landscape\" margin=\"12mm\" scale=\"1:30\"/></style>";
+    const auto kept = with_page_of(preset, page);
+    ASSERT_TRUE(kept);
+    const Style s = parse_style(*kept, "kept", nullptr);
+    EXPECT_EQ(s.page.width_mm, 297.0);
+    EXPECT_EQ(s.page.height_mm, 210.0);
+    EXPECT_EQ(s.page.scale, 30.0);
+    EXPECT_NEAR(s.margin, 12.0 * 96.0 / 25.4, 1e-9);
+    EXPECT_EQ(s.background, "#fff"); // the preset's own
+    EXPECT_EQ(kept->find("width=\"800\""), std::string::npos);
+    EXPECT_NE(kept->find("<contour kind=\"visual\"/>"), std::string::npos);
+    // Pixels: only the fit goes over; the preset keeps its size and margin.
+    const auto filled = with_page_of(preset, "<style><canvas width=\"300\" height=\"300\" margin=\"5\" fit=\"fill\"/></style>");
+    ASSERT_TRUE(filled);
+    const Style f = parse_style(*filled, "filled", nullptr);
+    EXPECT_EQ(f.width, 800);
+    EXPECT_EQ(f.margin, 32.0);
+    EXPECT_EQ(f.page.fit, Page::Fit::Fill);
+    // Nothing of a page: the preset as it is.
+    EXPECT_EQ(*with_page_of(preset, "<style><canvas width=\"300\"/></style>"), preset);
+    EXPECT_EQ(*with_page_of(preset, "not a style"), preset);
+}
