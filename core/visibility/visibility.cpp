@@ -70,10 +70,7 @@ std::vector<std::uint8_t> selected_stretches(const MeshTopology& topo, const Con
 
 double near_plane_of(const Camera& camera, const MeshTopology& topology) {
     if (camera.orthographic()) return 0.0;
-    if (camera.near_clip > 0.0 || topology.positions().empty()) return camera.near_plane(0.0);
-    glm::dvec3 lo(std::numeric_limits<double>::max()), hi(-std::numeric_limits<double>::max());
-    for (const glm::dvec3& p : topology.positions()) lo = glm::min(lo, p), hi = glm::max(hi, p);
-    return camera.near_plane(0.5 * glm::length(hi - lo));
+    return camera.near_plane(camera.near_clip > 0.0 ? 0.0 : bounding_radius(topology));
 }
 
 VisibilitySampler::VisibilitySampler(const RayScene& scene, const Camera& camera, VisibilityOptions options)
