@@ -1,6 +1,7 @@
 #include "snaxels/export/detail/smil.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 
@@ -14,11 +15,26 @@ std::string Clock::dur() const {
     return buf;
 }
 
+namespace {
+
+/// @p x (in [0, 1]) to @p digits significant digits, rounded down: a key
+/// printed late would let a seek at its own frame time land before it,
+/// where a shape that switches there still shows the frame before.
+void print_down(char* buf, std::size_t size, double x, int digits) {
+    if (x > 0.0) {
+        const double scale = std::pow(10.0, double(digits - 1) - std::floor(std::log10(x)));
+        x = std::floor(x * scale * (1.0 + 1e-12)) / scale;
+    }
+    std::snprintf(buf, size, "%.*g", digits, x);
+}
+
+} // namespace
+
 void KeyTimePrinter::append(std::string& out, double t) {
     const double x = std::clamp(t / double(clock_.frames), 0.0, 1.0);
     char buf[32];
     for (int digits = 6; digits <= 12; ++digits) {
-        std::snprintf(buf, sizeof buf, "%.*g", digits, x);
+        print_down(buf, sizeof buf, x, digits);
         if (std::strtod(buf, nullptr) > printed_before_ || x <= printed_before_) break;
     }
     printed_before_ = std::strtod(buf, nullptr);
