@@ -40,6 +40,7 @@
 #include "snaxels/snaxel/suggestive.h"
 #include "snaxels/snaxel/tracker.h"
 
+#include "snaxels/visibility/near_plane.h"
 #include "snaxels/visibility/ray_scene.h"
 #include "snaxels/visibility/visibility.h"
 

@@ -165,7 +165,7 @@ OverlayResult compute_overlay(const LoadedMesh& mesh, ContourScene& scene, const
     StillOutput still;
     try {
         still = render_still(scene.split ? *scene.split : mesh, scene.topology, scene.rays.get(), job, scene.tracking.get());
-    } catch (const Error& e) { // a view the drawing cannot show (the eye inside the mesh): said in the status bar
+    } catch (const Error& e) { // a view the drawing cannot show (the eye on a surface): said in the status bar
         out.error = QString::fromStdString(e.what());
         return out;
     }

@@ -417,7 +417,7 @@ bool MainWindow::wantsParabolic() const {
 void MainWindow::onContoursReady(const OverlayResult& ready) {
     OverlayResult result = ready;
     if (!result.error.isEmpty()) {
-        // The frame asked for cannot be drawn (the eye inside the mesh):
+        // The frame asked for cannot be drawn (the eye on a surface):
         // no drawing of another frame stands in for it, in the pane, the
         // 3-D view's lines or Export Frame.
         const QString problem = tr("This frame cannot be drawn: %1").arg(result.error);

@@ -220,7 +220,7 @@ class FrameStages {
         // A moving mesh's camera stays (framed on its poses), unless the
         // file's camera moves with it.
         if (driver_.mesh_moves() && !driver_.camera_moves()) camera = image_.camera;
-        require_mesh_in_front(camera, topology.positions(), image_.radius);
+        require_eye_off_surface(camera, topology);
         if (job_.scene.visibility || fills_) {
             if (!rays_) rays_ = std::make_unique<RayScene>(topology);
             else if (driver_.mesh_moves()) rays_->refit(topology);

@@ -145,7 +145,7 @@ StillOutput render_still(const LoadedMesh& mesh, const MeshTopology& topology, c
     const double radius = std::max(0.5 * glm::length(report.bbox_max - report.bbox_min), 1e-12);
     if (rays && rays->topology().pose() != topology.pose())
         throw InternalError("render_still: the ray scene is of another pose than the topology");
-    require_mesh_in_front(scene.camera, topology.positions(), radius);
+    require_eye_off_surface(scene.camera, topology);
     const SnaxelEngine engine(topology);
 
     // Every contour at once (in parallel): the drawn kinds, then those the

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <limits>
 #include <map>
+#include <unordered_map>
 
 #include "snaxels/planarmap/detail/clip.h"
 #include "snaxels/planarmap/planar_map.h"
@@ -73,22 +74,38 @@ ClipperLib::Paths gap_faces(const PlanarMap& map, const MeshTopology& topo, cons
         return longest2 >= kGapFaceLength * kGapFaceLength;
     };
     // Their union as an outline (faces turned to the viewer all wind one
-    // way in the image: the edges two of them share cancel).
+    // way in the image: the edges two of them share cancel). A face the
+    // near plane cuts counts with what of it lies past the plane.
+    const NearPlane near(camera, topo);
+    std::unordered_map<std::int64_t, glm::dvec2> crossings; // id: image point
+    std::vector<NearPlane::FacePoint> cut;
     clip::Outline outline;
     bool any = false;
     for (const FaceId f : topo.faces()) {
         const auto& fv = topo.face_vertices()[f];
+        const glm::dvec3 &a = topo.positions()[fv[0]], &b = topo.positions()[fv[1]], &c = topo.positions()[fv[2]];
+        if (near.cuts(a) || near.cuts(b) || near.cuts(c)) {
+            near.cut_face(topo, f, cut);
+            if (cut.empty() || glm::dot(glm::cross(b - a, c - a), camera.to_viewer(cut[0].p)) <= 0.0) continue;
+            for (std::size_t k = 0; k < cut.size(); ++k) {
+                if (cut[k].id >= std::int64_t(topo.n_vertices())) crossings[cut[k].id] = projection.project(cut[k].p);
+                outline.walk(cut[k].id, cut[(k + 1) % cut.size()].id);
+            }
+            any = true;
+            continue;
+        }
         const glm::dvec2 pa = image[fv[0]], pb = image[fv[1]], pc = image[fv[2]];
         const double pixels = 0.5 * std::abs((pb.x - pa.x) * (pc.y - pa.y) - (pc.x - pa.x) * (pb.y - pa.y));
         if (pixels < kGapFacePixels && !(long_faces_matter && long_and_cut(fv, pa, pb, pc))) continue;
-        const glm::dvec3 &a = topo.positions()[fv[0]], &b = topo.positions()[fv[1]], &c = topo.positions()[fv[2]];
         if (glm::dot(glm::cross(b - a, c - a), camera.to_viewer((a + b + c) / 3.0)) <= 0.0) continue;
         if (topo.has_strips() && !face_has_area(topo, f)) continue;
         for (std::size_t k = 0; k < 3; ++k) outline.walk(fv[k].index(), fv[(k + 1) % 3].index());
         any = true;
     }
     if (!any) return {};
-    return outline.paths([&](std::int64_t v) { return image[VertexId(std::int32_t(v))]; });
+    return outline.paths([&](std::int64_t id) {
+        return id < std::int64_t(topo.n_vertices()) ? image[VertexId(std::int32_t(id))] : crossings.at(id);
+    });
 }
 
 /// The region of @p map of class @p region_class at @p level nearest on the
@@ -144,6 +161,7 @@ void fill_snaxel_map_gaps(PlanarMap& map, const SnaxelEngine& engine, const Snax
     // follow it). It joins the region of that class one of the hit face's
     // corners is in, or becomes a region of its own.
     const ShadingClasses classes = shading_classes(input);
+    const NearPlane near(camera, topo);
     const double back = 4.0 * bounding_radius(topo) + 1.0;
     int deepest = 0;
     for (const MapRegion& region : map.regions) deepest = std::max(deepest, region.depth);
@@ -168,6 +186,7 @@ void fill_snaxel_map_gaps(PlanarMap& map, const SnaxelEngine& engine, const Snax
         for (const clip::InsidePoint& point : clip::inside_points(piece)) {
             VisibilityRay ray;
             projection.pixel_ray(point.at, back, ray.origin, ray.dir);
+            ray.origin = near.ray_start(ray.origin, ray.dir);
             ray.tfar = std::numeric_limits<double>::infinity();
             const RayHit hit = rays.nearest(ray);
             if (!hit.hit()) continue;

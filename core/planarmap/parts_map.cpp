@@ -75,13 +75,16 @@ std::shared_ptr<const std::vector<Fronts>> boundary_fronts(const SnaxelEngine& e
 /// 1/256 px wide, each with its box.
 class Strips {
   public:
-    explicit Strips(const ImageProjection& projection) : projection_(projection) {}
+    Strips(const ImageProjection& projection, const NearPlane& near) : projection_(projection), near_(near) {}
 
-    /// Adds the polyline through @p points (world space); @p known_seen:
-    /// it is seen all along (widen() does not ask).
+    /// Adds the polyline through @p points (world space), what of it lies
+    /// past the near plane; @p known_seen: it is seen all along (widen()
+    /// does not ask).
     void add(std::vector<glm::dvec3> points, bool known_seen = false) {
-        lines_.push_back(std::move(points));
-        known_seen_.push_back(known_seen);
+        for (std::vector<glm::dvec3>& piece : near_.clip_polyline(std::move(points))) {
+            lines_.push_back(std::move(piece));
+            known_seen_.push_back(known_seen);
+        }
     }
 
     /// Widens the lines into strips where they may be seen (the segments
@@ -181,6 +184,7 @@ class Strips {
     }
 
     const ImageProjection& projection_;
+    const NearPlane& near_;
     std::vector<std::vector<glm::dvec3>> lines_;
     std::vector<bool> known_seen_;
     clip::Paths strips_;
@@ -194,13 +198,14 @@ class PartProbe {
     PartProbe(const MeshTopology& topo, const RayScene& rays, const ImageProjection& projection, const ShadingClasses& classes,
               const Camera& camera, const Light& light)
         : topo_(topo), parts_(*topo.parts()), rays_(rays), projection_(projection), classes_(classes), camera_(camera), light_(light),
-          back_(4.0 * bounding_radius(topo) + 1.0), depth_slack_(0.01 * bounding_radius(topo)) {}
+          back_(4.0 * bounding_radius(topo) + 1.0), depth_slack_(0.01 * bounding_radius(topo)), near_(camera, topo) {}
 
     /// Whether @p p may be seen: nothing on the ray through it lies more
     /// than 1% of the scene's radius nearer.
     bool may_see(const glm::dvec3& p) const {
         VisibilityRay ray;
         projection_.pixel_ray(projection_.project(p), back_, ray.origin, ray.dir);
+        ray.origin = near_.ray_start(ray.origin, ray.dir);
         ray.tfar = glm::dot(p - ray.origin, ray.dir) - depth_slack_;
         return ray.tfar <= 0.0 || !rays_.occluded(ray);
     }
@@ -255,6 +260,7 @@ class PartProbe {
     RayHit nearest(const glm::dvec2& pixel) const {
         VisibilityRay ray;
         projection_.pixel_ray(pixel, back_, ray.origin, ray.dir);
+        ray.origin = near_.ray_start(ray.origin, ray.dir);
         ray.tfar = std::numeric_limits<double>::infinity();
         return rays_.nearest(ray);
     }
@@ -269,6 +275,10 @@ class PartProbe {
     const Light& light_;
     double back_;
     double depth_slack_;
+    NearPlane near_; ///< rays start on it: what lies nearer is cut
+
+  public:
+    const NearPlane& near_plane() const { return near_; }
 };
 
 /// The material and object lines (the same in every pose) and, on a scene
@@ -578,7 +588,7 @@ void split_regions_by_part(PlanarMap& map, const SnaxelEngine& engine, const Ray
     // faceted outline. Only where they may be seen: a hidden boundary
     // parts nothing that shows.
     const PartProbe probe(topo, rays, projection, classes, camera, light);
-    Strips strips(projection);
+    Strips strips(projection, probe.near_plane());
     add_part_lines(engine, *parts, strips);
     if (parts->objects.size() > 1) add_faceted_outline(topo, rays, camera, probe, strips);
     strips.widen(

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <optional>
 #include <unordered_map>
 
 #include "snaxels/planarmap/detail/clip.h"
@@ -32,15 +33,20 @@ VertexData<std::int32_t> patch_labels(const MeshTopology& topo, const ContourRes
 
 // The projected loops of each positive region of `result`, grouped by the
 // visual patch the region lies in (its vertices face the viewer).
+// A loop the near plane @p near cuts keeps what lies past it, closed along the plane.
 std::map<std::int32_t, Paths> regions_by_patch(const SnaxelEngine& engine, const ContourResult& result,
-                                                const VertexData<std::int32_t>& patch_of, const ImageProjection& projection) {
+                                                const VertexData<std::int32_t>& patch_of, const ImageProjection& projection,
+                                                const NearPlane& near) {
     std::map<std::int32_t, std::vector<std::vector<glm::dvec2>>> loops;
+    std::vector<glm::dvec3> points;
     for (const FrontLoop& loop : result.fronts.loops) {
         const Snaxel& first = result.fronts.snaxels[loop.first];
         const std::int32_t patch = patch_of[first.inside];
+        points.clear();
+        result.fronts.for_each_in_loop(loop, [&](std::int32_t s) { points.push_back(engine.position(result.fronts.snaxels[s])); });
         std::vector<glm::dvec2> poly;
-        result.fronts.for_each_in_loop(loop, [&](std::int32_t s) { poly.push_back(projection.project(engine.position(result.fronts.snaxels[s]))); });
-        loops[patch].push_back(std::move(poly));
+        for (const glm::dvec3& p : near.clip(points)) poly.push_back(projection.project(p));
+        if (!poly.empty()) loops[patch].push_back(std::move(poly));
     }
     std::map<std::int32_t, Paths> out;
     for (auto& [patch, polys] : loops) out[patch] = clip::op(to_paths(polys), {}, ClipperLib::ctUnion);
@@ -60,7 +66,7 @@ class PostMapBuilder {
                    const ImageProjection& projection, const Camera& camera, const Light& light)
         : engine_(engine), in_(in), rays_(rays), projection_(projection), camera_(camera), light_(light),
           visual_(*in.visual), topo_(engine.topology()), classes_(shading_classes(in)), bands_n_(classes_.bands()),
-          highlight_(classes_.first_highlight()), count_(classes_.count()) {}
+          highlight_(classes_.first_highlight()), count_(classes_.count()), near_(camera, topo_) {}
 
     std::vector<MapRegion> build() {
         classify_faces();
@@ -128,13 +134,15 @@ class PostMapBuilder {
             const auto& f = topo_.face_vertices()[i];
             const glm::dvec3 &a = topo_.positions()[f[0]], &b = topo_.positions()[f[1]], &c = topo_.positions()[f[2]];
             if (topo_.has_strips() && !face_has_area(topo_, i)) return; // a sharp edge's strip covers nothing: hidden
+            const auto middle = middle_past_near(i);
+            if (!middle) return; // all of it nearer than the near plane: cut
             const glm::dvec3 n = glm::normalize(glm::cross(b - a, c - a));
             if (!facing(f)) {
                 // Turned away inside a patch (its corners face the viewer by
                 // their normals): the patch folds over itself there.
                 // Turned away, seen from behind through a hole of an open mesh:
                 // classed by N.L alone, as the snaxel map does.
-                if (!open || rays_.occluded(sampler.face_ray(i, (a + b + c) / 3.0, -n))) {
+                if (!open || rays_.occluded(sampler.face_ray(i, *middle, -n))) {
                     if (corners_face_viewer(f)) shows_[i] = kFold;
                     return;
                 }
@@ -142,7 +150,7 @@ class PostMapBuilder {
                 face_class_[i] = classes_.from_nl(face_nl(f));
                 return;
             }
-            if (rays_.occluded(sampler.face_ray(i, (a + b + c) / 3.0, n))) {
+            if (rays_.occluded(sampler.face_ray(i, *middle, n))) {
                 shows_[i] = corners_face_viewer(f) ? kUnder : kHidden;
                 return;
             }
@@ -154,13 +162,34 @@ class PostMapBuilder {
     /// they wind in the image), as its outline.
     template <class Take> Paths outline_of(Take&& take) const {
         clip::Outline outline;
+        std::unordered_map<std::int64_t, glm::dvec3> crossing; // where the near plane cuts a face's side
+        std::vector<NearPlane::FacePoint> cut;
         for (const FaceId i : topo_.faces()) {
             if (!take(i)) continue;
-            auto f = topo_.face_vertices()[i];
-            if (shows_[i] == kBackShown) std::swap(f[1], f[2]);
-            for (std::size_t k = 0; k < 3; ++k) outline.walk(point_of(f[k]), point_of(f[(k + 1) % 3]));
+            near_.cut_face(topo_, i, cut); // ids: a vertex's index, or past them where a side meets the plane
+            if (shows_[i] == kBackShown) std::reverse(cut.begin(), cut.end());
+            for (std::size_t k = 0; k < cut.size(); ++k) {
+                if (cut[k].id >= std::int64_t(topo_.n_vertices())) crossing[cut[k].id] = cut[k].p;
+                outline.walk(cut[k].id, cut[(k + 1) % cut.size()].id);
+            }
         }
-        return outline.paths([&](std::int64_t point) { return projection_.project(topo_.positions()[vertex_at(point)]); });
+        return outline.paths([&](std::int64_t point) {
+            return projection_.project(point < std::int64_t(topo_.n_vertices()) ? topo_.positions()[vertex_at(point)]
+                                                                                : crossing.at(point));
+        });
+    }
+
+    /// The middle of what of face @p i lies past the near plane; none when it is all cut.
+    std::optional<glm::dvec3> middle_past_near(FaceId i) const {
+        const auto& f = topo_.face_vertices()[i];
+        const glm::dvec3 &a = topo_.positions()[f[0]], &b = topo_.positions()[f[1]], &c = topo_.positions()[f[2]];
+        if (!near_.cuts(a) && !near_.cuts(b) && !near_.cuts(c)) return (a + b + c) / 3.0;
+        std::vector<NearPlane::FacePoint> cut;
+        near_.cut_face(topo_, i, cut);
+        if (cut.empty()) return std::nullopt;
+        glm::dvec3 sum(0.0);
+        for (const NearPlane::FacePoint& q : cut) sum += q.p;
+        return sum / double(cut.size());
     }
 
     // ---- the shown faces cut into classes -----------------------------------
@@ -239,11 +268,12 @@ class PostMapBuilder {
         for (const FaceId i : topo_.faces()) {
             if (!take(i)) continue;
             if (shows_[i] == kBackShown) {
-                auto f = topo_.face_vertices()[i];
-                std::swap(f[1], f[2]); // seen from behind: walked the way it winds in the image
+                const auto& f = topo_.face_vertices()[i];
                 std::vector<Corner> piece;
-                for (const VertexId v : f) piece.push_back({point_of(v), -1, topo_.positions()[v], {}});
-                add_piece(count_ + face_class_[i], piece);
+                for (int k = 0; k < 3; ++k) piece.push_back({point_of(f[k]), k, topo_.positions()[f[k]], {}});
+                cut_at_near(i, piece);
+                std::reverse(piece.begin(), piece.end()); // seen from behind: walked the way it winds in the image
+                if (!piece.empty()) add_piece(count_ + face_class_[i], piece);
                 continue;
             }
             for (const auto& part : cut_face(i, inner)) {
@@ -270,10 +300,35 @@ class PostMapBuilder {
             for (const auto& fn : value_) c.f.push_back(fn[v]);
             poly.push_back(std::move(c));
         }
+        cut_at_near(i, poly);
+        if (poly.empty()) return {};
         std::vector<std::size_t> functions(value_.size());
         for (std::size_t j = 0; j < functions.size(); ++j) functions[j] = j;
         return detail::cut_polygon(std::move(poly), functions,
                                    [&](const std::vector<Corner>& part, std::size_t j) { return split_part(part, i, j, inner); });
+    }
+
+    /// Face @p i's corners @p poly cut to what lies past the near plane: a
+    /// side that crosses it ends there, on a point both faces beside the
+    /// edge share (a negative id, by the edge), and the cut runs across the
+    /// face along the plane. Nothing where all of it is cut.
+    void cut_at_near(FaceId i, std::vector<Corner>& poly) const {
+        if (std::none_of(poly.begin(), poly.end(), [&](const Corner& c) { return near_.cuts(c.p); })) return;
+        const auto& fe = topo_.face_edges()[i];
+        std::vector<Corner> out;
+        for (std::size_t k = 0; k < 3; ++k) {
+            const Corner &a = poly[k], &b = poly[(k + 1) % 3];
+            const bool in_a = !near_.cuts(a.p), in_b = !near_.cuts(b.p);
+            if (in_a) out.push_back(a);
+            if (in_a == in_b) continue;
+            // From the edge's own first vertex, so that both faces agree.
+            const auto [u, w] = topo_.edge_vertices()[fe[k]];
+            const double t = near_.crossing(topo_.positions()[u], topo_.positions()[w]);
+            Corner q{-1 - std::int64_t(fe[k].index()), in_a ? -1 : int(k), glm::mix(topo_.positions()[u], topo_.positions()[w], t), {}};
+            for (const auto& fn : value_) q.f.push_back(glm::mix(fn[u], fn[w], t));
+            out.push_back(std::move(q));
+        }
+        poly = out.size() >= 3 ? std::move(out) : std::vector<Corner>{};
     }
 
     /// A part of face @p i split where function @p j crosses zero.
@@ -332,7 +387,7 @@ class PostMapBuilder {
     /// order by the mean depth of each patch's contour.
     void order_patches() {
         patch_of_ = patch_labels(topo_, visual_);
-        patches_ = regions_by_patch(engine_, visual_, patch_of_, projection_);
+        patches_ = regions_by_patch(engine_, visual_, patch_of_, projection_, near_);
         // Patches where a contour ends on the mesh's boundary (open meshes):
         // an open loop's polygon closes across the patch, not along the
         // boundary, so there the shown faces give the classes, and where the
@@ -373,11 +428,11 @@ class PostMapBuilder {
     /// into its classes.
     void clip_patches() {
         std::map<std::int32_t, Paths> lit;
-        if (in_.shadow) lit = regions_by_patch(engine_, *in_.shadow, patch_of_, projection_);
+        if (in_.shadow) lit = regions_by_patch(engine_, *in_.shadow, patch_of_, projection_, near_);
         std::vector<std::map<std::int32_t, Paths>> bands;
-        for (const ContourResult* iso : in_.isophotes) bands.push_back(regions_by_patch(engine_, *iso, patch_of_, projection_));
+        for (const ContourResult* iso : in_.isophotes) bands.push_back(regions_by_patch(engine_, *iso, patch_of_, projection_, near_));
         std::vector<std::map<std::int32_t, Paths>> highlights;
-        for (const ContourResult* g : in_.gleams) highlights.push_back(regions_by_patch(engine_, *g, patch_of_, projection_));
+        for (const ContourResult* g : in_.gleams) highlights.push_back(regions_by_patch(engine_, *g, patch_of_, projection_, near_));
         for (const auto& entry : order_) {
             const std::int32_t patch = entry.second; // a variable, so the lambda below may capture it
             const auto found = open_patch_.find(patch);
@@ -528,6 +583,7 @@ class PostMapBuilder {
     const MeshTopology& topo_;
     const ShadingClasses classes_;
     const int bands_n_, highlight_, count_; ///< of classes_
+    const NearPlane near_; ///< what lies nearer the eye is cut: faces and loops keep what lies past it
 
     FaceData<char> shows_;     ///< kHidden ... kFold
     FaceData<int> face_class_; ///< of a face seen from behind: its N.L class

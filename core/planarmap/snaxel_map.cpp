@@ -33,6 +33,7 @@ bool SnaxelMapBuilder::face_hidden(FaceId f) const {
     const glm::dvec3 &p0 = position(fv[0]), &p1 = position(fv[1]), &p2 = position(fv[2]);
     const glm::dvec3 n = glm::cross(p1 - p0, p2 - p0);
     if (topo_.has_strips() && !face_has_area(topo_, f)) return true; // a sharp edge's strip covers nothing
+    if (near_.cuts((p0 + p1 + p2) / 3.0)) return true;                 // its middle cut by the near plane
     return rays_.occluded(sampler_.face_ray(f, (p0 + p1 + p2) / 3.0, glm::normalize(n)));
 }
 
@@ -53,6 +54,7 @@ void SnaxelMapBuilder::label_vertices() {
 }
 
 VertexLabel SnaxelMapBuilder::label_vertex(VertexId v, bool open, const VertexSight* sight) {
+    if (near_.cuts(position(v))) return VertexLabel::occluded(); // cut by the near plane: in no region
     const bool turned_away = visual_.vertex_f[v] < 0.0;
     // The ray cast beforehand where it was cast from this side.
     const bool same_side =
@@ -219,7 +221,7 @@ void SnaxelMapBuilder::place_edge_points() {
         const glm::dvec3 &p0 = position(fv[0]), &p1 = position(fv[1]), &p2 = position(fv[2]);
         front_face_[f] = glm::dot(glm::cross(p1 - p0, p2 - p0), camera_.to_viewer((p0 + p1 + p2) / 3.0)) > 0.0;
     }, 4096);
-    const ContourImage occluder(engine_, visual_, projection_, [&](const glm::dvec3& p) { return depth_of(p); });
+    const ContourImage occluder(engine_, visual_, projection_, near_, [&](const glm::dvec3& p) { return depth_of(p); });
     parallel_for(cut_edges_.size(), [&](std::size_t i) {
         const EdgeId e = cut_edges_[i];
         edge_point_[e] = edge_point(e, occluder);
@@ -259,10 +261,16 @@ glm::dvec3 SnaxelMapBuilder::occlusion_point(EdgeId e, const ContourImage& occlu
     const auto [a, b] = topo_.edge_vertices()[e];
     const VertexId from = label(a).seen() ? a : b, to = label(a).seen() ? b : a;
     const glm::dvec3& p0 = position(from);
-    const glm::dvec3& p1 = position(to);
+    // Toward a vertex the near plane cuts, the edge is seen at most up to the plane.
+    const double reach = near_.cuts(position(to)) ? near_.crossing(p0, position(to)) : 1.0;
+    const glm::dvec3 p1 = glm::mix(p0, position(to), reach);
     const double t = occluder.first_crossing(projection_.project(p0), projection_.project(p1),
                                              [&](double s) { return depth_of(glm::mix(p0, p1, s)); });
     if (t >= 0.0) return glm::mix(p0, p1, t);
+    // Toward the near plane no ray can say where the edge is hidden (at
+    // the plane nothing is nearer): unless a nearer outline crosses it
+    // first, it is seen up to the plane.
+    if (reach < 1.0) return p1;
     double lo = from == a ? 0.0 : 1.0, hi = 1.0 - lo; // lo visible, hi occluded
     const double pixels = glm::length(projection_.project(p0) - projection_.project(p1));
     const int steps =

@@ -34,24 +34,6 @@ Light default_light(const Camera& camera) {
     return light;
 }
 
-void require_mesh_in_front(const Camera& camera, std::span<const glm::dvec3> positions, double radius) {
-    if (camera.orthographic()) return;
-    const glm::dvec3 f = camera.forward();
-    const double near = camera.near_plane(radius);
-    std::size_t behind = 0;
-    for (const glm::dvec3& p : positions)
-        if (glm::dot(p - camera.eye, f) < near) ++behind;
-    if (behind == 0) return;
-    char eye[96], plane[48];
-    std::snprintf(eye, sizeof eye, "(%g, %g, %g)", camera.eye.x, camera.eye.y, camera.eye.z);
-    std::snprintf(plane, sizeof plane, "%g", near);
-    throw Error(std::string("the eye ") + eye + " is inside the mesh or the mesh surrounds it: " +
-                std::to_string(behind) + " of its " + std::to_string(positions.size()) +
-                " vertices lie at or behind the eye, or nearer than its near plane (" + plane +
-                "), where a drawing cannot show them; move the eye back (farther from the mesh) or use an "
-                "orthographic view");
-}
-
 ImageProjection::ImageProjection(const Camera& camera, const glm::dvec3& centre, double radius,
                                  int width, int height, double margin)
     : camera_(camera), centre_(centre), width_(width), height_(height) {
@@ -67,6 +49,7 @@ ImageProjection::ImageProjection(const Camera& camera, const glm::dvec3& centre,
         scale_ = std::max(half - margin, 1.0) / std::max(radius, 1e-12);
     } else {
         scale_ = half / std::tan(0.5 * camera.fov_deg * M_PI / 180.0);
+        near_ = std::max(camera.near_plane(radius), 1e-12);
     }
 }
 
@@ -76,7 +59,7 @@ glm::dvec2 ImageProjection::project(const glm::dvec3& p) const {
         return {0.5 * width_ + scale_ * glm::dot(d, right_), 0.5 * height_ - scale_ * glm::dot(d, up_)};
     }
     const glm::dvec3 d = p - camera_.eye;
-    const double depth = std::max(glm::dot(d, forward_), 1e-12);
+    const double depth = std::max(glm::dot(d, forward_), near_);
     return {0.5 * width_ + scale_ * glm::dot(d, right_) / depth,
             0.5 * height_ - scale_ * glm::dot(d, up_) / depth};
 }

@@ -68,14 +68,6 @@ struct Light {
 /// Light from the viewer's upper left for @p camera: the default light.
 Light default_light(const Camera& camera);
 
-/// A perspective eye must see the whole mesh in front of it: a point at or
-/// behind the eye has no place in the picture (its projection would be
-/// mirrored or infinitely far). Throws snaxels::Error saying so, and what to
-/// do, when any of @p positions lies nearer the eye than its near plane
-/// (Camera::near_plane of @p radius: the eye inside the mesh, or the mesh
-/// around it).
-void require_mesh_in_front(const Camera& camera, std::span<const glm::dvec3> positions, double radius);
-
 /// Maps world points to image pixels (x right, y down). Orthographic views
 /// fit the given bounding sphere into the image within a margin; perspective
 /// views map the field of view to the image height.
@@ -85,6 +77,11 @@ class ImageProjection {
     /// (orthographic views).
     ImageProjection(const Camera& camera, const glm::dvec3& centre, double radius, int width,
                     int height, double margin = 32.0);
+    /// A perspective camera's points nearer than its near plane
+    /// (Camera::near_plane of the radius), which no stage draws, project as
+    /// if moved along the line of sight onto the plane: far outside the
+    /// picture, but finite and continuous where a stroke crosses the plane,
+    /// never mirrored from behind the eye.
     glm::dvec2 project(const glm::dvec3& p) const;
     /// The ray through image point @p pixel: an origin on the camera's side
     /// (@p back world units before the bounding sphere's centre, for
@@ -102,6 +99,7 @@ class ImageProjection {
     Camera camera_;
     glm::dvec3 right_{}, up_{}, forward_{}, centre_{};
     double scale_ = 1.0; ///< pixels per world unit (orthographic) or focal length in pixels
+    double near_ = 1e-12; ///< perspective: the least depth a point projects from
     int width_, height_;
 };
 

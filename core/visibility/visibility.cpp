@@ -68,11 +68,6 @@ std::vector<std::uint8_t> selected_stretches(const MeshTopology& topo, const Con
     return out;
 }
 
-double near_plane_of(const Camera& camera, const MeshTopology& topology) {
-    if (camera.orthographic()) return 0.0;
-    return camera.near_plane(camera.near_clip > 0.0 ? 0.0 : bounding_radius(topology));
-}
-
 VisibilitySampler::VisibilitySampler(const RayScene& scene, const Camera& camera, VisibilityOptions options)
     : scene_(scene), camera_(camera), options_(options), near_(near_plane_of(camera, scene.topology())),
       forward_(camera.forward()) {}
@@ -522,12 +517,11 @@ ContourVisibility drawn_parts(const SnaxelEngine& engine, const ContourResult& c
     // How far each snaxel lies past a perspective camera's near plane (clipped below 0).
     std::vector<double> past;
     if (camera && !camera->orthographic()) {
-        const double near = near_plane_of(*camera, engine.topology());
-        const glm::dvec3 forward = camera->forward();
+        const NearPlane near(*camera, engine.topology());
         past.resize(contour.fronts.snaxels.size());
         bool any = false;
         for (std::size_t i = 0; i < past.size(); ++i) {
-            past[i] = glm::dot(engine.position(contour.fronts.snaxels[i]) - camera->eye, forward) - near;
+            past[i] = near.past(engine.position(contour.fronts.snaxels[i]));
             any = any || past[i] < 0.0;
         }
         if (!any) past.clear(); // nothing clipped: as without a camera

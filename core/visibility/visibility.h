@@ -7,6 +7,7 @@
 
 #include "snaxels/scene/camera.h"
 #include "snaxels/snaxel/snaxel_engine.h"
+#include "snaxels/visibility/near_plane.h"
 #include "snaxels/visibility/ray_scene.h"
 
 namespace snaxels {
@@ -167,10 +168,6 @@ inline constexpr double kOverObjectsStep = 0.004;
 /// contour drawn only over other objects needs the rays classify() casts:
 /// without them none of it is drawn.
 ContourVisibility drawn_parts(const SnaxelEngine& engine, const ContourResult& contour, const Camera* camera = nullptr);
-
-/// The near plane's distance of perspective @p camera over @p topology
-/// (Camera::near_plane of its bounding radius); 0 for orthographic views.
-double near_plane_of(const Camera& camera, const MeshTopology& topology);
 
 /// Per snaxel of @p contour: whether the stretch of its loop from it to the
 /// next snaxel (an open loop's last snaxel: from the one before) lies on a

@@ -72,67 +72,90 @@ inline std::string slurp(const std::string& path) {
 
 } // namespace scene_detail
 
-/// A glTF 1.0 file (dictionaries of accessors, buffer views, buffers, meshes
-/// and nodes by id; the scene named by "scene"); triangle lists only.
-inline SceneMesh read_gltf1(const std::string& path) {
+namespace scene_detail {
+
+/// A glTF entry by its key: an id (glTF 1.0 dictionaries) or an index (2.0 arrays).
+inline const nlohmann::json& item(const nlohmann::json& table, const nlohmann::json& key) {
+    return key.is_string() ? table.at(key.get<std::string>()) : table.at(key.get<std::size_t>());
+}
+
+/// The values of glTF accessor @p a of file @p g, whose buffers' bytes
+/// @p buffer gives by the buffer view's key.
+template <class Buffer> std::vector<double> accessor_values(const nlohmann::json& g, const nlohmann::json& a, Buffer&& buffer) {
+    const nlohmann::json& view = item(g.at("bufferViews"), a.at("bufferView"));
+    const std::string& data = buffer(view.at("buffer"));
+    const std::size_t start = view.value("byteOffset", std::size_t(0)) + a.value("byteOffset", std::size_t(0));
+    const std::string type = a.at("type");
+    const int width = type == "SCALAR" ? 1 : type == "VEC2" ? 2 : type == "VEC3" ? 3 : 4;
+    const int component = a.at("componentType");
+    const std::size_t size = component == 5126 || component == 5125 ? 4 : component == 5123 || component == 5122 ? 2 : 1;
+    std::size_t stride = a.value("byteStride", view.value("byteStride", std::size_t(0))); // 1.0: the accessor's; 2.0: the view's
+    if (stride == 0) stride = size * std::size_t(width);
+    std::vector<double> out;
+    const std::size_t count = a.at("count");
+    for (std::size_t i = 0; i < count; ++i)
+        for (int c = 0; c < width; ++c) {
+            const char* at = data.data() + start + i * stride + std::size_t(c) * size;
+            if (start + i * stride + std::size_t(c + 1) * size > data.size()) throw std::runtime_error("accessor past its buffer");
+            double v = 0.0;
+            if (component == 5126) { float f; std::memcpy(&f, at, 4); v = f; }
+            else if (component == 5125) { std::uint32_t u; std::memcpy(&u, at, 4); v = u; }
+            else if (component == 5123) { std::uint16_t u; std::memcpy(&u, at, 2); v = u; }
+            else if (component == 5122) { std::int16_t u; std::memcpy(&u, at, 2); v = u; }
+            else v = static_cast<unsigned char>(*at);
+            out.push_back(v);
+        }
+    return out;
+}
+
+/// A translation, a rotation (x, y, z, w) and a scale as one matrix.
+inline glm::dmat4 trs(const std::vector<double>& t, const std::vector<double>& q, const std::vector<double>& s) {
+    const glm::dmat4 rotation = glm::mat4_cast(glm::dquat(q[3], q[0], q[1], q[2]));
+    glm::dmat4 translation(1.0), scale(1.0);
+    translation[3] = glm::dvec4(t[0], t[1], t[2], 1.0);
+    scale[0][0] = s[0], scale[1][1] = s[1], scale[2][2] = s[2];
+    return translation * rotation * scale;
+}
+
+/// A glTF node's own transform: its matrix (column-major), else its TRS.
+inline glm::dmat4 node_matrix(const nlohmann::json& node) {
+    if (node.contains("matrix")) {
+        glm::dmat4 local(1.0);
+        const auto v = node.at("matrix").get<std::vector<double>>();
+        for (int c = 0; c < 4; ++c)
+            for (int r = 0; r < 4; ++r) local[c][r] = v[std::size_t(4 * c + r)]; // column-major, as glm
+        return local;
+    }
+    return trs(node.value("translation", std::vector<double>{0, 0, 0}), node.value("rotation", std::vector<double>{0, 0, 0, 1}),
+               node.value("scale", std::vector<double>{1, 1, 1}));
+}
+
+/// A glTF file's scene (1.0: "scene" names it; 2.0: its index, default 0),
+/// every node's triangle-list primitives in world space. @p meshes_of
+/// gives a node's mesh keys, @p material_name a primitive's material.
+template <class MeshesOf, class MaterialName>
+SceneMesh read_gltf(const std::string& path, MeshesOf&& meshes_of, MaterialName&& material_name) {
     using nlohmann::json;
-    const json g = json::parse(scene_detail::slurp(path));
+    const json g = json::parse(slurp(path));
     const std::string dir = path.substr(0, path.find_last_of('/') + 1);
     std::map<std::string, std::string> buffers;
-    for (const auto& [id, b] : g.at("buffers").items()) buffers[id] = scene_detail::slurp(dir + b.at("uri").get<std::string>());
-    auto accessor = [&](const std::string& id) {
-        const json& a = g.at("accessors").at(id);
-        const json& view = g.at("bufferViews").at(a.at("bufferView").get<std::string>());
-        const std::string& data = buffers.at(view.at("buffer").get<std::string>());
-        const std::size_t start = view.value("byteOffset", std::size_t(0)) + a.value("byteOffset", std::size_t(0));
-        const std::string type = a.at("type");
-        const int width = type == "SCALAR" ? 1 : type == "VEC2" ? 2 : type == "VEC3" ? 3 : 4;
-        const int component = a.at("componentType");
-        const std::size_t size = component == 5126 || component == 5125 ? 4 : component == 5123 || component == 5122 ? 2 : 1;
-        std::size_t stride = a.value("byteStride", std::size_t(0));
-        if (stride == 0) stride = size * std::size_t(width);
-        std::vector<double> out;
-        const std::size_t count = a.at("count");
-        for (std::size_t i = 0; i < count; ++i)
-            for (int c = 0; c < width; ++c) {
-                const char* at = data.data() + start + i * stride + std::size_t(c) * size;
-                if (start + i * stride + std::size_t(c + 1) * size > data.size()) throw std::runtime_error("accessor past its buffer");
-                double v = 0.0;
-                if (component == 5126) { float f; std::memcpy(&f, at, 4); v = f; }
-                else if (component == 5125) { std::uint32_t u; std::memcpy(&u, at, 4); v = u; }
-                else if (component == 5123) { std::uint16_t u; std::memcpy(&u, at, 2); v = u; }
-                else if (component == 5122) { std::int16_t u; std::memcpy(&u, at, 2); v = u; }
-                else v = static_cast<unsigned char>(*at);
-                out.push_back(v);
-            }
-        return out;
+    auto buffer = [&](const json& key) -> const std::string& {
+        const std::string id = key.dump();
+        auto it = buffers.find(id);
+        if (it == buffers.end()) it = buffers.emplace(id, slurp(dir + item(g.at("buffers"), key).at("uri").get<std::string>())).first;
+        return it->second;
     };
+    auto accessor = [&](const json& key) { return accessor_values(g, item(g.at("accessors"), key), buffer); };
     SceneMesh m;
     std::map<std::array<double, 3>, int> index;
-    std::function<void(const std::string&, const glm::dmat4&)> visit = [&](const std::string& id, const glm::dmat4& parent) {
-        const json& node = g.at("nodes").at(id);
-        glm::dmat4 local(1.0);
-        if (node.contains("matrix")) {
-            const auto v = node.at("matrix").get<std::vector<double>>();
-            for (int c = 0; c < 4; ++c)
-                for (int r = 0; r < 4; ++r) local[c][r] = v[std::size_t(4 * c + r)]; // column-major, as glm
-        } else {
-            const auto t = node.value("translation", std::vector<double>{0, 0, 0});
-            const auto q = node.value("rotation", std::vector<double>{0, 0, 0, 1}); // x, y, z, w
-            const auto s = node.value("scale", std::vector<double>{1, 1, 1});
-            const glm::dmat4 rotation = glm::mat4_cast(glm::dquat(q[3], q[0], q[1], q[2]));
-            glm::dmat4 translation(1.0), scale(1.0);
-            translation[3] = glm::dvec4(t[0], t[1], t[2], 1.0);
-            scale[0][0] = s[0], scale[1][1] = s[1], scale[2][2] = s[2];
-            local = translation * rotation * scale;
-        }
-        const glm::dmat4 world = parent * local;
-        const std::string object = node.value("name", id);
-        for (const auto& mesh_id : node.value("meshes", std::vector<std::string>{}))
-            for (const json& prim : g.at("meshes").at(mesh_id).at("primitives")) {
+    std::function<void(const json&, const glm::dmat4&)> visit = [&](const json& id, const glm::dmat4& parent) {
+        const json& node = item(g.at("nodes"), id);
+        const glm::dmat4 world = parent * node_matrix(node);
+        const std::string object = node.value("name", id.is_string() ? id.get<std::string>() : id.dump());
+        for (const json& mesh_id : meshes_of(node))
+            for (const json& prim : item(g.at("meshes"), mesh_id).at("primitives")) {
                 if (prim.value("mode", 4) != 4) continue;
-                const std::string material_id = prim.value("material", std::string());
-                const std::string material = material_id; // the file's identifier (Assimp names glTF 1.0 materials by it)
+                const std::string material = material_name(g, prim);
                 const auto pos = accessor(prim.at("attributes").at("POSITION"));
                 const auto nrm = accessor(prim.at("attributes").at("NORMAL"));
                 const auto idx = accessor(prim.at("indices"));
@@ -143,14 +166,105 @@ inline SceneMesh read_gltf1(const std::string& path) {
                         p[k] = {pos[3 * v], pos[3 * v + 1], pos[3 * v + 2]};
                         n[k] = {nrm[3 * v], nrm[3 * v + 1], nrm[3 * v + 2]};
                     }
-                    scene_detail::add_triangle(m, index, world, p, n, object, material);
+                    add_triangle(m, index, world, p, n, object, material);
                 }
             }
-        for (const auto& child : node.value("children", std::vector<std::string>{})) visit(child, world);
+        for (const json& child : node.value("children", json::array())) visit(child, world);
     };
-    const json& scene = g.at("scenes").at(g.at("scene").get<std::string>());
-    for (const auto& id : scene.at("nodes")) visit(id.get<std::string>(), glm::dmat4(1.0));
+    const json& scene = item(g.at("scenes"), g.value("scene", json(0)));
+    for (const json& id : scene.at("nodes")) visit(id, glm::dmat4(1.0));
     return m;
+}
+
+} // namespace scene_detail
+
+/// A glTF 1.0 file (dictionaries of accessors, buffer views, buffers, meshes
+/// and nodes by id; the scene named by "scene"); triangle lists only.
+inline SceneMesh read_gltf1(const std::string& path) {
+    return scene_detail::read_gltf(
+        path, [](const nlohmann::json& node) { return node.value("meshes", nlohmann::json::array()); },
+        // The file's identifier (Assimp names glTF 1.0 materials by it).
+        [](const nlohmann::json&, const nlohmann::json& prim) { return prim.value("material", std::string()); });
+}
+
+/// A glTF 2.0 file (arrays; a node's one mesh; materials by their names);
+/// triangle lists only.
+inline SceneMesh read_gltf2(const std::string& path) {
+    return scene_detail::read_gltf(
+        path,
+        [](const nlohmann::json& node) { return node.contains("mesh") ? nlohmann::json::array({node.at("mesh")}) : nlohmann::json::array(); },
+        [](const nlohmann::json& g, const nlohmann::json& prim) {
+            if (!prim.contains("material")) return std::string();
+            const nlohmann::json& material = g.at("materials").at(prim.at("material").get<std::size_t>());
+            return material.value("name", prim.at("material").dump());
+        });
+}
+
+/// A glTF 2.0 camera as its file poses it at one time.
+struct SceneCamera {
+    glm::dvec3 eye, forward, up; ///< world space; unit forward and up
+    double yfov = 0.0;           ///< radians
+    double znear = 0.0;
+    double aspect = 0.0; ///< width over height (0: not given)
+};
+
+/// The camera of root node @p name of glTF 2.0 file @p path at @p seconds:
+/// its translation and rotation keys (LINEAR: interpolated, rotations by
+/// slerp; STEP: held), else its own TRS. A glTF camera looks down its -Z
+/// with +Y up.
+inline SceneCamera read_gltf2_camera(const std::string& path, const std::string& name, double seconds) {
+    using nlohmann::json;
+    const json g = json::parse(scene_detail::slurp(path));
+    const std::string dir = path.substr(0, path.find_last_of('/') + 1);
+    std::map<std::size_t, std::string> buffers;
+    auto buffer = [&](const json& key) -> const std::string& {
+        const std::size_t b = key.get<std::size_t>();
+        if (!buffers.count(b)) buffers[b] = scene_detail::slurp(dir + g.at("buffers").at(b).at("uri").get<std::string>());
+        return buffers[b];
+    };
+    std::size_t node_index = g.at("nodes").size();
+    for (std::size_t i = 0; i < g.at("nodes").size(); ++i)
+        if (g.at("nodes")[i].value("name", "") == name && g.at("nodes")[i].contains("camera")) node_index = i;
+    if (node_index == g.at("nodes").size()) throw std::runtime_error("no camera node " + name);
+    const json& node = g.at("nodes")[node_index];
+    std::vector<double> t = node.value("translation", std::vector<double>{0, 0, 0});
+    std::vector<double> q = node.value("rotation", std::vector<double>{0, 0, 0, 1});
+    for (const json& anim : g.value("animations", json::array()))
+        for (const json& channel : anim.at("channels")) {
+            if (channel.at("target").value("node", std::size_t(-1)) != node_index) continue;
+            const std::string target = channel.at("target").at("path");
+            if (target != "translation" && target != "rotation") continue;
+            const json& sampler = anim.at("samplers").at(channel.at("sampler").get<std::size_t>());
+            const auto times = scene_detail::accessor_values(g, g.at("accessors").at(sampler.at("input").get<std::size_t>()), buffer);
+            const auto values = scene_detail::accessor_values(g, g.at("accessors").at(sampler.at("output").get<std::size_t>()), buffer);
+            const std::size_t width = target == "rotation" ? 4 : 3;
+            std::size_t k = 0;
+            while (k + 1 < times.size() && times[k + 1] <= seconds) ++k;
+            double w = 0.0;
+            if (k + 1 < times.size() && seconds > times[k] && sampler.value("interpolation", "LINEAR") == "LINEAR")
+                w = (seconds - times[k]) / (times[k + 1] - times[k]);
+            std::vector<double> a(values.begin() + std::ptrdiff_t(k * width), values.begin() + std::ptrdiff_t((k + 1) * width));
+            if (w > 0.0) {
+                std::vector<double> b(values.begin() + std::ptrdiff_t((k + 1) * width), values.begin() + std::ptrdiff_t((k + 2) * width));
+                if (width == 4) {
+                    const glm::dquat s = glm::slerp(glm::dquat(a[3], a[0], a[1], a[2]), glm::dquat(b[3], b[0], b[1], b[2]), w);
+                    a = {s.x, s.y, s.z, s.w};
+                } else {
+                    for (std::size_t c = 0; c < 3; ++c) a[c] += w * (b[c] - a[c]);
+                }
+            }
+            (width == 4 ? q : t) = a;
+        }
+    const glm::dmat4 m = scene_detail::trs(t, q, {1, 1, 1});
+    const json& perspective = g.at("cameras").at(node.at("camera").get<std::size_t>()).at("perspective");
+    SceneCamera cam;
+    cam.eye = glm::dvec3(m[3]);
+    cam.forward = glm::normalize(-glm::dvec3(m[2]));
+    cam.up = glm::normalize(glm::dvec3(m[1]));
+    cam.yfov = perspective.at("yfov");
+    cam.znear = perspective.value("znear", 0.0);
+    cam.aspect = perspective.value("aspectRatio", 0.0);
+    return cam;
 }
 
 /// A Collada 1.4 file: every node's <instance_geometry> with <triangles>

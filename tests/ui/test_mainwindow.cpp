@@ -851,10 +851,11 @@ class TestMainWindow : public QObject {
         QVERIFY(!window.isModified());
     }
 
-    // A frame that cannot be drawn (the eye inside the mesh) is said so in
+    // A frame that cannot be drawn (the eye on the surface) is said so in
     // the pane; the drawing of the frame before does not stand in for it,
     // and Export Frame writes nothing. snaxels-cli refuses the same frame
-    // for the same reason.
+    // for the same reason. (An eye inside the mesh draws: the near plane
+    // cuts what lies nearer.)
     void aFrameThatCannotBeDrawnIsNotShownAsAnother() {
         QTemporaryDir dir;
         MainWindow window;
@@ -864,11 +865,20 @@ class TestMainWindow : public QObject {
         QVERIFY(window.frameProblem().isEmpty());
         const snaxels::OrbitView outside = window.document()->view();
         snaxels::OrbitView inside = outside;
-        inside.distance = 0.02 * outside.distance; // the eye by the orbit's centre, in the cow
+        inside.distance = 0.02 * outside.distance; // the eye by the orbit's centre, in the cow: drawn, cut
         window.document()->setView(inside, "Inside");
         QVERIFY(contoursSettle(window));
+        QVERIFY(window.frameProblem().isEmpty());
+        QVERIFY(!window.currentSvg().isEmpty());
+        // The orbit moved so that the eye stands on one of the cow's vertices.
+        const auto& cow = window.mesh()->mesh;
+        const auto p = cow.point(*cow.vertices_begin());
+        snaxels::OrbitView on = outside; // moved by its pan (a project keeps the pan; the centre is the mesh's)
+        on.pan -= glm::dmat3(snaxels::orbit_view_matrix(outside)) * (glm::dvec3(p[0], p[1], p[2]) - snaxels::orbit_camera(outside).eye);
+        window.document()->setView(on, "On");
+        QVERIFY(contoursSettle(window));
         QVERIFY(window.currentSvg().isEmpty());
-        QVERIFY2(window.frameProblem().contains("inside the mesh"), qPrintable(window.frameProblem()));
+        QVERIFY2(window.frameProblem().contains("lies on the surface"), qPrintable(window.frameProblem()));
         QVERIFY(window.contourLoops() == 0);
         auto* pane = window.findChild<snaxels::ui::SvgPane*>();
         QVERIFY(pane);

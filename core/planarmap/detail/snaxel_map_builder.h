@@ -154,6 +154,8 @@ inline bool is_open(const MeshTopology& topology) {
 /// VertexSight codes it.
 inline std::uint8_t sight_of(const RayScene& rays, const VisibilitySampler& sampler, VertexId v, bool turned_away, bool open) {
     std::uint8_t code = turned_away ? VertexSight::kTurnedAway : 0;
+    // Nearer the eye than the near plane: cut from the picture, seen by no ray.
+    if (sampler.past_near(rays.topology().positions()[v]) < 0.0) return code | VertexSight::kCast | VertexSight::kBlocked;
     if (!open && turned_away) return code;
     code |= VertexSight::kCast;
     if (rays.occluded(sampler.vertex_ray(v, turned_away))) code |= VertexSight::kBlocked;
@@ -161,19 +163,23 @@ inline std::uint8_t sight_of(const RayScene& rays, const VisibilitySampler& samp
 }
 
 /// The visual contour's segments in the image, bucketed on a grid, with
-/// their depth: what an edge's image collides with (rule 2).
+/// their depth: what an edge's image collides with (rule 2). What lies
+/// nearer the eye than @p near is cut off.
 class ContourImage {
   public:
     template <class Depth>
     ContourImage(const SnaxelEngine& engine, const ContourResult& visual, const ImageProjection& projection,
-                 Depth&& depth)
+                 const NearPlane& near, Depth&& depth)
         : width_(projection.width()), height_(projection.height()) {
         const Fronts& fronts = visual.fronts;
         for (const FrontLoop& loop : fronts.loops) {
             std::int32_t prev = kNoSnaxel, first = kNoSnaxel;
             auto add = [&](std::int32_t s0, std::int32_t s1) {
-                const glm::dvec3 a = engine.position(fronts.snaxels[s0]);
-                const glm::dvec3 b = engine.position(fronts.snaxels[s1]);
+                glm::dvec3 a = engine.position(fronts.snaxels[s0]);
+                glm::dvec3 b = engine.position(fronts.snaxels[s1]);
+                if (near.cuts(a) && near.cuts(b)) return;
+                if (near.cuts(a)) a = glm::mix(a, b, near.crossing(a, b));
+                else if (near.cuts(b)) b = glm::mix(a, b, near.crossing(a, b));
                 segments_.push_back({projection.project(a), projection.project(b), depth(a), depth(b)});
             };
             fronts.for_each_in_loop(loop, [&](std::int32_t s) {
@@ -245,7 +251,7 @@ class SnaxelMapBuilder {
         : engine_(engine), in_(in), rays_(rays), projection_(projection), camera_(camera), light_(light),
           topo_(engine.topology()), visual_(*in.visual), classes_(shading_classes(in)),
           highlight_(classes_.first_highlight()), levels_(shading_levels(in)), ids_(topo_, levels_.size()),
-          sampler_(rays, camera, refined_scale()) {}
+          sampler_(rays, camera, refined_scale()), near_(camera, topo_) {}
 
     SnaxelMap build();
 
@@ -433,6 +439,7 @@ class SnaxelMapBuilder {
     const std::vector<double> levels_;
     const PointIds ids_;
     const VisibilitySampler sampler_;
+    const NearPlane near_; ///< what lies nearer the eye is cut: no vertex there is in a region
 
     VertexData<VertexLabel> label_;
     VertexData<double> nl_;                           ///< N.L

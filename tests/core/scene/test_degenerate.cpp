@@ -93,16 +93,25 @@ Light directional(glm::dvec3 dir) {
 
 } // namespace
 
-TEST(Degenerate, EyeInsideTheMeshIsRefusedWithAMessage) {
+TEST(Degenerate, EyeOnTheSurfaceIsRefusedAndInsideItDraws) {
     const Scene s = scene_of(make_procedural("sphere:4000"));
     const Light light = directional({0.3, 0.5, -1.0});
+    // The eye on a vertex of the sphere: refused, with a message that says why.
+    const glm::dvec3 on = s.topology.positions()[VertexId(0)];
     try {
-        draw(s, perspective({0.1, 0.2, 0.05}, {0.0, 0.0, 0.0}), light, {ContourSpec{}});
-        FAIL() << "an eye inside the sphere drew";
+        draw(s, perspective(on, {0.0, 0.0, 0.0}), light, {ContourSpec{}});
+        FAIL() << "an eye on the sphere's surface drew";
     } catch (const Error& e) {
-        EXPECT_NE(std::string(e.what()).find("is inside the mesh"), std::string::npos) << e.what();
-        EXPECT_NE(std::string(e.what()).find("move the eye back"), std::string::npos) << e.what();
+        EXPECT_NE(std::string(e.what()).find("lies on the surface"), std::string::npos) << e.what();
+        EXPECT_NE(std::string(e.what()).find("move the eye off the surface"), std::string::npos) << e.what();
     }
+    // Inside, the sphere is seen from within: every face turned away, no
+    // outline, a drawing of nothing rather than a refusal.
+    const StillOutput inside = draw(s, perspective({0.1, 0.2, 0.05}, {0.0, 0.0, 0.0}), light, {ContourSpec{}});
+    expect_finite_drawing(inside);
+    for (const DrawnContour& c : inside.drawing.contours)
+        for (const DrawnLoop& loop : c.loops)
+            for (std::size_t i = 0; i < loop.qi.size(); ++i) EXPECT_NE(loop.qi[i], 0) << "a line drawn from inside a closed sphere";
     // Just outside, it draws: one silhouette, a circle seen from 1.5 radii.
     const StillOutput out = draw(s, perspective({0.0, 0.0, -1.5}, {0.0, 0.0, 0.0}), light, {ContourSpec{}});
     expect_finite_drawing(out);

@@ -3,9 +3,11 @@
 #include <cmath>
 #include <cstdio>
 #include <limits>
+#include <map>
 #include <random>
 
 #include "snaxels/error.h"
+#include "snaxels/mesh/build.h"
 #include "snaxels/mesh/import.h"
 #include "snaxels/mesh/parts.h"
 #include "snaxels/mesh/refine.h"
@@ -426,4 +428,66 @@ TEST(Visibility, TheNearPlaneClipsAndWhatLiesNearerHidesNothing) {
         for (const auto& run : loop.runs)
             if (run.qi > 0 && glm::length(run.points.front()) > 0.99) hidden += run_length(run);
     EXPECT_GT(hidden, 0.05);
+}
+
+// The near plane's cuts, which the planar maps and the 3-D view share: a
+// polygon keeps what lies past the plane, closed along it; a polyline
+// breaks into the pieces past it; a face's crossings are the same points,
+// with the same ids, from both faces beside an edge; rays start on it.
+TEST(NearPlane, CutsPolygonsPolylinesAndFacesOnThePlane) {
+    Camera cam;
+    cam.projection = Camera::Projection::Perspective;
+    cam.eye = {0.0, 0.0, 0.0};
+    cam.target = {0.0, 0.0, -1.0};
+    cam.up = {0.0, 1.0, 0.0};
+    const NearPlane near(cam, 1.0);
+    ASSERT_TRUE(near.active());
+    EXPECT_NEAR(near.past({5.0, 3.0, -3.0}), 2.0, 1e-12);
+    EXPECT_TRUE(near.cuts({0.0, 0.0, 2.0})); // behind the eye
+    // A square from depth 0.5 to 2.5: what lies past depth 1 is the
+    // rectangle from depth 1 to 2.5, of area 1.5 on the x-z plane.
+    const std::vector<glm::dvec3> square{{-0.5, 0.0, -0.5}, {0.5, 0.0, -0.5}, {0.5, 0.0, -2.5}, {-0.5, 0.0, -2.5}};
+    const std::vector<glm::dvec3> kept = near.clip(square);
+    ASSERT_EQ(kept.size(), 4u);
+    double area = 0.0;
+    for (std::size_t i = 0; i < kept.size(); ++i) {
+        const glm::dvec3 &a = kept[i], &b = kept[(i + 1) % kept.size()];
+        area += a.x * b.z - b.x * a.z;
+        EXPECT_GE(near.past(a), -1e-12);
+    }
+    EXPECT_NEAR(std::abs(area) / 2.0, 1.5, 1e-12);
+    EXPECT_TRUE(near.clip(std::vector<glm::dvec3>{{0, 0, 1}, {1, 0, 1}, {0, 1, -0.5}}).empty());
+    // A polyline out, in, out and in again: two pieces, each ending on the plane.
+    const auto pieces = near.clip_polyline({{0, 0, -3}, {0, 0, -0.5}, {0, 1, -0.2}, {0, 1, -4}});
+    ASSERT_EQ(pieces.size(), 2u);
+    EXPECT_NEAR(near.past(pieces[0].back()), 0.0, 1e-12);
+    EXPECT_NEAR(near.past(pieces[1].front()), 0.0, 1e-12);
+    // Two faces sharing an edge that crosses the plane agree on its crossing.
+    TriangleSoup soup;
+    soup.positions = {{-1, 0, -0.5}, {1, 0, -0.5}, {0, 0, -3}, {0, 1, -0.2}};
+    soup.triangles = {{0, 1, 2}, {1, 0, 3}};
+    const LoadedMesh mesh = build_mesh(soup, "two faces");
+    const MeshTopology topo = engine_topology(mesh.mesh, 0);
+    std::map<std::int64_t, glm::dvec3> seen;
+    for (const FaceId f : topo.faces()) {
+        std::vector<NearPlane::FacePoint> cut;
+        near.cut_face(topo, f, cut);
+        for (const auto& q : cut) {
+            EXPECT_GE(near.past(q.p), -1e-12);
+            if (q.id < std::int64_t(topo.n_vertices())) continue;
+            const auto [it, fresh] = seen.emplace(q.id, q.p);
+            if (!fresh) {
+                EXPECT_EQ(it->second, q.p) << "a crossing placed apart by the faces beside its edge";
+            }
+        }
+    }
+    EXPECT_FALSE(seen.empty());
+    // A ray from the eye starts on the plane.
+    const glm::dvec3 dir = glm::normalize(glm::dvec3(1.0, 0.0, -1.0));
+    EXPECT_NEAR(near.past(near.ray_start(cam.eye, dir)), 0.0, 1e-12);
+    // Orthographic views cut nothing.
+    cam.projection = Camera::Projection::Orthographic;
+    cam.view_dir = {0.0, 0.0, -1.0};
+    EXPECT_FALSE(NearPlane(cam, 1.0).active());
+    EXPECT_FALSE(NearPlane(cam, 1.0).cuts({0.0, 0.0, 5.0}));
 }
